@@ -1,0 +1,19 @@
+#pragma once
+// Subcommands of the clearjoint program. Each takes the arguments after the subcommand name and
+// returns the process exit status.
+
+#include <span>
+#include <string_view>
+
+namespace clearjoint::app {
+
+using Arguments = std::span<char* const>;
+
+/// clearjoint intersect [FILE]: rim/plane and rim/cylinder queries as JSON Lines.
+int run_intersect(Arguments args);
+#ifdef CLEARJOINT_WITH_DYNAMICS
+/// clearjoint simulate MODEL --out DIR: multibody simulation (dynamics/).
+int run_simulate(Arguments args);
+#endif
+
+}  // namespace clearjoint::app

@@ -1,0 +1,50 @@
+// clearjoint: the command-line front of the library, so that any language can call it.
+
+#include <cstdio>
+#include <cstring>
+#include <exception>
+
+#include "commands.hpp"
+
+namespace {
+
+struct Command {
+  const char* name;
+  int (*run)(clearjoint::app::Arguments);
+  const char* summary;
+};
+
+constexpr Command kCommands[] = {
+    {"intersect", clearjoint::app::run_intersect,
+     "rim/plane and rim/cylinder intersections from JSON Lines (file or stdin)"},
+#ifdef CLEARJOINT_WITH_DYNAMICS
+    {"simulate", clearjoint::app::run_simulate, "simulate a multibody model file"},
+#endif
+};
+
+int print_usage(std::FILE* to) {
+  std::fprintf(to, "usage: clearjoint COMMAND [ARGS...]\ncommands:\n");
+  for (const Command& c : kCommands) std::fprintf(to, "  %-10s %s\n", c.name, c.summary);
+  return to == stdout ? 0 : 2;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc < 2) return print_usage(stderr);
+  if (std::strcmp(argv[1], "--help") == 0 || std::strcmp(argv[1], "-h") == 0) {
+    return print_usage(stdout);
+  }
+  for (const Command& c : kCommands) {
+    if (std::strcmp(argv[1], c.name) == 0) {
+      try {
+        return c.run(clearjoint::app::Arguments(argv + 2, static_cast<size_t>(argc - 2)));
+      } catch (const std::exception& e) {
+        std::fprintf(stderr, "clearjoint %s: %s\n", c.name, e.what());
+        return 1;
+      }
+    }
+  }
+  std::fprintf(stderr, "clearjoint: unknown command '%s'\n", argv[1]);
+  return print_usage(stderr);
+}

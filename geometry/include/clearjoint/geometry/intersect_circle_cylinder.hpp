@@ -1,0 +1,46 @@
+#pragma once
+/// \file
+/// A journal rim against the bearing's lateral wall: radial contact, paper eqs. (16)-(21).
+///
+/// The paper solves eqs. (16)-(17) with Newton-Raphson and assumes at most two crossings. Here all
+/// crossings (0 to 4) are found, each is proved, and the absence of others is proved; where
+/// floating point cannot decide (tangency), exact rational arithmetic decides.
+/// docs/circle-cylinder.md derives the method.
+
+#include <array>
+
+#include "clearjoint/geometry/certificate.hpp"
+#include "clearjoint/geometry/intersection_options.hpp"
+#include "clearjoint/geometry/primitives.hpp"
+#include "clearjoint/geometry/rim_arc.hpp"
+
+namespace clearjoint::geometry {
+
+enum class CircleCylinderTopology {
+  inside,      ///< no common point, every rim point strictly closer to the axis than the radius
+  outside,     ///< no common point, every rim point strictly farther (the rim is beyond the wall)
+  crossing,    ///< 1 to 4 distinct common points, each with its multiplicity
+  on_surface   ///< every rim point lies on the cylinder (coaxial, equal radii)
+};
+
+struct CircleCylinderIntersection {
+  CircleCylinderTopology topology = CircleCylinderTopology::inside;
+  /// Sorted by angle. Multiplicities add up to 0, 2 or 4 (a tangency counts 2).
+  std::array<RimCrossing, 4> crossings{};
+  int crossing_count = 0;
+  /// Maximal arcs of rim points strictly outside the cylinder (beyond the wall). Two arcs mean
+  /// the rim crosses the wall four times, which the paper's model does not cover.
+  std::array<RimArc, 2> penetration_arcs{};
+  int arc_count = 0;
+  Certificate certificate{};
+
+  /// Sum of multiplicities: the number of roots of the rim's distance function, counted properly.
+  int root_count() const noexcept;
+};
+
+/// Intersect a circle with a cylinder's lateral surface. Throws InvalidInput on bad primitives.
+CircleCylinderIntersection intersect_circle_cylinder(const Circle3& circle,
+                                                     const Cylinder3& cylinder,
+                                                     const IntersectionOptions& options = {});
+
+}  // namespace clearjoint::geometry

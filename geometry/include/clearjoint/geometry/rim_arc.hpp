@@ -1,0 +1,42 @@
+#pragma once
+/// \file
+/// Points and arcs on a rim, in the angle of its CircleFrame.
+
+#include <limits>
+
+#include "clearjoint/geometry/vector3.hpp"
+
+namespace clearjoint::geometry {
+
+/// "No bound known" for the error fields below.
+inline constexpr double kNoErrorBound = std::numeric_limits<double>::infinity();
+
+/// A point where the rim meets a surface.
+/// Invariant when the answer is certified or exact: the true crossing angle lies in
+/// [angle - angle_error, angle + angle_error] and the true point within point_error (metres,
+/// Euclidean) of `point`. Uncertain answers carry kNoErrorBound.
+struct RimCrossing {
+  double angle = 0.0;          ///< rim angle in [0, 2 pi)
+  double angle_error = kNoErrorBound;
+  Vector3 point = Vector3::Zero();
+  double point_error = kNoErrorBound;
+  /// 1: the rim crosses the surface; 2: it touches it (tangency, a double root); 3 or 4:
+  /// higher-order contact. Never reported as two crossings or as none.
+  int multiplicity = 1;
+};
+
+/// The rim points with angle in the counter-clockwise sweep from `begin` to `end` (radians in
+/// [0, 2 pi); end < begin when the arc passes through angle 0). `full` marks the whole rim, in which
+/// case begin and end are 0 and 2 pi.
+struct RimArc {
+  double begin = 0.0;
+  double end = 0.0;
+  bool full = false;
+
+  /// Angle of the arc's middle, in [0, 2 pi) (paper eqs. 13 and 18 take the contact point there).
+  double middle() const noexcept;
+  /// Angular length in [0, 2 pi].
+  double sweep() const noexcept;
+};
+
+}  // namespace clearjoint::geometry

@@ -1,0 +1,7 @@
+#!/usr/bin/env bash
+# Configure and build clearjoint (Release) in ./build with 2 parallel jobs.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/install-dependencies.sh
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release "$@"
+cmake --build build -j2

@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages clearjoint needs, only those that are missing.
+# Run as root (or with sudo available). Idempotent: a no-op when everything is there.
+set -euo pipefail
+
+packages=(
+  cmake make g++                        # build
+  libcgal-dev libgmp-dev libmpfr-dev    # exact predicates and constructions
+  libeigen3-dev                         # linear algebra
+  libboost-dev                          # Interval, Odeint, Multiprecision (header-only)
+  libgtest-dev libbenchmark-dev         # tests and benchmarks
+  nlohmann-json3-dev                    # JSON Lines and model files
+  python3 python3-matplotlib            # plots in docs/
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+
+if ((${#missing[@]} == 0)); then
+  echo "install-dependencies: all ${#packages[@]} packages present"
+  exit 0
+fi
+
+echo "install-dependencies: installing ${missing[*]}"
+sudo_cmd=()
+if [[ $(id -u) -ne 0 ]]; then sudo_cmd=(sudo); fi
+"${sudo_cmd[@]}" apt-get update -qq
+DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"

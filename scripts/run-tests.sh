@@ -1,0 +1,7 @@
+#!/usr/bin/env bash
+# The whole test suite: install what is missing, build, run ctest. Ends with ctest's summary.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/build.sh
+cd build
+ctest --output-on-failure -j2
