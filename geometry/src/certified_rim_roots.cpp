@@ -1,0 +1,260 @@
+#include "certified_rim_roots.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "angles.hpp"
+
+namespace clearjoint::geometry::detail {
+namespace {
+
+/// Newton steps from a good start: quadratic convergence from the first harmonic's roots (or an
+/// arc midpoint) reaches double precision in 3-4 steps; more only burns time before the proof.
+constexpr int kMaxNewtonSteps = 6;
+/// Growth of the trial enclosure when a sign check is inconclusive, and how often to try.
+constexpr double kEnclosureGrowth = 8.0;
+constexpr int kMaxEnclosureTrials = 8;
+/// Tier 2: initial arcs, deepest bisection (arc width 2 pi / 16 / 2^34 ~ 2e-11 rad) and total
+/// arc budget. Roots closer than about the deepest width are left to the exact tier.
+constexpr int kInitialArcs = 16;
+constexpr int kMaxDepth = 34;
+constexpr int kMaxArcs = 1500;
+/// Tier 2 starts its arcs here rather than at 0: exactly representable test poses put roots at
+/// multiples of pi/2, and an arc boundary on a root can never be decided by a sign test.
+constexpr double kSubdivisionStart = 0.3183098861837907;  // 1/pi, no special angle
+/// Relative slack on comparisons of rounded bounds (covers a handful of roundings).
+constexpr double kSlack = 1.0 + 0x1p-44;
+
+double high(const Bounded& x) { return std::fabs(x.value) + x.error; }
+
+double newton(const RimDistancePolynomial& g, double theta, double low, double high_end) {
+  for (int i = 0; i < kMaxNewtonSteps; ++i) {
+    const double step = g.approximate_newton_step(theta);
+    if (!std::isfinite(step)) break;
+    const double next = std::clamp(theta - step, low, high_end);
+    if (next == theta) break;
+    theta = next;
+    // Quadratic convergence: once a step is below ~1e-8 rad the next error is below an ulp.
+    if (std::fabs(step) < 4 * kUnitRoundoff * (1.0 + std::fabs(theta))) break;
+  }
+  return theta;
+}
+
+/// Proves a simple root near `theta` where g changes sign as `direction` (+1: - to +) by a sign
+/// change of the rigorous g over [theta - eps, theta + eps], inside [low, high_end].
+bool enclose_simple_root(const RimDistancePolynomial& g, double theta, int direction, double low,
+                         double high_end, RootEnclosure& out) {
+  // First trial: a few ulps of theta; the sign checks themselves say if that was too tight.
+  double eps = 16 * kUnitRoundoff * (1.0 + std::fabs(theta));
+  for (int trial = 0; trial < kMaxEnclosureTrials; ++trial, eps *= kEnclosureGrowth) {
+    const double lo = std::max(theta - eps, low);
+    const double hi = std::min(theta + eps, high_end);
+    if (g.value(lo).sign() == -direction && g.value(hi).sign() == direction) {
+      out.angle = theta;
+      out.radius = std::max(theta - lo, hi - theta) * kSlack;
+      out.multiplicity = 1;
+      out.sign_after = direction;
+      return true;
+    }
+    if (lo == low && hi == high_end) break;
+  }
+  return false;
+}
+
+void sort_and_wrap(RimRoots& result) {
+  for (int i = 0; i < result.count; ++i) {
+    RootEnclosure& root = result.roots[i];
+    const double wrapped = wrap_angle(root.angle);
+    // Wrapping subtracts a rounded 2 pi: widen by its rounding (one ulp of 2 pi is 8.9e-16).
+    if (wrapped != root.angle) root.radius += 2 * kUnitRoundoff * kTwoPi;
+    root.angle = wrapped;
+  }
+  sort_by_angle(result);
+}
+
+// ---- Tier 1: the first-harmonic proof (docs/circle-cylinder.md, section 2) ----------------
+// Write g = k0 + A cos(psi) + h(theta), psi = theta - phi, with A = hypot(k1, k2) of the stored
+// centre values and h the second harmonic plus the first harmonic's coefficient errors:
+// |h| <= Hg, |h'| <= Hd. Pick alpha with A sin(alpha) > Hd. Then g is strictly monotone where
+// |sin psi| >= sin(alpha) (two arcs), and if k0 + A c + [-Hg, Hg] keeps one sign for c in
+// [cos alpha, 1] and in [-1, -cos alpha], the two remaining arcs hold no root. So g has 0 roots
+// (both end signs equal) or exactly 2 simple roots, one per monotone arc (signs differ).
+bool first_harmonic_proof(const RimDistancePolynomial& g, RimRoots& result) {
+  const Bounded& k0 = g.k[0];
+  const double second = high(g.k[3]) + high(g.k[4]);
+  const double first_error = g.k[1].error + g.k[2].error;
+  const double bound_h = (second + first_error) * kSlack;
+  const double bound_dh = (2 * second + first_error) * kSlack;
+  const Bounded amplitude =
+      sqrt(Bounded(g.k[1].value) * g.k[1].value + Bounded(g.k[2].value) * g.k[2].value);
+  const double amplitude_low = amplitude.lower() / kSlack;
+  // sin(alpha) = 2 Hd / A: the factor 2 leaves room for rounding; beyond 1/2 the monotone
+  // arcs get too short to be useful and tier 2 is the better tool.
+  if (!(amplitude_low > 4 * bound_dh)) return false;
+  const double sin_alpha = 2 * bound_dh / amplitude_low * kSlack;
+  const Bounded cos_alpha = sqrt(Bounded(1.0) - Bounded(sin_alpha) * sin_alpha);
+  const Bounded hg(0.0, bound_h);
+
+  auto end_sign = [&](Bounded near_cos, Bounded far_cos) {
+    // g over an end arc lies in k0 + A [near_cos, far_cos] + [-Hg, Hg] (A > 0, linear in c).
+    if ((k0 + amplitude * near_cos - hg).sign() > 0 && (k0 + amplitude * far_cos - hg).sign() > 0)
+      return 1;
+    if ((k0 + amplitude * near_cos + hg).sign() < 0 && (k0 + amplitude * far_cos + hg).sign() < 0)
+      return -1;
+    return 0;
+  };
+  const int sign_at_zero = end_sign(cos_alpha, Bounded(1.0));
+  const int sign_at_pi = end_sign(-cos_alpha, Bounded(-1.0));
+  if (sign_at_zero == 0 || sign_at_pi == 0) return false;
+  if (sign_at_zero == sign_at_pi) {
+    result.proved = true;
+    result.count = 0;
+    result.sign_without_roots = sign_at_zero;
+    return true;
+  }
+  if (sign_at_zero < 0) return false;  // impossible with A > 0; keep the proof honest
+
+  // Two roots, at psi = +-acos(-k0 / A) to first order; g decreases through the + one.
+  const double phi = std::atan2(g.k[2].value, g.k[1].value);
+  const double beta = std::acos(std::clamp(-k0.value / amplitude.value, -1.0, 1.0));
+  const double guesses[2] = {wrap_angle(phi - beta), wrap_angle(phi + beta)};
+  const int directions[2] = {+1, -1};
+  for (int i = 0; i < 2; ++i) {
+    const double theta = newton(g, guesses[i], guesses[i] - 1.0, guesses[i] + 1.0);
+    if (!enclose_simple_root(g, theta, directions[i], -HUGE_VAL, HUGE_VAL, result.roots[i]))
+      return false;
+  }
+  result.count = 2;
+  result.proved = true;
+  sort_and_wrap(result);
+  return true;
+}
+
+// ---- Tier 2: subdivision with Taylor bounds (docs/circle-cylinder.md, section 3) ---------
+struct Arc {
+  double low, high;
+  int depth;
+};
+
+/// Keeps the distinct roots among `found` (a root next to the seam of the circle can be found
+/// from both sides, with overlapping enclosures) and sorts them.
+void collect_distinct(const RootEnclosure* found, int count, int seen_sign, RimRoots& result) {
+  result.count = 0;
+  for (int i = 0; i < count; ++i) {
+    bool duplicate = false;
+    for (int j = 0; j < result.count; ++j) {
+      const double gap = std::fabs(wrap_angle(found[i].angle - result.roots[j].angle + 1.0) - 1.0);
+      if (gap <= found[i].radius + result.roots[j].radius) duplicate = true;
+    }
+    if (!duplicate && result.count < 4) result.roots[result.count++] = found[i];
+  }
+  result.sign_without_roots = result.count == 0 ? seen_sign : 0;
+  sort_and_wrap(result);
+}
+
+bool subdivision_proof(const RimDistancePolynomial& g, RimRoots& result) {
+  const double curvature = g.second_derivative_bound();
+  Arc stack[kMaxDepth * 2 + kInitialArcs + 2];
+  int top = 0;
+  const double step = kTwoPi / kInitialArcs;
+  for (int i = kInitialArcs - 1; i >= 0; --i) {
+    const double low = kSubdivisionStart + i * step;
+    // The last arc ends one ulp past start + 2 pi, so rounding never leaves a gap on the circle.
+    const double high_end = (i == kInitialArcs - 1)
+                                ? std::nextafter(kSubdivisionStart + kTwoPi, HUGE_VAL)
+                                : kSubdivisionStart + (i + 1) * step;
+    stack[top++] = {low, high_end, 0};
+  }
+  int seen_sign = 0, arcs_done = 0, found = 0;
+  RootEnclosure roots[5];
+  while (top > 0) {
+    const Arc arc = stack[--top];
+    if (++arcs_done > kMaxArcs) {
+      result.failure = "subdivision budget exhausted (roots too close: near tangency)";
+      collect_distinct(roots, found, seen_sign, result);
+      return false;
+    }
+    const double middle = 0.5 * (arc.low + arc.high);
+    const double radius = std::max(middle - arc.low, arc.high - middle) * kSlack;
+    const Bounded at = g.value(middle);
+    const Bounded slope = g.derivative(middle);
+    // Taylor: |g(t) - g(m)| <= |g'(m)| rho + M2 rho^2 / 2 on the arc.
+    const double variation = (high(slope) * radius + 0.5 * curvature * radius * radius) * kSlack;
+    if (std::fabs(at.value) - at.error * kSlack > variation) {
+      seen_sign = at.value > 0 ? 1 : -1;
+      continue;  // no root on this arc
+    }
+    if (std::fabs(slope.value) - slope.error * kSlack > curvature * radius * kSlack) {
+      // g' keeps its sign on the arc: at most one root; the end signs say whether there is one.
+      const int direction = slope.value > 0 ? 1 : -1;
+      const int sign_low = g.value(arc.low).sign();
+      const int sign_high = g.value(arc.high).sign();
+      if (sign_low != 0 && sign_low == sign_high) {
+        seen_sign = sign_low;
+        continue;
+      }
+      if (sign_low == -direction && sign_high == direction) {
+        if (found == 4) {
+          result.failure = "more than four roots found (cannot happen for a proper rim)";
+          collect_distinct(roots, found, seen_sign, result);
+          return false;
+        }
+        RootEnclosure& root = roots[found++];
+        const double theta = newton(g, middle, arc.low, arc.high);
+        if (!enclose_simple_root(g, theta, direction, arc.low, arc.high, root)) {
+          root = {middle, radius, 1, direction};  // the whole arc encloses it
+        }
+        continue;
+      }
+    }
+    if (arc.depth >= kMaxDepth) {
+      result.failure = "interval proof failed near a multiple root (tangency)";
+      // Best guess for the uncertain path: g vanishes to double precision here.
+      seen_sign = at.value > 0 ? 1 : -1;
+      collect_distinct(roots, found, seen_sign, result);
+      return false;
+    }
+    stack[top++] = {middle, arc.high, arc.depth + 1};
+    stack[top++] = {arc.low, middle, arc.depth + 1};
+  }
+  collect_distinct(roots, found, seen_sign, result);
+  result.proved = true;
+  return true;
+}
+
+}  // namespace
+
+void sort_by_angle(RimRoots& roots) {
+  for (int i = 1; i < roots.count && i < 4; ++i) {
+    for (int j = i; j > 0 && roots.roots[j].angle < roots.roots[j - 1].angle; --j)
+      std::swap(roots.roots[j], roots.roots[j - 1]);
+  }
+}
+
+RimRoots certified_rim_roots(const RimDistancePolynomial& g) {
+  RimRoots result;
+  result.sign_without_roots = g.k[0].value > 0 ? 1 : -1;  // only a guess until proved
+  for (const Bounded& coefficient : g.k) {
+    if (!coefficient.finite()) {
+      result.failure = "coefficient overflow in double precision";
+      return result;
+    }
+  }
+  if (first_harmonic_proof(g, result)) return result;
+  result = RimRoots{};
+  subdivision_proof(g, result);
+  return result;
+}
+
+RimRoots approximate_rim_roots(const RimDistancePolynomial& g) {
+  // Without certificates: drop the coefficient errors and run the same search; a failed
+  // search keeps whatever roots it had found.
+  RimDistancePolynomial plain = g;
+  for (Bounded& coefficient : plain.k) coefficient.error = 0.0;
+  RimRoots result = certified_rim_roots(plain);
+  result.proved = false;
+  if (*result.failure == '\0') result.failure = "certificate switched off";
+  return result;
+}
+
+}  // namespace clearjoint::geometry::detail

@@ -1,0 +1,102 @@
+#include "clearjoint/geometry/intersect_circle_cylinder.hpp"
+
+#include <cmath>
+
+#include "angles.hpp"
+#include "certified_rim_roots.hpp"
+#include "rim_cylinder_exact.hpp"
+#include "rim_distance_polynomial.hpp"
+
+namespace clearjoint::geometry {
+namespace {
+
+using detail::RimRoots;
+
+/// Rounding in point_at: the rounded frame (a few ulps per unit vector), cos and sin (1 ulp
+/// each, glibc) and two multiply-adds; 32 unit roundoffs of |center| + 2 radius cover them.
+constexpr double kPointRoundingUlps = 32 * detail::kUnitRoundoff;
+
+void fill(const Circle3& circle, const RimRoots& roots, bool bounded,
+          CircleCylinderIntersection& out) {
+  if (roots.count == 0) {
+    out.topology = roots.sign_without_roots > 0   ? CircleCylinderTopology::outside
+                   : roots.sign_without_roots < 0 ? CircleCylinderTopology::inside
+                                                  : CircleCylinderTopology::on_surface;
+    if (out.topology == CircleCylinderTopology::outside) {
+      out.penetration_arcs[0] = {0.0, detail::kTwoPi, true};
+      out.arc_count = 1;
+    }
+    return;
+  }
+  out.topology = CircleCylinderTopology::crossing;
+  const CircleFrame frame = frame_of(circle);
+  const double rounding = kPointRoundingUlps * (circle.center.norm() + 2 * circle.radius);
+  out.crossing_count = roots.count;
+  for (int i = 0; i < roots.count; ++i) {
+    const detail::RootEnclosure& root = roots.roots[i];
+    RimCrossing& crossing = out.crossings[i];
+    crossing.angle = root.angle;
+    crossing.point = point_at(circle, frame, root.angle);
+    crossing.multiplicity = root.multiplicity;
+    // A chord is never longer than its arc: |x(t*) - x(t)| <= r |t* - t|.
+    crossing.angle_error = bounded ? root.radius : kNoErrorBound;
+    crossing.point_error = bounded ? circle.radius * root.radius + rounding : kNoErrorBound;
+  }
+  // The rim is beyond the wall after every root whose sign_after is +1, up to the next root.
+  for (int i = 0; i < roots.count && out.arc_count < 2; ++i) {
+    if (roots.roots[i].sign_after <= 0) continue;
+    const double begin = roots.roots[i].angle;
+    const double end = roots.roots[(i + 1) % roots.count].angle;
+    // A single root with the rim beyond the wall on both sides: the rim touches the wall from
+    // outside; the whole rim but that point penetrates.
+    out.penetration_arcs[out.arc_count++] = {begin, end, roots.count == 1};
+  }
+}
+
+}  // namespace
+
+int CircleCylinderIntersection::root_count() const noexcept {
+  int total = 0;
+  for (int i = 0; i < crossing_count; ++i) total += crossings[i].multiplicity;
+  return total;
+}
+
+CircleCylinderIntersection intersect_circle_cylinder(const Circle3& circle,
+                                                     const Cylinder3& cylinder,
+                                                     const IntersectionOptions& options) {
+  validate(circle, "circle");
+  validate(cylinder, "cylinder");
+  CircleCylinderIntersection out;
+
+  // Bounding test on the rim's reach: most free-flight rims stop here.
+  const detail::RimReach reach = detail::rim_reach(circle, cylinder);
+  if (reach != detail::RimReach::undecided) {
+    RimRoots none;
+    none.sign_without_roots = reach == detail::RimReach::strictly_outside ? 1 : -1;
+    fill(circle, none, options.certify, out);
+    out.certificate = options.certify ? Certificate{Certainty::certified, ""}
+                                      : Certificate{Certainty::uncertain, "certificate switched off"};
+    return out;
+  }
+
+  const detail::RimDistancePolynomial g = detail::rim_distance_polynomial(circle, cylinder);
+  if (!options.certify) {
+    fill(circle, detail::approximate_rim_roots(g), false, out);
+    out.certificate = {Certainty::uncertain, "certificate switched off"};
+    return out;
+  }
+  const RimRoots roots = detail::certified_rim_roots(g);
+  if (roots.proved) {
+    fill(circle, roots, true, out);
+    out.certificate = {Certainty::certified, ""};
+  } else if (options.exact_fallback) {
+    fill(circle, detail::exact_rim_roots(circle, cylinder), true, out);
+    out.certificate = {Certainty::exact, roots.failure};
+  } else {
+    fill(circle, detail::approximate_rim_roots(g), false, out);
+    out.certificate = {Certainty::uncertain, roots.failure};
+  }
+  return out;
+}
+
+}  // namespace clearjoint::geometry

@@ -1,0 +1,166 @@
+// Circle against plane, paper eqs. (11)-(15); derivation in docs/circle-plane.md.
+//
+// With s = n_p . (c - p) and P n_p the part of the plane normal in the circle's plane, the
+// signed distance of rim point x(theta) from the plane is, times |n_p|,
+//   f(theta) = s + r |P n_p| cos(theta - theta_m),   |P n_p|^2 = |n_p x n_c|^2 / |n_c|^2,
+// theta_m the angle of P n_p in the rim frame. The topology is the sign of
+// s^2 |n_c|^2 - r^2 |n_p x n_c|^2, decided by a filter then exactly.
+
+#include "clearjoint/geometry/intersect_circle_plane.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "angles.hpp"
+#include "circle_plane_exact.hpp"
+#include "error_bounded.hpp"
+
+namespace clearjoint::geometry {
+namespace {
+
+using detail::Bounded;
+using detail::BoundedVector3;
+
+/// See intersect_circle_cylinder.cpp: rounding of point_at.
+constexpr double kPointRoundingUlps = 32 * detail::kUnitRoundoff;
+/// acos and atan2 in glibc: at most 1-2 ulps; we allow 4 ulps of pi.
+constexpr double kLibmAngleError = 4 * 2 * detail::kUnitRoundoff * std::numbers::pi;
+
+BoundedVector3 exact(const Vector3& v) { return {v.x(), v.y(), v.z()}; }
+
+/// atan2 of an enclosed vector, with the angle error: a displacement delta of a vector of
+/// length L turns it by at most (pi / 2) delta / L (when delta < L).
+Bounded angle_of(const Bounded& x, const Bounded& y) {
+  const double angle = std::atan2(y.value, x.value);
+  const double length = std::hypot(x.value, y.value);
+  const double delta = std::hypot(x.error, y.error) * detail::kErrorInflation;
+  if (!(delta < 0.5 * length)) return {angle, std::numbers::pi};
+  return {angle, 0.5 * std::numbers::pi * delta / (length - delta) + kLibmAngleError};
+}
+
+/// acos of an enclosed cosine, from the monotone acos at the enclosure's ends.
+Bounded acos_of(const Bounded& c) {
+  const double low = std::acos(std::clamp(c.value + c.error * detail::kErrorInflation, -1.0, 1.0));
+  const double high = std::acos(std::clamp(c.value - c.error * detail::kErrorInflation, -1.0, 1.0));
+  const double middle = 0.5 * (low + high);
+  return {middle, 0.5 * (high - low) + kLibmAngleError};
+}
+
+}  // namespace
+
+CirclePlaneIntersection intersect_circle_plane(const Circle3& circle, const Plane3& plane,
+                                               const IntersectionOptions& options) {
+  validate(circle, "circle");
+  validate(plane, "plane");
+  CirclePlaneIntersection out;
+
+  const BoundedVector3 nc = exact(circle.normal), np = exact(plane.normal);
+  const Bounded s = dot(np, exact(circle.center) - exact(plane.point));
+  const BoundedVector3 w = cross(np, nc);
+  const Bounded w2 = squared_norm(w), nc2 = squared_norm(nc), np2 = squared_norm(np);
+  const Bounded r = circle.radius;
+
+  // Filter: every sign the topology needs, proved from the running error bound.
+  const bool parallel_proved_false = w.x.sign() != 0 || w.y.sign() != 0 || w.z.sign() != 0;
+  const bool parallel_exact = w.x.value == 0 && w.y.value == 0 && w.z.value == 0 &&
+                              w.x.error == 0 && w.y.error == 0 && w.z.error == 0;
+  const Bounded discriminant = s * s * nc2 - r * r * w2;
+  detail::CirclePlaneTopologyAndSide decided{};
+  bool filtered = false;
+  if (parallel_exact && s.sign() != 0) {
+    decided = {CirclePlaneTopology::disjoint, s.sign()};
+    filtered = true;
+  } else if (parallel_proved_false && discriminant.sign() != 0 && s.sign() != 0) {
+    decided = discriminant.sign() > 0 ? detail::CirclePlaneTopologyAndSide{CirclePlaneTopology::disjoint, s.sign()}
+                                      : detail::CirclePlaneTopologyAndSide{CirclePlaneTopology::two_crossings, 0};
+    filtered = true;
+  } else if (parallel_proved_false && discriminant.sign() < 0) {
+    decided = {CirclePlaneTopology::two_crossings, 0};
+    filtered = true;
+  }
+  if (filtered && options.certify) {
+    out.certificate = {Certainty::certified, ""};
+  } else if (!options.certify) {
+    // Plain double pipeline: read the signs off the computed values.
+    const bool parallel = w2.value == 0.0;
+    const int side = s.value > 0 ? 1 : (s.value < 0 ? -1 : 0);
+    if (parallel) decided = {side == 0 ? CirclePlaneTopology::circle_in_plane : CirclePlaneTopology::disjoint, side};
+    else if (discriminant.value > 0) decided = {CirclePlaneTopology::disjoint, side};
+    else if (discriminant.value == 0) decided = {CirclePlaneTopology::tangent, side};
+    else decided = {CirclePlaneTopology::two_crossings, 0};
+    out.certificate = {Certainty::uncertain, "certificate switched off"};
+  } else if (options.exact_fallback) {
+    decided = detail::exact_circle_plane_topology(circle, plane);
+    out.certificate = {Certainty::exact, "floating-point filter could not decide (tangent or parallel)"};
+  } else {
+    const int side = s.value > 0 ? 1 : (s.value < 0 ? -1 : 0);
+    decided = {discriminant.value > 0 ? CirclePlaneTopology::disjoint : CirclePlaneTopology::two_crossings,
+               discriminant.value > 0 ? side : 0};
+    out.certificate = {Certainty::uncertain, "floating-point filter could not decide and the exact fallback is off"};
+  }
+  out.topology = decided.topology;
+  out.side = decided.side;
+  const bool bounded = options.certify && out.certificate.level != Certainty::uncertain;
+
+  // Deepest reach beyond the plane, in metres: (s + r |P n_p|) / |n_p|.
+  const Bounded in_plane_normal = sqrt(w2 / nc2);  // |P n_p|
+  const Bounded deepest = (s + r * in_plane_normal) / sqrt(np2);
+  out.max_signed_distance = deepest.value;
+  out.max_signed_distance_error = bounded && deepest.finite() ? deepest.error : kNoErrorBound;
+
+  if (out.topology == CirclePlaneTopology::disjoint || out.topology == CirclePlaneTopology::circle_in_plane) {
+    if (out.topology == CirclePlaneTopology::disjoint && out.side > 0) {
+      out.penetration = {0.0, detail::kTwoPi, true};
+      out.has_penetration = true;
+    }
+    if (out.topology == CirclePlaneTopology::circle_in_plane) {
+      out.max_signed_distance = 0.0;  // exactly: every rim point lies in the plane
+      out.max_signed_distance_error = bounded ? 0.0 : kNoErrorBound;
+    }
+    return out;
+  }
+
+  // theta_m: angle of P n_p in the rim frame; P n_p is parallel to n_c x (n_p x n_c).
+  const CircleFrame frame = frame_of(circle);
+  const BoundedVector3 toward = cross(nc, w);
+  const Bounded along_u = dot(toward, exact(frame.u));
+  const Bounded along_v = dot(toward, exact(frame.v));
+  // The stored frame is rounded: its vectors differ from the exact frame by a few ulps, which
+  // turns the angle by at most as much; 8 u covers it.
+  Bounded theta_m = angle_of(along_u, along_v);
+  theta_m.error += 8 * detail::kUnitRoundoff;
+
+  const double rounding = kPointRoundingUlps * (circle.center.norm() + 2 * circle.radius);
+  auto crossing_at = [&](double angle, double error, int multiplicity) {
+    RimCrossing crossing;
+    crossing.angle = detail::wrap_angle(angle);
+    // wrapping subtracts a rounded 2 pi: one more ulp of 2 pi.
+    crossing.angle_error = bounded ? error + 4 * detail::kUnitRoundoff * detail::kTwoPi : kNoErrorBound;
+    crossing.point = point_at(circle, frame, crossing.angle);
+    crossing.point_error = bounded ? circle.radius * crossing.angle_error + rounding : kNoErrorBound;
+    crossing.multiplicity = multiplicity;
+    return crossing;
+  };
+
+  if (out.topology == CirclePlaneTopology::tangent) {
+    // The touching point is where f is smallest (side +1) or largest (side -1).
+    const double angle = out.side > 0 ? theta_m.value + std::numbers::pi : theta_m.value;
+    out.crossings[0] = crossing_at(angle, theta_m.error, 2);
+    out.crossing_count = 1;
+    return out;
+  }
+
+  // Two crossings at theta_m -+ beta, cos(beta) = -s / (r |P n_p|); beyond the plane between them.
+  const Bounded half_width = acos_of(-s / (r * in_plane_normal));
+  const double error = theta_m.error + half_width.error;
+  out.crossings[0] = crossing_at(theta_m.value - half_width.value, error, 1);
+  out.crossings[1] = crossing_at(theta_m.value + half_width.value, error, 1);
+  out.crossing_count = 2;
+  out.penetration = {out.crossings[0].angle, out.crossings[1].angle, false};
+  out.has_penetration = true;
+  if (out.crossings[1].angle < out.crossings[0].angle) std::swap(out.crossings[0], out.crossings[1]);
+  return out;
+}
+
+}  // namespace clearjoint::geometry

@@ -1,0 +1,89 @@
+#include "clearjoint/geometry/primitives.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include "primitives_detail.hpp"
+
+namespace clearjoint::geometry {
+namespace {
+
+[[noreturn]] void reject(std::string_view name, std::string_view field, const std::string& value,
+                         std::string_view why) {
+  std::ostringstream message;
+  message << name << '.' << field << " = " << value << ": " << why;
+  throw InvalidInput(message.str());
+}
+
+std::string format(double x) {
+  std::ostringstream out;
+  out.precision(17);
+  out << x;
+  return out.str();
+}
+
+std::string format(const Vector3& v) {
+  std::ostringstream out;
+  out.precision(17);
+  out << '[' << v.x() << ", " << v.y() << ", " << v.z() << ']';
+  return out.str();
+}
+
+void require_finite(const Vector3& v, std::string_view name, std::string_view field) {
+  if (!v.allFinite()) reject(name, field, format(v), "every component must be finite");
+}
+
+void require_nonzero(const Vector3& v, std::string_view name, std::string_view field) {
+  if (v.x() == 0.0 && v.y() == 0.0 && v.z() == 0.0) {
+    reject(name, field, format(v), "must not be the zero vector");
+  }
+}
+
+void require_positive(double x, std::string_view name, std::string_view field) {
+  if (!std::isfinite(x)) reject(name, field, format(x), "must be finite");
+  if (!(x > 0.0)) reject(name, field, format(x), "must be positive");
+}
+
+}  // namespace
+
+void validate(const Circle3& circle, std::string_view name) {
+  require_finite(circle.center, name, "center");
+  require_finite(circle.normal, name, "normal");
+  require_nonzero(circle.normal, name, "normal");
+  require_positive(circle.radius, name, "radius");
+}
+
+void validate(const Plane3& plane, std::string_view name) {
+  require_finite(plane.point, name, "point");
+  require_finite(plane.normal, name, "normal");
+  require_nonzero(plane.normal, name, "normal");
+}
+
+void validate(const Cylinder3& cylinder, std::string_view name) {
+  require_finite(cylinder.axis_point, name, "axis_point");
+  require_finite(cylinder.axis, name, "axis");
+  require_nonzero(cylinder.axis, name, "axis");
+  require_positive(cylinder.radius, name, "radius");
+}
+
+int frame_axis_index(const Vector3& normal) {
+  const Vector3 magnitude = normal.cwiseAbs();
+  int k = 0;
+  if (magnitude.y() < magnitude[k]) k = 1;
+  if (magnitude.z() < magnitude[k]) k = 2;
+  return k;
+}
+
+CircleFrame frame_of(const Circle3& circle) {
+  // u' = normal x e_k is exact in double (its components are +-normal_j or 0), see primitives.hpp.
+  const Vector3 u_unnormalised = circle.normal.cross(Vector3::Unit(frame_axis_index(circle.normal)));
+  const Vector3 u = u_unnormalised.normalized();
+  const Vector3 v = circle.normal.normalized().cross(u);
+  return {u, v};
+}
+
+Vector3 point_at(const Circle3& circle, const CircleFrame& frame, double angle) {
+  return circle.center + circle.radius * (std::cos(angle) * frame.u + std::sin(angle) * frame.v);
+}
+
+}  // namespace clearjoint::geometry

@@ -3,6 +3,7 @@
 /// The one vector type of the public API: three doubles, world frame unless a name says otherwise.
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>  // cross products
 
 namespace clearjoint::geometry {
 

@@ -1,0 +1,122 @@
+#pragma once
+// A double together with a rigorous bound on its distance to the real number it stands for
+// (running error analysis, Higham, "Accuracy and Stability of Numerical Algorithms", sec. 3.3).
+//
+// Why not Boost.Interval or CGAL::Interval_nt: both need the FPU rounding mode switched (CGAL
+// once per protected block, Boost per operation with its default policy), which costs more than
+// the whole certified circle-cylinder query is allowed to (docs/circle-cylinder.md). This type
+// stays in round-to-nearest and pays a few extra multiply-adds per operation instead.
+//
+// Model (IEEE binary64, round to nearest, no -ffast-math): for every basic operation
+//   |fl(x op y) - (x op y)| <= u |fl(x op y)| + eta,   u = 2^-53, eta = 2^-1074,
+// where eta covers gradual underflow. The error fields are themselves rounded; each update is
+// multiplied by kErrorInflation, which exceeds the worst relative shortfall of the <= 8 rounded
+// operations that compute it ((1 - u)^-8 < 1 + 9u < 1 + 2^-48). Overflow shows up as a
+// non-finite value or error, and callers treat that as "not certified".
+
+#include <cmath>
+
+namespace clearjoint::geometry::detail {
+
+/// Unit roundoff of binary64, round to nearest.
+inline constexpr double kUnitRoundoff = 0x1p-53;
+/// Smallest subnormal: bound on the absolute error of an underflowing operation.
+inline constexpr double kUnderflowError = 0x1p-1074;
+/// See the file comment: covers the rounding of the error computations themselves.
+inline constexpr double kErrorInflation = 1.0 + 0x1p-48;
+
+struct Bounded {
+  double value = 0.0;
+  double error = 0.0;  ///< |true - value| <= error
+
+  constexpr Bounded() = default;
+  constexpr Bounded(double exact) : value(exact), error(0.0) {}  // NOLINT: doubles are exact
+  constexpr Bounded(double v, double e) : value(v), error(e) {}
+
+  double lower() const { return value - error; }  // callers compare with margin; see sign()
+  double upper() const { return value + error; }
+  bool finite() const { return std::isfinite(value) && std::isfinite(error); }
+  /// +1 or -1 when the sign of the true value is proved, 0 when it is not.
+  int sign() const {
+    // value - error is itself rounded; demand a margin of one relative rounding.
+    const double margin = error * kErrorInflation + kUnderflowError;
+    if (value > margin) return 1;
+    if (value < -margin) return -1;
+    return 0;
+  }
+};
+
+inline double rounding_error(double computed) {
+  return kUnitRoundoff * std::fabs(computed) + kUnderflowError;
+}
+
+inline Bounded operator+(Bounded a, Bounded b) {
+  const double v = a.value + b.value;
+  return {v, (a.error + b.error + rounding_error(v)) * kErrorInflation};
+}
+inline Bounded operator-(Bounded a, Bounded b) {
+  const double v = a.value - b.value;
+  return {v, (a.error + b.error + rounding_error(v)) * kErrorInflation};
+}
+inline Bounded operator-(Bounded a) { return {-a.value, a.error}; }
+inline Bounded operator*(Bounded a, Bounded b) {
+  const double v = a.value * b.value;
+  const double e = std::fabs(a.value) * b.error + std::fabs(b.value) * a.error + a.error * b.error;
+  return {v, (e + rounding_error(v) + 2 * kUnderflowError) * kErrorInflation};
+}
+inline Bounded operator/(Bounded a, Bounded b) {
+  const double v = a.value / b.value;
+  const double denominator = std::fabs(b.value) - b.error * kErrorInflation;
+  if (!(denominator > 0.0)) return {v, HUGE_VAL};  // divisor may be zero: no bound
+  const double e = (a.error + std::fabs(v) * b.error) / denominator;
+  return {v, (e * kErrorInflation + rounding_error(v) + kUnderflowError) * kErrorInflation};
+}
+inline Bounded& operator+=(Bounded& a, Bounded b) { return a = a + b; }
+
+/// sqrt of a value whose true value is >= 0 (callers guarantee it, e.g. a sum of squares).
+inline Bounded sqrt(Bounded a) {
+  const double v = std::sqrt(std::fmax(a.value, 0.0));
+  const double low = a.value - a.error * kErrorInflation;
+  double e;
+  if (low > 0.0) {
+    // |sqrt(x) - sqrt(x0)| = |x - x0| / (sqrt(x) + sqrt(x0)) <= error / (sqrt(low) + sqrt(x0)).
+    e = a.error / ((std::sqrt(low) + v) * (1.0 - 4 * kUnitRoundoff));
+  } else {
+    e = std::sqrt(std::fmax(a.value, 0.0) + a.error) * (1.0 + 4 * kUnitRoundoff);
+  }
+  return {v, (e + rounding_error(v)) * kErrorInflation};
+}
+
+inline Bounded abs(Bounded a) { return {std::fabs(a.value), a.error}; }
+inline Bounded square(Bounded a) { return a * a; }
+
+/// sin and cos of an exactly known double angle. glibc documents at most 1 ulp for sin and cos
+/// on x86-64 (its libm-test-ulps tables); we allow 2 ulps, i.e. 4u relative.
+struct BoundedSinCos {
+  Bounded sin;
+  Bounded cos;
+};
+inline BoundedSinCos sincos_of(double angle) {
+  const double s = std::sin(angle);
+  const double c = std::cos(angle);
+  constexpr double kLibmUlps = 4 * kUnitRoundoff;
+  return {{s, kLibmUlps * std::fabs(s) + kUnderflowError},
+          {c, kLibmUlps * std::fabs(c) + kUnderflowError}};
+}
+
+/// Three Bounded components, with the vector algebra the kernel needs.
+struct BoundedVector3 {
+  Bounded x, y, z;
+};
+inline BoundedVector3 operator-(const BoundedVector3& a, const BoundedVector3& b) {
+  return {a.x - b.x, a.y - b.y, a.z - b.z};
+}
+inline Bounded dot(const BoundedVector3& a, const BoundedVector3& b) {
+  return a.x * b.x + a.y * b.y + a.z * b.z;
+}
+inline BoundedVector3 cross(const BoundedVector3& a, const BoundedVector3& b) {
+  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+inline Bounded squared_norm(const BoundedVector3& a) { return dot(a, a); }
+
+}  // namespace clearjoint::geometry::detail

@@ -1,0 +1,19 @@
+#include "clearjoint/geometry/rim_arc.hpp"
+
+#include <numbers>
+
+#include "angles.hpp"
+
+namespace clearjoint::geometry {
+
+double RimArc::sweep() const noexcept {
+  if (full) return 2 * std::numbers::pi;
+  return detail::wrap_angle(end - begin);
+}
+
+double RimArc::middle() const noexcept {
+  if (full) return std::numbers::pi;
+  return detail::wrap_angle(begin + 0.5 * sweep());
+}
+
+}  // namespace clearjoint::geometry

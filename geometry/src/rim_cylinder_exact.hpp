@@ -1,0 +1,15 @@
+#pragma once
+// Exact tier for rim/cylinder: decides the crossings of the stored primitives with rational
+// arithmetic (CGAL::Gmpq, CGAL::Polynomial). Slow (tens to hundreds of microseconds) and only
+// called when the floating-point tiers cannot decide. docs/circle-cylinder.md, section 4.
+
+#include "certified_rim_roots.hpp"
+
+namespace clearjoint::geometry::detail {
+
+/// Always `proved`. count == 0 with sign_without_roots == 0 means the rim lies on the cylinder.
+/// Roots carry exact multiplicities; enclosures are certified (rational isolation, then rigorous
+/// double bounds for the angle).
+RimRoots exact_rim_roots(const Circle3& circle, const Cylinder3& cylinder);
+
+}  // namespace clearjoint::geometry::detail
