@@ -1,0 +1,38 @@
+#pragma once
+/// \file
+/// The two ways the dynamics module refuses to go on, and the checks that name the bad field.
+
+#include <Eigen/Core>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+namespace clearjoint::dynamics {
+
+/// Bad input: a model, body, joint or setting that cannot describe a mechanism. what() names the
+/// field and the offending value, e.g. "bodies[1].mass = -0.3: must be positive".
+class ModelError : public std::invalid_argument {
+ public:
+  using std::invalid_argument::invalid_argument;
+};
+
+/// The equations cannot be solved from here on: singular or inconsistent constraints, a collapsed
+/// step size, a state that stopped being finite. what() says when and why.
+class SolverError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// "[1, 2, 3]" with round-trip precision, for messages.
+std::string format_vector(const Eigen::Ref<const Eigen::VectorXd>& v);
+std::string format_number(double value);
+
+/// Throw ModelError "<field> = <value>: must be finite" unless every entry is finite.
+void require_finite(std::string_view field, double value);
+void require_finite(std::string_view field, const Eigen::Ref<const Eigen::VectorXd>& v);
+/// Throw ModelError "<field> = <value>: must be positive" unless value > 0 (and finite).
+void require_positive(std::string_view field, double value);
+/// Throw ModelError unless the vector is finite and not (numerically) zero.
+void require_nonzero(std::string_view field, const Eigen::Ref<const Eigen::VectorXd>& v);
+
+}  // namespace clearjoint::dynamics

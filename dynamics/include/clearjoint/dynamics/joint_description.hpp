@@ -1,0 +1,65 @@
+#pragma once
+/// \file
+/// An ideal joint as a user or a model file describes it: which bodies, which points and axes in
+/// each body frame. joint_equations.hpp turns it into constraint equations.
+
+#include <string>
+#include <string_view>
+
+#include "clearjoint/dynamics/constraint_primitives.hpp"
+
+namespace clearjoint::dynamics {
+
+enum class JointType {
+  spherical,      ///< 3 equations: the two points coincide
+  revolute,       ///< 5: points coincide, axes stay parallel (paper: "five equations", Sec. 5)
+  universal,      ///< 4: points coincide, the two cross axes stay perpendicular
+  cylindrical,    ///< 4: axes stay parallel and on one line
+  translational,  ///< 5: cylindrical, and the relative rotation about the axis is locked
+  fixed,          ///< 6: points coincide, relative orientation locked
+  angle_driver,   ///< 1: relative rotation about an axis prescribed in time (drives a crank)
+};
+
+std::string_view to_string(JointType type);
+/// Throws ModelError naming `field` for an unknown name.
+JointType joint_type_from_string(std::string_view name, std::string_view field);
+/// Number of constraint equations of a joint of this type.
+int equation_count(JointType type);
+
+/// theta(t) = rate t + acceleration t^2 / 2, measured from the relative orientation at t = 0.
+struct AngleLaw {
+  double rate = 0.0;
+  double acceleration = 0.0;
+  AngleValue at(double time) const {
+    return {rate * time + 0.5 * acceleration * time * time, rate + acceleration * time,
+            acceleration};
+  }
+};
+
+/// The user-facing joint. Points and axes are in the frames of body_i and body_j; axes need not
+/// be unit. What each type reads:
+///   spherical      point_i, point_j
+///   revolute       point_i, point_j, axis_i, axis_j (the same line in the world)
+///   universal      point_i, point_j, axis_i, axis_j (the cross axes, perpendicular)
+///   cylindrical    point_i, point_j (on the axis), axis_i, axis_j
+///   translational  as cylindrical; the relative rotation about the axis is the one at t = 0
+///   fixed          point_i, point_j; the relative orientation is the one at t = 0
+///   angle_driver   axis_i, angle (body j turns about axis_i by angle(t) from its t = 0 pose)
+/// "At t = 0" means the poses the model gives before the initial conditions are made consistent.
+struct JointDescription {
+  std::string name;
+  JointType type = JointType::spherical;
+  std::string body_i;
+  std::string body_j;
+  Vector3 point_i_B = Vector3::Zero();
+  Vector3 point_j_B = Vector3::Zero();
+  Vector3 axis_i_B = Vector3::UnitZ();
+  Vector3 axis_j_B = Vector3::UnitZ();
+  AngleLaw angle;
+};
+
+/// Throw ModelError naming `field` (e.g. "joints[2]") for unusable values: empty names, the same
+/// body twice, non-finite numbers, zero axes.
+void validate(const JointDescription& joint, std::string_view field);
+
+}  // namespace clearjoint::dynamics

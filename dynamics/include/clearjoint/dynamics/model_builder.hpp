@@ -1,0 +1,28 @@
+#pragma once
+/// \file
+/// From a ModelDescription to a MultibodySystem with consistent initial conditions.
+
+#include <memory>
+#include <vector>
+
+#include "clearjoint/dynamics/model_description.hpp"
+
+namespace clearjoint::dynamics {
+
+struct BuiltModel {
+  std::unique_ptr<MultibodySystem> system;
+  std::vector<BodyState> initial_states;  ///< after make_consistent()
+  InitialConditionReport initial_conditions;
+  std::vector<double> initial_state;      ///< packed y at solver.start_time
+};
+
+/// Resolve body names, build joints' equations from the model's initial poses, the force
+/// elements (gravity first when non-zero), and make the initial conditions consistent.
+/// Throws ModelError (bad names or values, naming the field) or SolverError (inconsistent or
+/// redundant constraints).
+BuiltModel build_model(const ModelDescription& model);
+
+/// Index 0..5 of a held component name ("x".."rz" for positions, "vx".."wz" for velocities).
+int held_component_index(std::string_view name, bool velocity, std::string_view field);
+
+}  // namespace clearjoint::dynamics

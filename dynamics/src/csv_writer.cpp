@@ -1,0 +1,54 @@
+#include "clearjoint/dynamics/csv_writer.hpp"
+
+#include <stdexcept>
+#include <system_error>
+#include <unistd.h>
+
+namespace clearjoint::dynamics {
+
+CsvWriter::CsvWriter(std::filesystem::path destination, const std::vector<std::string>& header)
+    : destination_(std::move(destination)), width_(header.size()) {
+  temporary_ = destination_;
+  temporary_ += ".tmp-" + std::to_string(::getpid());
+  file_ = std::fopen(temporary_.c_str(), "wb");
+  if (file_ == nullptr) {
+    throw std::runtime_error(temporary_.string() + ": cannot create the output file");
+  }
+  std::string line;
+  for (size_t k = 0; k < header.size(); ++k) line += (k ? "," : "") + header[k];
+  line += '\n';
+  std::fputs(line.c_str(), file_);
+}
+
+CsvWriter::~CsvWriter() {
+  if (file_ != nullptr) {
+    std::fclose(file_);
+    std::error_code ignored;
+    std::filesystem::remove(temporary_, ignored);
+  }
+}
+
+void CsvWriter::write_row(std::span<const double> values) {
+  if (values.size() != width_) {
+    throw std::logic_error(destination_.string() + ": row of " + std::to_string(values.size()) +
+                           " values for " + std::to_string(width_) + " columns");
+  }
+  for (size_t k = 0; k < values.size(); ++k) {
+    std::fprintf(file_, k ? ",%.17g" : "%.17g", values[k]);
+  }
+  std::fputc('\n', file_);
+}
+
+void CsvWriter::commit() {
+  const bool written = std::fflush(file_) == 0 && std::ferror(file_) == 0;
+  const bool closed = std::fclose(file_) == 0;
+  file_ = nullptr;
+  std::error_code error;
+  if (written && closed) std::filesystem::rename(temporary_, destination_, error);
+  if (!written || !closed || error) {
+    std::filesystem::remove(temporary_, error);
+    throw std::runtime_error(destination_.string() + ": cannot write the output file");
+  }
+}
+
+}  // namespace clearjoint::dynamics

@@ -1,0 +1,98 @@
+#include "clearjoint/dynamics/integrator.hpp"
+
+#include <algorithm>
+#include <boost/numeric/odeint.hpp>
+#include <cmath>
+
+#include "clearjoint/dynamics/errors.hpp"
+
+namespace clearjoint::dynamics {
+
+namespace odeint = boost::numeric::odeint;
+
+namespace {
+
+/// span / report_step is an integer up to rounding for the usual settings (1 s / 1e-5 s); this
+/// relative slack keeps a rounding excess from adding a report time a few ulps before end_time.
+constexpr double kReportCountSlack = 1e-9;
+
+bool all_finite(const std::vector<double>& y) {
+  return std::all_of(y.begin(), y.end(), [](double x) { return std::isfinite(x); });
+}
+
+}  // namespace
+
+void validate(const IntegratorSettings& s) {
+  require_finite("solver.start_time", s.start_time);
+  require_finite("solver.end_time", s.end_time);
+  if (!(s.end_time > s.start_time)) {
+    throw ModelError("solver.end_time = " + format_number(s.end_time) +
+                     ": must be after solver.start_time = " + format_number(s.start_time));
+  }
+  require_positive("solver.report_step", s.report_step);
+  require_positive("solver.relative_tolerance", s.relative_tolerance);
+  require_positive("solver.absolute_tolerance", s.absolute_tolerance);
+  require_positive("solver.initial_step", s.initial_step);
+  require_positive("solver.minimum_step", s.minimum_step);
+  if (s.max_steps <= 0) throw ModelError("solver.max_steps = " + std::to_string(s.max_steps) + ": must be positive");
+}
+
+IntegrationStatistics integrate(MultibodySystem& system, std::vector<double>& y,
+                                const IntegratorSettings& settings, const Observer& observer) {
+  validate(settings);
+  if (!all_finite(y)) throw SolverError("initial state is not finite");
+  using State = std::vector<double>;
+  auto stepper = odeint::make_dense_output(settings.absolute_tolerance,
+                                           settings.relative_tolerance,
+                                           odeint::runge_kutta_dopri5<State>());
+  IntegrationStatistics stats;
+  stats.smallest_step = INFINITY;
+  auto rhs = [&](const State& x, State& dxdt, double t) {
+    ++stats.derivative_calls;
+    system.derivative(t, x, dxdt);
+  };
+
+  const double span = settings.end_time - settings.start_time;
+  const long report_count = std::max(1L, std::lround(std::ceil(span / settings.report_step * (1.0 - kReportCountSlack))));
+  stepper.initialize(y, settings.start_time, std::min(settings.initial_step, span));
+  observer(settings.start_time, y);
+  State reported(y.size());
+  for (long k = 1; k <= report_count; ++k) {
+    const double t_report = k == report_count
+                                ? settings.end_time
+                                : settings.start_time + static_cast<double>(k) * settings.report_step;
+    while (stepper.current_time() < t_report) {
+      std::pair<double, double> interval;
+      try {
+        interval = stepper.do_step(rhs);
+      } catch (const odeint::step_adjustment_error& e) {
+        throw SolverError("integration stopped at t = " + format_number(stepper.current_time()) +
+                          ": no acceptable step size found (" + e.what() + ")");
+      }
+      ++stats.steps;
+      const double taken = interval.second - interval.first;
+      stats.smallest_step = std::min(stats.smallest_step, taken);
+      stats.largest_step = std::max(stats.largest_step, taken);
+      if (!all_finite(stepper.current_state())) {
+        throw SolverError("integration stopped at t = " + format_number(interval.second) +
+                          ": the state is no longer finite");
+      }
+      if (stepper.current_time_step() < settings.minimum_step) {
+        throw SolverError("integration stopped at t = " + format_number(interval.second) +
+                          ": step size collapsed to " + format_number(stepper.current_time_step()) +
+                          " s (minimum " + format_number(settings.minimum_step) + " s)");
+      }
+      if (stats.steps >= settings.max_steps) {
+        throw SolverError("integration stopped at t = " + format_number(interval.second) +
+                          ": more than solver.max_steps = " + std::to_string(settings.max_steps) +
+                          " steps");
+      }
+    }
+    stepper.calc_state(t_report, reported);
+    observer(t_report, reported);
+  }
+  y = reported;
+  return stats;
+}
+
+}  // namespace clearjoint::dynamics

@@ -1,0 +1,257 @@
+#include "clearjoint/dynamics/model_file.hpp"
+
+#include <fstream>
+#include <initializer_list>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "clearjoint/dynamics/errors.hpp"
+
+namespace clearjoint::dynamics {
+
+namespace {
+
+using Json = nlohmann::json;
+
+/// A JSON object together with its path in the file, for messages like "bodies[1].mass".
+class Node {
+ public:
+  Node(const Json& json, std::string path) : json_(json), path_(std::move(path)) {}
+
+  const std::string& path() const { return path_; }
+  std::string field(std::string_view key) const {
+    return path_.empty() ? std::string(key) : path_ + "." + std::string(key);
+  }
+
+  void require_object(std::initializer_list<std::string_view> allowed) const {
+    if (!json_.is_object()) throw ModelError(where() + " must be a JSON object");
+    for (const auto& [key, value] : json_.items()) {
+      bool known = key == "comment" || key == "notes";
+      for (std::string_view a : allowed) known = known || key == a;
+      if (!known) throw ModelError(field(key) + ": unknown key (a typo?)");
+    }
+  }
+
+  bool has(std::string_view key) const { return json_.contains(key); }
+
+  const Json& get(std::string_view key) const {
+    if (!has(key)) throw ModelError(field(key) + " is missing");
+    return json_.at(std::string(key));
+  }
+
+  Node child(std::string_view key) const { return {get(key), field(key)}; }
+
+  double number(std::string_view key) const {
+    const Json& j = get(key);
+    if (!j.is_number()) throw ModelError(field(key) + " = " + j.dump() + ": must be a number");
+    const double value = j.get<double>();
+    require_finite(field(key), value);
+    return value;
+  }
+  double number(std::string_view key, double fallback) const {
+    return has(key) ? number(key) : fallback;
+  }
+
+  std::string text(std::string_view key) const {
+    const Json& j = get(key);
+    if (!j.is_string()) throw ModelError(field(key) + " = " + j.dump() + ": must be a string");
+    return j.get<std::string>();
+  }
+  std::string text(std::string_view key, std::string fallback) const {
+    return has(key) ? text(key) : fallback;
+  }
+
+  template <int N>
+  Eigen::Matrix<double, N, 1> vector(std::string_view key) const {
+    const Json& j = get(key);
+    if (!j.is_array() || j.size() != N) {
+      throw ModelError(field(key) + " = " + j.dump() + ": must be an array of " +
+                       std::to_string(N) + " numbers");
+    }
+    Eigen::Matrix<double, N, 1> v;
+    for (int k = 0; k < N; ++k) {
+      const std::string entry = field(key) + "[" + std::to_string(k) + "]";
+      if (!j[k].is_number()) throw ModelError(entry + " = " + j[k].dump() + ": must be a number");
+      v[k] = j[k].get<double>();
+      require_finite(entry, v[k]);
+    }
+    return v;
+  }
+  template <int N>
+  Eigen::Matrix<double, N, 1> vector(std::string_view key,
+                                     const Eigen::Matrix<double, N, 1>& fallback) const {
+    return has(key) ? vector<N>(key) : fallback;
+  }
+
+  std::vector<Node> array(std::string_view key) const {
+    const Json& j = get(key);
+    if (!j.is_array()) throw ModelError(field(key) + ": must be an array");
+    std::vector<Node> items;
+    for (size_t k = 0; k < j.size(); ++k) items.emplace_back(j[k], field(key) + "[" + std::to_string(k) + "]");
+    return items;
+  }
+  std::vector<Node> array_or_empty(std::string_view key) const {
+    return has(key) ? array(key) : std::vector<Node>{};
+  }
+
+ private:
+  std::string where() const { return path_.empty() ? "the model" : path_; }
+  const Json& json_;
+  std::string path_;
+};
+
+BodyDescription parse_body(const Node& n) {
+  n.require_object({"name", "mass", "inertia", "position", "euler_parameters", "velocity",
+                    "angular_velocity"});
+  BodyDescription b;
+  b.properties.name = n.text("name");
+  b.properties.mass = n.number("mass");
+  b.properties.principal_inertia = n.vector<3>("inertia");
+  b.initial.position_W = n.vector<3>("position");
+  b.initial.euler_parameters = n.vector<4>("euler_parameters", Vector4(1.0, 0.0, 0.0, 0.0));
+  b.initial.velocity_W = n.vector<3>("velocity", Vector3::Zero());
+  b.initial.angular_velocity_B = n.vector<3>("angular_velocity", Vector3::Zero());
+  validate(b.properties, n.path());
+  validate(b.initial, n.path());
+  return b;
+}
+
+JointDescription parse_joint(const Node& n) {
+  n.require_object({"name", "type", "body_i", "body_j", "point_i", "point_j", "axis_i", "axis_j",
+                    "angle_rate", "angle_acceleration"});
+  JointDescription j;
+  j.name = n.text("name");
+  j.type = joint_type_from_string(n.text("type"), n.field("type"));
+  j.body_i = n.text("body_i");
+  j.body_j = n.text("body_j");
+  j.point_i_B = n.vector<3>("point_i", Vector3::Zero());
+  j.point_j_B = n.vector<3>("point_j", Vector3::Zero());
+  j.axis_i_B = n.vector<3>("axis_i", Vector3::UnitZ());
+  j.axis_j_B = n.vector<3>("axis_j", j.axis_i_B);
+  j.angle.rate = n.number("angle_rate", 0.0);
+  j.angle.acceleration = n.number("angle_acceleration", 0.0);
+  validate(j, n.path());
+  return j;
+}
+
+ForceDescription parse_force(const Node& n) {
+  const std::string type = n.text("type");
+  if (type == "point_load") {
+    n.require_object({"type", "name", "body", "point", "force", "moment"});
+    return PointLoadDescription{n.text("name"), n.text("body"), n.vector<3>("point", Vector3::Zero()),
+                                n.vector<3>("force", Vector3::Zero()),
+                                n.vector<3>("moment", Vector3::Zero())};
+  }
+  if (type == "spring_damper") {
+    n.require_object({"type", "name", "body_i", "body_j", "point_i", "point_j", "stiffness",
+                      "damping", "free_length"});
+    return SpringDamperDescription{
+        n.text("name"), n.text("body_i"), n.text("body_j"), n.vector<3>("point_i", Vector3::Zero()),
+        n.vector<3>("point_j", Vector3::Zero()),
+        {n.number("stiffness"), n.number("damping", 0.0), n.number("free_length")}};
+  }
+  throw ModelError(n.field("type") + " = \"" + type +
+                   "\": unknown force type (known: point_load, spring_damper; gravity is the "
+                   "top-level \"gravity\" vector)");
+}
+
+void parse_initial_conditions(const Node& n, ModelDescription& model) {
+  n.require_object({"hold_positions", "hold_velocities"});
+  for (const Node& h : n.array_or_empty("hold_positions")) {
+    h.require_object({"body", "components"});
+    const std::string body = h.text("body");
+    const Json& components = h.get("components");
+    if (!components.is_array()) {
+      throw ModelError(h.field("components") + " = " + components.dump() +
+                       ": must be an array such as [\"x\", \"y\", \"z\", \"rx\", \"ry\", \"rz\"]");
+    }
+    for (size_t k = 0; k < components.size(); ++k) {
+      if (!components[k].is_string()) {
+        throw ModelError(h.field("components") + "[" + std::to_string(k) + "] = " +
+                         components[k].dump() + ": must be a string");
+      }
+      model.held_positions.push_back({body, components[k].get<std::string>()});
+    }
+  }
+  for (const Node& h : n.array_or_empty("hold_velocities")) {
+    h.require_object({"body", "component", "value"});
+    model.held_velocities.push_back({h.text("body"), h.text("component"), h.number("value")});
+  }
+}
+
+void parse_solver(const Node& n, ModelDescription& model) {
+  n.require_object({"start_time", "end_time", "report_step", "relative_tolerance",
+                    "absolute_tolerance", "initial_step", "minimum_step", "max_steps",
+                    "baumgarte_alpha", "baumgarte_beta"});
+  IntegratorSettings& s = model.solver;
+  s.start_time = n.number("start_time", s.start_time);
+  s.end_time = n.number("end_time", s.end_time);
+  s.report_step = n.number("report_step", s.report_step);
+  s.relative_tolerance = n.number("relative_tolerance", s.relative_tolerance);
+  s.absolute_tolerance = n.number("absolute_tolerance", s.absolute_tolerance);
+  s.initial_step = n.number("initial_step", s.initial_step);
+  s.minimum_step = n.number("minimum_step", s.minimum_step);
+  const double max_steps = n.number("max_steps", static_cast<double>(s.max_steps));
+  if (!(max_steps >= 1.0 && max_steps <= 1e15)) {
+    throw ModelError(n.field("max_steps") + " = " + format_number(max_steps) + ": must be in [1, 1e15]");
+  }
+  s.max_steps = static_cast<long>(max_steps);
+  model.baumgarte.alpha = n.number("baumgarte_alpha", model.baumgarte.alpha);
+  model.baumgarte.beta = n.number("baumgarte_beta", model.baumgarte.beta);
+  validate(s);
+}
+
+}  // namespace
+
+ModelDescription parse_model(std::string_view json_text, std::string_view source) {
+  const std::string prefix = std::string(source) + ": ";
+  Json json;
+  try {
+    json = Json::parse(json_text);
+  } catch (const Json::parse_error& e) {
+    throw ModelError(prefix + "not valid JSON: " + e.what());
+  }
+  try {
+    const Node root(json, "");
+    root.require_object({"name", "gravity", "bodies", "joints", "forces", "initial_conditions",
+                         "solver", "output"});
+    ModelDescription model;
+    model.name = root.text("name", std::string(source));
+    model.notes = root.text("notes", "");
+    model.gravity_W = root.vector<3>("gravity", Vector3::Zero());
+    for (const Node& b : root.array("bodies")) model.bodies.push_back(parse_body(b));
+    for (const Node& j : root.array_or_empty("joints")) model.joints.push_back(parse_joint(j));
+    for (const Node& f : root.array_or_empty("forces")) model.forces.push_back(parse_force(f));
+    if (root.has("initial_conditions")) parse_initial_conditions(root.child("initial_conditions"), model);
+    if (root.has("solver")) parse_solver(root.child("solver"), model);
+    if (root.has("output")) {
+      const Node output = root.child("output");
+      output.require_object({"bodies"});
+      const Json& names = output.get("bodies");
+      if (!names.is_array()) throw ModelError(output.field("bodies") + ": must be an array of body names");
+      for (size_t k = 0; k < names.size(); ++k) {
+        if (!names[k].is_string()) {
+          throw ModelError(output.field("bodies") + "[" + std::to_string(k) + "] = " +
+                           names[k].dump() + ": must be a body name");
+        }
+        model.output_bodies.push_back(names[k].get<std::string>());
+      }
+    } else {
+      for (const BodyDescription& b : model.bodies) model.output_bodies.push_back(b.properties.name);
+    }
+    return model;
+  } catch (const ModelError& e) {
+    throw ModelError(prefix + e.what());
+  }
+}
+
+ModelDescription read_model_file(const std::filesystem::path& path) {
+  std::ifstream file(path, std::ios::binary);
+  if (!file) throw ModelError(path.string() + ": cannot open the model file");
+  std::ostringstream text;
+  text << file.rdbuf();
+  if (file.bad()) throw ModelError(path.string() + ": cannot read the model file");
+  return parse_model(text.str(), path.string());
+}
+
+}  // namespace clearjoint::dynamics

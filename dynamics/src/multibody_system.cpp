@@ -1,0 +1,188 @@
+#include "clearjoint/dynamics/multibody_system.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "clearjoint/dynamics/errors.hpp"
+
+namespace clearjoint::dynamics {
+
+MultibodySystem::MultibodySystem(std::vector<BodyProperties> bodies,
+                                 std::vector<JointEquations> joints,
+                                 std::vector<std::unique_ptr<ForceElement>> force_elements,
+                                 const BaumgarteParameters& baumgarte)
+    : bodies_(std::move(bodies)),
+      forces_(std::move(force_elements)),
+      constraints_(std::move(joints), static_cast<int>(bodies_.size())),
+      baumgarte_(baumgarte),
+      kinematics_(static_cast<int>(bodies_.size())),
+      applied_(kinematics_) {
+  const int n = static_cast<int>(bodies_.size());
+  for (int b = 0; b < n; ++b) validate(bodies_[b], "bodies[" + std::to_string(b) + "]");
+  require_finite("baumgarte.alpha", baumgarte_.alpha);
+  require_finite("baumgarte.beta", baumgarte_.beta);
+  if (baumgarte_.alpha < 0.0 || baumgarte_.beta < 0.0) {
+    throw ModelError("baumgarte = (" + format_number(baumgarte_.alpha) + ", " +
+                     format_number(baumgarte_.beta) + "): alpha and beta must be >= 0");
+  }
+  layout_.body_count = n;
+  for (const auto& element : forces_) {
+    extra_offsets_.push_back(layout_.extra_count);
+    layout_.extra_count += element->extra_state_count();
+  }
+  inverse_mass_.resize(6 * n);
+  for (int b = 0; b < n; ++b) {
+    inverse_mass_.segment<3>(6 * b).setConstant(1.0 / bodies_[b].mass);
+    inverse_mass_.segment<3>(6 * b + 3) = bodies_[b].principal_inertia.cwiseInverse();
+  }
+  const int m = constraints_.equation_count();
+  g_ = Eigen::VectorXd::Zero(6 * n);
+  accelerations_ = Eigen::VectorXd::Zero(6 * n);
+  multipliers_ = Eigen::VectorXd::Zero(m);
+  stabilised_gamma_ = Eigen::VectorXd::Zero(m);
+  schur_rhs_ = Eigen::VectorXd::Zero(m);
+  jacobian_times_inverse_mass_ = Eigen::MatrixXd::Zero(m, 6 * n);
+  schur_ = Eigen::MatrixXd::Zero(m, m);
+  schur_factor_ = Eigen::LDLT<Eigen::MatrixXd>(m);
+}
+
+BodyIndex MultibodySystem::body_index(std::string_view name, std::string_view field) const {
+  if (name == kGroundName) return kGround;
+  for (size_t b = 0; b < bodies_.size(); ++b) {
+    if (bodies_[b].name == name) return static_cast<BodyIndex>(b);
+  }
+  throw ModelError(std::string(field) + " = \"" + std::string(name) +
+                   "\": no body of that name (use \"ground\" for the world frame)");
+}
+
+std::vector<double> MultibodySystem::pack(std::span<const BodyState> states) const {
+  std::vector<double> y(static_cast<size_t>(layout_.size()), 0.0);
+  for (BodyIndex b = 0; b < layout_.body_count; ++b) {
+    const BodyState& s = states[b];
+    double* q = y.data() + layout_.position_offset(b);
+    double* v = y.data() + layout_.velocity_offset(b);
+    Eigen::Map<Vector3>{q} = s.position_W;
+    Eigen::Map<Vector4>{q + 3} = s.euler_parameters;
+    Eigen::Map<Vector3>{v} = s.velocity_W;
+    Eigen::Map<Vector3>{v + 3} = s.angular_velocity_B;
+  }
+  for (size_t e = 0; e < forces_.size(); ++e) {
+    forces_[e]->initial_extra_state(std::span<double>(
+        y.data() + layout_.extra_offset() + extra_offsets_[e],
+        static_cast<size_t>(forces_[e]->extra_state_count())));
+  }
+  return y;
+}
+
+BodyState MultibodySystem::body_state(std::span<const double> y, BodyIndex b) const {
+  const double* q = y.data() + layout_.position_offset(b);
+  const double* v = y.data() + layout_.velocity_offset(b);
+  BodyState s;
+  s.position_W = Eigen::Map<const Vector3>(q);
+  s.euler_parameters = Eigen::Map<const Vector4>(q + 3);
+  s.velocity_W = Eigen::Map<const Vector3>(v);
+  s.angular_velocity_B = Eigen::Map<const Vector3>(v + 3);
+  return s;
+}
+
+void MultibodySystem::derivative(double time, std::span<const double> y, std::span<double> dydt) {
+  const int n = layout_.body_count;
+  kinematics_.update(time, y);
+
+  // Position coordinates: rdot and the Euler-parameter rates.
+  for (BodyIndex b = 0; b < n; ++b) {
+    const double* q = y.data() + layout_.position_offset(b);
+    double* q_rate = dydt.data() + layout_.position_offset(b);
+    const BodyKinematics& k = kinematics_.body(b);
+    Eigen::Map<Vector3>{q_rate} = k.velocity_W;
+    Eigen::Map<Vector4>{q_rate + 3} =
+        euler_parameter_rate(Eigen::Map<const Vector4>(q + 3), k.angular_velocity_B);
+  }
+
+  // g of eq. (35): applied forces, then the moments in the body frame with the gyroscopic term.
+  applied_.clear();
+  std::fill(dydt.begin() + layout_.extra_offset(), dydt.end(), 0.0);
+  for (size_t e = 0; e < forces_.size(); ++e) {
+    const size_t offset = static_cast<size_t>(layout_.extra_offset() + extra_offsets_[e]);
+    const size_t count = static_cast<size_t>(forces_[e]->extra_state_count());
+    const ForceContext context{time, kinematics_, y.subspan(offset, count),
+                               dydt.subspan(offset, count)};
+    forces_[e]->add_forces(context, applied_);
+  }
+  for (BodyIndex b = 0; b < n; ++b) {
+    const BodyKinematics& k = kinematics_.body(b);
+    const Vector3& w = k.angular_velocity_B;
+    g_.segment<3>(6 * b) = applied_.force_W(b);
+    g_.segment<3>(6 * b + 3) = k.rotation.transpose() * applied_.moment_W(b) -
+                               w.cross(bodies_[b].principal_inertia.cwiseProduct(w));  // eq. (35)
+  }
+
+  const Eigen::Map<const Eigen::VectorXd> v(y.data() + layout_.velocity_offset(0),
+                                            layout_.velocity_size());
+  if (constraints_.equation_count() == 0) {
+    accelerations_ = inverse_mass_.cwiseProduct(g_);
+  } else {
+    constraints_.evaluate(time, kinematics_);
+    const Eigen::MatrixXd& J = constraints_.jacobian();
+    // eq. (38): gamma - 2 alpha dPhi/dt - beta^2 Phi, with dPhi/dt = Phi_q v + Phi_t.
+    stabilised_gamma_.noalias() = J * v;
+    stabilised_gamma_ += constraints_.time_derivative();
+    stabilised_gamma_ *= -2.0 * baumgarte_.alpha;
+    stabilised_gamma_ += constraints_.gamma();
+    stabilised_gamma_ -= (baumgarte_.beta * baumgarte_.beta) * constraints_.value();
+
+    jacobian_times_inverse_mass_.noalias() = J * inverse_mass_.asDiagonal();
+    schur_.noalias() = jacobian_times_inverse_mass_ * J.transpose();
+    schur_rhs_.noalias() = jacobian_times_inverse_mass_ * g_;
+    schur_rhs_ -= stabilised_gamma_;
+    schur_factor_.compute(schur_);
+    const auto pivots = schur_factor_.vectorD().cwiseAbs();
+    if (schur_factor_.info() != Eigen::Success ||
+        !(pivots.minCoeff() > kRelativePivotTolerance * pivots.maxCoeff())) {
+      throw SolverError("the constraint Jacobian lost rank at t = " + format_number(time) +
+                        " (smallest/largest pivot of Phi_q M^-1 Phi_q^T = " +
+                        format_number(pivots.minCoeff() / pivots.maxCoeff()) +
+                        "): redundant joints or a singular configuration of the mechanism");
+    }
+    multipliers_ = schur_factor_.solve(schur_rhs_);
+    accelerations_ = g_;
+    accelerations_.noalias() -= J.transpose() * multipliers_;  // eq. (36): M dv/dt = g - Phi_q^T lambda
+    accelerations_.array() *= inverse_mass_.array();
+  }
+  Eigen::Map<Eigen::VectorXd>(dydt.data() + layout_.velocity_offset(0), layout_.velocity_size()) =
+      accelerations_;
+}
+
+double MultibodySystem::kinetic_energy(std::span<const double> y) const {
+  double energy = 0.0;
+  for (BodyIndex b = 0; b < layout_.body_count; ++b) {
+    const double* v = y.data() + layout_.velocity_offset(b);
+    const Eigen::Map<const Vector3> velocity(v);
+    const Eigen::Map<const Vector3> omega(v + 3);
+    energy += 0.5 * bodies_[b].mass * velocity.squaredNorm() +
+              0.5 * omega.dot(bodies_[b].principal_inertia.cwiseProduct(omega));
+  }
+  return energy;
+}
+
+double MultibodySystem::potential_energy(double time, std::span<const double> y) {
+  kinematics_.update(time, y);
+  double energy = 0.0;
+  for (const auto& element : forces_) energy += element->potential_energy(kinematics_);
+  return energy;
+}
+
+ConstraintViolation MultibodySystem::constraint_violation(double time, std::span<const double> y) {
+  kinematics_.update(time, y);
+  if (constraints_.equation_count() == 0) return {};
+  constraints_.evaluate(time, kinematics_);
+  const Eigen::Map<const Eigen::VectorXd> v(y.data() + layout_.velocity_offset(0),
+                                            layout_.velocity_size());
+  ConstraintViolation violation;
+  violation.position = constraints_.value().cwiseAbs().maxCoeff();
+  violation.velocity =
+      (constraints_.jacobian() * v + constraints_.time_derivative()).cwiseAbs().maxCoeff();
+  return violation;
+}
+
+}  // namespace clearjoint::dynamics

@@ -1,0 +1,112 @@
+#include "clearjoint/dynamics/simulation.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+
+#include "clearjoint/dynamics/csv_writer.hpp"
+#include "clearjoint/dynamics/errors.hpp"
+#include "clearjoint/dynamics/reaction_forces.hpp"
+
+namespace clearjoint::dynamics {
+
+namespace {
+
+std::vector<std::string> body_header() {
+  return {"time", "x", "y", "z", "e0", "e1", "e2", "e3", "vx", "vy", "vz", "wx", "wy", "wz",
+          "ax", "ay", "az", "alphax", "alphay", "alphaz"};
+}
+
+std::vector<std::string> reaction_header(const ConstraintSet& constraints) {
+  std::vector<std::string> header{"time"};
+  for (const JointEquations& joint : constraints.joints()) {
+    for (const char* c : {"fx", "fy", "fz", "mx", "my", "mz"}) header.push_back(joint.name() + "." + c);
+  }
+  return header;
+}
+
+}  // namespace
+
+SimulationSummary simulate(const ModelDescription& model,
+                           const std::filesystem::path& output_directory,
+                           const ProgressCallback& progress) {
+  BuiltModel built = build_model(model);
+  MultibodySystem& system = *built.system;
+  std::error_code error;
+  std::filesystem::create_directories(output_directory, error);
+  if (error) {
+    throw std::runtime_error(output_directory.string() + ": cannot create the output directory (" +
+                             error.message() + ")");
+  }
+
+  std::vector<BodyIndex> output_bodies;
+  std::vector<std::unique_ptr<CsvWriter>> body_files;
+  for (const std::string& name : model.output_bodies) {
+    output_bodies.push_back(system.body_index(name, "output.bodies"));
+    body_files.push_back(
+        std::make_unique<CsvWriter>(output_directory / ("body_" + name + ".csv"), body_header()));
+  }
+  CsvWriter energy_file(output_directory / "energy.csv",
+                        {"time", "kinetic", "potential", "total", "position_violation",
+                         "velocity_violation", "euler_norm_drift"});
+  CsvWriter reaction_file(output_directory / "reactions.csv", reaction_header(system.constraints()));
+
+  SimulationSummary summary;
+  summary.initial_conditions = built.initial_conditions;
+  summary.initial_energy = system.kinetic_energy(built.initial_state) +
+                           system.potential_energy(model.solver.start_time, built.initial_state);
+  std::vector<double> rate(built.initial_state.size());
+  std::vector<double> row;
+  const int joint_count = static_cast<int>(system.constraints().joints().size());
+  const double span = model.solver.end_time - model.solver.start_time;
+
+  auto observe = [&](double t, std::span<const double> y) {
+    system.derivative(t, y, rate);  // accelerations and multipliers at the reported state
+    const Eigen::VectorXd& a = system.accelerations();
+    for (size_t k = 0; k < output_bodies.size(); ++k) {
+      const BodyIndex b = output_bodies[k];
+      const BodyKinematics& kin = system.kinematics().body(b);
+      const BodyState s = system.body_state(y, b);
+      const Vector3 angular_acceleration_W = kin.rotation * a.segment<3>(6 * b + 3);
+      row.assign({t});
+      row.insert(row.end(), s.position_W.data(), s.position_W.data() + 3);
+      row.insert(row.end(), s.euler_parameters.data(), s.euler_parameters.data() + 4);
+      row.insert(row.end(), s.velocity_W.data(), s.velocity_W.data() + 3);
+      row.insert(row.end(), kin.angular_velocity_W.data(), kin.angular_velocity_W.data() + 3);
+      row.insert(row.end(), a.data() + 6 * b, a.data() + 6 * b + 3);
+      row.insert(row.end(), angular_acceleration_W.data(), angular_acceleration_W.data() + 3);
+      body_files[k]->write_row(row);
+    }
+
+    row.assign({t});
+    for (int j = 0; j < joint_count; ++j) {
+      const JointReaction r = joint_reaction(system, j);
+      row.insert(row.end(), r.force_W.data(), r.force_W.data() + 3);
+      row.insert(row.end(), r.moment_W.data(), r.moment_W.data() + 3);
+    }
+    reaction_file.write_row(row);
+
+    const double kinetic = system.kinetic_energy(y);
+    const double potential = system.potential_energy(t, y);
+    const double drift = system.kinematics().euler_norm_drift();
+    const ConstraintViolation violation = system.constraint_violation(t, y);
+    const double values[] = {t, kinetic, potential, kinetic + potential, violation.position,
+                             violation.velocity, drift};
+    energy_file.write_row(values);
+    summary.max_energy_change = std::max(summary.max_energy_change,
+                                         std::abs(kinetic + potential - summary.initial_energy));
+    summary.max_position_violation = std::max(summary.max_position_violation, violation.position);
+    summary.max_velocity_violation = std::max(summary.max_velocity_violation, violation.velocity);
+    summary.max_euler_norm_drift = std::max(summary.max_euler_norm_drift, drift);
+    if (progress) progress((t - model.solver.start_time) / span);
+  };
+
+  std::vector<double> y = built.initial_state;
+  summary.integration = integrate(system, y, model.solver, observe);
+  for (auto& file : body_files) file->commit();
+  energy_file.commit();
+  reaction_file.commit();
+  return summary;
+}
+
+}  // namespace clearjoint::dynamics

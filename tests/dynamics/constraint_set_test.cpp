@@ -1,0 +1,64 @@
+#include "clearjoint/dynamics/constraint_set.hpp"
+
+#include <gtest/gtest.h>
+
+#include "clearjoint/dynamics/errors.hpp"
+
+namespace clearjoint::dynamics {
+namespace {
+
+JointDescription revolute(const std::string& name, const Vector3& point_j) {
+  JointDescription j;
+  j.name = name;
+  j.type = JointType::revolute;
+  j.body_i = "ground";
+  j.body_j = "door";
+  j.point_j_B = point_j;
+  return j;
+}
+
+TEST(ConstraintSet, StacksJointsRowByRow) {
+  SystemKinematics k(1);
+  k.set(0, BodyState{});
+  std::vector<JointEquations> joints;
+  joints.push_back(JointEquations::build(revolute("hinge", Vector3::Zero()), kGround, 0, k));
+  JointDescription driver;
+  driver.name = "motor";
+  driver.type = JointType::angle_driver;
+  driver.body_i = "ground";
+  driver.body_j = "door";
+  joints.push_back(JointEquations::build(driver, kGround, 0, k));
+  ConstraintSet set(std::move(joints), 1);
+  EXPECT_EQ(set.equation_count(), 6);
+  EXPECT_EQ(set.first_row(1), 5);
+  set.evaluate(0.0, k);
+  EXPECT_EQ(set.jacobian().rows(), 6);
+  EXPECT_EQ(set.jacobian().cols(), 6);
+  EXPECT_NO_THROW(set.require_independent_rows());
+  EXPECT_EQ(set.describe_row(5), "joint 'motor' (angle_driver), equation 0");
+}
+
+TEST(ConstraintSet, NamesTheJointThatMakesTheConstraintsRedundant) {
+  // Two hinges on the same axis: the second adds no independent equation (all five redundant).
+  SystemKinematics k(1);
+  k.set(0, BodyState{});
+  std::vector<JointEquations> joints;
+  joints.push_back(JointEquations::build(revolute("upper hinge", Vector3(0, 0, 0.5)), kGround, 0, k));
+  JointDescription lower = revolute("lower hinge", Vector3(0, 0, -0.5));
+  lower.point_i_B = Vector3(0, 0, -0.5);
+  lower.point_j_B = Vector3(0, 0, -0.5);
+  joints.push_back(JointEquations::build(lower, kGround, 0, k));
+  ConstraintSet set(std::move(joints), 1);
+  set.evaluate(0.0, k);
+  try {
+    set.require_independent_rows();
+    FAIL() << "redundant hinges were accepted";
+  } catch (const SolverError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("'lower hinge'"), std::string::npos) << message;
+    EXPECT_NE(message.find("adds only 0 independent equation(s) of 5"), std::string::npos) << message;
+  }
+}
+
+}  // namespace
+}  // namespace clearjoint::dynamics

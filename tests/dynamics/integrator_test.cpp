@@ -1,0 +1,147 @@
+#include "clearjoint/dynamics/integrator.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "clearjoint/dynamics/errors.hpp"
+#include "clearjoint/dynamics/model_builder.hpp"
+#include "dynamics_test_support.hpp"
+
+namespace clearjoint::dynamics {
+namespace {
+
+using test::PendulumParameters;
+using test::pendulum_model;
+
+constexpr double kIntegrationTolerance = 1e-10;
+// The period is measured from zero crossings interpolated linearly between samples 1e-3 s apart;
+// near a crossing x'' = 0, so the interpolation error is O(omega^2 dt^3) ~ 1e-9 s and largely the
+// same at every crossing. Over 5 periods (7 s) that leaves 1e-9 relative; 1e-8 is the bound.
+constexpr double kPeriodTolerance = 1e-8;
+constexpr double kEnergyTolerance = 1e-8;
+
+std::vector<double> upward_crossings(BuiltModel& built, const IntegratorSettings& settings) {
+  std::vector<double> crossings;
+  double last_t = 0.0, last_x = 0.0;
+  std::vector<double> y = built.initial_state;
+  integrate(*built.system, y, settings, [&](double t, std::span<const double> state) {
+    const double x = state[0];
+    if (t > settings.start_time && last_x < 0.0 && x >= 0.0) {
+      crossings.push_back(last_t + (t - last_t) * (-last_x) / (x - last_x));
+    }
+    last_t = t;
+    last_x = x;
+  });
+  return crossings;
+}
+
+TEST(Pendulum, SwingsWithTheSmallAnglePeriod) {
+  const PendulumParameters p;  // theta0 = 0.01 rad
+  BuiltModel built = build_model(pendulum_model(p));
+  const double pivot_inertia = p.central_inertia + p.mass * p.length * p.length;
+  const double small_angle_period =
+      2 * M_PI * std::sqrt(pivot_inertia / (p.mass * test::kStandardGravity * p.length));
+  // Finite amplitude: T = T0 (1 + theta0^2/16 + 11 theta0^4/3072 + ...); the theta0^4 term is
+  // 4e-11 here, below the tolerance.
+  const double expected = small_angle_period * (1 + p.initial_angle * p.initial_angle / 16);
+  IntegratorSettings settings;
+  settings.end_time = 5.2 * small_angle_period;
+  settings.report_step = 1e-3;
+  settings.relative_tolerance = settings.absolute_tolerance = kIntegrationTolerance;
+  const std::vector<double> crossings = upward_crossings(built, settings);
+  ASSERT_EQ(crossings.size(), 5u);
+  const double period = (crossings.back() - crossings.front()) / 4.0;
+  EXPECT_NEAR(period / expected, 1.0, kPeriodTolerance);
+  // and the small-angle formula itself is right to the amplitude correction, 6e-6:
+  EXPECT_NEAR(period / small_angle_period, 1.0, 1e-5);
+  EXPECT_GT(std::abs(period / small_angle_period - 1.0), 1e-6);
+}
+
+TEST(Pendulum, KeepsItsEnergyOverLargeSwings) {
+  PendulumParameters p;
+  p.initial_angle = 1.0;
+  BuiltModel built = build_model(pendulum_model(p));
+  MultibodySystem& system = *built.system;
+  std::vector<double> y = built.initial_state;
+  const double E0 = system.kinetic_energy(y) + system.potential_energy(0.0, y);
+  const double energy_scale = p.mass * test::kStandardGravity * p.length;
+  double worst = 0.0;
+  IntegratorSettings settings;
+  settings.end_time = 5.0;
+  settings.report_step = 1e-2;
+  settings.relative_tolerance = settings.absolute_tolerance = kIntegrationTolerance;
+  integrate(system, y, settings, [&](double t, std::span<const double> state) {
+    const double E = system.kinetic_energy(state) + system.potential_energy(t, state);
+    worst = std::max(worst, std::abs(E - E0) / energy_scale);
+  });
+  EXPECT_LT(worst, kEnergyTolerance);
+}
+
+/// A force that turns into NaN after t = 0.05 s, to provoke a non-finite state.
+class PoisonedForce final : public ForceElement {
+ public:
+  std::string_view name() const override { return "poison"; }
+  void add_forces(const ForceContext& context, GeneralisedForces& forces) const override {
+    if (context.time > 0.05) forces.add_force(0, Vector3::Constant(std::numeric_limits<double>::quiet_NaN()));
+  }
+};
+
+TEST(Integrator, StopsWithAClearErrorWhenTheStateStopsBeingFinite) {
+  std::vector<std::unique_ptr<ForceElement>> forces;
+  forces.push_back(std::make_unique<PoisonedForce>());
+  MultibodySystem system({{"ball", 1.0, Vector3(1, 1, 1)}}, {}, std::move(forces), {});
+  std::vector<double> y = system.pack(std::vector<BodyState>{BodyState{}});
+  IntegratorSettings settings;
+  settings.end_time = 1.0;
+  settings.report_step = 0.01;
+  try {
+    integrate(system, y, settings, [](double, std::span<const double>) {});
+    FAIL() << "integration went on with NaN";
+  } catch (const SolverError& e) {
+    const std::string message = e.what();
+    EXPECT_TRUE(message.find("no longer finite") != std::string::npos ||
+                message.find("collapsed") != std::string::npos ||
+                message.find("no acceptable step") != std::string::npos)
+        << message;
+  }
+}
+
+/// A stiff force k x with k so large the explicit stepper cannot keep a step above the minimum.
+class RunawayForce final : public ForceElement {
+ public:
+  std::string_view name() const override { return "runaway"; }
+  void add_forces(const ForceContext& context, GeneralisedForces& forces) const override {
+    const double x = context.kinematics.body(0).position_W.x();
+    forces.add_force(0, Vector3(x * x * x * 1e6, 0.0, 0.0));  // blows up in finite time
+  }
+};
+
+TEST(Integrator, StopsWithAClearErrorWhenTheStepCollapses) {
+  std::vector<std::unique_ptr<ForceElement>> forces;
+  forces.push_back(std::make_unique<RunawayForce>());
+  MultibodySystem system({{"ball", 1.0, Vector3(1, 1, 1)}}, {}, std::move(forces), {});
+  BodyState s;
+  s.position_W.x() = 1.0;
+  std::vector<double> y = system.pack(std::vector<BodyState>{s});
+  IntegratorSettings settings;
+  settings.end_time = 1.0;
+  settings.report_step = 0.01;
+  settings.minimum_step = 1e-9;
+  EXPECT_THROW(integrate(system, y, settings, [](double, std::span<const double>) {}), SolverError);
+}
+
+TEST(IntegratorSettings, RejectNonPositiveToleranceNamingTheField) {
+  IntegratorSettings settings;
+  settings.relative_tolerance = 0.0;
+  try {
+    validate(settings);
+    FAIL();
+  } catch (const ModelError& e) {
+    EXPECT_STREQ(e.what(), "solver.relative_tolerance = 0: must be positive");
+  }
+}
+
+}  // namespace
+}  // namespace clearjoint::dynamics
