@@ -61,6 +61,51 @@ bool enclose_simple_root(const RimDistancePolynomial& g, double theta, int direc
   return false;
 }
 
+/// Newton from `guess`, then the proof of a simple root with sign change `direction`, all from
+/// one libm sine-cosine: later points are reached by angle addition (AngleBase::at).
+bool refine_and_enclose(const RimDistancePolynomial& g, double guess, int direction,
+                        RootEnclosure& out) {
+  AngleBase base(guess);
+  double offset = 0.0;
+  for (int i = 0; i < kMaxNewtonSteps; ++i) {
+    const ValueAndSlope at = g.approximate_near(base, offset);
+    const double step = at.value / at.slope;
+    if (!std::isfinite(step)) break;
+    const double next = offset - step;
+    if (std::fabs(next) > kMaxAngleOffset) {
+      base = AngleBase(base.angle + next);  // rare: a poor first-harmonic guess
+      offset = 0.0;
+      continue;
+    }
+    offset = next;
+    if (std::fabs(step) < 4 * kUnitRoundoff * (1.0 + std::fabs(base.angle))) break;
+  }
+  const double angle = base.angle + offset;
+  // The reported angle is the rounded sum: it is within u |angle| of base + offset.
+  const double rounding = 2 * kUnitRoundoff * std::fabs(angle) + kUnderflowError;
+  // First trial: twice the root's uncertainty, |g error| / |g'|, with g's error budget being the
+  // coefficient errors plus a few ulps of the terms; later trials grow by kEnclosureGrowth.
+  const double slope = std::fabs(g.approximate_near(base, offset).slope);
+  const double term_size = std::fabs(g.k[0].value) + std::fabs(g.k[1].value) +
+                           std::fabs(g.k[2].value) + std::fabs(g.k[3].value) + std::fabs(g.k[4].value);
+  const double budget = g.coefficient_error() + 16 * kUnitRoundoff * term_size;
+  double eps = 16 * kUnitRoundoff * (1.0 + std::fabs(angle));
+  if (slope > 0) eps = std::max(eps, 2 * budget / slope);
+  for (int trial = 0; trial < kMaxEnclosureTrials; ++trial, eps *= kEnclosureGrowth) {
+    if (std::fabs(offset) + eps > kMaxAngleOffset) return false;
+    if (g.value_near(base, offset - eps).sign() == -direction &&
+        g.value_near(base, offset + eps).sign() == direction) {
+      out.angle = angle;
+      // offset -+ eps are rounded too: (1 + 4u) covers it.
+      out.radius = (eps * (1 + 4 * kUnitRoundoff) + rounding) * kSlack;
+      out.multiplicity = 1;
+      out.sign_after = direction;
+      return true;
+    }
+  }
+  return false;
+}
+
 void sort_and_wrap(RimRoots& result) {
   for (int i = 0; i < result.count; ++i) {
     RootEnclosure& root = result.roots[i];
@@ -120,9 +165,7 @@ bool first_harmonic_proof(const RimDistancePolynomial& g, RimRoots& result) {
   const double guesses[2] = {wrap_angle(phi - beta), wrap_angle(phi + beta)};
   const int directions[2] = {+1, -1};
   for (int i = 0; i < 2; ++i) {
-    const double theta = newton(g, guesses[i], guesses[i] - 1.0, guesses[i] + 1.0);
-    if (!enclose_simple_root(g, theta, directions[i], -HUGE_VAL, HUGE_VAL, result.roots[i]))
-      return false;
+    if (!refine_and_enclose(g, guesses[i], directions[i], result.roots[i])) return false;
   }
   result.count = 2;
   result.proved = true;

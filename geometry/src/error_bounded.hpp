@@ -120,3 +120,30 @@ inline BoundedVector3 cross(const BoundedVector3& a, const BoundedVector3& b) {
 inline Bounded squared_norm(const BoundedVector3& a) { return dot(a, a); }
 
 }  // namespace clearjoint::geometry::detail
+
+namespace clearjoint::geometry::detail {
+
+/// a*b == c*d in real arithmetic, decided exactly (Dekker's TwoProduct with Veltkamp's split:
+/// a*b = p + e exactly with |e| <= ulp(p)/2, and that representation is unique, so the real
+/// products are equal iff both parts are). Valid while no product underflows or overflows and
+/// no factor exceeds 2^996 (the split's own overflow); returns false, "not proved equal", out of
+/// that range.
+inline bool exactly_equal_products(double a, double b, double c, double d) {
+  constexpr double kSplitter = 134217729.0;  // 2^27 + 1
+  constexpr double kSafeMagnitude = 0x1p450, kTinyMagnitude = 0x1p-450;
+  auto in_range = [](double x) {
+    const double m = std::fabs(x);
+    return m == 0.0 || (m > kTinyMagnitude && m < kSafeMagnitude);
+  };
+  if (!(in_range(a) && in_range(b) && in_range(c) && in_range(d))) return false;
+  auto two_product_error = [](double x, double y, double p) {
+    const double xs = kSplitter * x, xh = xs - (xs - x), xl = x - xh;
+    const double ys = kSplitter * y, yh = ys - (ys - y), yl = y - yh;
+    return ((xh * yh - p) + xh * yl + xl * yh) + xl * yl;
+  };
+  const double p1 = a * b, p2 = c * d;
+  if (p1 != p2) return false;
+  return two_product_error(a, b, p1) == two_product_error(c, d, p2);
+}
+
+}  // namespace clearjoint::geometry::detail

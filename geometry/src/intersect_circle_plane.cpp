@@ -63,8 +63,14 @@ CirclePlaneIntersection intersect_circle_plane(const Circle3& circle, const Plan
 
   // Filter: every sign the topology needs, proved from the running error bound.
   const bool parallel_proved_false = w.x.sign() != 0 || w.y.sign() != 0 || w.z.sign() != 0;
-  const bool parallel_exact = w.x.value == 0 && w.y.value == 0 && w.z.value == 0 &&
-                              w.x.error == 0 && w.y.error == 0 && w.z.error == 0;
+  // Exactly parallel normals (the paper's aligned joints keep them so): every component of
+  // n_p x n_c is a difference of two products, zero exactly when the products are equal.
+  const Vector3& a = plane.normal;
+  const Vector3& b = circle.normal;
+  const bool parallel_exact = !parallel_proved_false &&
+                              detail::exactly_equal_products(a.y(), b.z(), a.z(), b.y()) &&
+                              detail::exactly_equal_products(a.z(), b.x(), a.x(), b.z()) &&
+                              detail::exactly_equal_products(a.x(), b.y(), a.y(), b.x());
   const Bounded discriminant = s * s * nc2 - r * r * w2;
   detail::CirclePlaneTopologyAndSide decided{};
   bool filtered = false;

@@ -9,9 +9,104 @@ namespace {
 
 BoundedVector3 exact(const Vector3& v) { return {v.x(), v.y(), v.z()}; }
 
+/// Higham's gamma_k = k u / (1 - k u) (Lemma 3.3 counters: products and quotients add their
+/// counts, a sum adds one to each summand, sqrt at most one). Counted on the code below: k0 21,
+/// k1 20, k2 26, k3 39 (squares of the normalised axis components), k4 32, the reach test 8;
+/// gamma_64 leaves room for a miscount. Then |computed - exact| <= gamma_32 * (the same expression evaluated on
+/// absolute values, subtractions turned into additions), provided nothing underflows or
+/// overflows, which the magnitude guard below ensures.
+constexpr double kGamma64 = 64 * kUnitRoundoff / (1 - 64 * kUnitRoundoff);
+/// The absolute-value expressions are themselves rounded (relative 24 u at most): inflate.
+constexpr double kMagnitudeInflation = 1 + 0x1p-40;
+/// Inputs with magnitudes in this range keep every product of up to 8 factors (the longest
+/// here) normal and finite: 2^(8*100) < 2^1023 and 2^(-8*100) > 2^-1022.
+constexpr double kSmallestGuardedInput = 0x1p-100;
+constexpr double kLargestGuardedInput = 0x1p100;
+
+bool magnitude_in_range(double x) {
+  const double m = std::fabs(x);
+  return m == 0.0 || (m >= kSmallestGuardedInput && m <= kLargestGuardedInput);
+}
+bool magnitudes_in_range(const Vector3& v) {
+  return magnitude_in_range(v.x()) && magnitude_in_range(v.y()) && magnitude_in_range(v.z());
+}
+
+bool a_priori_bounds_apply(const Circle3& circle, const Cylinder3& cylinder) {
+  const Vector3 q = circle.center - cylinder.axis_point;  // rounded, but that is fine for a range test
+  return magnitudes_in_range(circle.center) && magnitudes_in_range(cylinder.axis_point) &&
+         magnitudes_in_range(q) && magnitudes_in_range(circle.normal) &&
+         magnitudes_in_range(cylinder.axis) && magnitude_in_range(circle.radius) &&
+         magnitude_in_range(cylinder.radius);
+}
+
+Vector3 abs_cross(const Vector3& a, const Vector3& b) {
+  return {a.y() * b.z() + a.z() * b.y(), a.z() * b.x() + a.x() * b.z(),
+          a.x() * b.y() + a.y() * b.x()};
+}
+
+RimDistancePolynomial rim_distance_polynomial_a_priori(const Circle3& circle,
+                                                       const Cylinder3& cylinder) {
+  // The same formulas as the running-error version, in plain double, each beside its
+  // absolute-value twin (suffix _abs) which bounds its error.
+  const Vector3 q = circle.center - cylinder.axis_point;  // q(1 + delta): |q| is its own bound
+  const Vector3& d = cylinder.axis;
+  const Vector3& n = circle.normal;
+  const Vector3 u = n.cross(Vector3::Unit(frame_axis_index(n)));  // exact
+  const Vector3 v = n.cross(u);
+  const Vector3 qa = q.cwiseAbs(), da = d.cwiseAbs(), na = n.cwiseAbs(), ua = u.cwiseAbs();
+  const Vector3 v_abs = abs_cross(na, ua);
+
+  const double axis_norm2 = d.squaredNorm();
+  const double inverse_axis_norm2 = 1.0 / axis_norm2;
+  const double inverse_u_norm = 1.0 / std::sqrt(u.squaredNorm());
+  const double inverse_v_norm = 1.0 / std::sqrt(v.squaredNorm());
+  const double r = circle.radius, R = cylinder.radius;
+  const double r2 = r * r;
+
+  const Vector3 offset_perp = q.cross(d);
+  const Vector3 offset_perp_abs = abs_cross(qa, da);
+  const double first_cos = offset_perp.dot(u.cross(d)) * inverse_u_norm;
+  const double first_cos_abs = offset_perp_abs.dot(abs_cross(ua, da)) * inverse_u_norm;
+  const double first_sin = offset_perp.dot(v.cross(d)) * inverse_v_norm;
+  const double first_sin_abs = offset_perp_abs.dot(abs_cross(v_abs, da)) * inverse_v_norm;
+  const double along_u = u.dot(d) * inverse_u_norm, along_u_abs = ua.dot(da) * inverse_u_norm;
+  const double along_v = v.dot(d) * inverse_v_norm, along_v_abs = v_abs.dot(da) * inverse_v_norm;
+  const double inverse_n_norm2 = 1.0 / n.squaredNorm();
+  const double tilt_term = n.cross(d).squaredNorm() * inverse_n_norm2;
+  const double tilt_term_abs = abs_cross(na, da).squaredNorm() * inverse_n_norm2;
+  const double radii_term = (r - R) * (r + R);
+
+  RimDistancePolynomial g;
+  const double values[5] = {
+      (offset_perp.squaredNorm() - 0.5 * r2 * tilt_term) * inverse_axis_norm2 + radii_term,
+      2.0 * r * first_cos * inverse_axis_norm2,
+      2.0 * r * first_sin * inverse_axis_norm2,
+      0.5 * r2 * (along_v * along_v - along_u * along_u) * inverse_axis_norm2,
+      -(r2 * along_u * along_v) * inverse_axis_norm2};
+  const double magnitudes[5] = {
+      (offset_perp_abs.squaredNorm() + 0.5 * r2 * tilt_term_abs) * inverse_axis_norm2 +
+          std::fabs(r - R) * (r + R),
+      2.0 * r * first_cos_abs * inverse_axis_norm2,
+      2.0 * r * first_sin_abs * inverse_axis_norm2,
+      0.5 * r2 * (along_v_abs * along_v_abs + along_u_abs * along_u_abs) * inverse_axis_norm2,
+      r2 * along_u_abs * along_v_abs * inverse_axis_norm2};
+  for (int i = 0; i < 5; ++i) {
+    g.k[i] = Bounded(values[i], kGamma64 * magnitudes[i] * kMagnitudeInflation);
+  }
+  return g;
+}
+
 }  // namespace
 
 RimDistancePolynomial rim_distance_polynomial(const Circle3& circle, const Cylinder3& cylinder) {
+  if (a_priori_bounds_apply(circle, cylinder)) {
+    return rim_distance_polynomial_a_priori(circle, cylinder);
+  }
+  return rim_distance_polynomial_running_error(circle, cylinder);
+}
+
+RimDistancePolynomial rim_distance_polynomial_running_error(const Circle3& circle,
+                                                            const Cylinder3& cylinder) {
   // Notation of docs/circle-cylinder.md: q = c - p (rim centre from axis point), d the axis,
   // n the rim normal, u' = n x e_k (exact), v' = n x u'; hats are unit vectors; D = |d|^2.
   const BoundedVector3 q = exact(circle.center) - exact(cylinder.axis_point);
@@ -85,6 +180,39 @@ double RimDistancePolynomial::approximate_newton_step(double theta) const {
   return value / slope;
 }
 
+BoundedSinCos AngleBase::at(double offset) const {
+  // Taylor polynomials of sin (degree 7) and cos (degree 8) at 0 for |x| <= 1/16, in double.
+  // Error: Lagrange remainders |x|^9/9! and |x|^10/10!, plus Horner rounding: every partial
+  // result is at most 1 in magnitude (at most x^2/2 inside), so the cosine is off by < 2u and
+  // the sine by < 3u |x| (the rounded constants 1/6, 1/120, ... add < u x^2); 4u covers both.
+  const double x = offset, x2 = x * x, a = std::fabs(x);
+  const double sin_small = x * (1 - x2 * (1.0 / 6 - x2 * (1.0 / 120 - x2 / 5040)));
+  const double cos_small = 1 - x2 * (0.5 - x2 * (1.0 / 24 - x2 * (1.0 / 720 - x2 / 40320)));
+  const double a3 = a * a, a9 = a3 * a3 * a3;
+  const Bounded s(sin_small, 4 * kUnitRoundoff * a + a9 / 362880 + kUnderflowError);
+  const Bounded c(cos_small, 4 * kUnitRoundoff + a9 * a / 3628800 + kUnderflowError);
+  return {trig.sin * c + trig.cos * s, trig.cos * c - trig.sin * s};
+}
+
+Bounded RimDistancePolynomial::value_near(const AngleBase& base, double offset) const {
+  const BoundedSinCos t = base.at(offset);
+  const Bounded cos2 = (t.cos - t.sin) * (t.cos + t.sin);
+  const Bounded sin2 = Bounded(2.0) * t.sin * t.cos;
+  return k[0] + k[1] * t.cos + k[2] * t.sin + k[3] * cos2 + k[4] * sin2;
+}
+
+ValueAndSlope RimDistancePolynomial::approximate_near(const AngleBase& base, double offset) const {
+  const double x2 = offset * offset;
+  const double sin_small = offset * (1 - x2 * (1.0 / 6 - x2 * (1.0 / 120 - x2 / 5040)));
+  const double cos_small = 1 - x2 * (0.5 - x2 * (1.0 / 24 - x2 * (1.0 / 720 - x2 / 40320)));
+  const double c = base.trig.cos.value * cos_small - base.trig.sin.value * sin_small;
+  const double s = base.trig.sin.value * cos_small + base.trig.cos.value * sin_small;
+  const double cos2 = (c - s) * (c + s), sin2 = 2 * s * c;
+  const double value = k[0].value + k[1].value * c + k[2].value * s + k[3].value * cos2 + k[4].value * sin2;
+  const double slope = k[2].value * c - k[1].value * s + 2 * (k[4].value * cos2 - k[3].value * sin2);
+  return {value, slope};
+}
+
 double RimDistancePolynomial::second_derivative_bound() const {
   // |g''| <= |first harmonic| + 4 |second harmonic|, each harmonic's amplitude bounded by the
   // hypot of its (enclosed) coefficients.
@@ -94,6 +222,24 @@ double RimDistancePolynomial::second_derivative_bound() const {
 }
 
 RimReach rim_reach(const Circle3& circle, const Cylinder3& cylinder) {
+  if (a_priori_bounds_apply(circle, cylinder)) {
+    // |q x d|^2 (rounding chain 6) against (R -+ r)^2 D (chain 6); the difference has chain 7:
+    // error <= gamma_64 (|q x d|_abs^2 + (R -+ r)^2 D), see kGamma64.
+    const Vector3 q = circle.center - cylinder.axis_point;
+    const double offset2 = q.cross(cylinder.axis).squaredNorm();
+    const double offset2_abs = abs_cross(q.cwiseAbs(), cylinder.axis.cwiseAbs()).squaredNorm();
+    const double axis_norm2 = cylinder.axis.squaredNorm();
+    const double R = cylinder.radius, r = circle.radius;
+    if (R > r) {
+      const double gap2 = (R - r) * (R - r) * axis_norm2;
+      if (gap2 - offset2 > kGamma64 * (gap2 + offset2_abs) * kMagnitudeInflation)
+        return RimReach::strictly_inside;
+    }
+    const double reach2 = (R + r) * (R + r) * axis_norm2;
+    if (offset2 - reach2 > kGamma64 * (reach2 + offset2_abs) * kMagnitudeInflation)
+      return RimReach::strictly_outside;
+    return RimReach::undecided;
+  }
   // dist(x, axis) lies within dist(c, axis) +- r for every rim point x. Compare squares:
   // |q x d|^2 against (R -+ r)^2 |d|^2.
   const BoundedVector3 q = exact(circle.center) - exact(cylinder.axis_point);

@@ -13,6 +13,25 @@ namespace clearjoint::geometry::detail {
 ///          = dist(x(theta), axis)^2 - R^2   [m^2],
 /// x(theta) the rim point of CircleFrame angle theta. g > 0: beyond the wall. Each coefficient
 /// carries a rigorous bound on its distance to the exact coefficient of the stored primitives.
+/// Largest offset for which the Taylor sine and cosine of AngleBase are used: their truncation
+/// error is below (1/16)^9 / 9! ~ 4e-17 for the sine, smaller for the cosine.
+inline constexpr double kMaxAngleOffset = 1.0 / 16;
+
+/// An angle with its sine and cosine from libm (2 ulps each, see error_bounded.hpp).
+struct AngleBase {
+  double angle;
+  BoundedSinCos trig;
+  explicit AngleBase(double theta) : angle(theta), trig(sincos_of(theta)) {}
+  /// sin and cos of angle + offset (a real number, not rounded), by angle addition with
+  /// Taylor polynomials of degree 9 and 10 and their remainder bounds.
+  BoundedSinCos at(double offset) const;
+};
+
+struct ValueAndSlope {
+  double value;
+  double slope;
+};
+
 struct RimDistancePolynomial {
   std::array<Bounded, 5> k;
 
@@ -23,11 +42,27 @@ struct RimDistancePolynomial {
   double approximate_derivative(double theta) const;
   /// g / g' at theta from one sine-cosine evaluation (the Newton step).
   double approximate_newton_step(double theta) const;
+  /// g, g' near a base angle whose sine and cosine are known, at the real angle
+  /// base + offset (|offset| <= kMaxAngleOffset): one libm call serves a whole Newton run and
+  /// its proof. See AngleBase.
+  Bounded value_near(const struct AngleBase& base, double offset) const;
+  struct ValueAndSlope approximate_near(const struct AngleBase& base, double offset) const;
+  /// Sum of the coefficient error bounds: a bound on the coefficient part of g's error.
+  double coefficient_error() const {
+    return k[0].error + k[1].error + k[2].error + k[3].error + k[4].error;
+  }
+
   /// Bound on |g''| over all angles: hypot(k1, k2) + 4 hypot(k3, k4) with coefficient errors.
   double second_derivative_bound() const;
 };
 
+/// The coefficients with a priori error bounds (Higham's gamma_k on the absolute-value
+/// expression) in plain double when every input magnitude lies in [2^-100, 2^100]; otherwise
+/// with the running error bound, which also handles underflow and overflow.
 RimDistancePolynomial rim_distance_polynomial(const Circle3& circle, const Cylinder3& cylinder);
+/// The running-error version alone (the fallback, and a cross-check in the tests).
+RimDistancePolynomial rim_distance_polynomial_running_error(const Circle3& circle,
+                                                            const Cylinder3& cylinder);
 
 /// Outcome of the cheap test on the rim's reach before any root finding.
 enum class RimReach {
