@@ -31,7 +31,7 @@ TEST(CsvWriter, WritesRoundTripNumbersOnlyWhenCommitted) {
     EXPECT_FALSE(std::filesystem::exists(dir / "out.csv"));
     csv.commit();
   }
-  EXPECT_EQ(contents(dir / "out.csv"), "time,x\n0.10000000000000001,0.33333333333333331\n");
+  EXPECT_EQ(contents(dir / "out.csv"), "time,x\n0.1,0.3333333333333333\n");
   EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir), {}), 1);
 }
 

@@ -20,7 +20,7 @@ class CsvWriter {
   /// Removes the temporary file unless commit() succeeded.
   ~CsvWriter();
 
-  /// One row; numbers with 17 significant digits (round-trip). Must have the header's width.
+  /// One row; each number in the shortest form that reads back exactly (round-trip). Must have the header's width.
   void write_row(std::span<const double> values);
   /// Flush, close and rename onto the destination. Throws std::runtime_error on failure.
   void commit();
