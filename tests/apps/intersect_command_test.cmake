@@ -2,7 +2,7 @@
 # docs/command-line.md. Run by ctest, one case per test:
 #   cmake -DCLEARJOINT=<program> -DSOURCE_DIR=<repository> -DWORK_DIR=<scratch dir> -DCASE=<case>
 #         -P intersect_command_test.cmake
-# Cases: example, stdin, bad_lines, missing_file, directory, usage, help.
+# Cases: example, stdin, bad_lines, number_ids, missing_file, directory, usage, help.
 # Any failed check ends the script with FATAL_ERROR, which fails the test.
 #
 # Output lines are split by hand (string(FIND) and SUBSTRING), never turned into CMake lists:
@@ -233,6 +233,27 @@ elseif(CASE STREQUAL "bad_lines")
   expect_error(11 "1e999")
   expect_no_error(12)
   expect_in("${ERR}" "bad_lines.jsonl" "stderr")
+
+elseif(CASE STREQUAL "number_ids")
+  # Numbers are written with the shortest text that reads back to the same double: ids given in
+  # that form (subnormals, the largest double, -0.0, 0.1 + 0.2) come back character for character.
+  run("" "${SOURCE_DIR}/tests/apps/number_ids.jsonl")
+  expect_status(0)
+  file(READ "${SOURCE_DIR}/tests/apps/number_ids.jsonl" input)
+  split_lines("${input}" IN SKIP_BLANK)
+  split_lines("${OUT}" OUT_LINE)
+  if(NOT OUT_LINE_COUNT EQUAL IN_COUNT OR IN_COUNT EQUAL 0)
+    fail("${OUT_LINE_COUNT} output lines for ${IN_COUNT} input lines")
+  endif()
+  math(EXPR last "${IN_COUNT} - 1")
+  foreach(k RANGE ${last})
+    string(REGEX MATCH "^{\"id\": ([^,]+)," matched "${IN_${k}}")
+    set(written "${CMAKE_MATCH_1}")
+    string(REGEX MATCH "^{\"id\":([^,]+)," matched "${OUT_LINE_${k}}")
+    if(NOT "${CMAKE_MATCH_1}" STREQUAL "${written}")
+      fail("id ${written} came back as '${CMAKE_MATCH_1}': ${OUT_LINE_${k}}")
+    endif()
+  endforeach()
 
 elseif(CASE STREQUAL "missing_file")
   set(missing "${WORK_DIR}/no-such-rims.jsonl")
