@@ -1,0 +1,101 @@
+// Tests of geometry/src/angles.hpp: wrap_angle maps every finite angle into [0, 2 pi).
+
+#include "angles.hpp"
+
+#include <gtest/gtest.h>
+
+#include <boost/multiprecision/gmp.hpp>
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "mpfr_reference.hpp"
+
+namespace clearjoint::geometry::detail {
+namespace {
+
+using internal_testing::Real;
+using Rational = boost::multiprecision::mpq_rational;
+
+/// |kTwoPi - 2 pi|: kTwoPi is 2 pi rounded to double, below half an ulp of 2 pi (2^-51).
+const double kTwoPiRounding = 0x1p-51;
+/// Half an ulp of numbers in [4, 8): the rounding of the one addition of kTwoPi.
+const double kHalfUlpOfTwoPi = 0x1p-51;
+
+bool in_range(double a) { return a >= 0.0 && a < kTwoPi; }
+
+/// Distance from `wrapped` to the true representative of `angle` modulo the real 2 pi.
+Real distance_to_true_representative(double angle, double wrapped) {
+  return internal_testing::circular_gap(Real(angle), Real(wrapped));
+}
+
+TEST(Angles, KeepsAnglesAlreadyInRangeUnchanged) {
+  for (const double a : {0.0, 1e-300, 4.9e-324, 1.0, 3.0, 6.0, std::nextafter(kTwoPi, 0.0)}) {
+    EXPECT_EQ(wrap_angle(a), a);
+  }
+}
+
+TEST(Angles, MapsTwoPiAndItsMultiplesToZero) {
+  EXPECT_EQ(wrap_angle(kTwoPi), 0.0);
+  EXPECT_EQ(wrap_angle(-kTwoPi), 0.0);
+  EXPECT_EQ(wrap_angle(2 * kTwoPi), 0.0);
+  EXPECT_EQ(wrap_angle(-0.0), 0.0);
+}
+
+TEST(Angles, WrapsNegativeAnglesIntoRangeNextToTheirTrueRepresentative) {
+  for (const double a : {-1.0, -3.0, -6.0, -7.0, -1e-17, -1e-300, -4.9e-324,
+                         -std::nextafter(kTwoPi, 0.0), -std::nextafter(kTwoPi, 10.0), -20.0}) {
+    const double w = wrap_angle(a);
+    EXPECT_TRUE(in_range(w)) << a << " -> " << w;
+    // One subtraction of kTwoPi (its distance to 2 pi) and one rounding per turn.
+    const double turns = std::ceil(std::fabs(a) / kTwoPi) + 1;
+    EXPECT_LE(distance_to_true_representative(a, w), Real(turns * kTwoPiRounding + kHalfUlpOfTwoPi))
+        << a << " -> " << w;
+  }
+  // Negative angles within an ulp of 0 land on 0 or just below 2 pi, never on 2 pi itself.
+  EXPECT_LT(wrap_angle(-1e-17), kTwoPi);
+}
+
+TEST(Angles, WrapsRandomModerateAnglesNextToTheirTrueRepresentative) {
+  std::mt19937_64 rng(23);
+  std::uniform_real_distribution<double> angle(-100.0, 100.0);
+  for (int i = 0; i < 5000; ++i) {
+    const double a = angle(rng);
+    const double w = wrap_angle(a);
+    ASSERT_TRUE(in_range(w)) << a;
+    // Reduction uses the double kTwoPi: each whole turn removed contributes its rounding.
+    const double turns = std::ceil(std::fabs(a) / kTwoPi) + 1;
+    ASSERT_LE(distance_to_true_representative(a, w), Real(turns * kTwoPiRounding + kHalfUlpOfTwoPi))
+        << a;
+  }
+}
+
+TEST(Angles, WrapsHugeAnglesIntoRangeCongruentModuloTheDoubleTwoPi) {
+  // For |angle| >> 2 pi the result is the representative modulo the double kTwoPi (fmod is
+  // exact), up to the rounding of one added kTwoPi; checked in exact rational arithmetic.
+  std::vector<double> angles = {1e6, -1e6, 1e22, -1e22, 1e300, -1e300, 1.7976931348623157e308,
+                                -1.7976931348623157e308, 0x1p60, -0x1p60};
+  std::mt19937_64 rng(29);
+  std::uniform_int_distribution<int> exponent(3, 1000);
+  std::uniform_real_distribution<double> mantissa(-1.0, 1.0);
+  for (int i = 0; i < 200; ++i) angles.push_back(std::ldexp(mantissa(rng), exponent(rng)));
+  const Rational period(kTwoPi);
+  for (const double a : angles) {
+    const double w = wrap_angle(a);
+    ASSERT_TRUE(in_range(w)) << a;
+    const Rational turns = (Rational(a) - Rational(w)) / period;
+    // Nearest integer number of turns: floor(turns + 1/2).
+    const Rational shifted = turns + Rational(1, 2);
+    const boost::multiprecision::mpz_int num = boost::multiprecision::numerator(shifted);
+    const boost::multiprecision::mpz_int den = boost::multiprecision::denominator(shifted);
+    boost::multiprecision::mpz_int n = num / den;  // truncates towards zero
+    if (num < 0 && n * den != num) n -= 1;
+    Rational residual = Rational(a) - Rational(w) - Rational(n) * period;
+    if (residual < 0) residual = -residual;
+    EXPECT_LE(residual, Rational(kHalfUlpOfTwoPi)) << a << " -> " << w;
+  }
+}
+
+}  // namespace
+}  // namespace clearjoint::geometry::detail

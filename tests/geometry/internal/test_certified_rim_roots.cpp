@@ -1,0 +1,310 @@
+// Tests of geometry/src/certified_rim_roots.{hpp,cpp} on hand-made coefficient sets: a proved
+// answer must be right (count, enclosures holding the analytic or MPFR roots, sign_after), and
+// multiple roots or ambiguous coefficients must never be "proved".
+
+#include "certified_rim_roots.hpp"
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <numbers>
+#include <optional>
+#include <random>
+#include <vector>
+
+#include "mpfr_reference.hpp"
+
+namespace clearjoint::geometry::detail {
+namespace {
+
+using internal_testing::Real;
+namespace it = internal_testing;
+using Coefficients = std::array<Real, 5>;
+
+RimDistancePolynomial polynomial(double k0, double k1, double k2, double k3, double k4) {
+  RimDistancePolynomial g;
+  g.k = {Bounded(k0), Bounded(k1), Bounded(k2), Bounded(k3), Bounded(k4)};
+  return g;
+}
+
+Coefficients exact(const RimDistancePolynomial& g) {
+  return {Real(g.k[0].value), Real(g.k[1].value), Real(g.k[2].value), Real(g.k[3].value),
+          Real(g.k[4].value)};
+}
+
+/// Bisection steps of the MPFR reference: a grid cell of 2 pi / 512 shrinks below 1e-20 rad.
+constexpr int kReferenceBisections = 64;
+/// What the reference roots may be off by (the final bisection width), added to each
+/// enclosure radius in the checks; enclosures themselves are at least an ulp (~1e-16) wide.
+const double kReferenceRootError = 1e-20;
+
+/// All roots of the exact trig polynomial k, from a 256-bit grid scan with a rigorous cell
+/// criterion (|g''| <= |k1| + |k2| + 4 (|k3| + |k4|)); nullopt when a cell cannot be decided
+/// (roots too close together for the grid), so the caller skips that polynomial.
+std::optional<std::vector<Real>> reference_roots(const Coefficients& k) {
+  constexpr int kCells = 512;
+  const Real h = it::two_pi() / kCells;
+  const Real start("0.1");  // off every special angle
+  const Real curvature = abs(k[1]) + abs(k[2]) + 4 * (abs(k[3]) + abs(k[4]));
+  std::vector<Real> roots;
+  Real a = start, ga = it::trig_polynomial(k, a);
+  for (int i = 0; i < kCells; ++i) {
+    const Real b = start + h * (i + 1);
+    const Real gb = it::trig_polynomial(k, b);
+    if (ga == 0 || gb == 0) return std::nullopt;
+    if ((ga > 0) == (gb > 0)) {
+      // A root pair inside needs both ends within curvature h^2 / 2 of zero.
+      if (abs(ga) <= curvature * h * h / 2 && abs(gb) <= curvature * h * h / 2) return std::nullopt;
+    } else {
+      // Exactly one root when g' cannot vanish on the cell.
+      if (abs(it::trig_polynomial_derivative(k, a)) <= curvature * h) return std::nullopt;
+      Real low = a, high = b;
+      const bool rising = gb > 0;
+      for (int step = 0; step < kReferenceBisections; ++step) {
+        const Real middle = (low + high) / 2;
+        if ((it::trig_polynomial(k, middle) > 0) == rising) high = middle; else low = middle;
+      }
+      Real root = fmod((low + high) / 2, it::two_pi());
+      roots.push_back(root);
+    }
+    a = b;
+    ga = gb;
+  }
+  return roots;
+}
+
+/// A proved result must list exactly `truth` (each inside an enclosure, every enclosure holding
+/// one), sorted in [0, 2 pi), with sign_after equal to the exact sign of g between roots.
+void expect_proved_roots_match(const RimRoots& result, const std::vector<Real>& truth,
+                               const Coefficients& k) {
+  ASSERT_TRUE(result.proved) << result.failure;
+  ASSERT_EQ(result.count, static_cast<int>(truth.size()));
+  for (int i = 0; i < result.count; ++i) {
+    const RootEnclosure& root = result.roots[i];
+    EXPECT_GE(root.angle, 0.0);
+    EXPECT_LT(root.angle, 2 * std::numbers::pi);
+    EXPECT_EQ(root.multiplicity, 1);
+    if (i > 0) EXPECT_LT(result.roots[i - 1].angle, root.angle);
+    int holding = 0;
+    for (const Real& t : truth)
+      holding += it::circular_gap(Real(root.angle), t) <= Real(root.radius) + kReferenceRootError;
+    EXPECT_EQ(holding, 1) << "enclosure " << root.angle << " +- " << root.radius;
+    // The exact sign of g halfway to the next root.
+    const double next = i + 1 < result.count ? result.roots[i + 1].angle
+                                             : result.roots[0].angle + 2 * std::numbers::pi;
+    const Real middle = (Real(root.angle) + Real(next)) / 2;
+    EXPECT_EQ(root.sign_after, it::sign_of(it::trig_polynomial(k, middle)))
+        << "after root " << root.angle;
+  }
+  for (const Real& t : truth) {
+    bool held = false;
+    for (int i = 0; i < result.count; ++i)
+      held |= it::circular_gap(Real(result.roots[i].angle), t) <=
+              Real(result.roots[i].radius) + kReferenceRootError;
+    EXPECT_TRUE(held) << "root " << t.str(20) << " not enclosed";
+  }
+  if (result.count == 0) {
+    for (int i = 0; i < 16; ++i)
+      EXPECT_EQ(result.sign_without_roots, it::sign_of(it::trig_polynomial(k, Real(0.4 * i))));
+  }
+}
+
+Real wrap(const Real& angle) {
+  Real a = fmod(angle, it::two_pi());
+  if (a < 0) a += it::two_pi();
+  return a;
+}
+
+TEST(CertifiedRimRoots, FindsTheTwoRootsOfAPureFirstHarmonic) {
+  // 1/2 + cos t: cos t = -1/2 at 2 pi / 3 and 4 pi / 3.
+  const RimDistancePolynomial g = polynomial(0.5, 1, 0, 0, 0);
+  expect_proved_roots_match(certified_rim_roots(g), {2 * it::pi() / 3, 4 * it::pi() / 3}, exact(g));
+  // 1 + 3 cos t + 4 sin t = 1 + 5 cos(t - phi), phi = atan2(4, 3): t = phi +- acos(-1/5).
+  const RimDistancePolynomial h = polynomial(1, 3, 4, 0, 0);
+  const Real phi = atan2(Real(4), Real(3)), beta = acos(Real(-1) / 5);
+  expect_proved_roots_match(certified_rim_roots(h), {wrap(phi - beta), wrap(phi + beta)}, exact(h));
+}
+
+TEST(CertifiedRimRoots, ReportsSignAfterOfAPureFirstHarmonic) {
+  const RimRoots roots = certified_rim_roots(polynomial(0.5, 1, 0, 0, 0));
+  ASSERT_TRUE(roots.proved);
+  ASSERT_EQ(roots.count, 2);
+  EXPECT_EQ(roots.roots[0].sign_after, -1);  // at 2 pi / 3, 1/2 + cos t becomes negative
+  EXPECT_EQ(roots.roots[1].sign_after, +1);
+}
+
+TEST(CertifiedRimRoots, FindsTheFourRootsOfAPureSecondHarmonic) {
+  const Real pi = it::pi();
+  // cos 2t: pi/4 + j pi/2.
+  const RimDistancePolynomial a = polynomial(0, 0, 0, 1, 0);
+  expect_proved_roots_match(certified_rim_roots(a), {pi / 4, 3 * pi / 4, 5 * pi / 4, 7 * pi / 4},
+                            exact(a));
+  // 1/2 + cos 2t: cos 2t = -1/2 at pi/3, 2 pi/3, 4 pi/3, 5 pi/3.
+  const RimDistancePolynomial b = polynomial(0.5, 0, 0, 1, 0);
+  expect_proved_roots_match(certified_rim_roots(b), {pi / 3, 2 * pi / 3, 4 * pi / 3, 5 * pi / 3},
+                            exact(b));
+  // -sin 2t: roots on 0, pi/2, pi, 3 pi/2, including the seam of the circle.
+  const RimDistancePolynomial c = polynomial(0, 0, 0, 0, -1);
+  expect_proved_roots_match(certified_rim_roots(c), {Real(0), pi / 2, pi, 3 * pi / 2}, exact(c));
+}
+
+TEST(CertifiedRimRoots, ProvesTheSignOfRootFreePolynomials) {
+  for (const RimDistancePolynomial& g :
+       {polynomial(2, 0.1, 0, 0, 0), polynomial(-2, 0.3, -0.2, 0.1, 0), polynomial(3, 0, 0, 1, 0.5),
+        polynomial(-3, 0.2, 0, 1, 0.5), polynomial(1e-300, 0, 0, 0, 0)}) {
+    expect_proved_roots_match(certified_rim_roots(g), {}, exact(g));
+  }
+}
+
+TEST(CertifiedRimRoots, MatchesTheMultiprecisionRootsOfRandomPolynomials) {
+  std::mt19937_64 rng(211);
+  std::uniform_real_distribution<double> coefficient(-1.0, 1.0);
+  int compared = 0, proved = 0;
+  for (int i = 0; i < 120; ++i) {
+    // Vary the balance between the harmonics so that both tiers are exercised.
+    const double second = (i % 3 == 0) ? 0.05 : (i % 3 == 1 ? 0.5 : 2.0);
+    const RimDistancePolynomial g =
+        polynomial(coefficient(rng), coefficient(rng), coefficient(rng), second * coefficient(rng),
+                   second * coefficient(rng));
+    const std::optional<std::vector<Real>> truth = reference_roots(exact(g));
+    if (!truth) continue;
+    ++compared;
+    const RimRoots result = certified_rim_roots(g);
+    if (!result.proved) continue;
+    ++proved;
+    expect_proved_roots_match(result, *truth, exact(g));
+  }
+  EXPECT_GT(compared, 100);
+  EXPECT_GT(proved, compared * 9 / 10);  // unproved answers are allowed, but must be rare here
+}
+
+TEST(CertifiedRimRoots, NeverProvesADoubleRoot) {
+  // 1 + cos t (double root at pi), 5 + 3 cos t + 4 sin t (double root at atan2(4,3) + pi),
+  // 1 - cos 2t = 2 sin^2 t (double roots at 0 and pi), (cos t - 1/2)^2 (double roots at
+  // +-pi/3), and g = 0 identically.
+  for (const RimDistancePolynomial& g :
+       {polynomial(1, 1, 0, 0, 0), polynomial(5, 3, 4, 0, 0), polynomial(1, 0, 0, -1, 0),
+        polynomial(0.75, -1, 0, 0.5, 0), polynomial(-1, -1, 0, 0, 0), polynomial(0, 0, 0, 0, 0)}) {
+    const RimRoots result = certified_rim_roots(g);
+    EXPECT_FALSE(result.proved) << g.k[0].value << " " << g.k[1].value << " count " << result.count;
+    EXPECT_STRNE(result.failure, "");
+  }
+}
+
+TEST(CertifiedRimRoots, IsNeverWrongOneUlpAwayFromADoubleRoot) {
+  // k0 + cos t with k0 = 1 +- a few ulps: no root above 1, two roots pi +- acos(k0)... below.
+  double up = 1.0, down = 1.0;
+  for (int step = 0; step < 64; ++step) {
+    up = std::nextafter(up, 2.0);
+    down = std::nextafter(down, 0.0);
+    const RimDistancePolynomial above = polynomial(up, 1, 0, 0, 0);
+    const RimRoots none = certified_rim_roots(above);
+    if (none.proved) expect_proved_roots_match(none, {}, exact(above));
+    const RimDistancePolynomial below = polynomial(down, 1, 0, 0, 0);
+    const RimRoots two = certified_rim_roots(below);
+    const Real beta = acos(-Real(down));  // cos t = -down
+    if (two.proved) expect_proved_roots_match(two, {beta, it::two_pi() - beta}, exact(below));
+  }
+}
+
+TEST(CertifiedRimRoots, NeverProvesWhenTheCoefficientErrorsAllowBothAnswers) {
+  // The true k0 is anywhere in 1 +- 1e-10: some members have no root, some two, one a double.
+  RimDistancePolynomial g = polynomial(1, 1, 0, 0, 0);
+  g.k[0].error = 1e-10;
+  EXPECT_FALSE(certified_rim_roots(g).proved);
+  // Same with the uncertainty in the second harmonic.
+  RimDistancePolynomial h = polynomial(1, 1, 0, 0, 0);
+  h.k[3].error = 1e-10;
+  EXPECT_FALSE(certified_rim_roots(h).proved);
+}
+
+TEST(CertifiedRimRoots, EnclosuresHoldTheRootsOfEveryPolynomialWithinTheCoefficientErrors) {
+  // The stored coefficients carry errors: the exact polynomial may be any member of the box.
+  const double kError = 1e-9;
+  for (const std::array<double, 5>& centre :
+       {std::array<double, 5>{0.5, 1, 0.2, 0.1, -0.05}, std::array<double, 5>{0.1, 0.3, -0.2, 1, 0.4}}) {
+    RimDistancePolynomial g = polynomial(centre[0], centre[1], centre[2], centre[3], centre[4]);
+    for (Bounded& k : g.k) k.error = kError;
+    const RimRoots result = certified_rim_roots(g);
+    ASSERT_TRUE(result.proved) << result.failure;
+    for (int corner = 0; corner < 32; corner += 5) {  // a spread of the 32 corners
+      Coefficients k;
+      for (int i = 0; i < 5; ++i)
+        k[i] = Real(centre[i]) + ((corner >> i) & 1 ? Real(kError) : -Real(kError));
+      const std::optional<std::vector<Real>> truth = reference_roots(k);
+      ASSERT_TRUE(truth.has_value());
+      ASSERT_EQ(result.count, static_cast<int>(truth->size()));
+      for (const Real& t : *truth) {
+        bool held = false;
+        for (int i = 0; i < result.count; ++i)
+          held |= it::circular_gap(Real(result.roots[i].angle), t) <=
+                  Real(result.roots[i].radius) + kReferenceRootError;
+        EXPECT_TRUE(held) << "corner " << corner << " root " << t.str(20);
+      }
+    }
+  }
+}
+
+TEST(CertifiedRimRoots, RefusesToProveWithNonFiniteCoefficients) {
+  RimDistancePolynomial g = polynomial(0.5, 1, 0, 0, 0);
+  g.k[2].error = HUGE_VAL;
+  EXPECT_FALSE(certified_rim_roots(g).proved);
+  g = polynomial(0.5, HUGE_VAL, 0, 0, 0);
+  EXPECT_FALSE(certified_rim_roots(g).proved);
+}
+
+TEST(ApproximateRimRoots, FindsTheRootsWithoutClaimingAProof) {
+  const RimDistancePolynomial g = polynomial(0.5, 1, 0, 0, 0);
+  const RimRoots result = approximate_rim_roots(g);
+  EXPECT_FALSE(result.proved);
+  EXPECT_STRNE(result.failure, "");
+  ASSERT_EQ(result.count, 2);
+  // Double Newton converges to the double nearest the root: a few ulps.
+  const double kNewtonAccuracy = 1e-14;
+  EXPECT_NEAR(result.roots[0].angle, 2 * std::numbers::pi / 3, kNewtonAccuracy);
+  EXPECT_NEAR(result.roots[1].angle, 4 * std::numbers::pi / 3, kNewtonAccuracy);
+}
+
+// ---- sort_by_angle ----------------------------------------------------------------------
+
+RimRoots with_angles(std::initializer_list<double> angles, int count) {
+  RimRoots r;
+  int i = 0;
+  for (const double a : angles) {
+    r.roots[i] = {a, 0.001 * (i + 1), i + 1, i % 2 ? -1 : 1};
+    ++i;
+  }
+  r.count = count;
+  return r;
+}
+
+TEST(SortByAngle, SortsTheFirstCountRootsCarryingTheirFields) {
+  RimRoots r = with_angles({3.0, 1.0, 2.0, 0.5}, 3);
+  sort_by_angle(r);
+  EXPECT_EQ(r.roots[0].angle, 1.0);
+  EXPECT_EQ(r.roots[1].angle, 2.0);
+  EXPECT_EQ(r.roots[2].angle, 3.0);
+  EXPECT_EQ(r.roots[3].angle, 0.5);  // beyond count: untouched
+  // Each root keeps its own radius, multiplicity and sign.
+  EXPECT_EQ(r.roots[0].multiplicity, 2);
+  EXPECT_EQ(r.roots[0].radius, 0.002);
+  EXPECT_EQ(r.roots[0].sign_after, -1);
+  EXPECT_EQ(r.roots[2].multiplicity, 1);
+}
+
+TEST(SortByAngle, SortsFourRootsInReverseOrderAndLeavesShortListsAlone) {
+  RimRoots four = with_angles({4.0, 3.0, 2.0, 1.0}, 4);
+  sort_by_angle(four);
+  for (int i = 0; i < 4; ++i) EXPECT_EQ(four.roots[i].angle, 1.0 + i);
+  RimRoots one = with_angles({5.0, 1.0}, 1);
+  sort_by_angle(one);
+  EXPECT_EQ(one.roots[0].angle, 5.0);
+  EXPECT_EQ(one.roots[1].angle, 1.0);
+  RimRoots none = with_angles({5.0, 1.0}, 0);
+  sort_by_angle(none);
+  EXPECT_EQ(none.roots[0].angle, 5.0);
+}
+
+}  // namespace
+}  // namespace clearjoint::geometry::detail

@@ -1,0 +1,270 @@
+// Tests of geometry/src/rim_distance_polynomial.{hpp,cpp}: the coefficients, value and
+// derivative must enclose the exact quantities of the stored primitives (256-bit MPFR from the
+// definitions in primitives.hpp), and rim_reach must never give a wrong decided answer.
+
+#include "rim_distance_polynomial.hpp"
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "mpfr_reference.hpp"
+
+namespace clearjoint::geometry::detail {
+namespace {
+
+using internal_testing::Real;
+using internal_testing::RealVector3;
+namespace it = internal_testing;
+
+struct Pose {
+  Circle3 circle;
+  Cylinder3 cylinder;
+};
+
+/// Length scale of a pose: every coefficient is a sum of terms of at most this magnitude.
+Real magnitude(const Pose& pose) {
+  const RealVector3 q = it::to_real(pose.circle.center) - it::to_real(pose.cylinder.axis_point);
+  const Real s = it::norm(q) + Real(pose.circle.radius) + Real(pose.cylinder.radius);
+  return s * s;
+}
+
+::testing::AssertionResult Encloses(const Bounded& b, const Real& truth, const Real& scale) {
+  if (!b.finite()) return ::testing::AssertionFailure() << "non-finite bound";
+  const Real distance = abs(truth - Real(b.value));
+  if (distance <= Real(b.error) + it::kReferenceRelativeError * scale)
+    return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure() << "value " << b.value << " error " << b.error
+                                       << " misses " << truth.str(30) << " by "
+                                       << (distance - Real(b.error)).str(6);
+}
+
+/// The five exact coefficients, derived independently of the implementation's cross-product
+/// forms: project q, u, v off the axis and expand |q_perp + r (cos u_perp + sin v_perp)|^2 - R^2
+/// (cos^2 = (1 + cos 2t)/2, sin^2 = (1 - cos 2t)/2, 2 sin cos = sin 2t).
+std::array<Real, 5> exact_coefficients(const Pose& pose) {
+  const it::RealFrame frame = it::documented_frame(pose.circle.normal);
+  const RealVector3 d = it::to_real(pose.cylinder.axis);
+  const RealVector3 d_hat = Real(1) / it::norm(d) * d;
+  auto perp = [&](const RealVector3& w) { return w - it::dot(w, d_hat) * d_hat; };
+  const RealVector3 q =
+      perp(it::to_real(pose.circle.center) - it::to_real(pose.cylinder.axis_point));
+  const RealVector3 u = perp(frame.u), v = perp(frame.v);
+  const Real r(pose.circle.radius), R(pose.cylinder.radius);
+  return {it::dot(q, q) + r * r * (it::dot(u, u) + it::dot(v, v)) / 2 - R * R,
+          2 * r * it::dot(q, u), 2 * r * it::dot(q, v),
+          r * r * (it::dot(u, u) - it::dot(v, v)) / 2, r * r * it::dot(u, v)};
+}
+
+Vector3 random_direction(std::mt19937_64& rng) {
+  std::normal_distribution<double> gauss;
+  return Vector3(gauss(rng), gauss(rng), gauss(rng)).normalized();
+}
+
+/// A random pose whose rim comes near the wall, with lengths times `scale`, non-unit normal
+/// and axis (magnitudes 1e-3..1e3), and a tilt between the rim normal and the axis of `tilt`
+/// radians (negative: random tilt).
+Pose random_pose(std::mt19937_64& rng, double scale, double tilt) {
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  std::uniform_real_distribution<double> decade(-3.0, 3.0);
+  const Vector3 axis_dir = random_direction(rng);
+  Vector3 normal_dir = random_direction(rng);
+  if (tilt >= 0) {
+    const Vector3 side = axis_dir.cross(random_direction(rng)).normalized();
+    normal_dir = std::cos(tilt) * axis_dir + std::sin(tilt) * side;
+  }
+  const double R = scale * (1.0 + 0.5 * unit(rng));
+  const double r = R * (0.7 + 0.25 * unit(rng));
+  const Vector3 axis_point = scale * Vector3(unit(rng), unit(rng), unit(rng));
+  // Centre: off the axis by about R - r .. R + r so that the rim usually crosses the wall.
+  const Vector3 off = axis_dir.cross(random_direction(rng)).normalized();
+  const Vector3 centre = axis_point + scale * unit(rng) * 3.0 * axis_dir +
+                         (R + r * unit(rng)) * off;
+  Pose pose;
+  pose.circle = {centre, normal_dir * std::pow(10.0, decade(rng)), r};
+  pose.cylinder = {axis_point, axis_dir * std::pow(10.0, decade(rng)), R};
+  return pose;
+}
+
+std::vector<double> sample_angles(std::mt19937_64& rng) {
+  std::vector<double> angles = {0.0, 1.5707963267948966, 3.141592653589793, 4.71238898038469,
+                                6.283185307179586, -1.0, 1e-300, 100.0};
+  std::uniform_real_distribution<double> angle(0.0, 6.283185307179586);
+  for (int i = 0; i < 24; ++i) angles.push_back(angle(rng));
+  return angles;
+}
+
+/// All checks of one pose: coefficients, value and derivative at many angles, the curvature
+/// bound. `tight` also demands that the bounds are useful (a few hundred ulps of the scale).
+void check_pose(const Pose& pose, std::mt19937_64& rng, bool tight) {
+  const RimDistancePolynomial g = rim_distance_polynomial(pose.circle, pose.cylinder);
+  const std::array<Real, 5> k = exact_coefficients(pose);
+  const Real scale = magnitude(pose);
+  // Tightness: the longest rounding chain is a few dozen operations on terms of size `scale`.
+  const double kUsefulRelativeError = 1e-12;
+  for (int i = 0; i < 5; ++i) {
+    ASSERT_TRUE(Encloses(g.k[i], k[i], scale)) << "k" << i;
+    if (tight) ASSERT_LE(Real(g.k[i].error), kUsefulRelativeError * scale) << "k" << i;
+  }
+  Real max_curvature = 0;
+  for (const double theta : sample_angles(rng)) {
+    const Real t(theta);
+    const Bounded value = g.value(theta);
+    ASSERT_TRUE(Encloses(value, it::rim_distance_excess(pose.circle, pose.cylinder, t), scale))
+        << "g(" << theta << ")";
+    ASSERT_TRUE(Encloses(value, it::trig_polynomial(k, t), scale)) << "g(" << theta << ")";
+    ASSERT_TRUE(Encloses(g.derivative(theta), it::trig_polynomial_derivative(k, t), scale))
+        << "g'(" << theta << ")";
+    if (tight) ASSERT_LE(Real(value.error), kUsefulRelativeError * scale);
+    const Real second = -k[1] * cos(t) - k[2] * sin(t) - 4 * k[3] * cos(2 * t) - 4 * k[4] * sin(2 * t);
+    max_curvature = std::max(max_curvature, abs(second));
+  }
+  EXPECT_GE(Real(g.second_derivative_bound()), max_curvature);
+}
+
+TEST(RimDistancePolynomial, EnclosesTheExactDistanceExcessForRandomPoses) {
+  std::mt19937_64 rng(101);
+  for (int i = 0; i < 60; ++i) check_pose(random_pose(rng, 1.0, -1.0), rng, true);
+}
+
+TEST(RimDistancePolynomial, EnclosesTheExactDistanceExcessAtTinyTilts) {
+  std::mt19937_64 rng(103);
+  for (const double tilt : {0.0, 1e-15, 1e-12, 1e-9, 1e-6}) {
+    for (int i = 0; i < 8; ++i) check_pose(random_pose(rng, 1.0, tilt), rng, true);
+  }
+}
+
+TEST(RimDistancePolynomial, EnclosesTheExactDistanceExcessAtHugeAndTinyScales) {
+  std::mt19937_64 rng(107);
+  for (const double scale : {1e-100, 1e-30, 1e-3, 1e3, 1e30, 1e100}) {
+    for (int i = 0; i < 8; ++i) check_pose(random_pose(rng, scale, i % 2 ? -1.0 : 1e-12), rng, true);
+  }
+}
+
+TEST(RimDistancePolynomial, EnclosesTheExactDistanceExcessWithVeryShortNormals) {
+  // A normal of length ~1e-161: |n|^2 and |n x d|^2 are subnormal, the hardest case for the
+  // error bound of the tilt term (the bound may be loose, or not finite, but must hold).
+  // v' = n x u' scales as |n|^2, so |v'|^2 underflows below |n| ~ 1e-77: not certified then.
+  std::mt19937_64 rng(109);
+  for (const double length : {1e-30, 1e30, 1e-100, 1e-155, 1e-161}) {
+    for (int i = 0; i < 8; ++i) {
+      Pose pose = random_pose(rng, 1.0, -1.0);
+      pose.circle.normal = pose.circle.normal.normalized() * length;
+      const RimDistancePolynomial g = rim_distance_polynomial(pose.circle, pose.cylinder);
+      const std::array<Real, 5> k = exact_coefficients(pose);
+      for (int j = 0; j < 5; ++j) {
+        // Lengths 1e+-30 stay far from under- and overflow: the bound must be finite there.
+        if (std::fabs(std::log10(length)) < 50) ASSERT_TRUE(g.k[j].finite()) << "k" << j;
+        if (!g.k[j].finite()) continue;  // "not certified" is allowed
+        EXPECT_TRUE(Encloses(g.k[j], k[j], magnitude(pose))) << "length " << length << " k" << j;
+      }
+    }
+  }
+}
+
+TEST(RimDistancePolynomial, MatchesTheAnalyticPolynomialOfATiltedCircleCentredOnTheAxis) {
+  // Normal (0,3,4), radius 5, centred on the z axis: x(t) = (-5 sin t, 4 cos t, -3 cos t)
+  // (frame of primitives.hpp: u = (0,4,-3)/5, v = (-1,0,0)), so
+  // g = 25 sin^2 + 16 cos^2 - R^2 = 16 + 9/2 - R^2 - (9/2) cos 2t.
+  const Circle3 circle{{0, 0, 7}, {0, 3, 4}, 5};
+  const Cylinder3 cylinder{{0, 0, -2}, {0, 0, 2}, 4.5};
+  const RimDistancePolynomial g = rim_distance_polynomial(circle, cylinder);
+  const double expected[5] = {16 + 4.5 - 20.25, 0, 0, -4.5, 0};
+  for (int i = 0; i < 5; ++i) {
+    EXPECT_LE(std::fabs(g.k[i].value - expected[i]), g.k[i].error) << "k" << i;
+  }
+}
+
+// ---- rim_reach --------------------------------------------------------------------------
+
+/// Sampled max and min of dist(x(t), axis) - R over the rim, in MPFR.
+std::pair<Real, Real> sampled_excess_range(const Pose& pose) {
+  const it::RealFrame frame = it::documented_frame(pose.circle.normal);
+  Real low = 0, high = 0;
+  const Real step = it::two_pi() / 180;
+  for (int i = 0; i < 180; ++i) {
+    const Real excess =
+        it::axis_distance_excess(it::rim_point(pose.circle, frame, step * i), pose.cylinder);
+    if (i == 0 || excess < low) low = excess;
+    if (i == 0 || excess > high) high = excess;
+  }
+  return {low, high};
+}
+
+void check_reach_is_never_wrong(const Pose& pose) {
+  const RimReach reach = rim_reach(pose.circle, pose.cylinder);
+  const Real centre = it::centre_axis_distance(pose.circle, pose.cylinder);
+  const Real r(pose.circle.radius), R(pose.cylinder.radius);
+  if (reach == RimReach::strictly_inside) {
+    ASSERT_LT(centre + r, R) << "claimed strictly inside";
+    ASSERT_LT(sampled_excess_range(pose).second, 0) << "claimed strictly inside";
+  } else if (reach == RimReach::strictly_outside) {
+    ASSERT_GT(centre - r, R) << "claimed strictly outside";
+    ASSERT_GT(sampled_excess_range(pose).first, 0) << "claimed strictly outside";
+  }
+}
+
+TEST(RimReach, IsNeverWrongOnRandomPoses) {
+  std::mt19937_64 rng(113);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  int inside = 0, outside = 0;
+  for (int i = 0; i < 300; ++i) {
+    Pose pose = random_pose(rng, i % 3 == 0 ? 1e-50 : (i % 3 == 1 ? 1.0 : 1e50), -1.0);
+    // Move the centre across the whole range from the axis to well beyond the wall.
+    const Vector3 d = pose.cylinder.axis.normalized();
+    const Vector3 q = pose.circle.center - pose.cylinder.axis_point;
+    const Vector3 perp = q - q.dot(d) * d;
+    pose.circle.center = pose.cylinder.axis_point + q.dot(d) * d +
+                         perp * (3.0 * unit(rng) * pose.cylinder.radius / perp.norm());
+    check_reach_is_never_wrong(pose);
+    const RimReach reach = rim_reach(pose.circle, pose.cylinder);
+    inside += reach == RimReach::strictly_inside;
+    outside += reach == RimReach::strictly_outside;
+  }
+  // The test would be vacuous if nothing were ever decided.
+  EXPECT_GT(inside, 10);
+  EXPECT_GT(outside, 10);
+}
+
+TEST(RimReach, DecidesClearCasesAndLeavesExactTouchingUndecided) {
+  const Cylinder3 wall{{0, 0, 0}, {0, 0, 1}, 2};
+  // dist(c) + r == R exactly: the rim touches the wall from inside.
+  EXPECT_EQ(rim_reach({{1, 0, 0}, {0, 0, 1}, 1}, wall), RimReach::undecided);
+  // dist(c) - r == R exactly: touches from outside.
+  EXPECT_EQ(rim_reach({{3, 0, 0}, {0, 0, 1}, 1}, wall), RimReach::undecided);
+  EXPECT_EQ(rim_reach({{0.5, 0, 5}, {0, 1, 1}, 1}, wall), RimReach::strictly_inside);
+  EXPECT_EQ(rim_reach({{0, -4, 5}, {1, 1, 1}, 1}, wall), RimReach::strictly_outside);
+  EXPECT_EQ(rim_reach({{2, 0, 0}, {0, 0, 1}, 1}, wall), RimReach::undecided);  // crossing
+  // A rim larger than the wall can never be strictly inside.
+  EXPECT_NE(rim_reach({{0, 0, 0}, {0, 0, 1}, 3}, wall), RimReach::strictly_inside);
+}
+
+TEST(RimReach, IsNeverWrongOneUlpAwayFromTouching) {
+  // Integer poses touching exactly, then R, r and the centre moved by single ulps.
+  const std::vector<Pose> touching = {
+      {{{1, 0, 0}, {0, 0, 1}, 1}, {{0, 0, 0}, {0, 0, 1}, 2}},
+      {{{3, 0, 0}, {0, 0, 1}, 1}, {{0, 0, 0}, {0, 0, 1}, 2}},
+      {{{3, 4, 9}, {1, 2, 3}, 2}, {{0, 0, -5}, {0, 0, 3}, 7}},   // dist 5: 5 + 2 = 7
+      {{{3, 4, 9}, {1, 2, 3}, 2}, {{0, 0, -5}, {0, 0, 3}, 3}},   // 5 - 2 = 3
+      {{{6, 8, 1}, {1, 0, 0}, 1e-3}, {{0, 0, 0}, {0, 0, 1e-9}, 10 - 1e-3}},
+  };
+  for (const Pose& base : touching) {
+    for (int which = 0; which < 3; ++which) {
+      for (const double direction : {-HUGE_VAL, HUGE_VAL}) {
+        Pose pose = base;
+        for (int step = 0; step < 4; ++step) {
+          if (which == 0) pose.cylinder.radius = std::nextafter(pose.cylinder.radius, direction);
+          if (which == 1) pose.circle.radius = std::nextafter(pose.circle.radius, direction);
+          if (which == 2) pose.circle.center.x() = std::nextafter(pose.circle.center.x(), direction);
+          check_reach_is_never_wrong(pose);
+        }
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace clearjoint::geometry::detail
