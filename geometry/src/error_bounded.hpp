@@ -11,7 +11,8 @@
 //   |fl(x op y) - (x op y)| <= u |fl(x op y)| + eta,   u = 2^-53, eta = 2^-1074,
 // where eta covers gradual underflow. The error fields are themselves rounded; each update is
 // multiplied by kErrorInflation, which exceeds the worst relative shortfall of the <= 8 rounded
-// operations that compute it ((1 - u)^-8 < 1 + 9u < 1 + 2^-48). Overflow shows up as a
+// operations that compute it ((1 - u)^-8 < 1 + 9u < 1 + 2^-48), and every operation adds
+// absolute underflow terms (magnified by the divisor in a division). Overflow shows up as a
 // non-finite value or error, and callers treat that as "not certified".
 
 #include <cmath>
@@ -68,7 +69,9 @@ inline Bounded operator/(Bounded a, Bounded b) {
   const double v = a.value / b.value;
   const double denominator = std::fabs(b.value) - b.error * kErrorInflation;
   if (!(denominator > 0.0)) return {v, HUGE_VAL};  // divisor may be zero: no bound
-  const double e = (a.error + std::fabs(v) * b.error) / denominator;
+  // The numerator's own roundings may be absolute (underflow, kUnderflowError each) and the
+  // division magnifies them: add them before dividing.
+  const double e = (a.error + std::fabs(v) * b.error + 4 * kUnderflowError) / denominator;
   return {v, (e * kErrorInflation + rounding_error(v) + kUnderflowError) * kErrorInflation};
 }
 inline Bounded& operator+=(Bounded& a, Bounded b) { return a = a + b; }

@@ -77,8 +77,9 @@ int frame_axis_index(const Vector3& normal) {
 CircleFrame frame_of(const Circle3& circle) {
   // u' = normal x e_k is exact in double (its components are +-normal_j or 0), see primitives.hpp.
   const Vector3 u_unnormalised = circle.normal.cross(Vector3::Unit(frame_axis_index(circle.normal)));
-  const Vector3 u = u_unnormalised.normalized();
-  const Vector3 v = circle.normal.normalized().cross(u);
+  // stableNormalized: the squared norm of a 1e-200 or 1e200 vector under- or overflows.
+  const Vector3 u = u_unnormalised.stableNormalized();
+  const Vector3 v = circle.normal.stableNormalized().cross(u);
   return {u, v};
 }
 

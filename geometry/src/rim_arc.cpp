@@ -12,7 +12,7 @@ double RimArc::sweep() const noexcept {
 }
 
 double RimArc::middle() const noexcept {
-  if (full) return std::numbers::pi;
+  if (full) return detail::wrap_angle(begin + std::numbers::pi);
   return detail::wrap_angle(begin + 0.5 * sweep());
 }
 

@@ -26,14 +26,16 @@ struct RimCrossing {
 };
 
 /// The rim points with angle in the counter-clockwise sweep from `begin` to `end` (radians in
-/// [0, 2 pi); end < begin when the arc passes through angle 0). `full` marks the whole rim, in which
-/// case begin and end are 0 and 2 pi.
+/// [0, 2 pi); end < begin when the arc passes through angle 0). `full` marks the whole rim
+/// except, at most, one touching point: begin == end is that point's angle (a rim touching the
+/// wall from outside), or begin = 0, end = 2 pi when nothing touches.
 struct RimArc {
   double begin = 0.0;
   double end = 0.0;
   bool full = false;
 
-  /// Angle of the arc's middle, in [0, 2 pi) (paper eqs. 13 and 18 take the contact point there).
+  /// Angle of the arc's middle, in [0, 2 pi) (paper eqs. 13 and 18 take the contact point there);
+  /// for a full arc, opposite its begin.
   double middle() const noexcept;
   /// Angular length in [0, 2 pi].
   double sweep() const noexcept;
