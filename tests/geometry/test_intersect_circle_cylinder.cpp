@@ -1,0 +1,570 @@
+// intersect_circle_cylinder: a journal rim against the bearing's lateral wall (paper eqs. 16-21).
+//
+// The degenerate configurations are built from small integers (exactly representable), with a
+// closed-form answer written next to each. The rim parametrisation is the documented one
+// (frame_of), recomputed independently in long double by geometry_test_support.hpp. For a rim in
+// the plane z = c with normal (0,0,1) it is x(theta) = centre + r (-sin theta, cos theta, 0); for
+// the tilted rim (normal (0,3,4), radius 5, centre on the z axis) it is
+// x(theta) = (-5 sin, 4 cos, -3 cos), whose distance to the z axis is sqrt(16 + 9 sin^2): an ellipse
+// with semi-axes 5 and 4 seen along the axis.
+
+#include "clearjoint/geometry/intersect_circle_cylinder.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <random>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "geometry_test_support.hpp"
+#include "multiprecision_reference.hpp"
+
+namespace clearjoint::geometry {
+namespace {
+
+using Topology = CircleCylinderTopology;
+using testing::circular_distance;
+using testing::documented_angle;
+using testing::kTwoPi;
+
+constexpr double kEps = std::numeric_limits<double>::epsilon();
+constexpr double kPi = std::numbers::pi;
+/// documented_angle is evaluated in long double and rounded to double: below one ulp of 2 pi.
+constexpr double kExpectedAngleError = 2 * kEps * kTwoPi;
+/// Expected points are exact small integers or closed forms rounded once.
+constexpr double kExpectedPointUlps = 2 * kEps;
+/// A certified enclosure of a transversal crossing of unit-size integer data wider than this
+/// would be useless (double precision gives ~1e-16; four orders of magnitude of slack).
+constexpr double kUsefulRelativeError = 1e-12;
+/// Rotating, translating or decimally rescaling rounds every input once; a transversal crossing
+/// (condition number below ~10 here) then moves by a few ulps of the scale: 64 ulps.
+constexpr double kMotionRelativeTolerance = 64 * kEps;
+
+bool is_proved(const Certificate& c) { return c.level != Certainty::uncertain; }
+
+const Cylinder3 kZ2{Vector3(0, 0, 0), Vector3(0, 0, 1), 2.0};
+Cylinder3 z_cylinder(double radius) { return {Vector3(0, 0, 0), Vector3(0, 0, 1), radius}; }
+Circle3 flat_rim(const Vector3& center, double radius) { return {center, Vector3(0, 0, 1), radius}; }
+Circle3 tilted_rim() { return {Vector3(0, 0, 0), Vector3(0, 3, 4), 5.0}; }
+
+struct ExpectedCrossing {
+  Vector3 point;
+  int multiplicity;
+};
+
+/// Long-double distance from the documented rim point at `angle` to the cylinder's axis, minus R.
+long double excess_at(const Circle3& c, const Cylinder3& w, double angle) {
+  const Vector3 p = testing::documented_point(c, angle);
+  const Eigen::Matrix<long double, 3, 1> d = (p - w.axis_point).cast<long double>();
+  const Eigen::Matrix<long double, 3, 1> a = w.axis.cast<long double>();
+  return d.cross(a).norm() / a.norm() - w.radius;
+}
+
+/// Checks one answer against the closed form: topology, crossings (sorted by angle, each enclosing
+/// the true one), root_count, and the arcs (count, endpoints on crossings, middles outside).
+void expect_answer(const CircleCylinderIntersection& r, const Circle3& c, const Cylinder3& w,
+                   Topology topology, std::vector<ExpectedCrossing> expected, int arcs,
+                   double scale) {
+  ASSERT_TRUE(is_proved(r.certificate)) << r.certificate.reason;
+  EXPECT_EQ(r.topology, topology);
+  std::sort(expected.begin(), expected.end(), [&](const auto& a, const auto& b) {
+    return documented_angle(c, a.point) < documented_angle(c, b.point);
+  });
+  ASSERT_EQ(r.crossing_count, static_cast<int>(expected.size()));
+  int roots = 0;
+  for (std::size_t i = 0; i < expected.size(); ++i) {
+    const RimCrossing& x = r.crossings[i];
+    SCOPED_TRACE("crossing " + std::to_string(i));
+    EXPECT_EQ(x.multiplicity, expected[i].multiplicity);
+    roots += expected[i].multiplicity;
+    EXPECT_LE((x.point - expected[i].point).norm(), x.point_error + kExpectedPointUlps * scale)
+        << x.point.transpose() << " vs " << expected[i].point.transpose();
+    const double angle = documented_angle(c, expected[i].point);
+    EXPECT_LE(circular_distance(x.angle, angle), x.angle_error + kExpectedAngleError)
+        << x.angle << " vs " << angle;
+    EXPECT_GE(x.angle, 0.0);
+    EXPECT_LT(x.angle, kTwoPi);
+    if (i > 0) {
+      EXPECT_LE(r.crossings[i - 1].angle, x.angle);
+    }
+    if (x.multiplicity == 1) {
+      EXPECT_LE(x.angle_error, kUsefulRelativeError);
+      EXPECT_LE(x.point_error, kUsefulRelativeError * scale);
+    }
+  }
+  EXPECT_EQ(r.root_count(), roots);
+  ASSERT_EQ(r.arc_count, arcs);
+  for (int k = 0; k < r.arc_count; ++k) {
+    const RimArc& arc = r.penetration_arcs[k];
+    SCOPED_TRACE("arc " + std::to_string(k));
+    if (r.crossing_count == 0) {
+      EXPECT_TRUE(arc.full);
+      continue;
+    }
+    EXPECT_FALSE(arc.full);
+    // Both ends are crossings.
+    auto on_a_crossing = [&](double a) {
+      for (int i = 0; i < r.crossing_count; ++i) {
+        if (circular_distance(a, r.crossings[i].angle) <= r.crossings[i].angle_error) return true;
+      }
+      return false;
+    };
+    EXPECT_TRUE(on_a_crossing(arc.begin)) << arc.begin;
+    EXPECT_TRUE(on_a_crossing(arc.end)) << arc.end;
+    // Its middle is strictly outside (checked where the arc is wider than the enclosures).
+    if (arc.begin != arc.end && arc.sweep() > 1e-6) {
+      EXPECT_GT(excess_at(c, w, arc.middle()), 0.0L) << "middle " << arc.middle();
+    }
+  }
+}
+
+// ---- one case per topology ---------------------------------------------------------------------
+
+TEST(CircleCylinder, ReportsAFlatRimWellInsideAsInside) {
+  const Circle3 rim = flat_rim(Vector3(0, 0, 5), 1.0);
+  expect_answer(intersect_circle_cylinder(rim, kZ2), rim, kZ2, Topology::inside, {}, 0, 8);
+}
+
+TEST(CircleCylinder, ReportsAnObliqueOffsetRimInsideAsInside) {
+  // Centre 0.5 off the axis, radius 1: no point farther than 1.5 < 2.
+  const Circle3 rim{Vector3(0.5, 0, -3), Vector3(1, 1, 1), 1.0};
+  expect_answer(intersect_circle_cylinder(rim, kZ2), rim, kZ2, Topology::inside, {}, 0, 8);
+}
+
+TEST(CircleCylinder, ReportsACoaxialLargerRimAsOutsideWithTheWholeRimPenetrating) {
+  const Circle3 rim = flat_rim(Vector3(0, 0, 1), 3.0);
+  expect_answer(intersect_circle_cylinder(rim, kZ2), rim, kZ2, Topology::outside, {}, 1, 8);
+}
+
+TEST(CircleCylinder, ReportsAFarAwayRimAsOutside) {
+  const Circle3 rim{Vector3(10, 0, 0), Vector3(1, 2, 3), 1.0};
+  expect_answer(intersect_circle_cylinder(rim, kZ2), rim, kZ2, Topology::outside, {}, 1, 16);
+}
+
+TEST(CircleCylinder, FindsTwoTransversalCrossingsAndTheArcBetweenThemThroughAngleZero) {
+  // Circles of radius 5 with centres 6 apart meet at (3, +-4, 0). The part outside the wall is
+  // the far side, through (11, 0, 0) at theta = 3 pi / 2; it runs from theta = pi - asin(3/5)
+  // over 3 pi/2 to asin(3/5), wrapping through 0.
+  const Circle3 rim = flat_rim(Vector3(6, 0, 0), 5.0);
+  const Cylinder3 wall = z_cylinder(5.0);
+  const CircleCylinderIntersection r = intersect_circle_cylinder(rim, wall);
+  expect_answer(r, rim, wall, Topology::crossing, {{Vector3(3, 4, 0), 1}, {Vector3(3, -4, 0), 1}},
+                1, 16);
+  const RimArc& arc = r.penetration_arcs[0];
+  const double slack = r.crossings[0].angle_error + r.crossings[1].angle_error + kExpectedAngleError;
+  EXPECT_LE(circular_distance(arc.middle(), 1.5 * kPi), slack);
+  EXPECT_NEAR(arc.sweep(), kPi + 2 * std::asin(0.6), slack);
+}
+
+TEST(CircleCylinder, FindsFourCrossingsWhenEllipseBulgesOutOnBothSides) {
+  // R = 4.5: 16 + 9 sin^2 = 20.25, sin = +-sqrt(17)/6. Outside where |sin| is larger: two arcs,
+  // centred on theta = pi/2 (point (-5,0,0)) and 3 pi/2 (point (5,0,0)).
+  const Circle3 rim = tilted_rim();
+  const Cylinder3 wall = z_cylinder(4.5);
+  const double s = std::sqrt(17.0) / 6, c = std::sqrt(1 - s * s);
+  std::vector<ExpectedCrossing> expected;
+  for (double sn : {s, -s}) {
+    for (double cs : {c, -c}) expected.push_back({Vector3(-5 * sn, 4 * cs, -3 * cs), 1});
+  }
+  const CircleCylinderIntersection r = intersect_circle_cylinder(rim, wall);
+  expect_answer(r, rim, wall, Topology::crossing, expected, 2, 8);
+  double slack = kExpectedAngleError;
+  for (int i = 0; i < r.crossing_count; ++i) slack += r.crossings[i].angle_error;
+  std::vector<double> middles = {r.penetration_arcs[0].middle(), r.penetration_arcs[1].middle()};
+  std::sort(middles.begin(), middles.end());
+  EXPECT_NEAR(middles[0], kPi / 2, slack);
+  EXPECT_NEAR(middles[1], 1.5 * kPi, slack);
+}
+
+TEST(CircleCylinder, FindsAnInternalTangencyAsOneDoubleRoot) {
+  // Centre (1,0,0), radius 1, wall radius 2: touches at (2,0,0), everything else inside.
+  const Circle3 rim = flat_rim(Vector3(1, 0, 0), 1.0);
+  expect_answer(intersect_circle_cylinder(rim, kZ2), rim, kZ2, Topology::crossing,
+                {{Vector3(2, 0, 0), 2}}, 0, 8);
+}
+
+TEST(CircleCylinder, FindsAnExternalTangencyAsOneDoubleRootWithTheRestOutside) {
+  // Centre (3,0,0), radius 1: touches the wall at (2,0,0) from outside.
+  const Circle3 rim = flat_rim(Vector3(3, 0, 0), 1.0);
+  const CircleCylinderIntersection r = intersect_circle_cylinder(rim, kZ2);
+  expect_answer(r, rim, kZ2, Topology::crossing, {{Vector3(2, 0, 0), 2}}, 1, 8);
+}
+
+TEST(CircleCylinder, FindsTwoTangenciesFromOutsideWhenTheWallFitsTheEllipsesMinorAxis) {
+  // R = 4: touches at sin = 0, i.e. (0,4,-3) and (0,-4,3); the rest is outside, in two arcs.
+  const Circle3 rim = tilted_rim();
+  const Cylinder3 wall = z_cylinder(4.0);
+  expect_answer(intersect_circle_cylinder(rim, wall), rim, wall, Topology::crossing,
+                {{Vector3(0, 4, -3), 2}, {Vector3(0, -4, 3), 2}}, 2, 8);
+}
+
+TEST(CircleCylinder, FindsTwoTangenciesFromInsideWhenTheWallFitsTheEllipsesMajorAxis) {
+  // R = 5: touches at sin = +-1, i.e. (-5,0,0) and (5,0,0); the rest is inside.
+  const Circle3 rim = tilted_rim();
+  const Cylinder3 wall = z_cylinder(5.0);
+  expect_answer(intersect_circle_cylinder(rim, wall), rim, wall, Topology::crossing,
+                {{Vector3(-5, 0, 0), 2}, {Vector3(5, 0, 0), 2}}, 0, 8);
+}
+
+TEST(CircleCylinder, ReportsACoaxialRimOfTheWallsRadiusAsOnTheSurface) {
+  const Circle3 rim = flat_rim(Vector3(0, 0, 3), 2.0);
+  const CircleCylinderIntersection r = intersect_circle_cylinder(rim, kZ2);
+  ASSERT_TRUE(is_proved(r.certificate)) << r.certificate.reason;
+  EXPECT_EQ(r.topology, Topology::on_surface);
+  EXPECT_EQ(r.arc_count, 0);  // no rim point is strictly outside
+}
+
+TEST(CircleCylinder, ReportsOnTheSurfaceWithNonUnitAndOppositeNormalAndAxis) {
+  for (const Vector3& normal : {Vector3(0, 0, 1), Vector3(0, 0, -2), Vector3(0, 0, 0.125)}) {
+    for (const Vector3& axis : {Vector3(0, 0, 7), Vector3(0, 0, -7), Vector3(0, 0, 1e-3)}) {
+      for (const Vector3& axis_point : {Vector3(0, 0, -1), Vector3(0, 0, 1e6)}) {
+        const Circle3 rim{Vector3(0, 0, 3), normal, 2.0};
+        const Cylinder3 wall{axis_point, axis, 2.0};
+        const CircleCylinderIntersection r = intersect_circle_cylinder(rim, wall);
+        ASSERT_TRUE(is_proved(r.certificate)) << r.certificate.reason;
+        EXPECT_EQ(r.topology, Topology::on_surface)
+            << normal.transpose() << " / " << axis.transpose() << " / " << axis_point.transpose();
+        EXPECT_EQ(r.arc_count, 0);
+      }
+    }
+  }
+}
+
+// ---- ulp-level perturbations of each degenerate case -------------------------------------------
+
+struct Perturbed {
+  std::string what;
+  Circle3 rim;
+  Cylinder3 wall;
+  Topology topology;
+  int crossings;   // distinct
+  int roots;       // with multiplicity
+  int arcs;
+};
+
+std::vector<Perturbed> degenerate_cases_and_their_ulp_neighbours() {
+  const double up1 = std::nextafter(1.0, 2.0), down1 = std::nextafter(1.0, 0.0);
+  const double up2 = std::nextafter(2.0, 3.0), down2 = std::nextafter(2.0, 1.0);
+  const double up3 = std::nextafter(3.0, 4.0), down3 = std::nextafter(3.0, 2.0);
+  const double up4 = std::nextafter(4.0, 5.0), down4 = std::nextafter(4.0, 3.0);
+  const double up5 = std::nextafter(5.0, 6.0), down5 = std::nextafter(5.0, 4.0);
+  const double tiny = std::numeric_limits<double>::denorm_min();
+  std::vector<Perturbed> v;
+  // Internal tangency: centre (1,0,0), radius 1, wall 2. Farthest reach = centre x + radius.
+  v.push_back({"internal tangency", flat_rim({1, 0, 0}, 1), kZ2, Topology::crossing, 1, 2, 0});
+  v.push_back({"internal, centre out", flat_rim({up1, 0, 0}, 1), kZ2, Topology::crossing, 2, 2, 1});
+  v.push_back({"internal, centre in", flat_rim({down1, 0, 0}, 1), kZ2, Topology::inside, 0, 0, 0});
+  v.push_back({"internal, radius up", flat_rim({1, 0, 0}, up1), kZ2, Topology::crossing, 2, 2, 1});
+  v.push_back({"internal, radius down", flat_rim({1, 0, 0}, down1), kZ2, Topology::inside, 0, 0, 0});
+  v.push_back({"internal, wall up", flat_rim({1, 0, 0}, 1), z_cylinder(up2), Topology::inside, 0, 0, 0});
+  v.push_back({"internal, wall down", flat_rim({1, 0, 0}, 1), z_cylinder(down2), Topology::crossing, 2, 2, 1});
+  // External tangency: centre (3,0,0), radius 1. Nearest reach = centre x - radius.
+  v.push_back({"external tangency", flat_rim({3, 0, 0}, 1), kZ2, Topology::crossing, 1, 2, 1});
+  v.push_back({"external, centre away", flat_rim({up3, 0, 0}, 1), kZ2, Topology::outside, 0, 0, 1});
+  v.push_back({"external, centre in", flat_rim({down3, 0, 0}, 1), kZ2, Topology::crossing, 2, 2, 1});
+  v.push_back({"external, wall up", flat_rim({3, 0, 0}, 1), z_cylinder(up2), Topology::crossing, 2, 2, 1});
+  v.push_back({"external, wall down", flat_rim({3, 0, 0}, 1), z_cylinder(down2), Topology::outside, 0, 0, 1});
+  // The tilted rim: dist^2 = 16 + 9 sin^2 in [16, 25].
+  v.push_back({"ellipse, R = 4", tilted_rim(), z_cylinder(4), Topology::crossing, 2, 4, 2});
+  v.push_back({"ellipse, R = 4 + ulp", tilted_rim(), z_cylinder(up4), Topology::crossing, 4, 4, 2});
+  v.push_back({"ellipse, R = 4 - ulp", tilted_rim(), z_cylinder(down4), Topology::outside, 0, 0, 1});
+  v.push_back({"ellipse, R = 5", tilted_rim(), z_cylinder(5), Topology::crossing, 2, 4, 0});
+  v.push_back({"ellipse, R = 5 + ulp", tilted_rim(), z_cylinder(up5), Topology::inside, 0, 0, 0});
+  v.push_back({"ellipse, R = 5 - ulp", tilted_rim(), z_cylinder(down5), Topology::crossing, 4, 4, 2});
+  // A larger n_y tilts the rim more: the minor axis 5 * 4/|n| shrinks below 4.
+  Circle3 steeper = tilted_rim();
+  steeper.normal.y() = std::nextafter(3.0, 4.0);
+  v.push_back({"ellipse R = 4, rim one ulp steeper", steeper, z_cylinder(4), Topology::crossing, 4, 4, 2});
+  Circle3 flatter = tilted_rim();
+  flatter.normal.y() = std::nextafter(3.0, 2.0);
+  v.push_back({"ellipse R = 4, rim one ulp flatter", flatter, z_cylinder(4), Topology::outside, 0, 0, 1});
+  // On the surface, and its neighbours.
+  const Circle3 coaxial = flat_rim({0, 0, 3}, 2);
+  v.push_back({"coaxial, radius up", flat_rim({0, 0, 3}, up2), kZ2, Topology::outside, 0, 0, 1});
+  v.push_back({"coaxial, radius down", flat_rim({0, 0, 3}, down2), kZ2, Topology::inside, 0, 0, 0});
+  v.push_back({"coaxial, wall up", coaxial, z_cylinder(up2), Topology::inside, 0, 0, 0});
+  v.push_back({"coaxial, wall down", coaxial, z_cylinder(down2), Topology::outside, 0, 0, 1});
+  // Centre moved off the axis by the smallest subnormal: crosses twice, at right angles to the shift.
+  v.push_back({"coaxial, centre off by a subnormal", flat_rim({tiny, 0, 3}, 2), kZ2,
+               Topology::crossing, 2, 2, 1});
+  // Rim tipped by a subnormal about the y axis: its shadow is an ellipse with semi-axes 2 (along y)
+  // and 2 cos(tilt) < 2: two tangencies from inside at (0, +-2, 3).
+  v.push_back({"coaxial, rim tipped by a subnormal", Circle3{{0, 0, 3}, {tiny, 0, 1}, 2}, kZ2,
+               Topology::crossing, 2, 4, 0});
+  // Wall axis tipped by a subnormal about the rim's centre: the rim's shadow on the wall's
+  // cross-section is the same kind of ellipse, touching at (+-2, 0, 3).
+  v.push_back({"coaxial, wall tipped by a subnormal", coaxial,
+               Cylinder3{{0, 0, 3}, {0, tiny, 1}, 2}, Topology::crossing, 2, 4, 0});
+  return v;
+}
+
+TEST(CircleCylinder, DecidesEveryUlpPerturbationOfTheDegenerateCasesCorrectly) {
+  for (const Perturbed& c : degenerate_cases_and_their_ulp_neighbours()) {
+    SCOPED_TRACE(c.what);
+    const CircleCylinderIntersection r = intersect_circle_cylinder(c.rim, c.wall);
+    ASSERT_TRUE(is_proved(r.certificate)) << "the exact fallback is on: " << r.certificate.reason;
+    EXPECT_EQ(r.topology, c.topology);
+    EXPECT_EQ(r.crossing_count, c.crossings);
+    EXPECT_EQ(r.root_count(), c.roots);
+    EXPECT_EQ(r.arc_count, c.arcs);
+    for (int i = 0; i < r.crossing_count; ++i) {
+      EXPECT_TRUE(r.crossings[i].multiplicity == 1 || r.crossings[i].multiplicity == 2);
+    }
+  }
+}
+
+TEST(CircleCylinder, AgreesWithTheMultiprecisionReferenceOnTheDecidablePerturbations) {
+  // The reference cannot decide exact tangencies (it says so); where it can, it must agree with
+  // the closed forms above, which makes both trustworthy.
+  int decided = 0;
+  for (const Perturbed& c : degenerate_cases_and_their_ulp_neighbours()) {
+    SCOPED_TRACE(c.what);
+    const auto ref = test::reference::reference_circle_cylinder(c.rim, c.wall);
+    if (ref.ambiguous) continue;  // tangencies, and the subnormal offsets (below its precision)
+    ++decided;
+    EXPECT_EQ(ref.topology, c.topology);
+    EXPECT_EQ(ref.root_count(), c.roots);
+    EXPECT_EQ(static_cast<int>(ref.roots.size()), c.crossings);
+    EXPECT_EQ(static_cast<int>(ref.outside_arcs.size()), c.arcs);
+  }
+  EXPECT_GE(decided, 15);
+}
+
+TEST(CircleCylinder, NeverCertifiesAWrongAnswerWithoutTheExactFallback) {
+  IntersectionOptions options;
+  options.exact_fallback = false;
+  int proved = 0;
+  for (const Perturbed& c : degenerate_cases_and_their_ulp_neighbours()) {
+    SCOPED_TRACE(c.what);
+    const CircleCylinderIntersection r = intersect_circle_cylinder(c.rim, c.wall, options);
+    if (!is_proved(r.certificate)) {
+      EXPECT_STRNE(r.certificate.reason, "");
+      continue;
+    }
+    ++proved;
+    EXPECT_EQ(r.topology, c.topology);
+    EXPECT_EQ(r.crossing_count, c.crossings);
+    EXPECT_EQ(r.root_count(), c.roots);
+    EXPECT_EQ(r.arc_count, c.arcs);
+  }
+  RecordProperty("proved_without_exact_fallback", proved);
+}
+
+// ---- swapped conventions -----------------------------------------------------------------------
+
+struct Case {
+  Circle3 rim;
+  Cylinder3 wall;
+};
+
+std::vector<Case> representative_cases() {
+  return {{flat_rim({0, 0, 5}, 1), kZ2},
+          {flat_rim({0, 0, 1}, 3), kZ2},
+          {flat_rim({6, 0, 0}, 5), z_cylinder(5)},
+          {tilted_rim(), z_cylinder(4.5)},
+          {flat_rim({1, 0, 0}, 1), kZ2},
+          {flat_rim({3, 0, 0}, 1), kZ2},
+          {tilted_rim(), z_cylinder(4)},
+          {tilted_rim(), z_cylinder(5)},
+          {flat_rim({0, 0, 3}, 2), Cylinder3{{0, 0, -1}, {0, 0, 7}, 2}}};
+}
+
+void expect_same_sets(const CircleCylinderIntersection& a, const CircleCylinderIntersection& b) {
+  ASSERT_TRUE(is_proved(a.certificate) && is_proved(b.certificate));
+  EXPECT_EQ(a.topology, b.topology);
+  EXPECT_EQ(a.root_count(), b.root_count());
+  EXPECT_EQ(a.arc_count, b.arc_count);
+  ASSERT_EQ(a.crossing_count, b.crossing_count);
+  for (int i = 0; i < a.crossing_count; ++i) {
+    double best = std::numeric_limits<double>::infinity();
+    int match = 0;
+    for (int j = 0; j < b.crossing_count; ++j) {
+      const double d = (a.crossings[i].point - b.crossings[j].point).norm();
+      if (d < best) best = d, match = j;
+    }
+    EXPECT_LE(best, a.crossings[i].point_error + b.crossings[match].point_error) << i;
+    EXPECT_EQ(a.crossings[i].multiplicity, b.crossings[match].multiplicity) << i;
+  }
+}
+
+TEST(CircleCylinder, GivesTheSameSetsWhenTheRimNormalIsNegated) {
+  for (const Case& c : representative_cases()) {
+    Circle3 flipped = c.rim;
+    flipped.normal = -flipped.normal;
+    expect_same_sets(intersect_circle_cylinder(c.rim, c.wall), intersect_circle_cylinder(flipped, c.wall));
+  }
+}
+
+TEST(CircleCylinder, GivesTheSameAnswerWhenTheAxisIsNegatedOrRescaled) {
+  for (const Case& c : representative_cases()) {
+    const CircleCylinderIntersection a = intersect_circle_cylinder(c.rim, c.wall);
+    for (double factor : {-1.0, 7.0, -0.125, 3e5}) {
+      Cylinder3 w = c.wall;
+      w.axis *= factor;
+      const CircleCylinderIntersection b = intersect_circle_cylinder(c.rim, w);
+      SCOPED_TRACE(factor);
+      expect_same_sets(a, b);
+      // The rim and its frame are unchanged, so the angles are too.
+      for (int i = 0; i < a.crossing_count && i < b.crossing_count; ++i) {
+        EXPECT_LE(circular_distance(a.crossings[i].angle, b.crossings[i].angle),
+                  a.crossings[i].angle_error + b.crossings[i].angle_error);
+      }
+    }
+  }
+}
+
+TEST(CircleCylinder, DoesNotDependOnWhichPointOfTheAxisIsStored) {
+  for (const Case& c : representative_cases()) {
+    for (double steps : {-3.0, 1.0, 1000.0}) {
+      Cylinder3 w = c.wall;
+      w.axis_point += steps * w.axis;  // exact: small integers
+      expect_same_sets(intersect_circle_cylinder(c.rim, c.wall), intersect_circle_cylinder(c.rim, w));
+    }
+  }
+}
+
+// ---- rigid motions and units -------------------------------------------------------------------
+
+TEST(CircleCylinder, IsInvariantUnderRandomRigidMotions) {
+  constexpr unsigned kSeed = 2017;
+  RecordProperty("seed", static_cast<int>(kSeed));
+  std::mt19937_64 rng(kSeed);
+  // Transversal or clearly separated cases: a motion rounds the inputs, which may legitimately
+  // resolve an exact tangency either way.
+  const std::vector<Case> cases = {{flat_rim({0, 0, 5}, 1), kZ2},
+                                   {flat_rim({0, 0, 1}, 3), kZ2},
+                                   {flat_rim({6, 0, 0}, 5), z_cylinder(5)},
+                                   {tilted_rim(), z_cylinder(4.5)},
+                                   {Circle3{{0.5, 0, -3}, {1, 1, 1}, 1}, kZ2}};
+  for (int trial = 0; trial < 50; ++trial) {
+    const testing::RigidMotion m = testing::random_motion(rng, 100.0);
+    for (const Case& c : cases) {
+      const CircleCylinderIntersection a = intersect_circle_cylinder(c.rim, c.wall);
+      const CircleCylinderIntersection b = intersect_circle_cylinder(m(c.rim), m(c.wall));
+      ASSERT_TRUE(is_proved(a.certificate) && is_proved(b.certificate));
+      const double scale = m(c.rim).center.norm() + c.rim.radius + m(c.wall).axis_point.norm() + c.wall.radius;
+      EXPECT_EQ(a.topology, b.topology) << trial;
+      EXPECT_EQ(a.arc_count, b.arc_count) << trial;
+      ASSERT_EQ(a.crossing_count, b.crossing_count) << trial;
+      for (int i = 0; i < a.crossing_count; ++i) {
+        double best = std::numeric_limits<double>::infinity();
+        for (int j = 0; j < b.crossing_count; ++j) {
+          best = std::min(best, (m.point(a.crossings[i].point) - b.crossings[j].point).norm());
+        }
+        EXPECT_LE(best, kMotionRelativeTolerance * scale) << trial;
+      }
+    }
+  }
+}
+
+TEST(CircleCylinder, KeepsEveryDegenerateCaseUnderAnExactChangeOfUnits) {
+  // Small integers times 1000, 1e6 or powers of two stay exact: the tangencies and the rim on the
+  // wall survive in millimetres, at kilometre size and at micrometre size (2^-20 ~ 1e-6).
+  for (double factor : {1000.0, 1e6, 0.0009765625 /* 2^-10 */, 9.5367431640625e-07 /* 2^-20 */}) {
+    for (const Case& c : representative_cases()) {
+      SCOPED_TRACE(factor);
+      const CircleCylinderIntersection a = intersect_circle_cylinder(c.rim, c.wall);
+      const CircleCylinderIntersection b =
+          intersect_circle_cylinder(testing::scaled(c.rim, factor), testing::scaled(c.wall, factor));
+      ASSERT_TRUE(is_proved(b.certificate)) << b.certificate.reason;
+      EXPECT_EQ(a.topology, b.topology);
+      EXPECT_EQ(a.arc_count, b.arc_count);
+      ASSERT_EQ(a.crossing_count, b.crossing_count);
+      for (int i = 0; i < a.crossing_count; ++i) {
+        EXPECT_EQ(a.crossings[i].multiplicity, b.crossings[i].multiplicity);
+        EXPECT_LE(circular_distance(a.crossings[i].angle, b.crossings[i].angle),
+                  a.crossings[i].angle_error + b.crossings[i].angle_error);
+        EXPECT_LE((a.crossings[i].point * factor - b.crossings[i].point).norm(),
+                  a.crossings[i].point_error * factor + b.crossings[i].point_error);
+      }
+    }
+  }
+}
+
+TEST(CircleCylinder, KeepsTransversalCasesUnderADecimalChangeOfUnits) {
+  const Circle3 rim = tilted_rim();
+  const Cylinder3 wall = z_cylinder(4.5);
+  const CircleCylinderIntersection a = intersect_circle_cylinder(rim, wall);
+  for (double factor : {1e-3, 1e-6, 1e3, 1e5}) {
+    SCOPED_TRACE(factor);
+    const CircleCylinderIntersection b =
+        intersect_circle_cylinder(testing::scaled(rim, factor), testing::scaled(wall, factor));
+    ASSERT_TRUE(is_proved(b.certificate));
+    EXPECT_EQ(b.topology, Topology::crossing);
+    EXPECT_EQ(b.arc_count, 2);
+    ASSERT_EQ(b.crossing_count, 4);
+    for (int i = 0; i < 4; ++i) {
+      EXPECT_LE((a.crossings[i].point * factor - b.crossings[i].point).norm(),
+                a.crossings[i].point_error * factor + b.crossings[i].point_error +
+                    kMotionRelativeTolerance * 10 * factor);
+    }
+  }
+}
+
+TEST(CircleCylinder, HandlesAnAlignedJournalRimAtTheBearingWallOfTable2) {
+  // Paper Table 2: bearing radius 10 mm, journal radius 9.9 mm. The journal pushed sideways by the
+  // full clearance along x: its rim touches the wall at (10 mm, 0, z) from inside. With the
+  // clearance written as 2^-7 m-scale binary fractions the data stay exact: R = 10/1024,
+  // r = 9.9/1024 is not exact, so use r = R - c with c = 2^-14 (exact), centre x = c.
+  const double R = 10.0 / 1024, c = 1.0 / 16384, r = R - c;
+  ASSERT_EQ(r + c, R);  // all three exact
+  const Cylinder3 bearing{Vector3(0, 0, 0), Vector3(0, 0, 1), R};
+  const Circle3 rim{Vector3(c, 0, 0.0098), Vector3(0, 0, 1), r};
+  const CircleCylinderIntersection touch = intersect_circle_cylinder(rim, bearing);
+  expect_answer(touch, rim, bearing, Topology::crossing, {{Vector3(R, 0, 0.0098), 2}}, 0, 0.02);
+  Circle3 deeper = rim;
+  deeper.center.x() = std::nextafter(c, 1.0);
+  const CircleCylinderIntersection in = intersect_circle_cylinder(deeper, bearing);
+  ASSERT_TRUE(is_proved(in.certificate));
+  EXPECT_EQ(in.topology, Topology::crossing);
+  EXPECT_EQ(in.crossing_count, 2);
+  EXPECT_EQ(in.arc_count, 1);
+}
+
+// ---- options and bad input ---------------------------------------------------------------------
+
+TEST(CircleCylinder, SaysUncertainWithoutBoundsWhenTheCertificateIsSwitchedOff) {
+  IntersectionOptions options;
+  options.certify = false;
+  const CircleCylinderIntersection r =
+      intersect_circle_cylinder(tilted_rim(), z_cylinder(4.5), options);
+  EXPECT_EQ(r.certificate.level, Certainty::uncertain);
+  EXPECT_NE(std::string(r.certificate.reason).find("certificate switched off"), std::string::npos)
+      << r.certificate.reason;
+  // A plain double pipeline still gets a well-conditioned case right, but claims no bound.
+  EXPECT_EQ(r.topology, Topology::crossing);
+  ASSERT_EQ(r.crossing_count, 4);
+  for (int i = 0; i < 4; ++i) {
+    EXPECT_EQ(r.crossings[i].angle_error, kNoErrorBound);
+    EXPECT_EQ(r.crossings[i].point_error, kNoErrorBound);
+  }
+}
+
+TEST(CircleCylinder, ValidatesBothArguments) {
+  const Circle3 rim = flat_rim({0, 0, 0}, 1);
+  Circle3 zero_normal = rim;
+  zero_normal.normal = Vector3::Zero();
+  EXPECT_THROW(intersect_circle_cylinder(zero_normal, kZ2), InvalidInput);
+  Circle3 inf_radius = rim;
+  inf_radius.radius = std::numeric_limits<double>::infinity();
+  EXPECT_THROW(intersect_circle_cylinder(inf_radius, kZ2), InvalidInput);
+  EXPECT_THROW(intersect_circle_cylinder(rim, Cylinder3{{0, 0, 0}, {0, 0, 0}, 2}), InvalidInput);
+  EXPECT_THROW(intersect_circle_cylinder(rim, Cylinder3{{0, 0, 0}, {0, 0, 1}, 0}), InvalidInput);
+  EXPECT_THROW(intersect_circle_cylinder(
+                   rim, Cylinder3{{std::numeric_limits<double>::quiet_NaN(), 0, 0}, {0, 0, 1}, 2}),
+               InvalidInput);
+  try {
+    intersect_circle_cylinder(rim, Cylinder3{{0, 0, 0}, {0, 0, 1}, -2});
+    ADD_FAILURE() << "accepted a negative wall radius";
+  } catch (const InvalidInput& e) {
+    EXPECT_NE(std::string(e.what()).find("radius"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("-2"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace clearjoint::geometry

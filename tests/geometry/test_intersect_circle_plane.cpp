@@ -1,0 +1,506 @@
+// intersect_circle_plane: a journal rim against a bearing base plane (paper eqs. 11-15).
+//
+// Every degenerate configuration below is built from small integers, so it is exactly what the
+// stored doubles say (a tangency is a true tangency), and ulp-level perturbations of it have a
+// known answer. The parametrisation of the rim is the documented one (frame_of), recomputed
+// independently in long double by geometry_test_support.hpp.
+
+#include "clearjoint/geometry/intersect_circle_plane.hpp"
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <random>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "geometry_test_support.hpp"
+#include "multiprecision_reference.hpp"
+
+namespace clearjoint::geometry {
+namespace {
+
+using testing::circular_distance;
+using testing::documented_angle;
+using testing::kTwoPi;
+
+constexpr double kEps = std::numeric_limits<double>::epsilon();
+/// documented_angle is evaluated in long double (64-bit mantissa) and rounded to double: its error
+/// is below one ulp of 2 pi. Added to the kernel's own enclosure when checking it.
+constexpr double kExpectedAngleError = 2 * kEps * kTwoPi;
+/// Expected points are exact small integers or closed forms rounded once: one ulp of the scale.
+constexpr double kExpectedPointUlps = 2 * kEps;
+/// A certified enclosure wider than this (relative to the configuration's size, or radians) would
+/// be useless to the contact model: a well-conditioned crossing of unit-size integer data is known
+/// to ~1e-16; 1e-12 leaves four orders of magnitude for the error analysis.
+constexpr double kUsefulRelativeError = 1e-12;
+/// Rotating and translating a configuration rounds every input once (relative 2^-53 of the scale);
+/// a transversal crossing moves by at most its condition number (below 10 for the crossing angles
+/// used here) times that, plus rounding of the rotated output: 64 ulps of the scale.
+constexpr double kMotionRelativeTolerance = 64 * kEps;
+
+bool is_proved(const Certificate& c) { return c.level != Certainty::uncertain; }
+
+double scale_of(const Circle3& c, const Plane3& p) {
+  return c.center.norm() + c.radius + p.point.norm();
+}
+
+/// A proved crossing must enclose the true one, with a useful error bound.
+void expect_crossing_at(const RimCrossing& x, const Circle3& c, const Vector3& expected_point,
+                        int expected_multiplicity, double scale) {
+  EXPECT_EQ(x.multiplicity, expected_multiplicity);
+  EXPECT_LE((x.point - expected_point).norm(), x.point_error + kExpectedPointUlps * scale)
+      << "point " << x.point.transpose() << ", expected " << expected_point.transpose();
+  const double expected_angle = documented_angle(c, expected_point);
+  EXPECT_LE(circular_distance(x.angle, expected_angle), x.angle_error + kExpectedAngleError)
+      << "angle " << x.angle << ", expected " << expected_angle;
+  EXPECT_GE(x.angle, 0.0);
+  EXPECT_LT(x.angle, kTwoPi);
+}
+
+void expect_useful_bounds(const RimCrossing& x, double scale) {
+  EXPECT_LE(x.point_error, kUsefulRelativeError * scale);
+  EXPECT_LE(x.angle_error, kUsefulRelativeError);
+}
+
+/// The expected crossings in documented-angle order.
+std::vector<Vector3> sorted_by_angle(const Circle3& c, std::vector<Vector3> points) {
+  std::sort(points.begin(), points.end(), [&](const Vector3& a, const Vector3& b) {
+    return documented_angle(c, a) < documented_angle(c, b);
+  });
+  return points;
+}
+
+const Plane3 kGround{Vector3(0, 0, 0), Vector3(0, 0, 1)};       // z = 0, positive side z > 0
+const Plane3 kGroundDown{Vector3(0, 0, 0), Vector3(0, 0, -1)};  // positive side z < 0
+
+// The tilted rim: normal (0,3,4), radius 5. Its z extent about the centre is 5 * 3/5 = 3, its
+// lowest point is centre + (0, 4, -3) and its highest centre + (0, -4, 3).
+Circle3 tilted_rim(double center_z) { return {Vector3(0, 0, center_z), Vector3(0, 3, 4), 5.0}; }
+
+// ---- one case per topology ---------------------------------------------------------------------
+
+TEST(CirclePlane, ReportsDisjointOnThePositiveSideWithTheWholeRimPenetrating) {
+  const Circle3 rim{Vector3(0, 0, 5), Vector3(0, 0, 1), 1.0};
+  const CirclePlaneIntersection r = intersect_circle_plane(rim, kGround);
+  ASSERT_TRUE(is_proved(r.certificate)) << r.certificate.reason;
+  EXPECT_EQ(r.topology, CirclePlaneTopology::disjoint);
+  EXPECT_EQ(r.side, 1);
+  EXPECT_EQ(r.crossing_count, 0);
+  EXPECT_TRUE(r.has_penetration);
+  EXPECT_TRUE(r.penetration.full);
+  EXPECT_LE(std::abs(r.max_signed_distance - 5.0), r.max_signed_distance_error);
+  EXPECT_LE(r.max_signed_distance_error, kUsefulRelativeError * 5);
+}
+
+TEST(CirclePlane, ReportsDisjointOnTheNegativeSideWithoutPenetration) {
+  const Circle3 rim{Vector3(0, 0, -5), Vector3(0, 0, 1), 1.0};
+  const CirclePlaneIntersection r = intersect_circle_plane(rim, kGround);
+  ASSERT_TRUE(is_proved(r.certificate)) << r.certificate.reason;
+  EXPECT_EQ(r.topology, CirclePlaneTopology::disjoint);
+  EXPECT_EQ(r.side, -1);
+  EXPECT_EQ(r.crossing_count, 0);
+  EXPECT_FALSE(r.has_penetration);
+  EXPECT_LE(std::abs(r.max_signed_distance + 5.0), r.max_signed_distance_error);
+}
+
+TEST(CirclePlane, ReportsATiltedRimClearOfThePlaneAsDisjointWithItsHighestPoint) {
+  // Centre z = 4: the rim spans z in [1, 7].
+  const CirclePlaneIntersection r = intersect_circle_plane(tilted_rim(4), kGround);
+  ASSERT_TRUE(is_proved(r.certificate)) << r.certificate.reason;
+  EXPECT_EQ(r.topology, CirclePlaneTopology::disjoint);
+  EXPECT_EQ(r.side, 1);
+  EXPECT_LE(std::abs(r.max_signed_distance - 7.0), r.max_signed_distance_error);
+}
+
+TEST(CirclePlane, FindsTheIntegerTangencyFromThePositiveSide) {
+  // Centre z = 3: the rim spans z in [0, 6] and touches z = 0 at (0, 4, 0).
+  const Circle3 rim = tilted_rim(3);
+  const CirclePlaneIntersection r = intersect_circle_plane(rim, kGround);
+  ASSERT_TRUE(is_proved(r.certificate)) << r.certificate.reason;
+  EXPECT_EQ(r.topology, CirclePlaneTopology::tangent);
+  EXPECT_EQ(r.side, 1);
+  ASSERT_EQ(r.crossing_count, 1);
+  expect_crossing_at(r.crossings[0], rim, Vector3(0, 4, 0), 2, 8);
+  // "Empty for ... tangent" (intersect_circle_plane.hpp).
+  EXPECT_FALSE(r.has_penetration);
+  EXPECT_LE(std::abs(r.max_signed_distance - 6.0), r.max_signed_distance_error);
+}
+
+TEST(CirclePlane, FindsTheIntegerTangencyFromTheNegativeSideWithZeroDepth) {
+  // Centre z = -3: the rim spans z in [-6, 0] and touches z = 0 at its highest point (0, -4, 0).
+  const Circle3 rim = tilted_rim(-3);
+  const CirclePlaneIntersection r = intersect_circle_plane(rim, kGround);
+  ASSERT_TRUE(is_proved(r.certificate)) << r.certificate.reason;
+  EXPECT_EQ(r.topology, CirclePlaneTopology::tangent);
+  EXPECT_EQ(r.side, -1);
+  ASSERT_EQ(r.crossing_count, 1);
+  expect_crossing_at(r.crossings[0], rim, Vector3(0, -4, 0), 2, 8);
+  EXPECT_FALSE(r.has_penetration);
+  EXPECT_LE(std::abs(r.max_signed_distance), r.max_signed_distance_error);
+}
+
+TEST(CirclePlane, FindsTwoCrossingsOfAFlatRimCutByAPerpendicularPlane) {
+  // Radius 5 in z = 0 against x = 3: crossings (3, +-4, 0), deepest point (5, 0, 0), depth 2.
+  const Circle3 rim{Vector3(0, 0, 0), Vector3(0, 0, 1), 5.0};
+  const Plane3 wall{Vector3(3, 0, 0), Vector3(1, 0, 0)};
+  const CirclePlaneIntersection r = intersect_circle_plane(rim, wall);
+  ASSERT_TRUE(is_proved(r.certificate)) << r.certificate.reason;
+  EXPECT_EQ(r.topology, CirclePlaneTopology::two_crossings);
+  EXPECT_EQ(r.side, 0);
+  ASSERT_EQ(r.crossing_count, 2);
+  const auto expected = sorted_by_angle(rim, {Vector3(3, 4, 0), Vector3(3, -4, 0)});
+  for (int i = 0; i < 2; ++i) {
+    expect_crossing_at(r.crossings[i], rim, expected[i], 1, 8);
+    expect_useful_bounds(r.crossings[i], 8);
+  }
+  EXPECT_LT(r.crossings[0].angle, r.crossings[1].angle);
+  ASSERT_TRUE(r.has_penetration);
+  EXPECT_FALSE(r.penetration.full);
+  // The deepest point (5,0,0) is the middle of the penetration arc (paper eq. 13).
+  EXPECT_LE(circular_distance(r.penetration.middle(), documented_angle(rim, Vector3(5, 0, 0))),
+            r.crossings[0].angle_error + r.crossings[1].angle_error + kExpectedAngleError);
+  EXPECT_LE(std::abs(r.max_signed_distance - 2.0), r.max_signed_distance_error);
+  EXPECT_LE(r.max_signed_distance_error, kUsefulRelativeError * 8);
+}
+
+TEST(CirclePlane, MeasuresTheDepthInMetresWhateverTheNormalsLength) {
+  const Circle3 rim{Vector3(0, 0, 0), Vector3(0, 0, 1), 5.0};
+  for (double length : {1e-3, 0.5, 2.0, 7.0, 1e4}) {
+    const Plane3 wall{Vector3(3, 0, 0), Vector3(length, 0, 0)};
+    const CirclePlaneIntersection r = intersect_circle_plane(rim, wall);
+    ASSERT_TRUE(is_proved(r.certificate)) << r.certificate.reason;
+    EXPECT_LE(std::abs(r.max_signed_distance - 2.0), r.max_signed_distance_error) << length;
+  }
+}
+
+TEST(CirclePlane, FindsTheDiametralCrossingsOfATiltedRimCentredOnThePlane) {
+  // x(theta) = (-5 sin, 4 cos, -3 cos): crossings at (-5,0,0), (5,0,0); highest point (0,-4,3).
+  const Circle3 rim = tilted_rim(0);
+  const CirclePlaneIntersection r = intersect_circle_plane(rim, kGround);
+  ASSERT_TRUE(is_proved(r.certificate)) << r.certificate.reason;
+  EXPECT_EQ(r.topology, CirclePlaneTopology::two_crossings);
+  ASSERT_EQ(r.crossing_count, 2);
+  const auto expected = sorted_by_angle(rim, {Vector3(-5, 0, 0), Vector3(5, 0, 0)});
+  for (int i = 0; i < 2; ++i) expect_crossing_at(r.crossings[i], rim, expected[i], 1, 8);
+  ASSERT_TRUE(r.has_penetration);
+  EXPECT_LE(circular_distance(r.penetration.middle(), documented_angle(rim, Vector3(0, -4, 3))),
+            r.crossings[0].angle_error + r.crossings[1].angle_error + kExpectedAngleError);
+  EXPECT_NEAR(r.penetration.sweep(), std::numbers::pi,
+              r.crossings[0].angle_error + r.crossings[1].angle_error + kExpectedAngleError);
+  EXPECT_LE(std::abs(r.max_signed_distance - 3.0), r.max_signed_distance_error);
+}
+
+TEST(CirclePlane, ReportsARimLyingInThePlane) {
+  const Circle3 rim{Vector3(1, 2, 3), Vector3(0, 0, 2), 1.0};
+  const Plane3 base{Vector3(5, 5, 3), Vector3(0, 0, -3)};
+  const CirclePlaneIntersection r = intersect_circle_plane(rim, base);
+  ASSERT_TRUE(is_proved(r.certificate)) << r.certificate.reason;
+  EXPECT_EQ(r.topology, CirclePlaneTopology::circle_in_plane);
+  EXPECT_EQ(r.side, 0);
+  EXPECT_EQ(r.crossing_count, 0);
+  EXPECT_FALSE(r.has_penetration);
+  EXPECT_LE(std::abs(r.max_signed_distance), r.max_signed_distance_error);
+}
+
+TEST(CirclePlane, ReportsATiltedRimLyingInATiltedPlane) {
+  // Plane through (1,1,1) with normal (1,2,2); the rim's centre (3,0,1) is on it, normal (-2,-4,-4).
+  const Circle3 rim{Vector3(3, 0, 1), Vector3(-2, -4, -4), 2.0};
+  const Plane3 base{Vector3(1, 1, 1), Vector3(1, 2, 2)};
+  const CirclePlaneIntersection r = intersect_circle_plane(rim, base);
+  ASSERT_TRUE(is_proved(r.certificate)) << r.certificate.reason;
+  EXPECT_EQ(r.topology, CirclePlaneTopology::circle_in_plane);
+}
+
+// ---- ulp-level perturbations of each degenerate case -------------------------------------------
+
+struct Perturbed {
+  const char* what;
+  Circle3 rim;
+  Plane3 plane;
+  CirclePlaneTopology expected;
+  int expected_side;
+};
+
+std::vector<Perturbed> perturbations_of_the_tangency() {
+  const Circle3 rim = tilted_rim(3);
+  std::vector<Perturbed> cases;
+  auto plane_at = [](double z) { return Plane3{Vector3(0, 0, z), Vector3(0, 0, 1)}; };
+  cases.push_back({"exact tangency", rim, kGround, CirclePlaneTopology::tangent, 1});
+  cases.push_back({"plane raised by the smallest subnormal", rim,
+                   plane_at(std::nextafter(0.0, 1.0)), CirclePlaneTopology::two_crossings, 0});
+  cases.push_back({"plane lowered by the smallest subnormal", rim,
+                   plane_at(std::nextafter(0.0, -1.0)), CirclePlaneTopology::disjoint, 1});
+  Circle3 up = rim, down = rim, wider = rim, narrower = rim, steeper = rim, flatter = rim;
+  up.center.z() = std::nextafter(3.0, 4.0);
+  down.center.z() = std::nextafter(3.0, 2.0);
+  wider.radius = std::nextafter(5.0, 6.0);
+  narrower.radius = std::nextafter(5.0, 4.0);
+  // The z extent is r |n_y| / |n|: a larger n_y tilts the rim more.
+  steeper.normal.y() = std::nextafter(3.0, 4.0);
+  flatter.normal.y() = std::nextafter(3.0, 2.0);
+  cases.push_back({"centre one ulp up", up, kGround, CirclePlaneTopology::disjoint, 1});
+  cases.push_back({"centre one ulp down", down, kGround, CirclePlaneTopology::two_crossings, 0});
+  cases.push_back({"radius one ulp larger", wider, kGround, CirclePlaneTopology::two_crossings, 0});
+  cases.push_back({"radius one ulp smaller", narrower, kGround, CirclePlaneTopology::disjoint, 1});
+  cases.push_back({"normal one ulp steeper", steeper, kGround, CirclePlaneTopology::two_crossings, 0});
+  cases.push_back({"normal one ulp flatter", flatter, kGround, CirclePlaneTopology::disjoint, 1});
+  // The flat rim at z = 3 against planes one ulp above and below.
+  const Circle3 flat{Vector3(1, 2, 3), Vector3(0, 0, 1), 1.0};
+  cases.push_back({"flat rim in its plane", flat, plane_at(3.0), CirclePlaneTopology::circle_in_plane, 0});
+  cases.push_back({"flat rim one ulp below the plane", flat, plane_at(std::nextafter(3.0, 4.0)),
+                   CirclePlaneTopology::disjoint, -1});
+  cases.push_back({"flat rim one ulp above the plane", flat, plane_at(std::nextafter(3.0, 2.0)),
+                   CirclePlaneTopology::disjoint, 1});
+  Circle3 tipped = flat;
+  tipped.normal.x() = std::numeric_limits<double>::denorm_min();
+  cases.push_back({"flat rim tipped by a subnormal", tipped, plane_at(3.0),
+                   CirclePlaneTopology::two_crossings, 0});
+  return cases;
+}
+
+TEST(CirclePlane, DecidesEveryUlpPerturbationOfTheDegenerateCasesCorrectly) {
+  for (const Perturbed& c : perturbations_of_the_tangency()) {
+    SCOPED_TRACE(c.what);
+    // The expectation agrees with the exact rational reference.
+    const auto ref = test::reference::reference_circle_plane(c.rim, c.plane);
+    ASSERT_EQ(ref.topology, c.expected);
+    ASSERT_EQ(ref.side, c.expected_side);
+    const CirclePlaneIntersection r = intersect_circle_plane(c.rim, c.plane);
+    ASSERT_TRUE(is_proved(r.certificate)) << "the exact fallback is on: " << r.certificate.reason;
+    EXPECT_EQ(r.topology, c.expected);
+    EXPECT_EQ(r.side, c.expected_side);
+    EXPECT_EQ(r.crossing_count, static_cast<int>(ref.roots.size()));
+  }
+}
+
+TEST(CirclePlane, NeverCertifiesAWrongAnswerWithoutTheExactFallback) {
+  IntersectionOptions options;
+  options.exact_fallback = false;
+  for (const Perturbed& c : perturbations_of_the_tangency()) {
+    SCOPED_TRACE(c.what);
+    const CirclePlaneIntersection r = intersect_circle_plane(c.rim, c.plane, options);
+    if (!is_proved(r.certificate)) {
+      EXPECT_STRNE(r.certificate.reason, "");
+      continue;
+    }
+    EXPECT_EQ(r.topology, c.expected);
+    EXPECT_EQ(r.side, c.expected_side);
+  }
+}
+
+// ---- swapped conventions -----------------------------------------------------------------------
+
+std::vector<std::pair<Circle3, Plane3>> representative_cases() {
+  return {{tilted_rim(4), kGround},
+          {tilted_rim(3), kGround},
+          {tilted_rim(-3), kGround},
+          {tilted_rim(0), kGround},
+          {tilted_rim(1), kGround},
+          {{Vector3(0, 0, 0), Vector3(0, 0, 1), 5.0}, {Vector3(3, 0, 0), Vector3(1, 0, 0)}},
+          {{Vector3(1, 2, 3), Vector3(0, 0, 2), 1.0}, {Vector3(5, 5, 3), Vector3(0, 0, -3)}},
+          {{Vector3(0, 0, -5), Vector3(0, 0, 1), 1.0}, kGround}};
+}
+
+void expect_same_crossing_points(const CirclePlaneIntersection& a, const CirclePlaneIntersection& b) {
+  ASSERT_EQ(a.crossing_count, b.crossing_count);
+  for (int i = 0; i < a.crossing_count; ++i) {
+    // Match by position: angles may be in another order when the frame changes.
+    double best = std::numeric_limits<double>::infinity();
+    int match = -1;
+    for (int j = 0; j < b.crossing_count; ++j) {
+      const double d = (a.crossings[i].point - b.crossings[j].point).norm();
+      if (d < best) best = d, match = j;
+    }
+    EXPECT_LE(best, a.crossings[i].point_error + b.crossings[match].point_error) << i;
+    EXPECT_EQ(a.crossings[i].multiplicity, b.crossings[match].multiplicity);
+  }
+}
+
+TEST(CirclePlane, GivesTheSameSetsWhenTheRimNormalIsNegated) {
+  for (const auto& [rim, plane] : representative_cases()) {
+    Circle3 flipped = rim;
+    flipped.normal = -rim.normal;
+    const CirclePlaneIntersection a = intersect_circle_plane(rim, plane);
+    const CirclePlaneIntersection b = intersect_circle_plane(flipped, plane);
+    ASSERT_TRUE(is_proved(a.certificate) && is_proved(b.certificate));
+    EXPECT_EQ(a.topology, b.topology);
+    EXPECT_EQ(a.side, b.side);
+    EXPECT_EQ(a.has_penetration, b.has_penetration);
+    expect_same_crossing_points(a, b);
+    EXPECT_LE(std::abs(a.max_signed_distance - b.max_signed_distance),
+              a.max_signed_distance_error + b.max_signed_distance_error);
+  }
+}
+
+TEST(CirclePlane, FlipsTheSideAndComplementsThePenetrationWhenThePlaneNormalIsNegated) {
+  for (const auto& [rim, plane] : representative_cases()) {
+    const Plane3 flipped{plane.point, -plane.normal};
+    const CirclePlaneIntersection a = intersect_circle_plane(rim, plane);
+    const CirclePlaneIntersection b = intersect_circle_plane(rim, flipped);
+    ASSERT_TRUE(is_proved(a.certificate) && is_proved(b.certificate));
+    EXPECT_EQ(a.topology, b.topology);
+    EXPECT_EQ(a.side, -b.side);
+    expect_same_crossing_points(a, b);
+    if (a.topology == CirclePlaneTopology::two_crossings) {
+      // Same frame, so the same angles; the positive arc of one is the negative arc of the other.
+      ASSERT_TRUE(a.has_penetration && b.has_penetration);
+      const double slack = a.crossings[0].angle_error + a.crossings[1].angle_error +
+                           b.crossings[0].angle_error + b.crossings[1].angle_error;
+      EXPECT_LE(circular_distance(a.penetration.begin, b.penetration.end), slack);
+      EXPECT_LE(circular_distance(a.penetration.end, b.penetration.begin), slack);
+      EXPECT_NEAR(a.penetration.sweep() + b.penetration.sweep(), kTwoPi, slack + 8 * kEps * kTwoPi);
+    }
+    if (a.topology == CirclePlaneTopology::disjoint) {
+      EXPECT_NE(a.has_penetration, b.has_penetration);
+    }
+  }
+}
+
+TEST(CirclePlane, DoesNotDependOnWhichPointOfThePlaneIsStored) {
+  for (const auto& [rim, plane] : representative_cases()) {
+    // Slide the stored point along the plane by integer steps orthogonal to the normal.
+    const Vector3 n = plane.normal;
+    const Vector3 along = n.cross(std::abs(n.x()) < std::abs(n.z()) ? Vector3::UnitX() : Vector3::UnitZ());
+    const Plane3 moved{plane.point + 7 * along, plane.normal};
+    ASSERT_EQ(moved.normal.dot(moved.point - plane.point), 0.0);  // still exactly the same plane
+    const CirclePlaneIntersection a = intersect_circle_plane(rim, plane);
+    const CirclePlaneIntersection b = intersect_circle_plane(rim, moved);
+    EXPECT_EQ(a.topology, b.topology);
+    EXPECT_EQ(a.side, b.side);
+    expect_same_crossing_points(a, b);
+  }
+}
+
+// ---- rigid motions and units -------------------------------------------------------------------
+
+TEST(CirclePlane, IsInvariantUnderRandomRigidMotions) {
+  constexpr unsigned kSeed = 1301;
+  RecordProperty("seed", static_cast<int>(kSeed));
+  std::mt19937_64 rng(kSeed);
+  // Transversal and clearly disjoint cases only: a motion rounds the inputs, which is allowed to
+  // turn an exact tangency into either neighbour.
+  const std::vector<std::pair<Circle3, Plane3>> cases = {
+      {tilted_rim(4), kGround},
+      {tilted_rim(0), kGround},
+      {tilted_rim(1), kGround},
+      {{Vector3(0, 0, 0), Vector3(0, 0, 1), 5.0}, {Vector3(3, 0, 0), Vector3(1, 0, 0)}},
+      {{Vector3(0, 0, -5), Vector3(0, 0, 1), 1.0}, kGround}};
+  for (int trial = 0; trial < 50; ++trial) {
+    const testing::RigidMotion m = testing::random_motion(rng, 100.0);
+    for (const auto& [rim, plane] : cases) {
+      const CirclePlaneIntersection a = intersect_circle_plane(rim, plane);
+      const CirclePlaneIntersection b = intersect_circle_plane(m(rim), m(plane));
+      ASSERT_TRUE(is_proved(a.certificate) && is_proved(b.certificate));
+      const double scale = scale_of(m(rim), m(plane));
+      EXPECT_EQ(a.topology, b.topology) << trial;
+      EXPECT_EQ(a.side, b.side);
+      ASSERT_EQ(a.crossing_count, b.crossing_count);
+      EXPECT_NEAR(a.max_signed_distance, b.max_signed_distance,
+                  a.max_signed_distance_error + b.max_signed_distance_error +
+                      kMotionRelativeTolerance * scale);
+      for (int i = 0; i < a.crossing_count; ++i) {
+        double best = std::numeric_limits<double>::infinity();
+        for (int j = 0; j < b.crossing_count; ++j) {
+          best = std::min(best, (m.point(a.crossings[i].point) - b.crossings[j].point).norm());
+        }
+        EXPECT_LE(best, kMotionRelativeTolerance * scale) << trial;
+      }
+    }
+  }
+}
+
+TEST(CirclePlane, KeepsEveryDegenerateCaseUnderAnExactChangeOfUnits) {
+  // Multiplying small integers by 1000, 1e6 or powers of two is exact, so the tangencies and the
+  // rim in the plane survive: mm, km-size and micrometre-size (2^-20 ~ 1e-6) versions of each.
+  for (double factor : {1000.0, 1e6, 0.0009765625 /* 2^-10 */, 9.5367431640625e-07 /* 2^-20 */}) {
+    for (const auto& [rim, plane] : representative_cases()) {
+      const CirclePlaneIntersection a = intersect_circle_plane(rim, plane);
+      const CirclePlaneIntersection b =
+          intersect_circle_plane(testing::scaled(rim, factor), testing::scaled(plane, factor));
+      ASSERT_TRUE(is_proved(b.certificate)) << factor;
+      EXPECT_EQ(a.topology, b.topology) << factor;
+      EXPECT_EQ(a.side, b.side) << factor;
+      ASSERT_EQ(a.crossing_count, b.crossing_count) << factor;
+      for (int i = 0; i < a.crossing_count; ++i) {
+        EXPECT_EQ(a.crossings[i].multiplicity, b.crossings[i].multiplicity);
+        // Same frame (the normal is unchanged), so the same angles and scaled points.
+        EXPECT_LE(std::abs(a.crossings[i].angle - b.crossings[i].angle),
+                  a.crossings[i].angle_error + b.crossings[i].angle_error) << factor;
+        EXPECT_LE((a.crossings[i].point * factor - b.crossings[i].point).norm(),
+                  a.crossings[i].point_error * factor + b.crossings[i].point_error) << factor;
+      }
+      EXPECT_LE(std::abs(a.max_signed_distance * factor - b.max_signed_distance),
+                a.max_signed_distance_error * factor + b.max_signed_distance_error) << factor;
+    }
+  }
+}
+
+TEST(CirclePlane, KeepsTransversalCasesUnderADecimalChangeOfUnits) {
+  // 1e-3 and 1e-6 are not exact in binary: the inputs are rounded, so only well-conditioned cases.
+  const Circle3 rim{Vector3(0, 0, 0), Vector3(0, 0, 1), 5.0};
+  const Plane3 wall{Vector3(3, 0, 0), Vector3(1, 0, 0)};
+  for (double factor : {1e-3, 1e-6, 1e3, 1e5}) {
+    const CirclePlaneIntersection r =
+        intersect_circle_plane(testing::scaled(rim, factor), testing::scaled(wall, factor));
+    ASSERT_TRUE(is_proved(r.certificate));
+    EXPECT_EQ(r.topology, CirclePlaneTopology::two_crossings);
+    ASSERT_EQ(r.crossing_count, 2);
+    const Circle3 s = testing::scaled(rim, factor);
+    const auto expected = sorted_by_angle(s, {Vector3(3, 4, 0) * factor, Vector3(3, -4, 0) * factor});
+    for (int i = 0; i < 2; ++i) {
+      // The rounded inputs move the crossings by a few ulps of the scale.
+      EXPECT_LE((r.crossings[i].point - expected[i]).norm(),
+                r.crossings[i].point_error + kMotionRelativeTolerance * 8 * factor) << factor;
+    }
+    EXPECT_NEAR(r.max_signed_distance, 2 * factor,
+                r.max_signed_distance_error + kMotionRelativeTolerance * 8 * factor);
+  }
+}
+
+// ---- options and bad input ---------------------------------------------------------------------
+
+TEST(CirclePlane, SaysUncertainWithoutBoundsWhenTheCertificateIsSwitchedOff) {
+  IntersectionOptions options;
+  options.certify = false;
+  const Circle3 rim{Vector3(0, 0, 0), Vector3(0, 0, 1), 5.0};
+  const CirclePlaneIntersection r =
+      intersect_circle_plane(rim, {Vector3(3, 0, 0), Vector3(1, 0, 0)}, options);
+  EXPECT_EQ(r.certificate.level, Certainty::uncertain);
+  EXPECT_NE(std::string(r.certificate.reason).find("certificate switched off"), std::string::npos)
+      << r.certificate.reason;
+  // A plain double pipeline still gets a well-conditioned case right...
+  EXPECT_EQ(r.topology, CirclePlaneTopology::two_crossings);
+  ASSERT_EQ(r.crossing_count, 2);
+  // ...but claims no bound.
+  for (int i = 0; i < 2; ++i) {
+    EXPECT_EQ(r.crossings[i].angle_error, kNoErrorBound);
+    EXPECT_EQ(r.crossings[i].point_error, kNoErrorBound);
+  }
+  EXPECT_EQ(r.max_signed_distance_error, kNoErrorBound);
+}
+
+TEST(CirclePlane, ValidatesBothArguments) {
+  const Circle3 rim{Vector3(0, 0, 0), Vector3(0, 0, 1), 5.0};
+  Circle3 bad_rim = rim;
+  bad_rim.radius = -1;
+  EXPECT_THROW(intersect_circle_plane(bad_rim, kGround), InvalidInput);
+  Circle3 nan_rim = rim;
+  nan_rim.center.y() = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW(intersect_circle_plane(nan_rim, kGround), InvalidInput);
+  EXPECT_THROW(intersect_circle_plane(rim, Plane3{Vector3::Zero(), Vector3::Zero()}), InvalidInput);
+  EXPECT_THROW(intersect_circle_plane(
+                   rim, Plane3{Vector3(0, std::numeric_limits<double>::infinity(), 0),
+                               Vector3(0, 0, 1)}),
+               InvalidInput);
+  try {
+    intersect_circle_plane(bad_rim, kGround);
+  } catch (const InvalidInput& e) {
+    EXPECT_NE(std::string(e.what()).find("radius"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace clearjoint::geometry
