@@ -39,10 +39,17 @@ Bounded angle_of(const Bounded& x, const Bounded& y) {
   return {angle, 0.5 * std::numbers::pi * delta / (length - delta) + kLibmAngleError};
 }
 
-/// acos of an enclosed cosine, from the monotone acos at the enclosure's ends.
+/// acos of an enclosed cosine. Away from +-1 one acos and the derivative bound
+/// |acos' | = 1 / sqrt(1 - c^2) suffice; near +-1 the monotone acos at both enclosure ends.
 Bounded acos_of(const Bounded& c) {
-  const double low = std::acos(std::clamp(c.value + c.error * detail::kErrorInflation, -1.0, 1.0));
-  const double high = std::acos(std::clamp(c.value - c.error * detail::kErrorInflation, -1.0, 1.0));
+  const double spread = c.error * detail::kErrorInflation;
+  const double far = std::fabs(c.value) + spread;
+  if (far < 0.75) {
+    const double slope_bound = 1.0 / std::sqrt((1.0 - far) * (1.0 + far)) * (1 + 0x1p-40);
+    return {std::acos(c.value), spread * slope_bound + kLibmAngleError};
+  }
+  const double low = std::acos(std::clamp(c.value + spread, -1.0, 1.0));
+  const double high = std::acos(std::clamp(c.value - spread, -1.0, 1.0));
   const double middle = 0.5 * (low + high);
   return {middle, 0.5 * (high - low) + kLibmAngleError};
 }
@@ -138,12 +145,17 @@ CirclePlaneIntersection intersect_circle_plane(const Circle3& circle, const Plan
   theta_m.error += 8 * detail::kUnitRoundoff;
 
   const double rounding = kPointRoundingUlps * (circle.center.norm() + 2 * circle.radius);
-  auto crossing_at = [&](double angle, double error, int multiplicity) {
+  // Crossing points by angle addition from cos/sin of theta_m and beta: no libm sine or cosine.
+  // They differ from point_at(angle) by a few ulps of the terms, inside `rounding`.
+  const double toward_length = std::hypot(along_u.value, along_v.value);
+  const double cos_m = along_u.value / toward_length, sin_m = along_v.value / toward_length;
+  auto crossing_at = [&](double angle, double error, double cos_angle, double sin_angle,
+                         int multiplicity) {
     RimCrossing crossing;
     crossing.angle = detail::wrap_angle(angle);
     // wrapping subtracts a rounded 2 pi: one more ulp of 2 pi.
     crossing.angle_error = bounded ? error + 4 * detail::kUnitRoundoff * detail::kTwoPi : kNoErrorBound;
-    crossing.point = point_at(circle, frame, crossing.angle);
+    crossing.point = circle.center + circle.radius * (cos_angle * frame.u + sin_angle * frame.v);
     crossing.point_error = bounded ? circle.radius * crossing.angle_error + rounding : kNoErrorBound;
     crossing.multiplicity = multiplicity;
     return crossing;
@@ -152,16 +164,22 @@ CirclePlaneIntersection intersect_circle_plane(const Circle3& circle, const Plan
   if (out.topology == CirclePlaneTopology::tangent) {
     // The touching point is where f is smallest (side +1) or largest (side -1).
     const double angle = out.side > 0 ? theta_m.value + std::numbers::pi : theta_m.value;
-    out.crossings[0] = crossing_at(angle, theta_m.error, 2);
+    const double sign = out.side > 0 ? -1.0 : 1.0;
+    out.crossings[0] = crossing_at(angle, theta_m.error, sign * cos_m, sign * sin_m, 2);
     out.crossing_count = 1;
     return out;
   }
 
   // Two crossings at theta_m -+ beta, cos(beta) = -s / (r |P n_p|); beyond the plane between them.
-  const Bounded half_width = acos_of(-s / (r * in_plane_normal));
+  const Bounded cos_beta = -s / (r * in_plane_normal);
+  const Bounded half_width = acos_of(cos_beta);
   const double error = theta_m.error + half_width.error;
-  out.crossings[0] = crossing_at(theta_m.value - half_width.value, error, 1);
-  out.crossings[1] = crossing_at(theta_m.value + half_width.value, error, 1);
+  const double cb = std::clamp(cos_beta.value, -1.0, 1.0);
+  const double sb = std::sqrt((1.0 - cb) * (1.0 + cb));
+  out.crossings[0] = crossing_at(theta_m.value - half_width.value, error, cos_m * cb + sin_m * sb,
+                                 sin_m * cb - cos_m * sb, 1);
+  out.crossings[1] = crossing_at(theta_m.value + half_width.value, error, cos_m * cb - sin_m * sb,
+                                 sin_m * cb + cos_m * sb, 1);
   out.crossing_count = 2;
   out.penetration = {out.crossings[0].angle, out.crossings[1].angle, false};
   out.has_penetration = true;

@@ -44,6 +44,15 @@ void require_positive(double x, std::string_view name, std::string_view field) {
   if (!(x > 0.0)) reject(name, field, format(x), "must be positive");
 }
 
+/// x / |x|. The plain formula when |x|^2 is a normal double; Eigen's stableNormalized (which
+/// rescales first, at several times the cost) when |x|^2 would under- or overflow.
+Vector3 unit(const Vector3& x) {
+  constexpr double kSmallestSafeSquare = 0x1p-1000, kLargestSafeSquare = 0x1p1000;
+  const double squared = x.squaredNorm();
+  if (squared > kSmallestSafeSquare && squared < kLargestSafeSquare) return x / std::sqrt(squared);
+  return x.stableNormalized();
+}
+
 }  // namespace
 
 void validate(const Circle3& circle, std::string_view name) {
@@ -77,9 +86,8 @@ int frame_axis_index(const Vector3& normal) {
 CircleFrame frame_of(const Circle3& circle) {
   // u' = normal x e_k is exact in double (its components are +-normal_j or 0), see primitives.hpp.
   const Vector3 u_unnormalised = circle.normal.cross(Vector3::Unit(frame_axis_index(circle.normal)));
-  // stableNormalized: the squared norm of a 1e-200 or 1e200 vector under- or overflows.
-  const Vector3 u = u_unnormalised.stableNormalized();
-  const Vector3 v = circle.normal.stableNormalized().cross(u);
+  const Vector3 u = unit(u_unnormalised);
+  const Vector3 v = unit(circle.normal).cross(u);
   return {u, v};
 }
 

@@ -85,7 +85,9 @@ void expect_proved_roots_match(const RimRoots& result, const std::vector<Real>& 
     EXPECT_GE(root.angle, 0.0);
     EXPECT_LT(root.angle, 2 * std::numbers::pi);
     EXPECT_EQ(root.multiplicity, 1);
-    if (i > 0) EXPECT_LT(result.roots[i - 1].angle, root.angle);
+    if (i > 0) {
+      EXPECT_LT(result.roots[i - 1].angle, root.angle);
+    }
     int holding = 0;
     for (const Real& t : truth)
       holding += it::circular_gap(Real(root.angle), t) <= Real(root.radius) + kReferenceRootError;

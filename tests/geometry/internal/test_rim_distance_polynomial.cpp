@@ -107,7 +107,9 @@ void check_pose(const Pose& pose, std::mt19937_64& rng, bool tight) {
   const double kUsefulRelativeError = 1e-12;
   for (int i = 0; i < 5; ++i) {
     ASSERT_TRUE(Encloses(g.k[i], k[i], scale)) << "k" << i;
-    if (tight) ASSERT_LE(Real(g.k[i].error), kUsefulRelativeError * scale) << "k" << i;
+    if (tight) {
+      ASSERT_LE(Real(g.k[i].error), kUsefulRelativeError * scale) << "k" << i;
+    }
   }
   Real max_curvature = 0;
   for (const double theta : sample_angles(rng)) {
@@ -118,7 +120,9 @@ void check_pose(const Pose& pose, std::mt19937_64& rng, bool tight) {
     ASSERT_TRUE(Encloses(value, it::trig_polynomial(k, t), scale)) << "g(" << theta << ")";
     ASSERT_TRUE(Encloses(g.derivative(theta), it::trig_polynomial_derivative(k, t), scale))
         << "g'(" << theta << ")";
-    if (tight) ASSERT_LE(Real(value.error), kUsefulRelativeError * scale);
+    if (tight) {
+      ASSERT_LE(Real(value.error), kUsefulRelativeError * scale);
+    }
     const Real second = -k[1] * cos(t) - k[2] * sin(t) - 4 * k[3] * cos(2 * t) - 4 * k[4] * sin(2 * t);
     max_curvature = std::max(max_curvature, abs(second));
   }
@@ -157,7 +161,9 @@ TEST(RimDistancePolynomial, EnclosesTheExactDistanceExcessWithVeryShortNormals) 
       const std::array<Real, 5> k = exact_coefficients(pose);
       for (int j = 0; j < 5; ++j) {
         // Lengths 1e+-30 stay far from under- and overflow: the bound must be finite there.
-        if (std::fabs(std::log10(length)) < 50) ASSERT_TRUE(g.k[j].finite()) << "k" << j;
+        if (std::fabs(std::log10(length)) < 50) {
+          ASSERT_TRUE(g.k[j].finite()) << "k" << j;
+        }
         if (!g.k[j].finite()) continue;  // "not certified" is allowed
         EXPECT_TRUE(Encloses(g.k[j], k[j], magnitude(pose))) << "length " << length << " k" << j;
       }
