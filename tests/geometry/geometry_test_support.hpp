@@ -6,6 +6,7 @@
 #include <cmath>
 #include <numbers>
 #include <random>
+#include <vector>
 
 #include <Eigen/Geometry>
 
@@ -38,6 +39,21 @@ RigidMotion random_motion(Rng& rng, double reach) {
   q.normalize();
   std::uniform_real_distribution<double> shift(-reach, reach);
   return {q.toRotationMatrix(), Vector3(shift(rng), shift(rng), shift(rng))};
+}
+
+/// The 24 rotations that map the coordinate axes onto themselves (signed permutation matrices
+/// with determinant +1). Applied to integer data they are exact, so tangencies stay tangencies.
+inline std::vector<RigidMotion> axis_rotations() {
+  std::vector<RigidMotion> out;
+  const int perms[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
+  for (const auto& p : perms) {
+    for (int signs = 0; signs < 8; ++signs) {
+      Eigen::Matrix3d m = Eigen::Matrix3d::Zero();
+      for (int row = 0; row < 3; ++row) m(row, p[row]) = (signs >> row) & 1 ? -1.0 : 1.0;
+      if (m.determinant() > 0) out.push_back({m, Vector3::Zero()});
+    }
+  }
+  return out;
 }
 
 /// A change of units: every length times `factor`; directions are left alone.

@@ -66,9 +66,12 @@ long double excess_at(const Circle3& c, const Cylinder3& w, double angle) {
 
 /// Checks one answer against the closed form: topology, crossings (sorted by angle, each enclosing
 /// the true one), root_count, and the arcs (count, endpoints on crossings, middles outside).
+/// `well_conditioned`: the simple crossings are transversal at a healthy angle, so their
+/// enclosures must also be useful (kUsefulRelativeError); near a tangency a crossing's condition
+/// number grows like 1/sqrt(gap), and only containment is required.
 void expect_answer(const CircleCylinderIntersection& r, const Circle3& c, const Cylinder3& w,
                    Topology topology, std::vector<ExpectedCrossing> expected, int arcs,
-                   double scale) {
+                   double scale, bool well_conditioned = true) {
   ASSERT_TRUE(is_proved(r.certificate)) << r.certificate.reason;
   EXPECT_EQ(r.topology, topology);
   std::sort(expected.begin(), expected.end(), [&](const auto& a, const auto& b) {
@@ -91,7 +94,7 @@ void expect_answer(const CircleCylinderIntersection& r, const Circle3& c, const 
     if (i > 0) {
       EXPECT_LE(r.crossings[i - 1].angle, x.angle);
     }
-    if (x.multiplicity == 1) {
+    if (x.multiplicity == 1 && well_conditioned) {
       EXPECT_LE(x.angle_error, kUsefulRelativeError);
       EXPECT_LE(x.point_error, kUsefulRelativeError * scale);
     }
@@ -210,6 +213,55 @@ TEST(CircleCylinder, FindsTwoTangenciesFromInsideWhenTheWallFitsTheEllipsesMajor
                 {{Vector3(-5, 0, 0), 2}, {Vector3(5, 0, 0), 2}}, 0, 8);
 }
 
+// A rim whose plane contains the axis direction (normal (1,0,0) against the z axis): its shadow
+// along the axis degenerates to a segment. frame_of gives k = 1, u = (0,0,1), v = (0,-1,0), so
+// x(theta) = centre + r (0, -sin, cos) and dist^2 = centre_x^2 + r^2 sin^2.
+Circle3 upright_rim(double center_x) { return {Vector3(center_x, 0, 0), Vector3(1, 0, 0), 2.0}; }
+
+TEST(CircleCylinder, FindsTwoInternalTangenciesOfARimWhosePlaneContainsTheAxis) {
+  // dist^2 = 4 sin^2 <= 4 = R^2: touches at theta = pi/2 and 3 pi/2, (0, -+2, 0).
+  const Circle3 rim = upright_rim(0);
+  expect_answer(intersect_circle_cylinder(rim, kZ2), rim, kZ2, Topology::crossing,
+                {{Vector3(0, -2, 0), 2}, {Vector3(0, 2, 0), 2}}, 0, 8);
+}
+
+TEST(CircleCylinder, FindsTwoExternalTangenciesAtAngleZeroAndPiOfARimWhosePlaneContainsTheAxis) {
+  // Centre x = 1, R = 1: dist^2 = 1 + 4 sin^2 >= 1, touching at theta = 0 (1,0,2) and pi (1,0,-2).
+  const Circle3 rim = upright_rim(1);
+  const Cylinder3 wall = z_cylinder(1);
+  expect_answer(intersect_circle_cylinder(rim, wall), rim, wall, Topology::crossing,
+                {{Vector3(1, 0, 2), 2}, {Vector3(1, 0, -2), 2}}, 2, 8);
+}
+
+TEST(CircleCylinder, FindsFourCrossingsOfAnOffsetRimWhosePlaneContainsTheAxis) {
+  // Centre x = 1, R = 2: 1 + 4 sin^2 = 4, sin = +-sqrt(3)/2: (1, +-sqrt3, +-1).
+  const Circle3 rim = upright_rim(1);
+  const double s3 = std::sqrt(3.0);
+  expect_answer(intersect_circle_cylinder(rim, kZ2), rim, kZ2, Topology::crossing,
+                {{Vector3(1, s3, 1), 1}, {Vector3(1, s3, -1), 1}, {Vector3(1, -s3, 1), 1},
+                 {Vector3(1, -s3, -1), 1}},
+                2, 8);
+}
+
+TEST(CircleCylinder, EnclosesBothCrossingsJustPastAnInternalTangency) {
+  // Centre (1,0,0), radius 1 against R = 2 - h (h a power of two, so exact): x = (1 - sin, cos, 0),
+  // |x|^2 = 2 - 2 sin = R^2 gives sin = -1 + 2h - h^2/2, i.e. the points
+  // (2 - 2h + h^2/2, +-sqrt(1 - sin^2), 0): two distinct points about 4 sqrt(h) apart.
+  const Circle3 rim = flat_rim(Vector3(1, 0, 0), 1.0);
+  for (int e : {10, 20, 30, 40, 50}) {
+    const double h = std::ldexp(1.0, -e);
+    const Cylinder3 wall = z_cylinder(2 - h);
+    const long double hl = h;
+    const long double sn = -1 + 2 * hl - hl * hl / 2;
+    const long double cs = std::sqrt((1 - sn) * (1 + sn));
+    const double x = static_cast<double>(1 - sn);
+    SCOPED_TRACE(e);
+    expect_answer(intersect_circle_cylinder(rim, wall), rim, wall, Topology::crossing,
+                  {{Vector3(x, static_cast<double>(cs), 0), 1}, {Vector3(x, static_cast<double>(-cs), 0), 1}},
+                  1, 8, /*well_conditioned=*/false);
+  }
+}
+
 TEST(CircleCylinder, ReportsACoaxialRimOfTheWallsRadiusAsOnTheSurface) {
   const Circle3 rim = flat_rim(Vector3(0, 0, 3), 2.0);
   const CircleCylinderIntersection r = intersect_circle_cylinder(rim, kZ2);
@@ -282,6 +334,15 @@ std::vector<Perturbed> degenerate_cases_and_their_ulp_neighbours() {
   Circle3 flatter = tilted_rim();
   flatter.normal.y() = std::nextafter(3.0, 2.0);
   v.push_back({"ellipse R = 4, rim one ulp flatter", flatter, z_cylinder(4), Topology::outside, 0, 0, 1});
+  // Rims whose plane contains the axis direction.
+  v.push_back({"upright rim, R = 2", upright_rim(0), kZ2, Topology::crossing, 2, 4, 0});
+  v.push_back({"upright rim, R = 2 + ulp", upright_rim(0), z_cylinder(up2), Topology::inside, 0, 0, 0});
+  v.push_back({"upright rim, R = 2 - ulp", upright_rim(0), z_cylinder(down2), Topology::crossing, 4, 4, 2});
+  v.push_back({"offset upright rim, R = 1", upright_rim(1), z_cylinder(1), Topology::crossing, 2, 4, 2});
+  v.push_back({"offset upright rim, R = 1 + ulp", upright_rim(1), z_cylinder(up1), Topology::crossing, 4, 4, 2});
+  v.push_back({"offset upright rim, R = 1 - ulp", upright_rim(1), z_cylinder(down1), Topology::outside, 0, 0, 1});
+  v.push_back({"offset upright rim, centre out", upright_rim(up1), z_cylinder(1), Topology::outside, 0, 0, 1});
+  v.push_back({"offset upright rim, centre in", upright_rim(down1), z_cylinder(1), Topology::crossing, 4, 4, 2});
   // On the surface, and its neighbours.
   const Circle3 coaxial = flat_rim({0, 0, 3}, 2);
   v.push_back({"coaxial, radius up", flat_rim({0, 0, 3}, up2), kZ2, Topology::outside, 0, 0, 1});
@@ -370,7 +431,9 @@ std::vector<Case> representative_cases() {
           {flat_rim({3, 0, 0}, 1), kZ2},
           {tilted_rim(), z_cylinder(4)},
           {tilted_rim(), z_cylinder(5)},
-          {flat_rim({0, 0, 3}, 2), Cylinder3{{0, 0, -1}, {0, 0, 7}, 2}}};
+          {flat_rim({0, 0, 3}, 2), Cylinder3{{0, 0, -1}, {0, 0, 7}, 2}},
+          {upright_rim(1), z_cylinder(1)},
+          {upright_rim(1), kZ2}};
 }
 
 void expect_same_sets(const CircleCylinderIntersection& a, const CircleCylinderIntersection& b) {
@@ -456,6 +519,34 @@ TEST(CircleCylinder, IsInvariantUnderRandomRigidMotions) {
           best = std::min(best, (m.point(a.crossings[i].point) - b.crossings[j].point).norm());
         }
         EXPECT_LE(best, kMotionRelativeTolerance * scale) << trial;
+      }
+    }
+  }
+}
+
+TEST(CircleCylinder, KeepsEveryDegenerateCaseUnderTheTwentyFourAxisRotations) {
+  // Signed permutations of the coordinates are exact on integer data: every tangency and the rim
+  // on the wall survive, and the crossing points map to the rotated points.
+  const auto rotations = testing::axis_rotations();
+  ASSERT_EQ(rotations.size(), 24u);
+  for (const testing::RigidMotion& m : rotations) {
+    for (const Case& c : representative_cases()) {
+      const CircleCylinderIntersection a = intersect_circle_cylinder(c.rim, c.wall);
+      const CircleCylinderIntersection b = intersect_circle_cylinder(m(c.rim), m(c.wall));
+      ASSERT_TRUE(is_proved(a.certificate) && is_proved(b.certificate));
+      EXPECT_EQ(a.topology, b.topology) << m.rotation;
+      EXPECT_EQ(a.root_count(), b.root_count()) << m.rotation;
+      EXPECT_EQ(a.arc_count, b.arc_count) << m.rotation;
+      ASSERT_EQ(a.crossing_count, b.crossing_count) << m.rotation;
+      for (int i = 0; i < a.crossing_count; ++i) {
+        double best = std::numeric_limits<double>::infinity();
+        int match = 0;
+        for (int j = 0; j < b.crossing_count; ++j) {
+          const double d = (m.point(a.crossings[i].point) - b.crossings[j].point).norm();
+          if (d < best) best = d, match = j;
+        }
+        EXPECT_LE(best, a.crossings[i].point_error + b.crossings[match].point_error) << m.rotation;
+        EXPECT_EQ(a.crossings[i].multiplicity, b.crossings[match].multiplicity) << m.rotation;
       }
     }
   }

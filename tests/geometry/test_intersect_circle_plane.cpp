@@ -291,6 +291,28 @@ TEST(CirclePlane, NeverCertifiesAWrongAnswerWithoutTheExactFallback) {
   }
 }
 
+TEST(CirclePlane, EnclosesBothCrossingsJustPastTheTangency) {
+  // The tilted rim over z = h (h a power of two, so exact): z(theta) = 3 - 3 cos theta, so the
+  // crossings are at cos theta = 1 - h/3, i.e. the points (-+5 sin, 4 (1 - h/3), h) with
+  // sin = sqrt(2h/3 - h^2/9): two distinct points about 10 sqrt(2h/3) apart.
+  const Circle3 rim = tilted_rim(3);
+  for (int e : {10, 20, 30, 40, 50}) {
+    const double h = std::ldexp(1.0, -e);
+    const long double hl = h;
+    const long double sn = std::sqrt(2 * hl / 3 - hl * hl / 9);
+    const Vector3 a(static_cast<double>(-5 * sn), static_cast<double>(4 * (1 - hl / 3)), h);
+    const Vector3 b(static_cast<double>(5 * sn), static_cast<double>(4 * (1 - hl / 3)), h);
+    const CirclePlaneIntersection r = intersect_circle_plane(rim, {Vector3(0, 0, h), Vector3(0, 0, 1)});
+    SCOPED_TRACE(e);
+    ASSERT_TRUE(is_proved(r.certificate)) << r.certificate.reason;
+    ASSERT_EQ(r.topology, CirclePlaneTopology::two_crossings);
+    ASSERT_EQ(r.crossing_count, 2);
+    const auto expected = sorted_by_angle(rim, {a, b});
+    for (int i = 0; i < 2; ++i) expect_crossing_at(r.crossings[i], rim, expected[i], 1, 8);
+    EXPECT_LE(std::abs(r.max_signed_distance - (6 - h)), r.max_signed_distance_error);
+  }
+}
+
 // ---- swapped conventions -----------------------------------------------------------------------
 
 std::vector<std::pair<Circle3, Plane3>> representative_cases() {
@@ -408,6 +430,36 @@ TEST(CirclePlane, IsInvariantUnderRandomRigidMotions) {
         }
         EXPECT_LE(best, kMotionRelativeTolerance * scale) << trial;
       }
+    }
+  }
+}
+
+TEST(CirclePlane, KeepsEveryDegenerateCaseUnderTheTwentyFourAxisRotations) {
+  // Signed permutations of the coordinates are exact on integer data, so the tangencies and the
+  // rim in the plane survive and the crossings map to the rotated points.
+  const auto rotations = testing::axis_rotations();
+  ASSERT_EQ(rotations.size(), 24u);
+  for (const testing::RigidMotion& m : rotations) {
+    for (const auto& [rim, plane] : representative_cases()) {
+      const CirclePlaneIntersection a = intersect_circle_plane(rim, plane);
+      const CirclePlaneIntersection b = intersect_circle_plane(m(rim), m(plane));
+      ASSERT_TRUE(is_proved(a.certificate) && is_proved(b.certificate));
+      EXPECT_EQ(a.topology, b.topology) << m.rotation;
+      EXPECT_EQ(a.side, b.side) << m.rotation;
+      EXPECT_EQ(a.has_penetration, b.has_penetration) << m.rotation;
+      ASSERT_EQ(a.crossing_count, b.crossing_count) << m.rotation;
+      for (int i = 0; i < a.crossing_count; ++i) {
+        double best = std::numeric_limits<double>::infinity();
+        int match = 0;
+        for (int j = 0; j < b.crossing_count; ++j) {
+          const double d = (m.point(a.crossings[i].point) - b.crossings[j].point).norm();
+          if (d < best) best = d, match = j;
+        }
+        EXPECT_LE(best, a.crossings[i].point_error + b.crossings[match].point_error) << m.rotation;
+        EXPECT_EQ(a.crossings[i].multiplicity, b.crossings[match].multiplicity);
+      }
+      EXPECT_LE(std::abs(a.max_signed_distance - b.max_signed_distance),
+                a.max_signed_distance_error + b.max_signed_distance_error);
     }
   }
 }

@@ -61,6 +61,10 @@ constexpr unsigned kNearTangentSeed = 1000000007u;
 constexpr unsigned kPlaneSeed = 31415926;
 constexpr unsigned kNearTangentPlaneSeed = 27182818;
 
+/// Not part of the contract, only reported: a proved crossing whose angle enclosure is wider than
+/// this (1 urad, 10 nm on a 10 mm rim) is too loose to place the contact point of eq. (18) well.
+constexpr double kLooseAngleError = 1e-6;
+
 /// How many failing configurations to print in full.
 constexpr int kPrintedFailures = 8;
 
@@ -93,6 +97,7 @@ struct Tally {
   long angle_misses = 0, point_misses = 0, wrong_arcs = 0, distance_misses = 0;
   double max_angle_miss = 0, max_point_miss = 0;  // by how much an enclosure missed (0: never)
   double max_angle_error = 0;                     // widest angle enclosure among proved crossings
+  long loose_enclosures = 0;  // proved crossings with angle_error > kLooseAngleError (information)
   double kernel_seconds = 0, reference_seconds = 0;
   int printed = 0;
 
@@ -120,6 +125,7 @@ struct Tally {
     record("uncertain", uncertain);
     record("ambiguous_skipped", ambiguous_skipped);
     record("wrong", wrong());
+    record("loose_enclosures", loose_enclosures);
     ::testing::Test::RecordProperty(name + ".max_angle_miss", std::to_string(max_angle_miss));
     ::testing::Test::RecordProperty(name + ".max_angle_error", std::to_string(max_angle_error));
     (void)test;
@@ -128,12 +134,12 @@ struct Tally {
         "ambiguous (skipped) %ld\n"
         "    wrong: topology %ld, crossing count %ld, root count %ld, side %ld, arcs %ld, angle "
         "enclosures %ld (max miss %.3g rad), point enclosures %ld (max miss %.3g m), distance %ld; "
-        "widest proved angle enclosure %.3g rad\n"
+        "widest proved angle enclosure %.3g rad, %ld wider than 1e-6 rad\n"
         "    time: kernel %.1f s, reference %.1f s\n",
         name.c_str(), configurations, seconds, exact, certified, uncertain, ambiguous_skipped,
         wrong_topology, wrong_crossing_count, wrong_root_count, wrong_side, wrong_arcs, angle_misses,
         max_angle_miss, point_misses, max_point_miss, distance_misses, max_angle_error,
-        kernel_seconds, reference_seconds);
+        loose_enclosures, kernel_seconds, reference_seconds);
     std::fflush(stdout);
   }
 };
@@ -194,6 +200,15 @@ void check_crossings(const std::array<RimCrossing, N>& crossings, int count,
   }
   for (int i = 0; i < count; ++i) {
     tally.max_angle_error = std::max(tally.max_angle_error, crossings[i].angle_error);
+    if (crossings[i].angle_error > kLooseAngleError) {
+      if (tally.loose_enclosures++ == 0) {
+        std::ostringstream s;
+        s << std::setprecision(17) << "    (first loose enclosure: " << label << ": crossing at "
+          << crossings[i].angle << " +- " << crossings[i].angle_error << " rad, point +- "
+          << crossings[i].point_error << " m)\n";
+        std::fputs(s.str().c_str(), stdout);
+      }
+    }
   }
   for (const Miss& m : best_misses) {
     const RimCrossing& x = crossings[m.crossing];
