@@ -115,7 +115,7 @@ struct Tally {
       case Certainty::uncertain: ++uncertain; break;
     }
   }
-  void report(::testing::Test* test, double seconds) const {
+  void report(double seconds) const {
     auto record = [&](const char* key, long value) {
       ::testing::Test::RecordProperty(name + "." + key, std::to_string(value));
     };
@@ -128,7 +128,6 @@ struct Tally {
     record("loose_enclosures", loose_enclosures);
     ::testing::Test::RecordProperty(name + ".max_angle_miss", std::to_string(max_angle_miss));
     ::testing::Test::RecordProperty(name + ".max_angle_error", std::to_string(max_angle_error));
-    (void)test;
     std::printf(
         "[ %s ] %ld configurations in %.1f s: exact %ld, certified %ld, uncertain %ld, reference "
         "ambiguous (skipped) %ld\n"
@@ -408,8 +407,8 @@ TEST(MultiprecisionComparison, CylinderAgreesOnRandomTable2AndBroadConfiguration
     }
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  table2.report(this, seconds);
-  broad.report(this, seconds);
+  table2.report(seconds);
+  broad.report(seconds);
   EXPECT_GE(table2.configurations + broad.configurations, 100000);
   EXPECT_EQ(table2.wrong(), 0);
   EXPECT_EQ(broad.wrong(), 0);
@@ -470,8 +469,8 @@ TEST(MultiprecisionComparison, CylinderAgreesOnNearTangentConfigurations) {
     }
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  with_fallback.report(this, seconds);
-  without_fallback.report(this, seconds);
+  with_fallback.report(seconds);
+  without_fallback.report(seconds);
   std::printf("    truth after rounding: %ld crossing, %ld not crossing\n", crossing, inside);
   RecordProperty("truth_crossing", std::to_string(crossing));
   RecordProperty("truth_not_crossing", std::to_string(inside));
@@ -483,6 +482,42 @@ TEST(MultiprecisionComparison, CylinderAgreesOnNearTangentConfigurations) {
   // The generator really produces both outcomes near the wall.
   EXPECT_GT(crossing, 1000);
   EXPECT_GT(inside, 1000);
+}
+
+TEST(MultiprecisionComparison, CylinderSkipsAndCountsWhatTheReferenceCannotDecide) {
+  // Exact tangencies and a rim on the wall, from small integers under the 24 axis rotations (exact):
+  // the reference must refuse them (ambiguous), the comparison skips and counts them, and the kernel
+  // must still prove its answer, whose root count is known in closed form.
+  struct Known {
+    Circle3 rim;
+    Cylinder3 wall;
+    int roots;  // with multiplicity; -1: on the surface
+  };
+  const Cylinder3 z2{Vector3::Zero(), Vector3::UnitZ(), 2.0};
+  const std::vector<Known> cases = {
+      {{Vector3(1, 0, 0), Vector3::UnitZ(), 1.0}, z2, 2},                       // internal tangency
+      {{Vector3(3, 0, 0), Vector3::UnitZ(), 1.0}, z2, 2},                       // external tangency
+      {{Vector3::Zero(), Vector3(0, 3, 4), 5.0}, {Vector3::Zero(), Vector3::UnitZ(), 4.0}, 4},
+      {{Vector3::Zero(), Vector3(0, 3, 4), 5.0}, {Vector3::Zero(), Vector3::UnitZ(), 5.0}, 4},
+      {{Vector3(0, 0, 3), Vector3::UnitZ(), 2.0}, {Vector3(0, 0, -1), Vector3(0, 0, 7), 2.0}, -1}};
+  Tally tally{"cylinder.exactly_degenerate"};
+  long proved_and_right = 0;
+  for (const testing::RigidMotion& m : testing::axis_rotations()) {
+    for (const Known& k : cases) {
+      const Circle3 rim = m(k.rim);
+      const Cylinder3 wall = m(k.wall);
+      compare_cylinder(rim, wall, timed_reference(rim, wall, tally), {}, tally);
+      const CircleCylinderIntersection r = intersect_circle_cylinder(rim, wall);
+      if (r.certificate.level == Certainty::uncertain) continue;
+      const bool right = k.roots < 0 ? r.topology == CircleCylinderTopology::on_surface
+                                     : (r.topology == CircleCylinderTopology::crossing &&
+                                        r.root_count() == k.roots);
+      if (right) ++proved_and_right;
+    }
+  }
+  tally.report(0);
+  EXPECT_EQ(tally.ambiguous_skipped, tally.configurations);
+  EXPECT_EQ(proved_and_right, tally.configurations);
 }
 
 // ---- the plane ---------------------------------------------------------------------------------
@@ -560,7 +595,7 @@ TEST(MultiprecisionComparison, PlaneAgreesOnRandomTable2Configurations) {
     for (int s = 0; s < 2; ++s) compare_plane(j.rims[s], j.bases[s], {}, tally);
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  tally.report(this, seconds);
+  tally.report(seconds);
   EXPECT_EQ(tally.wrong(), 0);
   EXPECT_EQ(tally.uncertain, 0);
 }
@@ -589,8 +624,8 @@ TEST(MultiprecisionComparison, PlaneAgreesOnNearTangentConfigurations) {
     }
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  with_fallback.report(this, seconds);
-  without_fallback.report(this, seconds);
+  with_fallback.report(seconds);
+  without_fallback.report(seconds);
   EXPECT_EQ(with_fallback.wrong(), 0);
   EXPECT_EQ(with_fallback.uncertain, 0);
   EXPECT_EQ(without_fallback.wrong(), 0);
