@@ -242,12 +242,18 @@ bool subdivision_proof(const RimDistancePolynomial& g, RimRoots& result) {
           collect_distinct(roots, found, seen_sign, result);
           return false;
         }
-        RootEnclosure& root = roots[found++];
         const double theta = newton(g, middle, arc.low, arc.high);
-        if (!enclose_simple_root(g, theta, direction, arc.low, arc.high, root)) {
-          root = {middle, radius, 1, direction};  // the whole arc encloses it
+        RootEnclosure root;
+        if (enclose_simple_root(g, theta, direction, arc.low, arc.high, root)) {
+          roots[found++] = root;
+          continue;
         }
-        continue;
+        if (arc.depth >= kMaxDepth) {
+          roots[found++] = {middle, radius, 1, direction};  // the whole (tiny) arc encloses it
+          continue;
+        }
+        // Newton did not settle from this arc's middle: a shorter arc gives it a better start,
+        // rather than reporting the whole arc as a uselessly wide enclosure. Falls through.
       }
     }
     if (arc.depth >= kMaxDepth) {

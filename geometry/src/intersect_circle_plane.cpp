@@ -39,19 +39,29 @@ Bounded angle_of(const Bounded& x, const Bounded& y) {
   return {angle, 0.5 * std::numbers::pi * delta / (length - delta) + kLibmAngleError};
 }
 
+/// An angle enclosure with the cosine and sine of its centre value.
+struct AngleWithTrig {
+  Bounded angle;
+  double cos, sin;
+};
+
 /// acos of an enclosed cosine. Away from +-1 one acos and the derivative bound
-/// |acos' | = 1 / sqrt(1 - c^2) suffice; near +-1 the monotone acos at both enclosure ends.
-Bounded acos_of(const Bounded& c) {
+/// |acos'| = 1 / sqrt(1 - c^2) suffice, and the centre's cosine is c itself; near +-1 the
+/// monotone acos at both enclosure ends, whose midpoint needs its own cosine and sine (the
+/// crossing points must sit at the reported angles, not at acos(c)).
+AngleWithTrig acos_of(const Bounded& c) {
   const double spread = c.error * detail::kErrorInflation;
   const double far = std::fabs(c.value) + spread;
   if (far < 0.75) {
     const double slope_bound = 1.0 / std::sqrt((1.0 - far) * (1.0 + far)) * (1 + 0x1p-40);
-    return {std::acos(c.value), spread * slope_bound + kLibmAngleError};
+    return {{std::acos(c.value), spread * slope_bound + kLibmAngleError},
+            c.value,
+            std::sqrt((1.0 - c.value) * (1.0 + c.value))};
   }
   const double low = std::acos(std::clamp(c.value + spread, -1.0, 1.0));
   const double high = std::acos(std::clamp(c.value - spread, -1.0, 1.0));
   const double middle = 0.5 * (low + high);
-  return {middle, 0.5 * (high - low) + kLibmAngleError};
+  return {{middle, 0.5 * (high - low) + kLibmAngleError}, std::cos(middle), std::sin(middle)};
 }
 
 }  // namespace
@@ -171,11 +181,10 @@ CirclePlaneIntersection intersect_circle_plane(const Circle3& circle, const Plan
   }
 
   // Two crossings at theta_m -+ beta, cos(beta) = -s / (r |P n_p|); beyond the plane between them.
-  const Bounded cos_beta = -s / (r * in_plane_normal);
-  const Bounded half_width = acos_of(cos_beta);
+  const AngleWithTrig beta = acos_of(-s / (r * in_plane_normal));
+  const Bounded& half_width = beta.angle;
   const double error = theta_m.error + half_width.error;
-  const double cb = std::clamp(cos_beta.value, -1.0, 1.0);
-  const double sb = std::sqrt((1.0 - cb) * (1.0 + cb));
+  const double cb = beta.cos, sb = beta.sin;
   out.crossings[0] = crossing_at(theta_m.value - half_width.value, error, cos_m * cb + sin_m * sb,
                                  sin_m * cb - cos_m * sb, 1);
   out.crossings[1] = crossing_at(theta_m.value + half_width.value, error, cos_m * cb - sin_m * sb,
