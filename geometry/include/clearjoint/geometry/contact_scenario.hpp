@@ -1,0 +1,53 @@
+#pragma once
+/// \file
+/// The contact scenarios of the paper's Fig. 2, (a) to (l), plus free flight and "beyond the
+/// model", and the rule that names the scenario from the contacts found.
+
+#include <string_view>
+
+namespace clearjoint::geometry {
+
+/// Fig. 2 of Marques et al. (2017). Misaligned axes: (a)-(i); parallel axes: (j)-(l).
+enum class ContactScenario {
+  none,                             ///< free flight: no contact
+  single_radial,                    ///< (a) one rim against the lateral wall
+  single_axial,                     ///< (b) one rim against a base
+  radial_at_both_bases,             ///< (c) both rims against the wall
+  axial_at_both_bases,              ///< (d) rim A against base A and rim B against base B
+  radial_and_axial_same_base,       ///< (e) one rim against the wall and the base on its side
+  radial_and_axial_opposite_bases,  ///< (f) one rim against the wall, the other against its base
+  two_radial_one_axial,             ///< (g) both rims against the wall, one against a base
+  one_radial_two_axial,             ///< (h) one rim against the wall, both against their bases
+  all_four,                         ///< (i) both rims against the wall and their bases
+  line,                             ///< (j) parallel axes, journal along the wall
+  face,                             ///< (k) parallel axes, journal base flat on a bearing base
+  line_and_face,                    ///< (l) (j) and (k) together
+  /// A configuration the paper's model does not cover: a rim crossing the wall four times (two
+  /// penetration arcs on one rim), a rim entirely beyond the wall or a base, or a penetration
+  /// deeper than the clearance in its direction (radial cr, eq. 1; axial ca, eq. 2).
+  beyond_model,
+};
+
+/// "(a) single radial", "(j) line", "none", "beyond model", ...
+std::string_view to_string(ContactScenario scenario) noexcept;
+
+/// Which of the candidate contacts exist. Misaligned: radial_at_a/b (rim vs wall) and
+/// axial_at_a/b (rim vs base plane). Parallel axes: line (radial at mid-length) and
+/// axial_at_a/b (face contact).
+struct ContactPresence {
+  bool aligned = false;
+  bool radial_at_a = false;
+  bool radial_at_b = false;
+  bool line = false;
+  bool axial_at_a = false;
+  bool axial_at_b = false;
+  bool beyond_model = false;
+};
+
+/// The scenario named by a set of contacts: beyond_model wins over everything; then the counts
+/// of radial and axial contacts (and for one of each, whether they share a base) pick (a)-(i) or
+/// (j)-(l). A presence pattern no scenario describes (a line contact with misaligned axes, or
+/// face contacts at both bases) is beyond_model.
+ContactScenario classify_scenario(const ContactPresence& presence) noexcept;
+
+}  // namespace clearjoint::geometry

@@ -1,0 +1,107 @@
+#pragma once
+/// \file
+/// Contact detection between a journal and its bearing: paper Section 3, eqs. (5)-(23).
+///
+/// Misaligned axes: four candidate point contacts, each one certified kernel query:
+///   radial at base X (X = A, B): journal rim X against the bearing's lateral wall, eqs. (16)-(21),
+///     intersect_circle_cylinder;
+///   axial at base X: journal rim X against the bearing's base plane X, eqs. (11)-(15),
+///     intersect_circle_plane (base plane A has outward normal +a_i, base plane B -a_i).
+/// Parallel axes (eq. (5), decided exactly): a line contact along the wall at the journal's
+/// mid-length, eqs. (6)-(8), and face contacts at a base, eqs. (9)-(10).
+///
+/// Labels: A and B are the bearing's bases (eqs. 3-4). The journal rim facing bearing base A is
+/// rim A, whichever way the journal's axis points (sign of a_i . a_j).
+///
+/// Model limits (documented, not detected): the journal's lateral surface against a bearing's
+/// base edge, and a rim against the opposite base, are not candidate contacts (the paper's
+/// small-tilt model).
+
+#include <array>
+
+#include "clearjoint/geometry/certificate.hpp"
+#include "clearjoint/geometry/contact_scenario.hpp"
+#include "clearjoint/geometry/intersection_options.hpp"
+#include "clearjoint/geometry/joint_geometry.hpp"
+#include "clearjoint/geometry/rim_arc.hpp"
+#include "clearjoint/geometry/vector3.hpp"
+
+namespace clearjoint::geometry {
+
+struct DetectionOptions {
+  /// Passed to the kernel queries.
+  IntersectionOptions intersection{};
+  /// Axes whose angle (or angle to the opposite direction) is at most this many radians are
+  /// treated as parallel (eqs. 6-10 instead of eqs. 11-21). 0 (default): parallel only when
+  /// a_i x a_j = 0 exactly (eq. 5). A positive tolerance is evaluated in double precision, and
+  /// contacts found under it are `uncertain` ("axes treated as parallel within the tolerance").
+  double parallel_angle_tolerance = 0.0;
+};
+
+enum class ContactType {
+  radial,  ///< against the lateral wall (a point, eqs. 16-21; or a line, eqs. 6-8)
+  axial,   ///< against a base (a point, eqs. 11-15; or a face, eqs. 9-10)
+};
+
+enum class ContactBase {
+  a,    ///< at bearing base A (eq. 3) and the journal rim facing it
+  b,    ///< at bearing base B (eq. 4) and the journal rim facing it
+  mid,  ///< at the journal's mid-length (aligned line contact, eqs. 6-8)
+};
+
+/// One contact.
+///
+/// Convention (eqs. 22-23): `normal_W = (p_WCj - p_WCi) / |p_WCj - p_WCi|` points out of the
+/// bearing, in the direction the journal penetrates; `depth = |p_WCj - p_WCi| >= 0`. Hence
+///   p_WCj - p_WCi = depth * normal_W   (up to rounding),
+/// and the contact force on the journal acts along -normal_W. `normal_W` is the wall's outward
+/// normal at p_WCi (radial, eq. 20, eq. 6) or the base's outward normal (+-a_i/|a_i|, axial); it
+/// is defined even at depth 0.
+///
+/// Invariants: p_WCi lies on the bearing surface (wall: distance Ri from its axis; base: in the
+/// base plane), up to rounding; for point contacts p_WCj is a journal rim point (distance Rj
+/// from the rim centre, in the rim plane) at the middle of its penetration arc (eqs. 13, 18).
+/// A rim entirely beyond a surface (beyond the model) has no arc middle: p_WCj is then the rim
+/// point farthest along the base normal (axial; the deepest point) or along the radial direction
+/// of the rim centre (radial; an approximation of the deepest point).
+struct Contact {
+  ContactType type = ContactType::radial;
+  ContactBase base = ContactBase::a;
+  Vector3 p_WCj = Vector3::Zero();  ///< contact point on the journal (eqs. 8, 10, 14, 19)
+  Vector3 p_WCi = Vector3::Zero();  ///< contact point on the bearing (eqs. 7, 9, 15, 21)
+  Vector3 normal_W = Vector3::UnitZ();
+  double depth = 0.0;               ///< metres (the unit of the input)
+  /// Rim crossings bounding the penetration arc (point contacts; 0 for line and face contacts,
+  /// 1 when the rim touches from outside everywhere but one point).
+  std::array<RimCrossing, 2> crossings{};
+  int crossing_count = 0;
+  /// Trust in this contact's existence and crossings (the kernel query's, or the parallelism
+  /// decision's). Points, normal and depth are double-precision evaluations of the paper's
+  /// formulas at the certified arc middle.
+  Certificate certificate{};
+};
+
+/// Up to two radial contacts per rim (beyond the model a rim may have two penetration arcs)
+/// plus two axial ones.
+inline constexpr int kMaxContacts = 6;
+
+struct JointContacts {
+  ContactScenario scenario = ContactScenario::none;
+  /// Axes parallel: exactly (eq. 5) or within DetectionOptions::parallel_angle_tolerance.
+  bool aligned = false;
+  /// Every contact found, radial before axial, base A before B. Also filled when
+  /// scenario == beyond_model.
+  std::array<Contact, kMaxContacts> contacts{};
+  int contact_count = 0;
+  /// The weakest certificate over every decision taken, including the "no contact" answers.
+  Certificate certificate{};
+};
+
+/// Detect every contact between a journal (pose `journal`) and its bearing (pose `bearing`).
+/// Validates its inputs (InvalidInput names the field). Fixed-size results; no heap allocation
+/// on the double-precision path. The exact fallbacks allocate (CGAL rationals): the kernel's near
+/// a tangency, and eq. (5)'s when an axis component lies outside [2^-450, 2^450].
+JointContacts detect_contacts(const JointDimensions& dimensions, const PartPose& bearing,
+                              const PartPose& journal, const DetectionOptions& options = {});
+
+}  // namespace clearjoint::geometry

@@ -1,0 +1,321 @@
+#include "clearjoint/geometry/detect_contacts.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <sstream>
+
+#include <CGAL/Gmpq.h>
+
+#include "clearjoint/geometry/intersect_circle_cylinder.hpp"
+#include "clearjoint/geometry/intersect_circle_plane.hpp"
+#include "error_bounded.hpp"
+
+namespace clearjoint::geometry {
+namespace {
+
+constexpr const char* kToleranceReason =
+    "axes treated as parallel within DetectionOptions::parallel_angle_tolerance (eq. 5 relaxed; "
+    "decided in double precision)";
+
+/// Range in which detail::exactly_equal_products is a decision (its documented validity range).
+bool in_two_product_range(double x) {
+  constexpr double kSafeMagnitude = 0x1p450, kTinyMagnitude = 0x1p-450;
+  const double m = std::fabs(x);
+  return m == 0.0 || (m > kTinyMagnitude && m < kSafeMagnitude);
+}
+
+/// a*b == c*d in real arithmetic: Dekker's two-product in range, CGAL rationals otherwise.
+bool products_equal(double a, double b, double c, double d) {
+  if (in_two_product_range(a) && in_two_product_range(b) && in_two_product_range(c) &&
+      in_two_product_range(d)) {
+    return detail::exactly_equal_products(a, b, c, d);
+  }
+  return CGAL::Gmpq(a) * CGAL::Gmpq(b) == CGAL::Gmpq(c) * CGAL::Gmpq(d);
+}
+
+/// eq. (5): a_i x a_j = 0, decided exactly on the stored doubles.
+bool axes_exactly_parallel(const Vector3& a, const Vector3& b) {
+  return products_equal(a.y(), b.z(), a.z(), b.y()) && products_equal(a.z(), b.x(), a.x(), b.z()) &&
+         products_equal(a.x(), b.y(), a.y(), b.x());
+}
+
+/// The component of `offset` perpendicular to the unit axis `axis_hat`, written as
+/// axis x (offset x axis): no cancellation of nearly equal terms, unlike offset - (offset.a) a.
+Vector3 off_axis(const Vector3& offset, const Vector3& axis_hat) {
+  return axis_hat.cross(offset.cross(axis_hat));
+}
+
+/// Everything the candidate contacts need, computed once.
+struct JointSetup {
+  double bearing_radius = 0.0;
+  double journal_radius = 0.0;
+  double radial_clearance = 0.0;  // eq. (1)
+  double axial_clearance = 0.0;   // eq. (2)
+  Vector3 p_WPi = Vector3::Zero();
+  Vector3 p_WPj = Vector3::Zero();
+  Vector3 bearing_axis_hat_W = Vector3::UnitZ();
+  Vector3 journal_axis_hat_W = Vector3::UnitZ();
+  Vector3 bearing_axis_W = Vector3::UnitZ();  // as given, for the kernel primitives
+  Vector3 journal_axis_W = Vector3::UnitZ();
+  BaseCenters bearing_bases;  // eqs. (3)-(4)
+  BaseCenters journal_rims;   // centres of the journal rims facing bearing bases A and B
+};
+
+JointSetup set_up(const JointDimensions& dimensions, const PartPose& bearing,
+                  const PartPose& journal) {
+  JointSetup s;
+  s.bearing_radius = dimensions.bearing_radius;
+  s.journal_radius = dimensions.journal_radius;
+  s.radial_clearance = dimensions.radial_clearance();
+  s.axial_clearance = dimensions.axial_clearance();
+  s.p_WPi = bearing.p_WP;
+  s.p_WPj = journal.p_WP;
+  s.bearing_axis_W = bearing.axis_W;
+  s.journal_axis_W = journal.axis_W;
+  s.bearing_axis_hat_W = unit_axis(bearing);
+  s.journal_axis_hat_W = unit_axis(journal);
+  s.bearing_bases = base_centers(bearing, dimensions.bearing_length);
+  const BaseCenters journal_bases = base_centers(journal, dimensions.journal_length);
+  // Labels follow the bearing: when a_j points against a_i, the journal's "B" base faces A.
+  const bool same_direction = bearing.axis_W.dot(journal.axis_W) >= 0.0;
+  s.journal_rims = same_direction ? journal_bases : BaseCenters{journal_bases.p_WB, journal_bases.p_WA};
+  return s;
+}
+
+const Vector3& bearing_base(const JointSetup& s, ContactBase base) {
+  return base == ContactBase::a ? s.bearing_bases.p_WA : s.bearing_bases.p_WB;
+}
+const Vector3& journal_rim_center(const JointSetup& s, ContactBase base) {
+  return base == ContactBase::a ? s.journal_rims.p_WA : s.journal_rims.p_WB;
+}
+/// Outward normal of the bearing base: +a_i at A, -a_i at B.
+double outward_sign(ContactBase base) { return base == ContactBase::a ? 1.0 : -1.0; }
+
+Circle3 journal_rim(const JointSetup& s, ContactBase base) {
+  return {journal_rim_center(s, base), s.journal_axis_W, s.journal_radius};
+}
+
+/// Accumulates the weakest certificate over every decision.
+class CertificateAccumulator {
+ public:
+  void add(const Certificate& c) {
+    overall_ = any_ ? weakest(overall_, c) : c;
+    any_ = true;
+  }
+  Certificate result() const { return overall_; }
+
+ private:
+  Certificate overall_{};
+  bool any_ = false;
+};
+
+/// Crossings bounding `arc` (its ends are crossing angles, as the kernel builds them).
+void copy_arc_crossings(const RimCrossing* crossings, int count, const RimArc& arc,
+                        Contact& contact) {
+  for (int k = 0; k < count && contact.crossing_count < 2; ++k) {
+    if (crossings[k].angle == arc.begin || crossings[k].angle == arc.end) {
+      contact.crossings[contact.crossing_count++] = crossings[k];
+    }
+  }
+}
+
+/// The journal point of a point contact: the rim point at the middle of the penetration arc
+/// (eqs. 13-14, 18-19). For a full arc (beyond the model) the middle is not meaningful; the rim
+/// point farthest along `deepest_direction` (projected into the rim plane) is taken instead.
+Vector3 journal_contact_point(const Circle3& rim, const RimArc& arc,
+                              const Vector3& deepest_direction, const Vector3& rim_normal_hat) {
+  if (arc.full) {
+    const Vector3 in_plane = off_axis(deepest_direction, rim_normal_hat);
+    const double length = in_plane.norm();
+    if (length > 0.0) return rim.center + (rim.radius / length) * in_plane;
+  }
+  return point_at(rim, frame_of(rim), arc.middle());
+}
+
+/// Radial point contact from one penetration arc of rim `base` against the wall, eqs. (18)-(23).
+Contact radial_contact(const JointSetup& s, ContactBase base, const Circle3& rim,
+                       const CircleCylinderIntersection& hit, const RimArc& arc) {
+  Contact contact;
+  contact.type = ContactType::radial;
+  contact.base = base;
+  contact.certificate = hit.certificate;
+  const Vector3 radial_offset_of_center = off_axis(rim.center - s.p_WPi, s.bearing_axis_hat_W);
+  contact.p_WCj = journal_contact_point(rim, arc, radial_offset_of_center, s.journal_axis_hat_W);
+  const Vector3 offset = contact.p_WCj - s.p_WPi;
+  const Vector3 radial = off_axis(offset, s.bearing_axis_hat_W);
+  const double distance_to_axis = radial.norm();
+  contact.normal_W = radial / distance_to_axis;  // eq. (20)
+  contact.p_WCi = s.p_WPi + offset.dot(s.bearing_axis_hat_W) * s.bearing_axis_hat_W +
+                  s.bearing_radius * contact.normal_W;  // eq. (21)
+  // eq. (23): |C_j - C_i| = distance_to_axis - Ri for a point beyond the wall. Both terms are
+  // close to Ri, so the difference is exact (Sterbenz); rounding of C_j may leave it a few
+  // ulps below 0 for an arc of vanishing length, hence the clamp.
+  contact.depth = std::max(0.0, distance_to_axis - s.bearing_radius);
+  copy_arc_crossings(hit.crossings.data(), hit.crossing_count, arc, contact);
+  return contact;
+}
+
+/// Axial point contact of rim `base` against base plane `base`, eqs. (13)-(15), (22)-(23).
+Contact axial_contact(const JointSetup& s, ContactBase base, const Circle3& rim,
+                      const CirclePlaneIntersection& hit) {
+  Contact contact;
+  contact.type = ContactType::axial;
+  contact.base = base;
+  contact.certificate = hit.certificate;
+  contact.normal_W = outward_sign(base) * s.bearing_axis_hat_W;
+  contact.p_WCj = journal_contact_point(rim, hit.penetration, contact.normal_W, s.journal_axis_hat_W);
+  const double beyond_base = (contact.p_WCj - bearing_base(s, base)).dot(contact.normal_W);
+  contact.p_WCi = contact.p_WCj - beyond_base * contact.normal_W;  // eq. (15)
+  contact.depth = std::max(0.0, beyond_base);                      // eq. (23)
+  copy_arc_crossings(hit.crossings.data(), hit.crossing_count, hit.penetration, contact);
+  return contact;
+}
+
+/// The misaligned case: four candidate point contacts.
+void detect_misaligned(const JointSetup& s, const DetectionOptions& options,
+                       JointContacts& out, ContactPresence& presence,
+                       CertificateAccumulator& certificate) {
+  const Cylinder3 wall{s.p_WPi, s.bearing_axis_W, s.bearing_radius};
+  for (const ContactBase base : {ContactBase::a, ContactBase::b}) {
+    const Circle3 rim = journal_rim(s, base);
+    const CircleCylinderIntersection hit = intersect_circle_cylinder(rim, wall, options.intersection);
+    certificate.add(hit.certificate);
+    if (hit.arc_count == 0) continue;
+    (base == ContactBase::a ? presence.radial_at_a : presence.radial_at_b) = true;
+    // Two arcs: four crossings; a full arc: the rim is beyond the wall all round.
+    if (hit.arc_count > 1 || hit.penetration_arcs[0].full) presence.beyond_model = true;
+    for (int k = 0; k < hit.arc_count; ++k) {
+      const Contact contact = radial_contact(s, base, rim, hit, hit.penetration_arcs[k]);
+      if (contact.depth > s.radial_clearance) presence.beyond_model = true;
+      out.contacts[out.contact_count++] = contact;
+    }
+  }
+  for (const ContactBase base : {ContactBase::a, ContactBase::b}) {
+    const Circle3 rim = journal_rim(s, base);
+    const Plane3 base_plane{bearing_base(s, base), outward_sign(base) * s.bearing_axis_W};
+    const CirclePlaneIntersection hit = intersect_circle_plane(rim, base_plane, options.intersection);
+    certificate.add(hit.certificate);
+    if (!hit.has_penetration) continue;
+    (base == ContactBase::a ? presence.axial_at_a : presence.axial_at_b) = true;
+    if (hit.penetration.full) presence.beyond_model = true;  // the rim is beyond the base
+    const Contact contact = axial_contact(s, base, rim, hit);
+    if (contact.depth > s.axial_clearance) presence.beyond_model = true;
+    out.contacts[out.contact_count++] = contact;
+  }
+}
+
+/// The aligned case, eqs. (6)-(10). `exactly_parallel`: eq. (5) holds exactly, and the
+/// existence of each contact is decided by the certified kernel; otherwise (angle tolerance)
+/// in double precision, and the contacts are uncertain.
+void detect_aligned(const JointSetup& s, const DetectionOptions& options, bool exactly_parallel,
+                    JointContacts& out, ContactPresence& presence,
+                    CertificateAccumulator& certificate) {
+  const Certificate tolerance_certificate{Certainty::uncertain, kToleranceReason};
+  const Vector3 offset = s.p_WPj - s.p_WPi;
+  const Vector3 radial = off_axis(offset, s.bearing_axis_hat_W);
+  const double eccentricity = radial.norm();
+  // Line contact: the journal's mid-length cross-section reaches beyond the wall. With parallel
+  // axes every cross-section has the same eccentricity e, and max distance e + Rj > Ri.
+  bool line = false;
+  Certificate line_certificate = tolerance_certificate;
+  if (exactly_parallel) {
+    const Circle3 mid_section{s.p_WPj, s.journal_axis_W, s.journal_radius};
+    const Cylinder3 wall{s.p_WPi, s.bearing_axis_W, s.bearing_radius};
+    const CircleCylinderIntersection hit =
+        intersect_circle_cylinder(mid_section, wall, options.intersection);
+    line = hit.arc_count > 0;
+    line_certificate = hit.certificate;
+  } else {
+    line = eccentricity > s.radial_clearance;
+  }
+  certificate.add(line_certificate);
+  if (line && eccentricity > 0.0) {
+    presence.line = true;
+    Contact contact;
+    contact.type = ContactType::radial;
+    contact.base = ContactBase::mid;
+    contact.certificate = line_certificate;
+    contact.normal_W = radial / eccentricity;  // eq. (6)
+    contact.p_WCi = s.p_WPi + offset.dot(s.bearing_axis_hat_W) * s.bearing_axis_hat_W +
+                    s.bearing_radius * contact.normal_W;                       // eq. (7)
+    contact.p_WCj = s.p_WPj + s.journal_radius * contact.normal_W;            // eq. (8)
+    contact.depth = std::max(0.0, eccentricity - s.radial_clearance);        // eq. (23)
+    if (contact.depth > s.radial_clearance) presence.beyond_model = true;
+    out.contacts[out.contact_count++] = contact;
+  }
+  // Face contacts: the journal base facing bearing base X lies beyond X's plane.
+  for (const ContactBase base : {ContactBase::a, ContactBase::b}) {
+    const Vector3 normal_W = outward_sign(base) * s.bearing_axis_hat_W;
+    const Vector3& p_WBj = journal_rim_center(s, base);
+    const double beyond_base = (p_WBj - bearing_base(s, base)).dot(normal_W);
+    bool face = false;
+    Certificate face_certificate = tolerance_certificate;
+    if (exactly_parallel) {
+      const Plane3 base_plane{bearing_base(s, base), outward_sign(base) * s.bearing_axis_W};
+      const CirclePlaneIntersection hit =
+          intersect_circle_plane(journal_rim(s, base), base_plane, options.intersection);
+      face = hit.topology == CirclePlaneTopology::disjoint && hit.side > 0;
+      face_certificate = hit.certificate;
+    } else {
+      face = beyond_base > 0.0;
+    }
+    certificate.add(face_certificate);
+    if (!face) continue;
+    (base == ContactBase::a ? presence.axial_at_a : presence.axial_at_b) = true;
+    Contact contact;
+    contact.type = ContactType::axial;
+    contact.base = base;
+    contact.certificate = face_certificate;
+    contact.normal_W = normal_W;
+    contact.p_WCj = p_WBj;                               // eq. (10)
+    contact.p_WCi = p_WBj - beyond_base * normal_W;      // eq. (9)
+    contact.depth = std::max(0.0, beyond_base);          // eq. (23)
+    if (contact.depth > s.axial_clearance) presence.beyond_model = true;
+    out.contacts[out.contact_count++] = contact;
+  }
+}
+
+void validate(const DetectionOptions& options) {
+  const double tolerance = options.parallel_angle_tolerance;
+  if (!(tolerance >= 0.0 && tolerance < 0.5 * std::numbers::pi)) {
+    std::ostringstream message;
+    message.precision(17);
+    message << "options.parallel_angle_tolerance = " << tolerance
+            << ": must lie in [0, pi/2) radians";
+    throw InvalidInput(message.str());
+  }
+}
+
+}  // namespace
+
+JointContacts detect_contacts(const JointDimensions& dimensions, const PartPose& bearing,
+                              const PartPose& journal, const DetectionOptions& options) {
+  validate(dimensions);
+  validate(bearing, "bearing");
+  validate(journal, "journal");
+  validate(options);
+  const JointSetup setup = set_up(dimensions, bearing, journal);
+
+  JointContacts out;
+  ContactPresence presence;
+  CertificateAccumulator certificate;
+  const bool exactly_parallel = axes_exactly_parallel(bearing.axis_W, journal.axis_W);
+  bool aligned = exactly_parallel;
+  if (!aligned && options.parallel_angle_tolerance > 0.0) {
+    // |a_i_hat x a_j_hat| = sin(angle between the lines), compared in double.
+    const double sine = setup.bearing_axis_hat_W.cross(setup.journal_axis_hat_W).norm();
+    aligned = sine <= std::sin(options.parallel_angle_tolerance);
+  }
+  out.aligned = presence.aligned = aligned;
+  if (aligned) {
+    detect_aligned(setup, options, exactly_parallel, out, presence, certificate);
+  } else {
+    detect_misaligned(setup, options, out, presence, certificate);
+  }
+  out.scenario = classify_scenario(presence);
+  out.certificate = certificate.result();
+  return out;
+}
+
+}  // namespace clearjoint::geometry

@@ -1,0 +1,80 @@
+#include "clearjoint/geometry/joint_geometry.hpp"
+
+#include <cmath>
+#include <sstream>
+#include <string>
+
+namespace clearjoint::geometry {
+namespace {
+
+std::string format(double x) {
+  std::ostringstream out;
+  out.precision(17);
+  out << x;
+  return out.str();
+}
+
+std::string format(const Vector3& v) {
+  std::ostringstream out;
+  out.precision(17);
+  out << '[' << v.x() << ", " << v.y() << ", " << v.z() << ']';
+  return out.str();
+}
+
+[[noreturn]] void reject(std::string_view name, std::string_view field, const std::string& value,
+                         std::string_view why) {
+  std::ostringstream message;
+  message << name << '.' << field << " = " << value << ": " << why;
+  throw InvalidInput(message.str());
+}
+
+void require_positive(double x, std::string_view name, std::string_view field) {
+  if (!std::isfinite(x)) reject(name, field, format(x), "must be finite");
+  if (!(x > 0.0)) reject(name, field, format(x), "must be positive");
+}
+
+}  // namespace
+
+void validate(const JointDimensions& dimensions, std::string_view name) {
+  require_positive(dimensions.bearing_radius, name, "bearing_radius");
+  require_positive(dimensions.bearing_length, name, "bearing_length");
+  require_positive(dimensions.journal_radius, name, "journal_radius");
+  require_positive(dimensions.journal_length, name, "journal_length");
+  // eqs. (1)-(2): the clearances must be positive.
+  if (!(dimensions.journal_radius < dimensions.bearing_radius)) {
+    reject(name, "journal_radius", format(dimensions.journal_radius),
+           "must be smaller than bearing_radius = " + format(dimensions.bearing_radius));
+  }
+  if (!(dimensions.journal_length < dimensions.bearing_length)) {
+    reject(name, "journal_length", format(dimensions.journal_length),
+           "must be smaller than bearing_length = " + format(dimensions.bearing_length));
+  }
+}
+
+void validate(const PartPose& pose, std::string_view name) {
+  if (!pose.p_WP.allFinite()) reject(name, "p_WP", format(pose.p_WP), "every component must be finite");
+  if (!pose.axis_W.allFinite()) {
+    reject(name, "axis_W", format(pose.axis_W), "every component must be finite");
+  }
+  if (pose.axis_W.x() == 0.0 && pose.axis_W.y() == 0.0 && pose.axis_W.z() == 0.0) {
+    reject(name, "axis_W", format(pose.axis_W), "must not be the zero vector");
+  }
+}
+
+Vector3 unit_axis(const PartPose& pose) {
+  // |a|^2 outside these bounds would lose precision to underflow or overflow.
+  constexpr double kSmallestSafeSquare = 0x1p-1000, kLargestSafeSquare = 0x1p1000;
+  const double squared = pose.axis_W.squaredNorm();
+  if (squared > kSmallestSafeSquare && squared < kLargestSafeSquare) {
+    return pose.axis_W / std::sqrt(squared);
+  }
+  return pose.axis_W.stableNormalized();
+}
+
+BaseCenters base_centers(const PartPose& pose, double length) {
+  const Vector3 half_axis = (0.5 * length) * unit_axis(pose);
+  return {pose.p_WP + half_axis,   // eq. (3)
+          pose.p_WP - half_axis};  // eq. (4)
+}
+
+}  // namespace clearjoint::geometry

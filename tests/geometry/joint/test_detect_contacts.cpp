@@ -1,0 +1,509 @@
+// Tests of detect_contacts: each scenario of Fig. 2 plus none and beyond_model, built from a
+// journal tilted in the y-z plane of a bearing on the z axis, where every depth and contact
+// point has a closed form (derived below); invariance under rigid motions, flipping the journal
+// axis and changes of units; the parallel-axes decision and its tolerance option.
+
+#include "clearjoint/geometry/detect_contacts.hpp"
+
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <random>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "../geometry_test_support.hpp"
+
+namespace clearjoint::geometry {
+namespace {
+
+using testing::RigidMotion;
+using testing::random_motion;
+
+// Table 2 of the paper, in millimetres: cr = ca = 0.1.
+const JointDimensions kTable2{10.0, 20.0, 9.9, 19.8};
+// A larger radial clearance (cr = 1, ca = 0.1): both rims can reach their bases without
+// touching the wall (scenario (d)), which Table 2 does not allow (there the radial and axial
+// reaches grow alike with the tilt, see TiltedJournal).
+const JointDimensions kWideRadialClearance{10.0, 20.0, 9.0, 19.8};
+// A longer axial clearance (cr = 0.1, ca = 0.5): both rims reach the wall without reaching the
+// bases (scenario (c)).
+const JointDimensions kLongAxialClearance{10.0, 20.0, 9.9, 19.0};
+
+// Tolerances, in units of the joint (mm here). Inputs are O(10); each double operation errs by
+// ~1e-15 relative. The contact point sits at the middle of certified crossing angles (errors
+// ~1e-14 rad, times Rj = 10); depths are differences of O(10) numbers. 1e-11 leaves three orders
+// of margin above that and is still ten orders below the clearance 0.1.
+constexpr double kLengthTolerance = 1e-11;
+
+/// The bearing on the z axis, centred at the origin: base A at z = Li/2, base B at z = -Li/2.
+PartPose bearing_pose() { return {Vector3::Zero(), Vector3::UnitZ()}; }
+
+/// A journal centred at (0, y0, z0) with axis (0, sin tilt, cos tilt).
+///
+/// Closed forms. A rim with centre c = (0, c_y, c_z) has points
+///   x(s) = c + Rj (cos(theta) e_x + s e_perp),  s = sin(theta),  e_perp = (0, cos tilt, -sin tilt).
+/// Squared distance to the z axis: f(s) = Rj^2 + c_y^2 + 2 c_y Rj cos(tilt) s - Rj^2 sin^2(tilt) s^2,
+/// concave in s, largest at s = sign(c_y) when |c_y| cos(tilt) >= Rj sin^2(tilt) (always so
+/// below; else the rim crosses the wall four times), with value (|c_y| + Rj cos tilt)^2. So the
+/// radial depth is |c_y| + Rj cos(tilt) - Ri at the point c + sign(c_y) Rj e_perp. The mirror
+/// symmetry x -> -x makes that point the middle of the penetration arc (eq. 18).
+/// Height of a rim point: c_z - Rj s sin(tilt): the axial depth at A is c_z + Rj sin(tilt) - Li/2
+/// at c - Rj e_perp, at B it is Rj sin(tilt) - c_z - Li/2 at c + Rj e_perp.
+/// With rim A centre c_A = P + (Lj/2) a and rim B c_B = P - (Lj/2) a, and |y0| below
+/// (Lj/2) sin(tilt): radial depths +-y0 + S, axial depths +-z0 + T, with
+/// S = (Lj/2) sin(tilt) + Rj cos(tilt) - Ri and T = (Lj/2) cos(tilt) + Rj sin(tilt) - Li/2.
+struct TiltedJournal {
+  double y0 = 0.0;
+  double z0 = 0.0;
+  double tilt = 0.0;
+
+  PartPose pose() const {
+    return {Vector3(0.0, y0, z0), Vector3(0.0, std::sin(tilt), std::cos(tilt))};
+  }
+};
+
+/// One expected contact, from the closed forms.
+struct ExpectedContact {
+  ContactType type;
+  ContactBase base;
+  double depth;
+  Vector3 p_WCj;
+  Vector3 p_WCi;
+  Vector3 normal_W;
+};
+
+std::vector<ExpectedContact> analytic_contacts(const JointDimensions& d, const TiltedJournal& t) {
+  const Vector3 axis(0.0, std::sin(t.tilt), std::cos(t.tilt));
+  const Vector3 e_perp(0.0, std::cos(t.tilt), -std::sin(t.tilt));
+  const Vector3 center(0.0, t.y0, t.z0);
+  const Vector3 rim_a = center + 0.5 * d.journal_length * axis;
+  const Vector3 rim_b = center - 0.5 * d.journal_length * axis;
+  const double half_li = 0.5 * d.bearing_length;
+  std::vector<ExpectedContact> out;
+  for (const auto& [base, rim] : {std::pair{ContactBase::a, rim_a}, std::pair{ContactBase::b, rim_b}}) {
+    const double side = rim.y() >= 0 ? 1.0 : -1.0;
+    const double depth = std::abs(rim.y()) + d.journal_radius * std::cos(t.tilt) - d.bearing_radius;
+    const Vector3 p_WCj = rim + side * d.journal_radius * e_perp;
+    if (depth > 0) {
+      out.push_back({ContactType::radial, base, depth, p_WCj,
+                     Vector3(0.0, side * d.bearing_radius, p_WCj.z()), Vector3(0.0, side, 0.0)});
+    }
+  }
+  {
+    const double depth = rim_a.z() + d.journal_radius * std::sin(t.tilt) - half_li;
+    const Vector3 p_WCj = rim_a - d.journal_radius * e_perp;
+    if (depth > 0) {
+      out.push_back({ContactType::axial, ContactBase::a, depth, p_WCj,
+                     Vector3(0.0, p_WCj.y(), half_li), Vector3::UnitZ()});
+    }
+  }
+  {
+    const double depth = d.journal_radius * std::sin(t.tilt) - rim_b.z() - half_li;
+    const Vector3 p_WCj = rim_b + d.journal_radius * e_perp;
+    if (depth > 0) {
+      out.push_back({ContactType::axial, ContactBase::b, depth, p_WCj,
+                     Vector3(0.0, p_WCj.y(), -half_li), -Vector3::UnitZ()});
+    }
+  }
+  return out;
+}
+
+const Contact* find_contact(const JointContacts& result, ContactType type, ContactBase base) {
+  for (int k = 0; k < result.contact_count; ++k) {
+    if (result.contacts[k].type == type && result.contacts[k].base == base) return &result.contacts[k];
+  }
+  return nullptr;
+}
+
+void expect_near(const Vector3& actual, const Vector3& expected, double tolerance) {
+  EXPECT_LE((actual - expected).norm(), tolerance) << "actual " << actual.transpose()
+                                                   << ", expected " << expected.transpose();
+}
+
+/// The result matches the closed forms contact by contact, and every contact satisfies the
+/// stated invariants (p_WCj - p_WCi = depth n; crossings on the surface).
+void expect_analytic(const JointContacts& result, const JointDimensions& d, const TiltedJournal& t) {
+  const std::vector<ExpectedContact> expected = analytic_contacts(d, t);
+  ASSERT_EQ(result.contact_count, int(expected.size()));
+  for (const ExpectedContact& e : expected) {
+    const Contact* c = find_contact(result, e.type, e.base);
+    ASSERT_NE(c, nullptr);
+    EXPECT_NEAR(c->depth, e.depth, kLengthTolerance);
+    expect_near(c->p_WCj, e.p_WCj, kLengthTolerance);
+    expect_near(c->p_WCi, e.p_WCi, kLengthTolerance);
+    expect_near(c->normal_W, e.normal_W, kLengthTolerance);
+    expect_near(c->p_WCj - c->p_WCi, c->depth * c->normal_W, kLengthTolerance);  // eqs. (22)-(23)
+    EXPECT_EQ(c->crossing_count, 2);
+    for (int k = 0; k < c->crossing_count; ++k) {
+      const Vector3& x = c->crossings[k].point;
+      if (e.type == ContactType::radial) {
+        EXPECT_NEAR(std::hypot(x.x(), x.y()), d.bearing_radius, kLengthTolerance);
+      } else {
+        EXPECT_NEAR(std::abs(x.z()), 0.5 * d.bearing_length, kLengthTolerance);
+      }
+    }
+    EXPECT_NE(c->certificate.level, Certainty::uncertain);
+  }
+  EXPECT_FALSE(result.aligned);
+  EXPECT_NE(result.certificate.level, Certainty::uncertain);
+}
+
+struct ScenarioCase {
+  const char* name;
+  JointDimensions dimensions;
+  TiltedJournal journal;
+  ContactScenario scenario;
+};
+
+// Table 2: S = T = 9.9 (sin + cos)(tilt) - 10, i.e. -0.0506 at tilt 0.005 and +0.0279 at 0.013.
+const ScenarioCase kMisalignedCases[] = {
+    {"none", kTable2, {0.0, 0.0, 0.005}, ContactScenario::none},
+    {"a", kTable2, {0.08, 0.0, 0.005}, ContactScenario::single_radial},
+    {"a_at_b", kTable2, {-0.08, 0.0, 0.005}, ContactScenario::single_radial},
+    {"b", kTable2, {0.0, 0.08, 0.005}, ContactScenario::single_axial},
+    {"b_at_b", kTable2, {0.0, -0.08, 0.005}, ContactScenario::single_axial},
+    // kLongAxialClearance at tilt 0.015: S = +0.047, T = -0.353.
+    {"c", kLongAxialClearance, {0.0, 0.0, 0.015}, ContactScenario::radial_at_both_bases},
+    // kWideRadialClearance at tilt 0.02: S = -0.80, T = +0.078.
+    {"d", kWideRadialClearance, {0.0, 0.0, 0.02}, ContactScenario::axial_at_both_bases},
+    {"e", kTable2, {0.08, 0.08, 0.005}, ContactScenario::radial_and_axial_same_base},
+    {"f", kTable2, {0.08, -0.08, 0.005}, ContactScenario::radial_and_axial_opposite_bases},
+    {"g", kTable2, {0.0, 0.04, 0.013}, ContactScenario::two_radial_one_axial},
+    {"h", kTable2, {0.04, 0.0, 0.013}, ContactScenario::one_radial_two_axial},
+    {"i", kTable2, {0.0, 0.0, 0.013}, ContactScenario::all_four},
+};
+
+TEST(DetectContacts, EachMisalignedScenarioMatchesTheClosedForms) {
+  for (const ScenarioCase& c : kMisalignedCases) {
+    SCOPED_TRACE(c.name);
+    const JointContacts result = detect_contacts(c.dimensions, bearing_pose(), c.journal.pose());
+    EXPECT_EQ(result.scenario, c.scenario) << to_string(result.scenario);
+    expect_analytic(result, c.dimensions, c.journal);
+  }
+}
+
+TEST(DetectContacts, ContactsAreListedRadialFirstThenByBase) {
+  const JointContacts result =
+      detect_contacts(kTable2, bearing_pose(), TiltedJournal{0.0, 0.0, 0.013}.pose());
+  ASSERT_EQ(result.contact_count, 4);
+  EXPECT_EQ(result.contacts[0].type, ContactType::radial);
+  EXPECT_EQ(result.contacts[0].base, ContactBase::a);
+  EXPECT_EQ(result.contacts[1].base, ContactBase::b);
+  EXPECT_EQ(result.contacts[2].type, ContactType::axial);
+  EXPECT_EQ(result.contacts[2].base, ContactBase::a);
+  EXPECT_EQ(result.contacts[3].base, ContactBase::b);
+}
+
+// ---- aligned axes: eqs. (6)-(10) ------------------------------------------------------------
+
+TEST(DetectContacts, CentredAlignedJournalHasNoContact) {
+  const JointContacts result = detect_contacts(kTable2, bearing_pose(), PartPose{});
+  EXPECT_TRUE(result.aligned);
+  EXPECT_EQ(result.scenario, ContactScenario::none);
+  EXPECT_EQ(result.contact_count, 0);
+  EXPECT_NE(result.certificate.level, Certainty::uncertain);
+}
+
+TEST(DetectContacts, OffsetAlignedJournalTouchesAlongALine) {
+  // (j): eccentricity e = 0.15 > cr = 0.1 along +y; depth e - cr (eqs. 6-8, 23).
+  const PartPose journal{Vector3(0.0, 0.15, 0.02), Vector3::UnitZ()};
+  const JointContacts result = detect_contacts(kTable2, bearing_pose(), journal);
+  EXPECT_TRUE(result.aligned);
+  EXPECT_EQ(result.scenario, ContactScenario::line);
+  ASSERT_EQ(result.contact_count, 1);
+  const Contact& c = result.contacts[0];
+  EXPECT_EQ(c.type, ContactType::radial);
+  EXPECT_EQ(c.base, ContactBase::mid);
+  EXPECT_NEAR(c.depth, 0.05, kLengthTolerance);
+  expect_near(c.normal_W, Vector3::UnitY(), kLengthTolerance);
+  expect_near(c.p_WCj, Vector3(0.0, 0.15 + 9.9, 0.02), kLengthTolerance);  // eq. (8)
+  expect_near(c.p_WCi, Vector3(0.0, 10.0, 0.02), kLengthTolerance);        // eq. (7)
+  EXPECT_EQ(c.crossing_count, 0);
+  EXPECT_NE(c.certificate.level, Certainty::uncertain);
+}
+
+TEST(DetectContacts, AlignedJournalPushedAlongItsAxisTouchesAFace) {
+  // (k): the journal's base A at z = 0.13 + 9.9 is 0.03 beyond base A at z = 10 (eqs. 9-10).
+  const PartPose journal{Vector3(0.03, 0.04, 0.13), Vector3::UnitZ()};
+  const JointContacts result = detect_contacts(kTable2, bearing_pose(), journal);
+  EXPECT_EQ(result.scenario, ContactScenario::face);
+  ASSERT_EQ(result.contact_count, 1);
+  const Contact& c = result.contacts[0];
+  EXPECT_EQ(c.type, ContactType::axial);
+  EXPECT_EQ(c.base, ContactBase::a);
+  EXPECT_NEAR(c.depth, 0.03, kLengthTolerance);
+  expect_near(c.normal_W, Vector3::UnitZ(), kLengthTolerance);
+  expect_near(c.p_WCj, Vector3(0.03, 0.04, 10.03), kLengthTolerance);  // eq. (10)
+  expect_near(c.p_WCi, Vector3(0.03, 0.04, 10.0), kLengthTolerance);   // eq. (9)
+}
+
+TEST(DetectContacts, AlignedJournalCanTouchLineAndFaceTogether) {
+  // (l): line along +y (depth 0.05) and the face at B (depth 0.03), axis pointing down (-z):
+  // labels follow the bearing, so the face contact is still reported at B.
+  const PartPose journal{Vector3(0.0, 0.15, -0.13), -Vector3::UnitZ()};
+  const JointContacts result = detect_contacts(kTable2, bearing_pose(), journal);
+  EXPECT_EQ(result.scenario, ContactScenario::line_and_face);
+  const Contact* line = find_contact(result, ContactType::radial, ContactBase::mid);
+  const Contact* face = find_contact(result, ContactType::axial, ContactBase::b);
+  ASSERT_NE(line, nullptr);
+  ASSERT_NE(face, nullptr);
+  EXPECT_NEAR(line->depth, 0.05, kLengthTolerance);
+  EXPECT_NEAR(face->depth, 0.03, kLengthTolerance);
+  expect_near(face->normal_W, -Vector3::UnitZ(), kLengthTolerance);
+  expect_near(face->p_WCj, Vector3(0.0, 0.15, -10.03), kLengthTolerance);
+}
+
+TEST(DetectContacts, ExactlyParallelNonUnitAxesAreAligned) {
+  // eq. (5) is decided on the stored doubles: (1, 3, 7) and (-0.5, -1.5, -3.5) are exactly
+  // parallel although neither is unit; one ulp off in one component is not.
+  const PartPose bearing{Vector3::Zero(), Vector3(1.0, 3.0, 7.0)};
+  PartPose journal{Vector3::Zero(), Vector3(-0.5, -1.5, -3.5)};
+  EXPECT_TRUE(detect_contacts(kTable2, bearing, journal).aligned);
+  journal.axis_W.z() = std::nextafter(-3.5, 0.0);
+  EXPECT_FALSE(detect_contacts(kTable2, bearing, journal).aligned);
+}
+
+TEST(DetectContacts, ParallelismOfTinyAxesIsStillDecidedExactly) {
+  // Components near 2^-500 are outside the two-product range; the rational fallback decides.
+  const PartPose bearing{Vector3::Zero(), 0x1p-500 * Vector3(1.0, 3.0, 7.0)};
+  PartPose journal{Vector3::Zero(), Vector3(-0.5, -1.5, -3.5)};
+  EXPECT_TRUE(detect_contacts(kTable2, bearing, journal).aligned);
+  journal.axis_W.y() = std::nextafter(-1.5, 0.0);
+  EXPECT_FALSE(detect_contacts(kTable2, bearing, journal).aligned);
+}
+
+TEST(DetectContacts, AngleToleranceTreatsNearlyParallelAxesAsAlignedButUncertain) {
+  // Tilt 1e-6 rad with eccentricity 0.15: misaligned, two radial contacts of nearly equal depth
+  // (scenario (c)); with a 1e-5 rad tolerance, a line contact of depth 0.05 (eq. 6-8).
+  const TiltedJournal nearly{0.15, 0.0, 1e-6};
+  const JointContacts exact = detect_contacts(kTable2, bearing_pose(), nearly.pose());
+  EXPECT_FALSE(exact.aligned);
+  EXPECT_EQ(exact.scenario, ContactScenario::radial_at_both_bases);
+  DetectionOptions options;
+  options.parallel_angle_tolerance = 1e-5;
+  const JointContacts relaxed = detect_contacts(kTable2, bearing_pose(), nearly.pose(), options);
+  EXPECT_TRUE(relaxed.aligned);
+  EXPECT_EQ(relaxed.scenario, ContactScenario::line);
+  ASSERT_EQ(relaxed.contact_count, 1);
+  EXPECT_NEAR(relaxed.contacts[0].depth, 0.05, kLengthTolerance);
+  EXPECT_EQ(relaxed.contacts[0].certificate.level, Certainty::uncertain);
+  EXPECT_EQ(relaxed.certificate.level, Certainty::uncertain);
+  // A tolerance below the tilt changes nothing.
+  options.parallel_angle_tolerance = 1e-7;
+  EXPECT_FALSE(detect_contacts(kTable2, bearing_pose(), nearly.pose(), options).aligned);
+}
+
+// ---- beyond the model ---------------------------------------------------------------------------
+
+TEST(DetectContacts, PenetrationDeeperThanTheClearanceIsBeyondTheModel) {
+  // Aligned, e = 0.25: line depth 0.15 > cr = 0.1. The contact is still reported.
+  const PartPose journal{Vector3(0.0, 0.25, 0.0), Vector3::UnitZ()};
+  const JointContacts result = detect_contacts(kTable2, bearing_pose(), journal);
+  EXPECT_EQ(result.scenario, ContactScenario::beyond_model);
+  ASSERT_EQ(result.contact_count, 1);
+  EXPECT_NEAR(result.contacts[0].depth, 0.15, kLengthTolerance);
+  // Misaligned: radial depth at A is 0.2 + S(0.005) = 0.149 > cr.
+  const TiltedJournal deep{0.2, 0.0, 0.005};
+  const JointContacts misaligned = detect_contacts(kTable2, bearing_pose(), deep.pose());
+  EXPECT_EQ(misaligned.scenario, ContactScenario::beyond_model);
+  const Contact* radial = find_contact(misaligned, ContactType::radial, ContactBase::a);
+  ASSERT_NE(radial, nullptr);
+  EXPECT_NEAR(radial->depth, analytic_contacts(kTable2, deep)[0].depth, kLengthTolerance);
+}
+
+TEST(DetectContacts, RimCrossingTheWallFourTimesIsBeyondTheModel) {
+  // A short journal (Lj = 2) tilted 0.5 rad, rim A centre at c_y = 1: by the closed form of
+  // TiltedJournal, |c_y| cos(tilt) = 0.88 < Rj sin^2(tilt) = 2.27, so f peaks inside
+  // s in (-1, 1) at Rj^2 + c_y^2 / sin^2(tilt) = 102.36 > Ri^2, while f(+-1) < Ri^2: the rim
+  // leaves the wall on two arcs, mirror images under x -> -x. Rim B (c_y = 0.042) stays inside;
+  // both rims stay far from the bases.
+  const JointDimensions short_journal{10.0, 20.0, 9.9, 2.0};
+  const double tilt = 0.5;
+  const TiltedJournal journal{1.0 - std::sin(tilt), 0.0, tilt};
+  const JointContacts result = detect_contacts(short_journal, bearing_pose(), journal.pose());
+  EXPECT_EQ(result.scenario, ContactScenario::beyond_model);
+  ASSERT_EQ(result.contact_count, 2);
+  const Contact& first = result.contacts[0];
+  const Contact& second = result.contacts[1];
+  for (const Contact* c : {&first, &second}) {
+    EXPECT_EQ(c->type, ContactType::radial);
+    EXPECT_EQ(c->base, ContactBase::a);
+    EXPECT_GT(c->depth, 0.0);
+    EXPECT_EQ(c->crossing_count, 2);
+    expect_near(c->p_WCj - c->p_WCi, c->depth * c->normal_W, kLengthTolerance);
+  }
+  // Mirror images: same y, z and depth, opposite x.
+  EXPECT_NEAR(first.p_WCj.x(), -second.p_WCj.x(), kLengthTolerance);
+  EXPECT_NEAR(first.p_WCj.y(), second.p_WCj.y(), kLengthTolerance);
+  EXPECT_NEAR(first.p_WCj.z(), second.p_WCj.z(), kLengthTolerance);
+  EXPECT_NEAR(first.depth, second.depth, kLengthTolerance);
+}
+
+TEST(DetectContacts, RimEntirelyBeyondABaseIsBeyondTheModelWithItsDeepestPoint) {
+  // Table 2, tilt 0.005, z0 = 0.5: rim A spans z in c_z -+ Rj sin(tilt) = [10.35, 10.45], all
+  // above base A at z = 10. The contact is the deepest rim point (closed form of TiltedJournal),
+  // depth 0.449 > ca; no crossings bound it.
+  const TiltedJournal lifted{0.0, 0.5, 0.005};
+  const JointContacts result = detect_contacts(kTable2, bearing_pose(), lifted.pose());
+  EXPECT_EQ(result.scenario, ContactScenario::beyond_model);
+  const std::vector<ExpectedContact> expected = analytic_contacts(kTable2, lifted);
+  ASSERT_EQ(expected.size(), 1u);
+  ASSERT_EQ(result.contact_count, 1);
+  const Contact& c = result.contacts[0];
+  EXPECT_EQ(c.type, ContactType::axial);
+  EXPECT_EQ(c.base, ContactBase::a);
+  EXPECT_NEAR(c.depth, expected[0].depth, kLengthTolerance);
+  expect_near(c.p_WCj, expected[0].p_WCj, kLengthTolerance);
+  expect_near(c.p_WCi, expected[0].p_WCi, kLengthTolerance);
+  EXPECT_EQ(c.crossing_count, 0);
+}
+
+// ---- invariances ---------------------------------------------------------------------------
+
+/// A joint configuration for the invariance tests: every misaligned case above, and the aligned
+/// ones ((j), (k), (l), none, beyond the model).
+struct JointCase {
+  const char* name;
+  JointDimensions dimensions;
+  PartPose journal;
+  ContactScenario scenario;
+};
+
+std::vector<JointCase> all_cases() {
+  std::vector<JointCase> cases;
+  for (const ScenarioCase& c : kMisalignedCases) {
+    cases.push_back({c.name, c.dimensions, c.journal.pose(), c.scenario});
+  }
+  cases.push_back({"aligned none", kTable2, PartPose{Vector3(0.01, 0.02, 0.03), Vector3::UnitZ()},
+                   ContactScenario::none});
+  cases.push_back({"j", kTable2, PartPose{Vector3(0.0, 0.15, 0.02), Vector3::UnitZ()},
+                   ContactScenario::line});
+  cases.push_back({"k", kTable2, PartPose{Vector3(0.03, 0.04, 0.13), Vector3::UnitZ()},
+                   ContactScenario::face});
+  cases.push_back({"l", kTable2, PartPose{Vector3(0.0, 0.15, -0.13), -Vector3::UnitZ()},
+                   ContactScenario::line_and_face});
+  cases.push_back({"aligned beyond", kTable2, PartPose{Vector3(0.0, 0.25, 0.0), Vector3::UnitZ()},
+                   ContactScenario::beyond_model});
+  return cases;
+}
+
+TEST(DetectContacts, InvarianceCasesHaveTheirScenarios) {
+  for (const JointCase& c : all_cases()) {
+    SCOPED_TRACE(c.name);
+    EXPECT_EQ(detect_contacts(c.dimensions, bearing_pose(), c.journal).scenario, c.scenario);
+  }
+}
+
+// ---- (rigid motions etc.) ------------------------------------------------------------------------------
+
+PartPose moved(const RigidMotion& motion, const PartPose& pose) {
+  return {motion.point(pose.p_WP), motion.direction(pose.axis_W)};
+}
+
+/// Same scenario and, contact by contact, the same contacts up to `map` (points) and `scale`
+/// (lengths).
+template <class PointMap>
+void expect_equivalent(const JointContacts& reference, const JointContacts& other, PointMap map,
+                       double length_scale, double tolerance) {
+  ASSERT_EQ(other.scenario, reference.scenario);
+  ASSERT_EQ(other.contact_count, reference.contact_count);
+  EXPECT_EQ(other.aligned, reference.aligned);
+  for (int k = 0; k < reference.contact_count; ++k) {
+    const Contact& r = reference.contacts[k];
+    const Contact& o = other.contacts[k];
+    EXPECT_EQ(o.type, r.type);
+    EXPECT_EQ(o.base, r.base);
+    EXPECT_NEAR(o.depth, r.depth * length_scale, tolerance * length_scale);
+    expect_near(o.p_WCj, map(r.p_WCj, 1.0), tolerance * length_scale);
+    expect_near(o.p_WCi, map(r.p_WCi, 1.0), tolerance * length_scale);
+    expect_near(o.normal_W, map(r.normal_W, 0.0), tolerance);
+  }
+}
+
+TEST(DetectContacts, EveryScenarioIsInvariantUnderRigidMotionsOfTheWholeJoint) {
+  std::mt19937_64 rng(20170401);
+  // Rotating inputs of size ~10 and translations up to 100 perturbs them by ~1e-13; the closed
+  // forms move the contact by the same order. 1e-9 leaves margin for the middle of a shallow arc,
+  // whose angle is conditioned like 1/sqrt(depth).
+  constexpr double kMotionTolerance = 1e-9;
+  for (const JointCase& c : all_cases()) {
+    SCOPED_TRACE(c.name);
+    const JointContacts reference = detect_contacts(c.dimensions, bearing_pose(), c.journal);
+    for (int trial = 0; trial < 8; ++trial) {
+      const RigidMotion motion = random_motion(rng, 100.0);
+      const JointContacts result = detect_contacts(c.dimensions, moved(motion, bearing_pose()),
+                                                   moved(motion, c.journal));
+      expect_equivalent(reference, result,
+                        [&](const Vector3& x, double w) {
+                          return Vector3(motion.rotation * x + w * motion.translation);
+                        },
+                        1.0, kMotionTolerance);
+    }
+  }
+}
+
+TEST(DetectContacts, FlippingTheJournalAxisChangesNothing) {
+  constexpr double kFlipTolerance = 1e-11;  // only the rim frames' rounding differs
+  for (const JointCase& c : all_cases()) {
+    SCOPED_TRACE(c.name);
+    const PartPose journal = c.journal;
+    const PartPose flipped{journal.p_WP, -journal.axis_W};
+    const JointContacts reference = detect_contacts(c.dimensions, bearing_pose(), journal);
+    const JointContacts result = detect_contacts(c.dimensions, bearing_pose(), flipped);
+    expect_equivalent(reference, result, [](const Vector3& x, double) { return x; }, 1.0,
+                      kFlipTolerance);
+  }
+}
+
+TEST(DetectContacts, ChangingUnitsScalesLengthsOnly) {
+  // mm -> m and mm -> um. Scaling by a non-power of 2 rounds every input once (relative 1e-16).
+  constexpr double kUnitTolerance = 1e-10;
+  for (const double factor : {1e-3, 1e3}) {
+    for (const JointCase& c : all_cases()) {
+      SCOPED_TRACE(c.name);
+      const JointDimensions d = c.dimensions;
+      const JointDimensions scaled{d.bearing_radius * factor, d.bearing_length * factor,
+                                   d.journal_radius * factor, d.journal_length * factor};
+      const PartPose journal = c.journal;
+      const JointContacts reference = detect_contacts(d, bearing_pose(), journal);
+      const JointContacts result =
+          detect_contacts(scaled, bearing_pose(), PartPose{journal.p_WP * factor, journal.axis_W});
+      expect_equivalent(reference, result,
+                        [&](const Vector3& x, double w) { return Vector3(w == 0.0 ? x : x * factor); },
+                        factor, kUnitTolerance);
+    }
+  }
+}
+
+// ---- options and validation ---------------------------------------------------------------------
+
+TEST(DetectContacts, SwitchingCertificatesOffGivesTheSameContactsMarkedUncertain) {
+  DetectionOptions options;
+  options.intersection.certify = false;
+  const TiltedJournal journal{0.0, 0.0, 0.013};  // (i)
+  const JointContacts result = detect_contacts(kTable2, bearing_pose(), journal.pose(), options);
+  EXPECT_EQ(result.scenario, ContactScenario::all_four);
+  EXPECT_EQ(result.certificate.level, Certainty::uncertain);
+}
+
+TEST(DetectContacts, BadInputsAreRejectedWithTheirNames) {
+  PartPose zero_axis;
+  zero_axis.axis_W = Vector3::Zero();
+  EXPECT_THROW(detect_contacts(kTable2, zero_axis, PartPose{}), InvalidInput);
+  try {
+    detect_contacts(kTable2, PartPose{}, zero_axis);
+    ADD_FAILURE() << "no exception";
+  } catch (const InvalidInput& error) {
+    EXPECT_EQ(std::string(error.what()), "journal.axis_W = [0, 0, 0]: must not be the zero vector");
+  }
+  const JointDimensions inverted{9.9, 20.0, 10.0, 19.8};
+  EXPECT_THROW(detect_contacts(inverted, PartPose{}, PartPose{}), InvalidInput);
+  DetectionOptions options;
+  options.parallel_angle_tolerance = -1.0;
+  EXPECT_THROW(detect_contacts(kTable2, PartPose{}, PartPose{}, options), InvalidInput);
+}
+
+}  // namespace
+}  // namespace clearjoint::geometry
