@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Builds bench_intersections (Release) and runs it with 10 repetitions, medians only.
+# Builds bench_intersections (Release) and runs it with 10 interleaved repetitions, medians only.
 # JSON: build/bench_intersections.json (docs/benchmarks-kernel.md reads its table from it);
 # the console table goes to stdout, then the certified/uncertified ratios of the medians.
 #
@@ -19,10 +19,13 @@ cmake --build "$build_dir" -j2 --target bench_intersections
 mkdir -p "$(dirname "$json")"
 
 console=build/bench_intersections.txt
-# The console shows the medians only (header lines kept); the full console output, with means,
+# Random interleaving runs the repetitions of all benchmarks in a shuffled order, so that a
+# change of machine load during the run falls on the certified and the plain pipelines alike and
+# their ratio stays fair. The console shows the medians only (header lines kept); the full console output, with means,
 # standard deviations and coefficients of variation, goes to $console, everything to $json.
 "$build_dir/bench/geometry/bench_intersections" \
   --benchmark_repetitions=10 \
+  --benchmark_enable_random_interleaving=true \
   --benchmark_report_aggregates_only=true \
   --benchmark_out="$json" \
   --benchmark_out_format=json \
@@ -34,6 +37,8 @@ if command -v python3 >/dev/null; then
   python3 - "$json" <<'PY'
 import json, sys
 runs = json.load(open(sys.argv[1]))["benchmarks"]
+# In registration order (the interleaved run reports them shuffled).
+runs.sort(key=lambda r: r.get("family_index", 0))
 median = {r["run_name"]: r for r in runs if r.get("aggregate_name") == "median"}
 cv = {r["run_name"]: r for r in runs if r.get("aggregate_name") == "cv"}
 print(f"\n{'benchmark (median of repetitions)':58s} {'CPU ns':>10s} {'real ns':>10s} {'CPU cv':>7s}")

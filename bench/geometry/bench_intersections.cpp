@@ -214,7 +214,9 @@ void add_certificate_share(Shares& shares, const geo::Certificate& certificate, 
 /// Share of the inputs per outcome, from one untimed call per input.
 Shares outcome_shares(const std::vector<RimCylinderQuery>& queries,
                       const geo::IntersectionOptions& options) {
-  Shares shares{{"inside", 0.0}, {"outside", 0.0}, {"cross2", 0.0}, {"cross4", 0.0},
+  // crossing: topology crossing; of those, roots4: four roots counted with multiplicity (two
+  // penetration arcs, or tangencies); tangent: some crossing of multiplicity >= 2.
+  Shares shares{{"inside", 0.0}, {"outside", 0.0}, {"crossing", 0.0}, {"roots4", 0.0},
                 {"tangent", 0.0}, {"on_surface", 0.0}};
   const double weight = 1.0 / static_cast<double>(queries.size());
   for (const RimCylinderQuery& q : queries) {
@@ -224,7 +226,8 @@ Shares outcome_shares(const std::vector<RimCylinderQuery>& queries,
       case geo::CircleCylinderTopology::outside: shares["outside"] += weight; break;
       case geo::CircleCylinderTopology::on_surface: shares["on_surface"] += weight; break;
       case geo::CircleCylinderTopology::crossing:
-        shares[hit.arc_count == 2 ? "cross4" : "cross2"] += weight;
+        shares["crossing"] += weight;
+        if (hit.root_count() == 4) shares["roots4"] += weight;
         break;
     }
     for (int k = 0; k < hit.crossing_count; ++k) {
@@ -240,14 +243,14 @@ Shares outcome_shares(const std::vector<RimCylinderQuery>& queries,
 
 Shares outcome_shares(const std::vector<RimPlaneQuery>& queries,
                       const geo::IntersectionOptions& options) {
-  Shares shares{{"disjoint", 0.0}, {"tangent", 0.0}, {"cross2", 0.0}, {"in_plane", 0.0}};
+  Shares shares{{"disjoint", 0.0}, {"tangent", 0.0}, {"crossing", 0.0}, {"in_plane", 0.0}};
   const double weight = 1.0 / static_cast<double>(queries.size());
   for (const RimPlaneQuery& q : queries) {
     const geo::CirclePlaneIntersection hit = geo::intersect_circle_plane(q.rim, q.base, options);
     switch (hit.topology) {
       case geo::CirclePlaneTopology::disjoint: shares["disjoint"] += weight; break;
       case geo::CirclePlaneTopology::tangent: shares["tangent"] += weight; break;
-      case geo::CirclePlaneTopology::two_crossings: shares["cross2"] += weight; break;
+      case geo::CirclePlaneTopology::two_crossings: shares["crossing"] += weight; break;
       case geo::CirclePlaneTopology::circle_in_plane: shares["in_plane"] += weight; break;
     }
     add_certificate_share(shares, hit.certificate, weight);
