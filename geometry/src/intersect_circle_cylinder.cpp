@@ -1,11 +1,13 @@
 #include "clearjoint/geometry/intersect_circle_cylinder.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "angles.hpp"
 #include "certified_rim_roots.hpp"
 #include "rim_cylinder_exact.hpp"
 #include "rim_distance_polynomial.hpp"
+#include "scale_normalisation.hpp"
 
 namespace clearjoint::geometry {
 namespace {
@@ -53,6 +55,9 @@ void fill(const Circle3& circle, const RimRoots& roots, bool bounded,
   }
 }
 
+CircleCylinderIntersection intersect_scaled(const Circle3& circle, const Cylinder3& cylinder,
+                                            const IntersectionOptions& options);
+
 }  // namespace
 
 int CircleCylinderIntersection::root_count() const noexcept {
@@ -61,11 +66,41 @@ int CircleCylinderIntersection::root_count() const noexcept {
   return total;
 }
 
-CircleCylinderIntersection intersect_circle_cylinder(const Circle3& circle,
-                                                     const Cylinder3& cylinder,
+CircleCylinderIntersection intersect_circle_cylinder(const Circle3& circle_in,
+                                                     const Cylinder3& cylinder_in,
                                                      const IntersectionOptions& options) {
-  validate(circle, "circle");
-  validate(cylinder, "cylinder");
+  validate(circle_in, "circle");
+  validate(cylinder_in, "cylinder");
+  // Exact power-of-two rescaling (scale_normalisation.hpp): directions to [1, 2), extreme
+  // lengths to near 1; crossing points and their errors are scaled back at the end.
+  Circle3 circle{circle_in.center, detail::direction_scaled(circle_in.normal), circle_in.radius};
+  Cylinder3 cylinder{cylinder_in.axis_point, detail::direction_scaled(cylinder_in.axis),
+                     cylinder_in.radius};
+  int e = detail::length_exponent(std::max({circle.center.cwiseAbs().maxCoeff(),
+                                            cylinder.axis_point.cwiseAbs().maxCoeff(),
+                                            circle.radius, cylinder.radius}));
+  if (e != 0 && !(detail::scales_exactly(circle.center, e) && detail::scales_exactly(circle.radius, e) &&
+                  detail::scales_exactly(cylinder.axis_point, e) && detail::scales_exactly(cylinder.radius, e))) {
+    e = 0;
+  }
+  if (e != 0) {
+    circle.center = detail::scaled(circle.center, e);
+    circle.radius = std::ldexp(circle.radius, -e);
+    cylinder.axis_point = detail::scaled(cylinder.axis_point, e);
+    cylinder.radius = std::ldexp(cylinder.radius, -e);
+  }
+  CircleCylinderIntersection out = intersect_scaled(circle, cylinder, options);
+  for (int i = 0; e != 0 && i < out.crossing_count; ++i) {
+    out.crossings[i].point = detail::scaled(out.crossings[i].point, -e);
+    out.crossings[i].point_error = std::ldexp(out.crossings[i].point_error, e);
+  }
+  return out;
+}
+
+namespace {
+
+CircleCylinderIntersection intersect_scaled(const Circle3& circle, const Cylinder3& cylinder,
+                                            const IntersectionOptions& options) {
   CircleCylinderIntersection out;
 
   // Bounding test on the rim's reach: most free-flight rims stop here.
@@ -98,5 +133,7 @@ CircleCylinderIntersection intersect_circle_cylinder(const Circle3& circle,
   }
   return out;
 }
+
+}  // namespace
 
 }  // namespace clearjoint::geometry

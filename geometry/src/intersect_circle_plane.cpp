@@ -15,6 +15,7 @@
 #include "angles.hpp"
 #include "circle_plane_exact.hpp"
 #include "error_bounded.hpp"
+#include "scale_normalisation.hpp"
 
 namespace clearjoint::geometry {
 namespace {
@@ -64,12 +65,45 @@ AngleWithTrig acos_of(const Bounded& c) {
   return {{middle, 0.5 * (high - low) + kLibmAngleError}, std::cos(middle), std::sin(middle)};
 }
 
+CirclePlaneIntersection intersect_scaled(const Circle3& circle, const Plane3& plane,
+                                         const IntersectionOptions& options);
+
 }  // namespace
 
-CirclePlaneIntersection intersect_circle_plane(const Circle3& circle, const Plane3& plane,
+CirclePlaneIntersection intersect_circle_plane(const Circle3& circle_in, const Plane3& plane_in,
                                                const IntersectionOptions& options) {
-  validate(circle, "circle");
-  validate(plane, "plane");
+  validate(circle_in, "circle");
+  validate(plane_in, "plane");
+  // Exact power-of-two rescaling, as in intersect_circle_cylinder (scale_normalisation.hpp).
+  Circle3 circle{circle_in.center, detail::direction_scaled(circle_in.normal), circle_in.radius};
+  Plane3 plane{plane_in.point, detail::direction_scaled(plane_in.normal)};
+  int e = detail::length_exponent(std::max({circle.center.cwiseAbs().maxCoeff(),
+                                            plane.point.cwiseAbs().maxCoeff(), circle.radius}));
+  if (e != 0 && !(detail::scales_exactly(circle.center, e) && detail::scales_exactly(circle.radius, e) &&
+                  detail::scales_exactly(plane.point, e))) {
+    e = 0;
+  }
+  if (e != 0) {
+    circle.center = detail::scaled(circle.center, e);
+    circle.radius = std::ldexp(circle.radius, -e);
+    plane.point = detail::scaled(plane.point, e);
+  }
+  CirclePlaneIntersection out = intersect_scaled(circle, plane, options);
+  if (e != 0) {
+    for (int i = 0; i < out.crossing_count; ++i) {
+      out.crossings[i].point = detail::scaled(out.crossings[i].point, -e);
+      out.crossings[i].point_error = std::ldexp(out.crossings[i].point_error, e);
+    }
+    out.max_signed_distance = std::ldexp(out.max_signed_distance, e);
+    out.max_signed_distance_error = std::ldexp(out.max_signed_distance_error, e);
+  }
+  return out;
+}
+
+namespace {
+
+CirclePlaneIntersection intersect_scaled(const Circle3& circle, const Plane3& plane,
+                                         const IntersectionOptions& options) {
   CirclePlaneIntersection out;
 
   const BoundedVector3 nc = exact(circle.normal), np = exact(plane.normal);
@@ -195,5 +229,7 @@ CirclePlaneIntersection intersect_circle_plane(const Circle3& circle, const Plan
   if (out.crossings[1].angle < out.crossings[0].angle) std::swap(out.crossings[0], out.crossings[1]);
   return out;
 }
+
+}  // namespace
 
 }  // namespace clearjoint::geometry

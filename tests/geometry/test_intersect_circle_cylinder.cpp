@@ -665,5 +665,44 @@ TEST(CircleCylinder, ValidatesBothArguments) {
   }
 }
 
+// ---- extreme magnitudes (found by the command-line checks; scale_normalisation.hpp) ----------
+
+TEST(CircleCylinder, FindsTheInternalTangencyWhateverTheNormalsLength) {
+  // The set does not depend on the normal's length; 1e-90 and 1e-170 once broke the exact tier's
+  // mapping back to angles (|v'|^2 underflowed), giving a wrong point or no answer.
+  const Cylinder3 wall{Vector3::Zero(), Vector3(0, 0, 1), 2.0};
+  for (double length : {1e-300, 1e-170, 1e-90, 1.0, 1e90, 1e300}) {
+    const CircleCylinderIntersection r =
+        intersect_circle_cylinder(Circle3{Vector3(1, 0, 0), Vector3(0, 0, length), 1.0}, wall);
+    ASSERT_EQ(r.crossing_count, 1) << length;
+    EXPECT_EQ(r.crossings[0].multiplicity, 2) << length;
+    EXPECT_LE((r.crossings[0].point - Vector3(2, 0, 0)).norm(), r.crossings[0].point_error) << length;
+    EXPECT_LE(std::fabs(r.crossings[0].angle - 1.5 * std::numbers::pi), r.crossings[0].angle_error)
+        << length;
+  }
+}
+
+TEST(CircleCylinder, FindsCrossingsAtPiOverSixWhenAllLengthsAreNearTheOverflowLimit) {
+  // Rim of radius L centred at (L, 0, 0) against a wall of radius L about z: the crossings are
+  // the rim points at distance L from the axis, (L/2, +-sqrt(3) L/2, 0).
+  const double L = 1e300;
+  const CircleCylinderIntersection r = intersect_circle_cylinder(
+      Circle3{Vector3(L, 0, 0), Vector3(0, 0, 1), L}, Cylinder3{Vector3::Zero(), Vector3(0, 0, 1), L});
+  ASSERT_EQ(r.crossing_count, 2);
+  ASSERT_NE(r.certificate.level, Certainty::uncertain);
+  for (int i = 0; i < 2; ++i) {
+    const Vector3& p = r.crossings[i].point;
+    EXPECT_TRUE(p.allFinite());
+    // The certified point error, relative to L, is ~1e-13 (see point_error); 1e-12 is its bound
+    // with room for the division by L.
+    constexpr double kRelativeTolerance = 1e-12;
+    // In units of L: the squared norm of a 1e300 vector overflows.
+    const Vector3 expected(0.5, std::copysign(std::sqrt(3.0) / 2, p.y()), 0.0);
+    EXPECT_LE((p / L - expected).norm(), r.crossings[i].point_error / L * (1 + kRelativeTolerance));
+    EXPECT_NEAR(p.x() / L, 0.5, kRelativeTolerance);
+  }
+  EXPECT_NE(r.crossings[0].point.y() > 0, r.crossings[1].point.y() > 0);
+}
+
 }  // namespace
 }  // namespace clearjoint::geometry

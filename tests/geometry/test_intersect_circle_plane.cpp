@@ -554,5 +554,17 @@ TEST(CirclePlane, ValidatesBothArguments) {
   }
 }
 
+TEST(CirclePlane, FindsTheTangencyWhenTheRimNormalIsTiny) {
+  // A 1e-170 normal once produced a NaN point in an exact answer: the rim (0,0,1), radius 1,
+  // upright (normal along x) touches z = 0 at the origin.
+  const CirclePlaneIntersection r = intersect_circle_plane(
+      Circle3{Vector3(0, 0, 1), Vector3(1e-170, 0, 0), 1.0}, Plane3{Vector3::Zero(), Vector3(0, 0, 1)});
+  EXPECT_EQ(r.topology, CirclePlaneTopology::tangent);
+  ASSERT_EQ(r.crossing_count, 1);
+  EXPECT_TRUE(r.crossings[0].point.allFinite());
+  EXPECT_LE(r.crossings[0].point.norm(), r.crossings[0].point_error);
+  EXPECT_LE(std::fabs(r.max_signed_distance - 2.0), r.max_signed_distance_error);
+}
+
 }  // namespace
 }  // namespace clearjoint::geometry
