@@ -1,37 +1,16 @@
 #include "clearjoint/geometry/joint_geometry.hpp"
 
 #include <cmath>
-#include <sstream>
 #include <string>
+
+#include "input_checks.hpp"
 
 namespace clearjoint::geometry {
 namespace {
 
-std::string format(double x) {
-  std::ostringstream out;
-  out.precision(17);
-  out << x;
-  return out.str();
-}
-
-std::string format(const Vector3& v) {
-  std::ostringstream out;
-  out.precision(17);
-  out << '[' << v.x() << ", " << v.y() << ", " << v.z() << ']';
-  return out.str();
-}
-
-[[noreturn]] void reject(std::string_view name, std::string_view field, const std::string& value,
-                         std::string_view why) {
-  std::ostringstream message;
-  message << name << '.' << field << " = " << value << ": " << why;
-  throw InvalidInput(message.str());
-}
-
-void require_positive(double x, std::string_view name, std::string_view field) {
-  if (!std::isfinite(x)) reject(name, field, format(x), "must be finite");
-  if (!(x > 0.0)) reject(name, field, format(x), "must be positive");
-}
+using detail::format;
+using detail::reject;
+using detail::require_positive;
 
 }  // namespace
 

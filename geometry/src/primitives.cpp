@@ -1,48 +1,16 @@
 #include "clearjoint/geometry/primitives.hpp"
 
 #include <cmath>
-#include <sstream>
 
+#include "input_checks.hpp"
 #include "primitives_detail.hpp"
 
 namespace clearjoint::geometry {
 namespace {
 
-[[noreturn]] void reject(std::string_view name, std::string_view field, const std::string& value,
-                         std::string_view why) {
-  std::ostringstream message;
-  message << name << '.' << field << " = " << value << ": " << why;
-  throw InvalidInput(message.str());
-}
-
-std::string format(double x) {
-  std::ostringstream out;
-  out.precision(17);
-  out << x;
-  return out.str();
-}
-
-std::string format(const Vector3& v) {
-  std::ostringstream out;
-  out.precision(17);
-  out << '[' << v.x() << ", " << v.y() << ", " << v.z() << ']';
-  return out.str();
-}
-
-void require_finite(const Vector3& v, std::string_view name, std::string_view field) {
-  if (!v.allFinite()) reject(name, field, format(v), "every component must be finite");
-}
-
-void require_nonzero(const Vector3& v, std::string_view name, std::string_view field) {
-  if (v.x() == 0.0 && v.y() == 0.0 && v.z() == 0.0) {
-    reject(name, field, format(v), "must not be the zero vector");
-  }
-}
-
-void require_positive(double x, std::string_view name, std::string_view field) {
-  if (!std::isfinite(x)) reject(name, field, format(x), "must be finite");
-  if (!(x > 0.0)) reject(name, field, format(x), "must be positive");
-}
+using detail::require_finite;
+using detail::require_nonzero;
+using detail::require_positive;
 
 /// x / |x|. The plain formula when |x|^2 is a normal double; Eigen's stableNormalized (which
 /// rescales first, at several times the cost) when |x|^2 would under- or overflow.

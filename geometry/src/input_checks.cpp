@@ -1,0 +1,44 @@
+#include "input_checks.hpp"
+
+#include <cmath>
+#include <sstream>
+
+namespace clearjoint::geometry::detail {
+
+std::string format(double x) {
+  std::ostringstream out;
+  out.precision(17);
+  out << x;
+  return out.str();
+}
+
+std::string format(const Vector3& v) {
+  std::ostringstream out;
+  out.precision(17);
+  out << '[' << v.x() << ", " << v.y() << ", " << v.z() << ']';
+  return out.str();
+}
+
+void reject(std::string_view name, std::string_view field, const std::string& value,
+            std::string_view why) {
+  std::ostringstream message;
+  message << name << '.' << field << " = " << value << ": " << why;
+  throw InvalidInput(message.str());
+}
+
+void require_finite(const Vector3& v, std::string_view name, std::string_view field) {
+  if (!v.allFinite()) reject(name, field, format(v), "every component must be finite");
+}
+
+void require_nonzero(const Vector3& v, std::string_view name, std::string_view field) {
+  if (v.x() == 0.0 && v.y() == 0.0 && v.z() == 0.0) {
+    reject(name, field, format(v), "must not be the zero vector");
+  }
+}
+
+void require_positive(double x, std::string_view name, std::string_view field) {
+  if (!std::isfinite(x)) reject(name, field, format(x), "must be finite");
+  if (!(x > 0.0)) reject(name, field, format(x), "must be positive");
+}
+
+}  // namespace clearjoint::geometry::detail
