@@ -41,7 +41,9 @@ void expect_roots(const Circle3& circle, const Cylinder3& cylinder,
     const RootEnclosure& root = result.roots[i];
     EXPECT_GE(root.angle, 0.0);
     EXPECT_LT(root.angle, 2 * std::numbers::pi);
-    if (i > 0) EXPECT_LT(result.roots[i - 1].angle, root.angle);
+    if (i > 0) {
+      EXPECT_LT(result.roots[i - 1].angle, root.angle);
+    }
     int matches = 0;
     for (const ExpectedRoot& e : expected) {
       if (it::circular_gap(Real(root.angle), e.angle) <= Real(root.radius)) {
