@@ -17,6 +17,8 @@ struct Command {
 constexpr Command kCommands[] = {
     {"intersect", clearjoint::app::run_intersect,
      "rim/plane and rim/cylinder intersections from JSON Lines (file or stdin)"},
+    {"detect", clearjoint::app::run_detect,
+     "joint contact detection: scenario, contacts, velocities, from JSON Lines (file or stdin)"},
 #ifdef CLEARJOINT_WITH_DYNAMICS
     {"simulate", clearjoint::app::run_simulate, "simulate a multibody model file"},
 #endif

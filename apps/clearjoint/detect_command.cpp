@@ -1,0 +1,239 @@
+// clearjoint detect [FILE]: joint contact detection (paper Section 3, eqs. 3-26) as JSON Lines.
+//
+// One joint configuration per input line, one answer per line, in the same order: the scenario
+// of the paper's Fig. 2, the contacts with their points, normal and depth, and, when both bodies'
+// motions are given, the contact velocities (eqs. 24-26). The format (every field, the error
+// lines, the exit status) is specified in docs/command-line.md; keep the two in step.
+
+#include <cmath>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+#include "clearjoint/geometry/certificate.hpp"
+#include "clearjoint/geometry/contact_kinematics.hpp"
+#include "clearjoint/geometry/contact_scenario.hpp"
+#include "clearjoint/geometry/detect_contacts.hpp"
+#include "clearjoint/geometry/joint_geometry.hpp"
+#include "commands.hpp"
+#include "json_lines.hpp"
+
+namespace clearjoint::app {
+namespace {
+
+namespace geo = clearjoint::geometry;
+
+constexpr const char* kUsage =
+    "usage: clearjoint detect [FILE]\n"
+    "\n"
+    "Reads JSON Lines from FILE (no FILE or \"-\": standard input), one joint per line:\n"
+    "  {\"id\": ...,\n"
+    "   \"bearing\": {\"radius\": Ri, \"length\": Li, \"center\": [x,y,z], \"axis\": [x,y,z]},\n"
+    "   \"journal\": {\"radius\": Rj, \"length\": Lj, \"center\": [x,y,z], \"axis\": [x,y,z]}}\n"
+    "optionally with \"bearing_motion\" and \"journal_motion\" (both or neither):\n"
+    "  {\"mass_center\": [x,y,z], \"velocity\": [x,y,z], \"angular_velocity\": [x,y,z]}\n"
+    "and \"options\": {\"certify\": bool, \"exact_fallback\": bool,\n"
+    "                \"parallel_angle_tolerance\": radians}.\n"
+    "Writes one JSON line per joint line, in order (empty lines are skipped):\n"
+    "  {\"id\", \"scenario\": \"none\"|\"a\"..\"l\"|\"beyond_model\", \"aligned\", \"certificate\",\n"
+    "   \"certificate_reason\", \"contacts\": [{\"type\", \"base\", \"depth\", \"point_journal\",\n"
+    "   \"point_bearing\", \"normal\", \"crossings\", \"crossing_errors\", \"certificate\",\n"
+    "   \"certificate_reason\", \"approach_velocity\", \"tangential_velocity\"}]}\n"
+    "(velocities only with motions), or {\"id\": ..., \"error\": \"...\"}. Any consistent units\n"
+    "(SI: metres, m/s, rad/s). See docs/command-line.md and docs/contact-detection.md.\n"
+    "\n"
+    "Exit status: 0 all lines answered, 1 some line failed, 2 usage error or unreadable FILE.\n";
+
+/// A number that must be positive, e.g. a radius.
+double read_positive(const Json& object, const std::string& path, const char* key) {
+  const Json& value = member(object, path, key);
+  const double x = read_number(value, field(path, key));
+  if (!(x > 0.0)) throw LineError(field(path, key) + " = " + quote(value) + ": must be positive");
+  return x;
+}
+
+/// Throws unless the journal's `key` ("radius" or "length") is smaller than the bearing's:
+/// the clearances of eqs. (1)-(2) must be positive.
+void require_smaller(const Json& journal, const Json& bearing, const char* key) {
+  if (journal[key].get<double>() < bearing[key].get<double>()) return;
+  throw LineError(std::string("journal.") + key + " = " + quote(journal[key]) +
+                  ": must be smaller than bearing." + key + " = " + quote(bearing[key]));
+}
+
+/// One part: its dimensions go to `radius` and `length`, its pose is returned.
+geo::PartPose read_part(const Json& object, const std::string& path, double& radius, double& length) {
+  check_object(object, path, {"radius", "length", "center", "axis"});
+  radius = read_positive(object, path, "radius");
+  length = read_positive(object, path, "length");
+  geo::PartPose pose;
+  pose.p_WP = read_vector(member(object, path, "center"), path + ".center");
+  pose.axis_W = read_vector(member(object, path, "axis"), path + ".axis");
+  if (pose.axis_W.x() == 0.0 && pose.axis_W.y() == 0.0 && pose.axis_W.z() == 0.0) {
+    throw LineError(path + ".axis = " + quote(object["axis"]) + ": must not be the zero vector");
+  }
+  return pose;
+}
+
+geo::BodyMotion read_motion(const Json& object, const std::string& path) {
+  check_object(object, path, {"mass_center", "velocity", "angular_velocity"});
+  geo::BodyMotion motion;
+  motion.p_WM = read_vector(member(object, path, "mass_center"), path + ".mass_center");
+  motion.v_WM = read_vector(member(object, path, "velocity"), path + ".velocity");
+  motion.w_W = read_vector(member(object, path, "angular_velocity"), path + ".angular_velocity");
+  return motion;
+}
+
+geo::DetectionOptions read_options(const Json& query) {
+  geo::DetectionOptions options;
+  const auto found = query.find("options");
+  if (found == query.end()) return options;
+  const std::string path = "options";
+  check_object(*found, path, {"certify", "exact_fallback", "parallel_angle_tolerance"});
+  read_optional_bool(*found, path, "certify", options.intersection.certify);
+  read_optional_bool(*found, path, "exact_fallback", options.intersection.exact_fallback);
+  if (const auto tolerance = found->find("parallel_angle_tolerance"); tolerance != found->end()) {
+    // Its range, [0, pi/2), is checked by detect_contacts (InvalidInput names this same field).
+    options.parallel_angle_tolerance = read_number(*tolerance, path + ".parallel_angle_tolerance");
+  }
+  return options;
+}
+
+/// The scenario's label in Fig. 2 of the paper ("a".."l"), "none" or "beyond_model".
+const char* label(geo::ContactScenario scenario) {
+  using S = geo::ContactScenario;
+  switch (scenario) {
+    case S::none: return "none";
+    case S::single_radial: return "a";
+    case S::single_axial: return "b";
+    case S::radial_at_both_bases: return "c";
+    case S::axial_at_both_bases: return "d";
+    case S::radial_and_axial_same_base: return "e";
+    case S::radial_and_axial_opposite_bases: return "f";
+    case S::two_radial_one_axial: return "g";
+    case S::one_radial_two_axial: return "h";
+    case S::all_four: return "i";
+    case S::line: return "j";
+    case S::face: return "k";
+    case S::line_and_face: return "l";
+    case S::beyond_model: return "beyond_model";
+  }
+  throw std::logic_error("unknown ContactScenario");
+}
+
+const char* label(geo::ContactType type) {
+  switch (type) {
+    case geo::ContactType::radial: return "radial";
+    case geo::ContactType::axial: return "axial";
+  }
+  throw std::logic_error("unknown ContactType");
+}
+
+const char* label(geo::ContactBase base) {
+  switch (base) {
+    case geo::ContactBase::a: return "A";
+    case geo::ContactBase::b: return "B";
+    case geo::ContactBase::mid: return "mid";
+  }
+  throw std::logic_error("unknown ContactBase");
+}
+
+std::string reason(const geo::Certificate& certificate) {
+  return certificate.reason != nullptr ? certificate.reason : "";
+}
+
+/// Throws when a computed value overflowed: with coordinates or speeds near the limits of double
+/// (1e300) the formulas can overflow, and a null in the answer would hide that.
+void require_finite(double value, const std::string& what) {
+  if (std::isfinite(value)) return;
+  throw LineError(what + " is " + (std::isnan(value) ? "NaN" : "infinite") +
+                  " (overflow): the input's numbers are too large for double arithmetic; "
+                  "rescale the lengths or speeds");
+}
+
+void require_finite(const geo::Vector3& v, const std::string& what) {
+  for (int k = 0; k < 3; ++k) require_finite(v[k], what + "[" + std::to_string(k) + "]");
+}
+
+Json to_json(const geo::Contact& contact, const std::string& where) {
+  require_finite(contact.depth, where + ".depth");
+  require_finite(contact.p_WCj, where + ".point_journal");
+  require_finite(contact.p_WCi, where + ".point_bearing");
+  require_finite(contact.normal_W, where + ".normal");
+  Json crossings = Json::array();
+  Json crossing_errors = Json::array();
+  for (int k = 0; k < contact.crossing_count; ++k) {
+    const geo::RimCrossing& crossing = contact.crossings[static_cast<std::size_t>(k)];
+    require_finite(crossing.point, where + ".crossings[" + std::to_string(k) + "]");
+    crossings.push_back(app::to_json(crossing.point));
+    crossing_errors.push_back(error_bound(crossing.point_error));
+  }
+  return Json{{"type", label(contact.type)},
+              {"base", label(contact.base)},
+              {"depth", contact.depth},
+              {"point_journal", app::to_json(contact.p_WCj)},
+              {"point_bearing", app::to_json(contact.p_WCi)},
+              {"normal", app::to_json(contact.normal_W)},
+              {"crossings", std::move(crossings)},
+              {"crossing_errors", std::move(crossing_errors)},
+              {"certificate", std::string(geo::to_string(contact.certificate.level))},
+              {"certificate_reason", reason(contact.certificate)}};
+}
+
+/// The answer to one joint line (JsonLinesCommand::answer).
+void answer_query(const Json& query, Json& answer) {
+  check_object(query, "",
+               {"id", "bearing", "journal", "bearing_motion", "journal_motion", "options"});
+  geo::JointDimensions dimensions;
+  const Json& bearing_json = member(query, "", "bearing");
+  const Json& journal_json = member(query, "", "journal");
+  const geo::PartPose bearing =
+      read_part(bearing_json, "bearing", dimensions.bearing_radius, dimensions.bearing_length);
+  const geo::PartPose journal =
+      read_part(journal_json, "journal", dimensions.journal_radius, dimensions.journal_length);
+  require_smaller(journal_json, bearing_json, "radius");
+  require_smaller(journal_json, bearing_json, "length");
+
+  // Velocities need both bodies' motions: one alone is most likely a mistake, not "at rest".
+  const bool has_bearing_motion = query.contains("bearing_motion");
+  const bool has_journal_motion = query.contains("journal_motion");
+  if (has_bearing_motion != has_journal_motion) {
+    throw LineError(std::string(has_bearing_motion ? "journal_motion" : "bearing_motion") +
+                    ": missing (" + (has_bearing_motion ? "bearing_motion" : "journal_motion") +
+                    " is given; give both motions or neither)");
+  }
+  std::optional<geo::BodyMotion> bearing_motion, journal_motion;
+  if (has_bearing_motion) {
+    bearing_motion = read_motion(query["bearing_motion"], "bearing_motion");
+    journal_motion = read_motion(query["journal_motion"], "journal_motion");
+  }
+
+  const geo::JointContacts result =
+      geo::detect_contacts(dimensions, bearing, journal, read_options(query));
+
+  Json contacts = Json::array();
+  for (int k = 0; k < result.contact_count; ++k) {
+    const geo::Contact& contact = result.contacts[static_cast<std::size_t>(k)];
+    const std::string where = "contacts[" + std::to_string(k) + "]";
+    Json entry = to_json(contact, where);
+    if (bearing_motion) {
+      const geo::ContactKinematics kinematics =
+          geo::contact_kinematics(contact, *bearing_motion, *journal_motion);
+      require_finite(kinematics.approach_speed, where + ".approach_velocity");
+      require_finite(kinematics.tangential_velocity_W, where + ".tangential_velocity");
+      entry["approach_velocity"] = kinematics.approach_speed;                      // eq. (24)
+      entry["tangential_velocity"] = app::to_json(kinematics.tangential_velocity_W);  // eq. (26)
+    }
+    contacts.push_back(std::move(entry));
+  }
+  answer["scenario"] = label(result.scenario);
+  answer["aligned"] = result.aligned;
+  answer["certificate"] = std::string(geo::to_string(result.certificate.level));
+  answer["certificate_reason"] = reason(result.certificate);
+  answer["contacts"] = std::move(contacts);
+}
+
+}  // namespace
+
+int run_detect(Arguments args) { return run_json_lines({"detect", kUsage, answer_query}, args); }
+
+}  // namespace clearjoint::app

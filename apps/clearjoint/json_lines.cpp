@@ -1,0 +1,210 @@
+#include "json_lines.hpp"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <istream>
+
+#include "clearjoint/geometry/primitives.hpp"
+
+namespace clearjoint::app {
+namespace {
+
+namespace geo = clearjoint::geometry;
+
+// Longest excerpt of an offending value quoted in an error message (characters).
+constexpr std::size_t kMaxQuotedValue = 60;
+
+/// nlohmann's "[json.exception.parse_error.101] parse error at line 1, column 52: ..." as
+/// "parse error at column 52: ...": the tag says nothing to a user, and "line 1" is the parser's
+/// line within the one input line, not the file's line number written before the message.
+std::string parse_message(const char* what) {
+  std::string text(what);
+  if (text.starts_with('[')) {
+    const auto end = text.find("] ");
+    if (end != std::string::npos) text.erase(0, end + 2);
+  }
+  constexpr std::string_view kParserLine = "at line 1, column ";
+  if (const auto at = text.find(kParserLine); at != std::string::npos) {
+    text.replace(at, kParserLine.size(), "at column ");
+  }
+  return text;
+}
+
+/// The answer to one non-empty line; sets `failed` when it is an error line.
+Json answer_line(const JsonLinesCommand& command, const std::string& line, long line_number,
+                 bool& failed) {
+  Json answer = Json::object();
+  answer["id"] = nullptr;
+  std::string error;
+  try {
+    Json query;
+    try {
+      query = Json::parse(line);
+    } catch (const Json::exception& e) {
+      throw LineError("malformed JSON: " + parse_message(e.what()));
+    }
+    if (query.is_object()) {
+      if (const auto id = query.find("id"); id != query.end()) answer["id"] = *id;
+    }
+    command.answer(query, answer);
+    failed = false;
+    return answer;
+  } catch (const LineError& e) {
+    error = e.what();
+  } catch (const geo::InvalidInput& e) {
+    error = e.what();
+  } catch (const std::exception& e) {
+    // Not the input's fault as far as we can tell: say so, keep answering the other lines.
+    error = std::string("internal error: ") + e.what();
+  }
+  // An error line carries only the id and the message.
+  Json error_line = Json::object();
+  error_line["id"] = answer["id"];
+  error_line["error"] = "line " + std::to_string(line_number) + ": " + error;
+  failed = true;
+  return error_line;
+}
+
+/// Answers every line of `input`; returns the exit status.
+int answer_all(const JsonLinesCommand& command, std::istream& input, const std::string& input_name,
+               bool flush_each_line) {
+  std::string line;
+  long line_number = 0;
+  long failures = 0;
+  while (std::getline(input, line)) {
+    ++line_number;
+    if (!line.empty() && line.back() == '\r') line.pop_back();  // CRLF files
+    if (line.find_first_not_of(" \t") == std::string::npos) continue;
+    bool failed = false;
+    const Json answer = answer_line(command, line, line_number, failed);
+    if (failed) ++failures;
+    std::cout << answer.dump(-1, ' ', false, Json::error_handler_t::replace) << '\n';
+    if (flush_each_line) std::cout.flush();
+  }
+  std::cout.flush();
+  if (input.bad()) {
+    std::fprintf(stderr, "clearjoint %s: error reading %s after line %ld\n", command.name,
+                 input_name.c_str(), line_number);
+    return 2;
+  }
+  if (failures > 0) {
+    std::fprintf(stderr, "clearjoint %s: %ld line(s) of %s could not be answered\n", command.name,
+                 failures, input_name.c_str());
+    return 1;
+  }
+  return 0;
+}
+
+int usage_error(const JsonLinesCommand& command, const std::string& message) {
+  std::fprintf(stderr, "clearjoint %s: %s\n%s", command.name, message.c_str(), command.usage);
+  return 2;
+}
+
+}  // namespace
+
+std::string quote(const Json& value) {
+  std::string text = value.dump(-1, ' ', false, Json::error_handler_t::replace);
+  if (text.size() > kMaxQuotedValue) text = text.substr(0, kMaxQuotedValue) + "...";
+  return text;
+}
+
+std::string field(const std::string& path, std::string_view key) {
+  return path.empty() ? std::string(key) : path + "." + std::string(key);
+}
+
+void check_object(const Json& object, const std::string& path,
+                  std::initializer_list<std::string_view> allowed) {
+  if (!object.is_object()) {
+    throw LineError(path.empty() ? "the line " + quote(object) + " is not a JSON object"
+                                 : path + " = " + quote(object) + ": must be a JSON object");
+  }
+  for (const auto& item : object.items()) {
+    bool known = false;
+    for (std::string_view key : allowed) known = known || item.key() == key;
+    if (!known) {
+      std::string list;
+      for (std::string_view key : allowed) list += (list.empty() ? "" : ", ") + std::string(key);
+      throw LineError(field(path, item.key()) + ": unknown field (expected " + list + ")");
+    }
+  }
+}
+
+const Json& member(const Json& object, const std::string& path, const char* key) {
+  const auto found = object.find(key);
+  if (found == object.end()) throw LineError(field(path, key) + ": missing");
+  return *found;
+}
+
+double read_number(const Json& value, const std::string& path) {
+  if (!value.is_number()) throw LineError(path + " = " + quote(value) + ": must be a number");
+  return value.get<double>();
+}
+
+geo::Vector3 read_vector(const Json& value, const std::string& path) {
+  if (!value.is_array() || value.size() != 3) {
+    throw LineError(path + " = " + quote(value) + ": must be an array of 3 numbers");
+  }
+  geo::Vector3 v;
+  for (int k = 0; k < 3; ++k) {
+    v[k] = read_number(value[static_cast<std::size_t>(k)], path + "[" + std::to_string(k) + "]");
+  }
+  return v;
+}
+
+void read_optional_bool(const Json& object, const std::string& path, const char* key, bool& out) {
+  const auto flag = object.find(key);
+  if (flag == object.end()) return;
+  if (!flag->is_boolean()) {
+    throw LineError(field(path, key) + " = " + quote(*flag) + ": must be true or false");
+  }
+  out = flag->get<bool>();
+}
+
+Json to_json(const geo::Vector3& v) { return Json::array({v.x(), v.y(), v.z()}); }
+
+Json error_bound(double error) {
+  if (!std::isfinite(error)) return nullptr;
+  return error;
+}
+
+int run_json_lines(const JsonLinesCommand& command, Arguments args) {
+  const char* path = nullptr;
+  for (const char* arg : args) {
+    const std::string_view a(arg);
+    if (a == "--help" || a == "-h") {
+      std::fputs(command.usage, stdout);
+      return 0;
+    }
+    if (a.size() > 1 && a.front() == '-') {
+      return usage_error(command, "unknown option '" + std::string(a) + "'");
+    }
+    if (path != nullptr) return usage_error(command, "more than one input file");
+    path = arg;
+  }
+
+  if (path == nullptr || std::string_view(path) == "-") {
+    // A program at the other end of a pipe waits for each answer: flush line by line.
+    return answer_all(command, std::cin, "standard input", /*flush_each_line=*/true);
+  }
+  std::error_code ignored;
+  if (std::filesystem::is_directory(path, ignored)) {
+    std::fprintf(stderr, "clearjoint %s: cannot read '%s': is a directory\n", command.name, path);
+    return 2;
+  }
+  std::ifstream file(path);
+  if (!file) {
+    std::fprintf(stderr, "clearjoint %s: cannot open '%s': %s\n", command.name, path,
+                 std::strerror(errno));
+    return 2;
+  }
+  std::string name = "'";  // built piecewise: "'" + std::string(path) trips GCC 12's -Wrestrict
+  name.append(path).append("'");
+  return answer_all(command, file, name, /*flush_each_line=*/false);
+}
+
+}  // namespace clearjoint::app

@@ -1,0 +1,77 @@
+#pragma once
+// What the JSON Lines commands (`clearjoint intersect`, `clearjoint detect`) share: the
+// command-line handling (FILE or standard input, --help, exit statuses), the line loop with its
+// error lines, and the readers that name the offending field and value in their messages.
+// docs/command-line.md specifies the behaviour common to both commands; keep the two in step.
+
+#include <functional>
+#include <initializer_list>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+#include <nlohmann/json.hpp>
+
+#include "clearjoint/geometry/certificate.hpp"
+#include "clearjoint/geometry/vector3.hpp"
+#include "commands.hpp"
+
+namespace clearjoint::app {
+
+// ordered_json keeps the keys in the order they are written, so answers read like the docs.
+// Its dump() writes every double in the shortest form that reads back to the same double, and
+// writes non-finite values as null (JSON has neither NaN nor infinity).
+using Json = nlohmann::ordered_json;
+
+/// A query line that cannot be answered; what() names the field and the offending value.
+class LineError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// `value` as JSON text for an error message, shortened when long.
+std::string quote(const Json& value);
+
+/// "circle" + "radius" gives "circle.radius"; a top-level field has no prefix.
+std::string field(const std::string& path, std::string_view key);
+
+/// Throws unless `object` is a JSON object whose keys are all in `allowed`: a misspelt key
+/// ("normals", "certfy") must not be silently ignored. `path` "" is the whole line.
+void check_object(const Json& object, const std::string& path,
+                  std::initializer_list<std::string_view> allowed);
+
+/// object[key]; throws "path.key: missing" when absent.
+const Json& member(const Json& object, const std::string& path, const char* key);
+
+/// A JSON number as a double. JSON has no NaN or infinity, and the parser rejects numbers that
+/// overflow, so every number read here is finite.
+double read_number(const Json& value, const std::string& path);
+
+/// An array of exactly 3 numbers.
+geometry::Vector3 read_vector(const Json& value, const std::string& path);
+
+/// Sets `out` from object[key] when present (which must then be true or false).
+void read_optional_bool(const Json& object, const std::string& path, const char* key, bool& out);
+
+/// [x, y, z].
+Json to_json(const geometry::Vector3& v);
+
+/// An error bound for output: kNoErrorBound (no bound known) becomes null.
+Json error_bound(double error);
+
+/// One JSON Lines command: its name (for messages), its --help text, and how it answers one
+/// query. `answer` gets the parsed line (any JSON value) and an answer that already holds the
+/// line's "id"; it adds its fields, or throws LineError or geometry::InvalidInput (the line then
+/// gets an error line).
+struct JsonLinesCommand {
+  const char* name;
+  const char* usage;
+  std::function<void(const Json& query, Json& answer)> answer;
+};
+
+/// `clearjoint <name> [FILE]`: answers every line of FILE (or standard input, flushed line by
+/// line), in order. Returns the exit status: 0 every line answered, 1 some line got an error
+/// line, 2 usage error or unreadable FILE.
+int run_json_lines(const JsonLinesCommand& command, Arguments args);
+
+}  // namespace clearjoint::app
