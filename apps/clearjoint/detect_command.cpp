@@ -141,13 +141,15 @@ std::string reason(const geo::Certificate& certificate) {
   return certificate.reason != nullptr ? certificate.reason : "";
 }
 
-/// Throws when a computed value overflowed: with coordinates or speeds near the limits of double
-/// (1e300) the formulas can overflow, and a null in the answer would hide that.
+/// Throws when a computed value is not finite. The contact points are double-precision
+/// evaluations of the paper's formulas (not the certified kernel), and with lengths or speeds near
+/// the limits of double (around 1e155 and above, or 1e-155 and below, docs/command-line.md) they
+/// can overflow or underflow; a null in the answer would hide that.
 void require_finite(double value, const std::string& what) {
   if (std::isfinite(value)) return;
   throw LineError(what + " is " + (std::isnan(value) ? "NaN" : "infinite") +
-                  " (overflow): the input's numbers are too large for double arithmetic; "
-                  "rescale the lengths or speeds");
+                  ": overflow or underflow in double arithmetic; rescale the input (any unit "
+                  "will do, e.g. millimetres instead of metres)");
 }
 
 void require_finite(const geo::Vector3& v, const std::string& what) {
