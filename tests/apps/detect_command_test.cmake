@@ -112,6 +112,14 @@ function(check_example_answers)
   # Aligned: eccentricity - cr = 1.5e-4 - 1e-4 (cr = 0.01 - 0.0099 is 1e-4 only to ~1e-16 m).
   expect_match(j "^(5\\.00000000|4\\.99999999)[0-9]*e-05$" contacts 0 depth)
 
+  # The jump between the misaligned and the aligned formulas (docs/contact-detection.md): tilt
+  # t = atan(1e-6), y0 = 1.5e-4. Exactly: two radial contacts, rims at c_y = y0 +- (Lj/2) sin t,
+  # depths c_y + Rj cos t - Ri = 5.00099e-5 and 4.99901e-5 (total 1.0e-4). Treated as aligned: one
+  # line contact of depth y0 - cr = 5e-5 (total halved).
+  expect_match(nearly-aligned-exact "^5\\.00098999[0-9]*e-05$" contacts 0 depth)
+  expect_match(nearly-aligned-exact "^4\\.99900999[0-9]*e-05$" contacts 1 depth)
+  expect_match(nearly-aligned-tolerance "^(5\\.00000000|4\\.99999999)[0-9]*e-05$" contacts 0 depth)
+
   # Certificates: certified throughout, except where the options say otherwise.
   expect_member(a "certified" certificate)
   expect_member(a "certified" contacts 0 certificate)
