@@ -1,12 +1,19 @@
 #!/usr/bin/env python3
-"""Writes the two ideal slider-crank model files of Marques et al. (2017), Tables 1 and 3.
+"""Writes the slider-crank model files of Marques et al. (2017), Section 6, Tables 1-3.
 
-The spatial model's rod orientation and slider position follow from the chosen geometry; computing
-them here keeps the numbers in the JSON files exact to double precision and reproducible.
+Ideal joints: slider_crank_planar_ideal.json, slider_crank_spatial_ideal.json.
+With the revolute clearance joint (Table 2): slider_crank_planar_clearance_aligned.json,
+slider_crank_planar_clearance_misaligned.json (rod turned 0.2 degrees about its own axis),
+slider_crank_spatial_clearance.json, and the clearance study of Sec. 6.2 in clearance_study/
+(radial clearance 0.05, 0.1, 0.3, 0.5 mm x axial clearance 0.05, 0.1, 0.3, 0.5 mm).
+
+Orientations, positions and velocities follow from the chosen geometry; computing them here keeps
+the numbers in the JSON files exact to double precision and reproducible.
 Run from this directory: python3 make_slider_crank_models.py
 """
 import json
 import math
+import os
 
 
 def sub(a, b): return [x - y for x, y in zip(a, b)]
@@ -14,6 +21,28 @@ def add(a, b): return [x + y for x, y in zip(a, b)]
 def scale(a, s): return [x * s for x in a]
 def norm(a): return math.sqrt(sum(x * x for x in a))
 def cross(a, b): return [a[1]*b[2] - a[2]*b[1], a[2]*b[0] - a[0]*b[2], a[0]*b[1] - a[1]*b[0]]
+
+
+def quaternion_product(p, q):
+    """Euler parameters of the rotation A(p) A(q) (q applied first, in p's body frame)."""
+    p0, p1, p2, p3 = p
+    q0, q1, q2, q3 = q
+    return [p0*q0 - p1*q1 - p2*q2 - p3*q3,
+            p0*q1 + p1*q0 + p2*q3 - p3*q2,
+            p0*q2 - p1*q3 + p2*q0 + p3*q1,
+            p0*q3 + p1*q2 - p2*q1 + p3*q0]
+
+
+def axis_angle(axis, angle):
+    s = math.sin(angle / 2)
+    return [math.cos(angle / 2), axis[0] * s, axis[1] * s, axis[2] * s]
+
+
+def rotate(p, v):
+    """A(p) v for unit Euler parameters p."""
+    e0, e = p[0], p[1:]
+    t = scale(cross(e, v), 2)
+    return add(add(v, scale(t, e0)), cross(e, t))
 
 
 def euler_parameters(columns):
@@ -126,9 +155,143 @@ def spatial():
         "output": {"bodies": ["crank", "rod", "slider"]}}
 
 
+# Table 2 of the paper. Ri, Li are the bearing's radius and length, Rj, Lj the journal's.
+TABLE2_NOTES = (
+    "Clearance joint (paper Table 2): Ri = 10 mm, Rj = 9.9 mm, Li = 20.0 mm, Lj = 19.8 mm (radial and "
+    "axial clearance 0.1 mm), K = 1e11 N/m^1.5 (the extraction reads '1011 N/m3/2': 10^11), exponent 1.5 "
+    "(Sec. 4, metallic contact), restitution ce = 0.9 with the Lankarani-Nikravesh law (eqs. 27-29), friction "
+    "mu_k = 0.1 and k = 1000 s/m (eq. 32; the extraction reads '10 0 0 s/m'), Baumgarte alpha = beta = 5, "
+    "ode45 (here Dormand-Prince 5(4)), reported step 1e-5 s, tolerance 1e-7, 1 s. Not in the paper: "
+    "minimum_impact_speed = 1e-3 m/s, a floor on the impact velocity in the damping coefficient (see "
+    "docs/dynamics.md); the detection decides parallel axes exactly (eq. 5), parallel_angle_tolerance 0.")
+
+
+def clearance_joint(name, bearing_body, bearing_point, journal_body, journal_point, axis_bearing,
+                    axis_journal, radial_clearance=1e-4, axial_clearance=1e-4):
+    Ri, Li = 0.010, 0.020
+    return {"type": "clearance_revolute", "name": name,
+            "comment": "paper Table 2; the study varies the journal (Rj = Ri - cr, Lj = Li - 2 ca), the bearing stays",
+            "bearing": {"body": bearing_body, "point": bearing_point, "axis": axis_bearing,
+                        "radius": Ri, "length": Li},
+            "journal": {"body": journal_body, "point": journal_point, "axis": axis_journal,
+                        "radius": Ri - radial_clearance, "length": Li - 2 * axial_clearance},
+            "normal_force": {"model": "lankarani_nikravesh", "stiffness": 1e11, "exponent": 1.5,
+                             "restitution": 0.9, "minimum_impact_speed": 1e-3},
+            "friction": {"coefficient": 0.1, "velocity_coefficient": 1000.0},
+            "detection": {"parallel_angle_tolerance": 0.0}}
+
+
+def planar_clearance(misalignment_degrees):
+    """Sec. 6.1 with the clearance joint between the rod (journal) and the slider (bearing)."""
+    L1, L2 = 0.1524, 0.3048
+    # Rod frame: eta (body y) along the rod, from the crank pin to the slider, as the paper's
+    # Fig. 11 reads the rod's rotation about its own axis from its third Euler parameter e2 ("over
+    # eta_2"); zeta (body z) normal to the plane of motion, the journal's axis; xi = eta x zeta.
+    # That is a rotation of -90 degrees about z, then the misalignment about the rod's own eta.
+    aligned = axis_angle([0.0, 0.0, 1.0], -math.pi / 2)
+    rod_p = quaternion_product(aligned, axis_angle([0.0, 1.0, 0.0], math.radians(misalignment_degrees)))
+    # Velocities of the ideal mechanism at top dead centre: crank 150 rad/s about +z, crank pin
+    # 150 L1 along +y, rod -150 L1 / L2 = -75 rad/s about +z, slider at rest.
+    rod_omega_W = [0.0, 0.0, -150.0 * L1 / L2]
+    rod_omega_B = rotate([rod_p[0], -rod_p[1], -rod_p[2], -rod_p[3]], rod_omega_W)
+    case = "aligned" if misalignment_degrees == 0 else \
+        "misaligned: rod turned %g degrees about its own axis" % misalignment_degrees
+    return {
+        "name": "slider-crank with planar motion and a revolute clearance joint rod-slider, %s "
+                "(Marques et al. 2017, Sec. 6.1, Tables 1-2)" % case,
+        "notes": (
+            "The paper's first example: revolute ground-crank, spherical crank-rod, revolute clearance joint "
+            "between the connecting rod (journal) and the slider (bearing), translational slider-ground. Same "
+            "geometry, gravity and Table 1 reading as slider_crank_planar_ideal.json (plane x-y, crank about +z, "
+            "slider along x, gravity -y, crank and rod along +x, slider at x = 0.4572 m, top dead centre). "
+            "The rod's body frame has its eta axis (body y) along the rod so that its rotation about its own "
+            "axis shows in the third Euler parameter e2 (paper Fig. 11); the journal's axis is the rod's zeta "
+            "(body z), the bearing's axis the slider's z: parallel in the aligned case. Misaligned case: the "
+            "rod is turned %g degrees about eta, which tilts the journal %g degrees from the bearing axis. "
+            "The journal starts centred in the bearing. Initial velocities: crank 150 rad/s about +z held; "
+            "rod (0, 11.43, 0) m/s and -75 rad/s about +z, slider at rest, the ideal mechanism's values "
+            "(they satisfy the ideal joints, so the corrector leaves them). " % (
+                misalignment_degrees, misalignment_degrees) + TABLE2_NOTES),
+        "gravity": [0.0, -9.81, 0.0],
+        "bodies": [
+            {"name": "crank", "mass": 0.15, "inertia": [0.002, 0.002, 0.002], "position": [L1 / 2, 0.0, 0.0],
+             "angular_velocity": [0.0, 0.0, 150.0]},
+            {"name": "rod", "mass": 0.30, "inertia": [0.002, 0.002, 0.002], "position": [L1 + L2 / 2, 0.0, 0.0],
+             "euler_parameters": rod_p, "velocity": [0.0, 150.0 * L1 / 2, 0.0], "angular_velocity": rod_omega_B},
+            {"name": "slider", "mass": 0.15, "inertia": [0.001, 0.001, 0.001], "position": [L1 + L2, 0.0, 0.0]}],
+        "joints": [
+            {"name": "crank-ground", "type": "revolute", "body_i": "ground", "body_j": "crank",
+             "point_i": [0.0, 0.0, 0.0], "point_j": [-L1 / 2, 0.0, 0.0],
+             "axis_i": [0.0, 0.0, 1.0], "axis_j": [0.0, 0.0, 1.0]},
+            {"name": "crank-rod", "type": "spherical", "body_i": "crank", "body_j": "rod",
+             "point_i": [L1 / 2, 0.0, 0.0], "point_j": [0.0, -L2 / 2, 0.0]},
+            {"name": "slider-ground", "type": "translational", "body_i": "ground", "body_j": "slider",
+             "point_i": [0.0, 0.0, 0.0], "point_j": [0.0, 0.0, 0.0],
+             "axis_i": [1.0, 0.0, 0.0], "axis_j": [1.0, 0.0, 0.0]}],
+        "forces": [clearance_joint("rod-slider clearance", "slider", [0.0, 0.0, 0.0], "rod",
+                                   [0.0, L2 / 2, 0.0], [0.0, 0.0, 1.0], [0.0, 0.0, 1.0])],
+        "initial_conditions": {
+            "comment": "crank pose and angular velocity held; the other guesses already satisfy the joints",
+            "hold_positions": [{"body": "crank", "components": ["x", "y", "z", "rx", "ry", "rz"]}],
+            "hold_velocities": [{"body": "crank", "component": "wz", "value": 150.0}]},
+        "solver": SOLVER,
+        "output": {"bodies": ["crank", "rod", "slider"]}}
+
+
+def spatial_clearance(radial_clearance=1e-4, axial_clearance=1e-4, study=False):
+    """Sec. 6.2 with the clearance joint between the ground (journal) and the crank (bearing)."""
+    model = spatial()
+    Lc = 0.10
+    w = 2 * math.pi
+    model["name"] = ("slider-crank with spatial motion and a revolute clearance joint ground-crank, "
+                     "cr = %g mm, ca = %g mm (Marques et al. 2017, Sec. 6.2, Tables 2-3)" % (
+                         radial_clearance * 1e3, axial_clearance * 1e3))
+    model["notes"] = (
+        "The paper's second example with its clearance joint: the revolute ground-crank joint of "
+        "slider_crank_spatial_ideal.json is replaced by a revolute clearance joint, bearing in the crank (at "
+        "its pivot end, axis along the crank's y), journal in the ground (at the origin, axis y). Geometry, "
+        "gravity, Table 3 reading and the other joints as in the ideal model (its notes follow). Initial "
+        "conditions: the ideal mechanism's (paper: 'the remaining coordinates and velocities are calculated in "
+        "such a way that the kinematic constraints of an ideal mechanism are fulfilled'): the journal starts "
+        "centred and aligned in the bearing, the crank vertical turning at 2 pi rad/s about +y about the "
+        "journal's centre; all six crank velocities are held at those values and the rod and slider follow. "
+        "Radial clearance cr = Ri - Rj = %g mm, axial clearance ca = (Li - Lj)/2 = %g mm. " % (
+            radial_clearance * 1e3, axial_clearance * 1e3) + TABLE2_NOTES + " Ideal model notes: " +
+        model["notes"])
+    model["joints"] = [j for j in model["joints"] if j["name"] != "crank-ground"]
+    model["forces"] = [clearance_joint("ground-crank clearance", "crank", [0.0, 0.0, -Lc / 2], "ground",
+                                       [0.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 1.0, 0.0],
+                                       radial_clearance, axial_clearance)]
+    model["initial_conditions"] = {
+        "comment": "crank vertical, centred on the journal, 2 pi rad/s about +y: v = w x r = (2 pi 0.05, 0, 0)",
+        "hold_positions": [{"body": "crank", "components": ["x", "y", "z", "rx", "ry", "rz"]}],
+        "hold_velocities": [{"body": "crank", "component": c, "value": v} for c, v in
+                            (("vx", w * Lc / 2), ("vy", 0.0), ("vz", 0.0), ("wx", 0.0), ("wy", w),
+                             ("wz", 0.0))]}
+    if study:
+        model["output"] = {"bodies": ["slider"], "force_elements": [],
+                           "comment": "the study needs the slider only; the joint's outputs are skipped"}
+    return model
+
+
+STUDY_CLEARANCES_MM = (0.05, 0.1, 0.3, 0.5)
+
+
+def write(path, model):
+    with open(path, "w") as f:
+        json.dump(model, f, indent=1)
+        f.write("\n")
+
+
 if __name__ == "__main__":
     for name, model in (("slider_crank_planar_ideal.json", planar()),
-                        ("slider_crank_spatial_ideal.json", spatial())):
-        with open(name, "w") as f:
-            json.dump(model, f, indent=1)
-            f.write("\n")
+                        ("slider_crank_spatial_ideal.json", spatial()),
+                        ("slider_crank_planar_clearance_aligned.json", planar_clearance(0.0)),
+                        ("slider_crank_planar_clearance_misaligned.json", planar_clearance(0.2)),
+                        ("slider_crank_spatial_clearance.json", spatial_clearance())):
+        write(name, model)
+    os.makedirs("clearance_study", exist_ok=True)
+    for cr in STUDY_CLEARANCES_MM:
+        for ca in STUDY_CLEARANCES_MM:
+            write(os.path.join("clearance_study", "spatial_cr%g_ca%g.json" % (cr, ca)),
+                  spatial_clearance(cr * 1e-3, ca * 1e-3, study=True))

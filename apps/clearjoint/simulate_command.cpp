@@ -17,7 +17,8 @@ namespace {
 
 constexpr const char* kUsage =
     "usage: clearjoint simulate MODEL.json --out DIR\n"
-    "  Integrates the model and writes body_<name>.csv, energy.csv and reactions.csv into DIR.\n"
+    "  Integrates the model and writes body_<name>.csv, energy.csv, reactions.csv and, for force\n"
+    "  elements with outputs (clearance joints), force_<name>.csv into DIR.\n"
     "  A progress bar is drawn on standard error when it is a terminal.\n";
 
 /// A one-line bar redrawn in place; only on a terminal, so logs and pipes stay clean.
@@ -87,6 +88,10 @@ int run_simulate(Arguments args) {
               model.solver.start_time, model.solver.end_time, summary.integration.steps,
               summary.integration.derivative_calls, summary.integration.smallest_step,
               summary.integration.largest_step);
+  if (summary.integration.restarts > 0) {
+    std::printf("stepper restarts after impact-memory changes: %ld\n", summary.integration.restarts);
+  }
+  for (const std::string& line : summary.element_statistics) std::printf("%s\n", line.c_str());
   std::printf("initial conditions: %d Newton iterations, |Phi| = %.3g, |Phi_q v + Phi_t| = %.3g\n",
               summary.initial_conditions.iterations, summary.initial_conditions.position_residual,
               summary.initial_conditions.velocity_residual);

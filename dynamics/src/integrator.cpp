@@ -54,42 +54,57 @@ IntegrationStatistics integrate(MultibodySystem& system, std::vector<double>& y,
 
   const double span = settings.end_time - settings.start_time;
   const long report_count = std::max(1L, std::lround(std::ceil(span / settings.report_step * (1.0 - kReportCountSlack))));
+  auto report_time = [&](long k) {
+    return k == report_count ? settings.end_time
+                             : settings.start_time + static_cast<double>(k) * settings.report_step;
+  };
+  // Discrete changes of force elements' extra state (impact memory) happen only at accepted
+  // states: here at the start, and after every accepted step below.
+  if (system.update_extra_states(settings.start_time, y)) ++stats.restarts;
   stepper.initialize(y, settings.start_time, std::min(settings.initial_step, span));
   observer(settings.start_time, y);
   State reported(y.size());
-  for (long k = 1; k <= report_count; ++k) {
-    const double t_report = k == report_count
-                                ? settings.end_time
-                                : settings.start_time + static_cast<double>(k) * settings.report_step;
-    while (stepper.current_time() < t_report) {
-      std::pair<double, double> interval;
-      try {
-        interval = stepper.do_step(rhs);
-      } catch (const odeint::step_adjustment_error& e) {
-        throw SolverError("integration stopped at t = " + format_number(stepper.current_time()) +
-                          ": no acceptable step size found (" + e.what() + ")");
-      }
-      ++stats.steps;
-      const double taken = interval.second - interval.first;
-      stats.smallest_step = std::min(stats.smallest_step, taken);
-      stats.largest_step = std::max(stats.largest_step, taken);
-      if (!all_finite(stepper.current_state())) {
-        throw SolverError("integration stopped at t = " + format_number(interval.second) +
-                          ": the state is no longer finite");
-      }
-      if (stepper.current_time_step() < settings.minimum_step) {
-        throw SolverError("integration stopped at t = " + format_number(interval.second) +
-                          ": step size collapsed to " + format_number(stepper.current_time_step()) +
-                          " s (minimum " + format_number(settings.minimum_step) + " s)");
-      }
-      if (stats.steps >= settings.max_steps) {
-        throw SolverError("integration stopped at t = " + format_number(interval.second) +
-                          ": more than solver.max_steps = " + std::to_string(settings.max_steps) +
-                          " steps");
-      }
+  State accepted(y.size());
+  long k = 1;  // next report
+  while (k <= report_count) {
+    std::pair<double, double> interval;
+    try {
+      interval = stepper.do_step(rhs);
+    } catch (const odeint::step_adjustment_error& e) {
+      throw SolverError("integration stopped at t = " + format_number(stepper.current_time()) +
+                        ": no acceptable step size found (" + e.what() + ")");
     }
-    stepper.calc_state(t_report, reported);
-    observer(t_report, reported);
+    ++stats.steps;
+    const double taken = interval.second - interval.first;
+    stats.smallest_step = std::min(stats.smallest_step, taken);
+    stats.largest_step = std::max(stats.largest_step, taken);
+    if (!all_finite(stepper.current_state())) {
+      throw SolverError("integration stopped at t = " + format_number(interval.second) +
+                        ": the state is no longer finite");
+    }
+    if (stepper.current_time_step() < settings.minimum_step) {
+      throw SolverError("integration stopped at t = " + format_number(interval.second) +
+                        ": step size collapsed to " + format_number(stepper.current_time_step()) +
+                        " s (minimum " + format_number(settings.minimum_step) + " s)");
+    }
+    if (stats.steps >= settings.max_steps) {
+      throw SolverError("integration stopped at t = " + format_number(interval.second) +
+                        ": more than solver.max_steps = " + std::to_string(settings.max_steps) +
+                        " steps");
+    }
+    // Report times inside this step, interpolated before any restart discards the interpolant.
+    for (; k <= report_count && report_time(k) <= stepper.current_time(); ++k) {
+      stepper.calc_state(report_time(k), reported);
+      observer(report_time(k), reported);
+    }
+    if (k > report_count) break;
+    accepted = stepper.current_state();
+    if (system.update_extra_states(stepper.current_time(), accepted)) {
+      // odeint's dense-output stepper keeps the last derivative (FSAL); a changed state needs a
+      // fresh start from it, keeping the step size the controller had chosen.
+      stepper.initialize(accepted, stepper.current_time(), stepper.current_time_step());
+      ++stats.restarts;
+    }
   }
   y = reported;
   return stats;

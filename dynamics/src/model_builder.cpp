@@ -1,5 +1,6 @@
 #include "clearjoint/dynamics/model_builder.hpp"
 
+#include <algorithm>
 #include <array>
 
 #include "clearjoint/dynamics/errors.hpp"
@@ -37,6 +38,13 @@ struct ForceBuilder {
   std::unique_ptr<ForceElement> operator()(const PointLoadDescription& d) const {
     return std::make_unique<PointLoad>(d.name, find_body(model, d.body, field + ".body"), d.point_B,
                                        d.force_W, d.moment_W);
+  }
+  std::unique_ptr<ForceElement> operator()(const ClearanceRevoluteDescription& d) const {
+    const ClearanceJointPart bearing{find_body(model, d.bearing.body, field + ".bearing.body"),
+                                     d.bearing.point_B, d.bearing.axis_B};
+    const ClearanceJointPart journal{find_body(model, d.journal.body, field + ".journal.body"),
+                                     d.journal.point_B, d.journal.axis_B};
+    return std::make_unique<ClearanceRevoluteJoint>(d.name, bearing, journal, d.parameters);
   }
   std::unique_ptr<ForceElement> operator()(const SpringDamperDescription& d) const {
     return std::make_unique<SpringDamper>(d.name, find_body(model, d.body_i, field + ".body_i"),
@@ -119,6 +127,18 @@ BuiltModel build_model(const ModelDescription& model) {
   for (size_t k = 0; k < model.output_bodies.size(); ++k) {
     const BodyIndex body = find_body(model, model.output_bodies[k], "output.bodies[" + std::to_string(k) + "]");
     if (body == kGround) throw ModelError("output.bodies[" + std::to_string(k) + "] = \"ground\": the ground does not move");
+  }
+
+  if (!model.output_all_force_elements) {
+    for (size_t k = 0; k < model.output_force_elements.size(); ++k) {
+      const std::string& name = model.output_force_elements[k];
+      const bool known = std::any_of(forces.begin(), forces.end(),
+                                     [&](const auto& f) { return f->name() == name; });
+      if (!known) {
+        throw ModelError("output.force_elements[" + std::to_string(k) + "] = \"" + name +
+                         "\": no force element of that name");
+      }
+    }
   }
 
   BuiltModel built;

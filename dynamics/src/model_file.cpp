@@ -90,6 +90,21 @@ class Node {
     for (size_t k = 0; k < j.size(); ++k) items.emplace_back(j[k], field(key) + "[" + std::to_string(k) + "]");
     return items;
   }
+  /// An array of strings, e.g. body names; `what` says what each must be.
+  std::vector<std::string> names(std::string_view key, std::string_view what) const {
+    const Json& j = get(key);
+    if (!j.is_array()) throw ModelError(field(key) + ": must be an array of " + std::string(what) + "s");
+    std::vector<std::string> result;
+    for (size_t k = 0; k < j.size(); ++k) {
+      if (!j[k].is_string()) {
+        throw ModelError(field(key) + "[" + std::to_string(k) + "] = " + j[k].dump() + ": must be " +
+                         std::string(what));
+      }
+      result.push_back(j[k].get<std::string>());
+    }
+    return result;
+  }
+
   std::vector<Node> array_or_empty(std::string_view key) const {
     return has(key) ? array(key) : std::vector<Node>{};
   }
@@ -134,6 +149,53 @@ JointDescription parse_joint(const Node& n) {
   return j;
 }
 
+/// One cylinder of a clearance joint: {"body", "point", "axis", "radius", "length"}.
+ClearancePartDescription parse_clearance_part(const Node& n, double& radius, double& length) {
+  n.require_object({"body", "point", "axis", "radius", "length"});
+  radius = n.number("radius");
+  length = n.number("length");
+  return {n.text("body"), n.vector<3>("point", Vector3::Zero()), n.vector<3>("axis")};
+}
+
+ClearanceRevoluteDescription parse_clearance_revolute(const Node& n) {
+  n.require_object({"type", "name", "bearing", "journal", "normal_force", "friction", "detection"});
+  ClearanceRevoluteDescription d;
+  d.name = n.text("name");
+  geometry::JointDimensions& dims = d.parameters.dimensions;
+  d.bearing = parse_clearance_part(n.child("bearing"), dims.bearing_radius, dims.bearing_length);
+  d.journal = parse_clearance_part(n.child("journal"), dims.journal_radius, dims.journal_length);
+
+  const Node normal = n.child("normal_force");
+  normal.require_object({"model", "stiffness", "exponent", "restitution", "minimum_impact_speed"});
+  NormalForceParameters& p = d.parameters.normal;
+  p.model = normal_force_model_from_string(normal.text("model"), normal.field("model"));
+  p.stiffness = normal.number("stiffness");
+  p.exponent = normal.number("exponent", p.exponent);
+  p.restitution = p.model == NormalForceModel::hertz ? normal.number("restitution", 1.0)
+                                                     : normal.number("restitution");
+  p.minimum_impact_speed = normal.number("minimum_impact_speed", p.minimum_impact_speed);
+
+  // No "friction" object: frictionless.
+  FrictionParameters& f = d.parameters.friction;
+  f.coefficient = 0.0;
+  if (n.has("friction")) {
+    const Node friction = n.child("friction");
+    friction.require_object({"coefficient", "velocity_coefficient"});
+    f.coefficient = friction.number("coefficient");
+    f.velocity_coefficient = friction.number("velocity_coefficient", f.velocity_coefficient);
+  }
+  if (n.has("detection")) {
+    const Node detection = n.child("detection");
+    detection.require_object({"parallel_angle_tolerance"});
+    d.parameters.detection.parallel_angle_tolerance = detection.number("parallel_angle_tolerance", 0.0);
+  }
+  // Validate here so that messages name the file's fields (forces[k].journal.radius, ...); body
+  // names are resolved later by the model builder.
+  ClearanceRevoluteJoint(n.path(), {0, d.bearing.point_B, d.bearing.axis_B},
+                         {1, d.journal.point_B, d.journal.axis_B}, d.parameters);
+  return d;
+}
+
 ForceDescription parse_force(const Node& n) {
   const std::string type = n.text("type");
   if (type == "point_load") {
@@ -150,9 +212,10 @@ ForceDescription parse_force(const Node& n) {
         n.vector<3>("point_j", Vector3::Zero()),
         {n.number("stiffness"), n.number("damping", 0.0), n.number("free_length")}};
   }
+  if (type == "clearance_revolute") return parse_clearance_revolute(n);
   throw ModelError(n.field("type") + " = \"" + type +
-                   "\": unknown force type (known: point_load, spring_damper; gravity is the "
-                   "top-level \"gravity\" vector)");
+                   "\": unknown force type (known: point_load, spring_damper, clearance_revolute; "
+                   "gravity is the top-level \"gravity\" vector)");
 }
 
 void parse_initial_conditions(const Node& n, ModelDescription& model) {
@@ -224,19 +287,20 @@ ModelDescription parse_model(std::string_view json_text, std::string_view source
     for (const Node& f : root.array_or_empty("forces")) model.forces.push_back(parse_force(f));
     if (root.has("initial_conditions")) parse_initial_conditions(root.child("initial_conditions"), model);
     if (root.has("solver")) parse_solver(root.child("solver"), model);
+    bool all_bodies = true;
     if (root.has("output")) {
       const Node output = root.child("output");
-      output.require_object({"bodies"});
-      const Json& names = output.get("bodies");
-      if (!names.is_array()) throw ModelError(output.field("bodies") + ": must be an array of body names");
-      for (size_t k = 0; k < names.size(); ++k) {
-        if (!names[k].is_string()) {
-          throw ModelError(output.field("bodies") + "[" + std::to_string(k) + "] = " +
-                           names[k].dump() + ": must be a body name");
-        }
-        model.output_bodies.push_back(names[k].get<std::string>());
+      output.require_object({"bodies", "force_elements"});
+      if (output.has("bodies")) {
+        model.output_bodies = output.names("bodies", "a body name");
+        all_bodies = false;
       }
-    } else {
+      if (output.has("force_elements")) {
+        model.output_force_elements = output.names("force_elements", "a force element name");
+        model.output_all_force_elements = false;
+      }
+    }
+    if (all_bodies) {
       for (const BodyDescription& b : model.bodies) model.output_bodies.push_back(b.properties.name);
     }
     return model;

@@ -153,6 +153,24 @@ void MultibodySystem::derivative(double time, std::span<const double> y, std::sp
       accelerations_;
 }
 
+bool MultibodySystem::update_extra_states(double time, std::span<double> y) {
+  if (layout_.extra_count == 0) return false;
+  kinematics_.update(time, y);
+  bool changed = false;
+  for (size_t e = 0; e < forces_.size(); ++e) {
+    const size_t offset = static_cast<size_t>(layout_.extra_offset() + extra_offsets_[e]);
+    const size_t count = static_cast<size_t>(forces_[e]->extra_state_count());
+    if (count == 0) continue;
+    changed = forces_[e]->update_extra_state(time, kinematics_, y.subspan(offset, count)) || changed;
+  }
+  return changed;
+}
+
+std::span<const double> MultibodySystem::extra_state(std::span<const double> y, size_t e) const {
+  return y.subspan(static_cast<size_t>(layout_.extra_offset() + extra_offsets_[e]),
+                   static_cast<size_t>(forces_[e]->extra_state_count()));
+}
+
 double MultibodySystem::kinetic_energy(std::span<const double> y) const {
   double energy = 0.0;
   for (BodyIndex b = 0; b < layout_.body_count; ++b) {

@@ -25,6 +25,24 @@ std::vector<std::string> reaction_header(const ConstraintSet& constraints) {
   return header;
 }
 
+/// A force element's name as a file-name part: letters, digits, '-' and '_' kept, others '_'.
+std::string file_name_part(std::string_view name) {
+  std::string part(name);
+  for (char& c : part) {
+    const bool keep = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
+                      c == '-' || c == '_';
+    if (!keep) c = '_';
+  }
+  return part;
+}
+
+/// A force element that records outputs, and its file.
+struct ElementOutput {
+  size_t element = 0;
+  size_t width = 0;
+  std::unique_ptr<CsvWriter> file;
+};
+
 }  // namespace
 
 SimulationSummary simulate(const ModelDescription& model,
@@ -50,6 +68,20 @@ SimulationSummary simulate(const ModelDescription& model,
                         {"time", "kinetic", "potential", "total", "position_violation",
                          "velocity_violation", "euler_norm_drift"});
   CsvWriter reaction_file(output_directory / "reactions.csv", reaction_header(system.constraints()));
+  std::vector<ElementOutput> element_outputs;
+  for (size_t e = 0; e < system.force_elements().size(); ++e) {
+    const ForceElement& element = *system.force_elements()[e];
+    std::vector<std::string> header = element.output_columns();
+    const auto& wanted = model.output_force_elements;
+    if (header.empty() || (!model.output_all_force_elements &&
+                           std::find(wanted.begin(), wanted.end(), element.name()) == wanted.end())) {
+      continue;
+    }
+    const size_t width = header.size();
+    header.insert(header.begin(), "time");
+    element_outputs.push_back({e, width, std::make_unique<CsvWriter>(
+        output_directory / ("force_" + file_name_part(element.name()) + ".csv"), header)});
+  }
 
   SimulationSummary summary;
   summary.initial_conditions = built.initial_conditions;
@@ -86,6 +118,15 @@ SimulationSummary simulate(const ModelDescription& model,
     }
     reaction_file.write_row(row);
 
+    for (const ElementOutput& output : element_outputs) {
+      row.assign(output.width + 1, 0.0);
+      row[0] = t;
+      system.force_elements()[output.element]->record_outputs(
+          t, system.kinematics(), system.extra_state(y, output.element),
+          std::span<double>(row).subspan(1));
+      output.file->write_row(row);
+    }
+
     const double kinetic = system.kinetic_energy(y);
     const double potential = system.potential_energy(t, y);
     const double drift = system.kinematics().euler_norm_drift();
@@ -106,6 +147,11 @@ SimulationSummary simulate(const ModelDescription& model,
   for (auto& file : body_files) file->commit();
   energy_file.commit();
   reaction_file.commit();
+  for (ElementOutput& output : element_outputs) output.file->commit();
+  for (const auto& element : system.force_elements()) {
+    std::string text = element->statistics_text();
+    if (!text.empty()) summary.element_statistics.push_back(std::move(text));
+  }
   return summary;
 }
 

@@ -132,6 +132,49 @@ TEST(Integrator, StopsWithAClearErrorWhenTheStepCollapses) {
   EXPECT_THROW(integrate(system, y, settings, [](double, std::span<const double>) {}), SolverError);
 }
 
+/// Keeps a count of the accepted states it is shown (update_extra_state) in its one extra state
+/// variable, and notes every value its force evaluation (trial stages included) reads there. Its
+/// force is a stiff one-sided spring at x = 0.5 m, whose onset makes the controller reject steps.
+class AcceptedStateCounter final : public ForceElement {
+ public:
+  std::string_view name() const override { return "counter"; }
+  int extra_state_count() const override { return 1; }
+  void add_forces(const ForceContext& context, GeneralisedForces& forces) const override {
+    const double seen = context.extra_state[0];
+    if (seen != std::floor(seen) || seen < 1.0 || seen > static_cast<double>(updates)) ++foreign_values;
+    const double x = context.kinematics.body(0).position_W.x();
+    forces.add_force(0, Vector3(x > 0.5 ? -1e6 * (x - 0.5) : 0.0, 0.0, 0.0));
+  }
+  bool update_extra_state(double, const SystemKinematics&, std::span<double> state) const override {
+    state[0] += 1.0;
+    ++updates;
+    return true;
+  }
+  mutable long updates = 0;
+  mutable long foreign_values = 0;  ///< values read that no accepted update wrote
+};
+
+TEST(Integrator, ChangesExtraStateOnlyAtAcceptedStepsEvenWhenStepsAreRejected) {
+  std::vector<std::unique_ptr<ForceElement>> forces;
+  forces.push_back(std::make_unique<AcceptedStateCounter>());
+  const auto& counter = dynamic_cast<const AcceptedStateCounter&>(*forces.back());
+  MultibodySystem system({{"ball", 1.0, Vector3(1, 1, 1)}}, {}, std::move(forces), {});
+  BodyState s;
+  s.velocity_W.x() = 1.0;  // reaches the spring at t = 0.5 s and bounces
+  std::vector<double> y = system.pack(std::vector<BodyState>{s});
+  IntegratorSettings settings;
+  settings.end_time = 1.0;
+  settings.report_step = 0.01;
+  const IntegrationStatistics stats = integrate(system, y, settings, [](double, std::span<const double>) {});
+  // Dormand-Prince takes 6 new evaluations per attempt (the 7th is reused, FSAL) and 1 more after
+  // each restart: more than 7 per accepted step means some attempts were rejected.
+  EXPECT_GT(stats.derivative_calls, 7 * stats.steps + 1);
+  // One update at the start and one after every accepted step but the last (the run ends there).
+  EXPECT_EQ(counter.updates, stats.steps);
+  EXPECT_EQ(stats.restarts, stats.steps);
+  EXPECT_EQ(counter.foreign_values, 0);
+}
+
 TEST(IntegratorSettings, RejectNonPositiveToleranceNamingTheField) {
   IntegratorSettings settings;
   settings.relative_tolerance = 0.0;

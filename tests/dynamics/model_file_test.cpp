@@ -71,12 +71,81 @@ TEST(ModelFile, RejectsAnEndTimeBeforeTheStart) {
             "m.json: solver.end_time = -1: must be after solver.start_time = 0");
 }
 
+// A journal on body "rod" in a bearing on "slider" (Table 2 sizes); `extra` is spliced into the
+// force object.
+std::string clearance_model(const std::string& journal_radius, const std::string& extra = "") {
+  return R"({"bodies": [{"name": "rod", "mass": 1, "inertia": [1,1,1], "position": [0,0,0]},
+                        {"name": "slider", "mass": 1, "inertia": [1,1,1], "position": [0,0,0]}],
+  "forces": [{"type": "clearance_revolute", "name": "gap",
+    "bearing": {"body": "slider", "axis": [0,0,1], "radius": 0.01, "length": 0.02},
+    "journal": {"body": "rod", "point": [0,0.1,0], "axis": [0,0,1], "radius": )" + journal_radius +
+         R"(, "length": 0.0198},
+    "normal_force": {"model": "lankarani_nikravesh", "stiffness": 1e11, "restitution": 0.9})" +
+         extra + "}]}";
+}
+
+TEST(ModelFile, ReadsAClearanceJointWithDefaultsForWhatItOmits) {
+  const ModelDescription m = parse_model(clearance_model("0.0099"), "m.json");
+  ASSERT_EQ(m.forces.size(), 1u);
+  const auto& d = std::get<ClearanceRevoluteDescription>(m.forces[0]);
+  EXPECT_EQ(d.name, "gap");
+  EXPECT_EQ(d.bearing.body, "slider");
+  EXPECT_EQ(d.journal.point_B, Vector3(0, 0.1, 0));
+  EXPECT_EQ(d.parameters.dimensions.journal_radius, 0.0099);
+  EXPECT_EQ(d.parameters.normal.model, NormalForceModel::lankarani_nikravesh);
+  EXPECT_EQ(d.parameters.normal.exponent, 1.5);
+  EXPECT_EQ(d.parameters.friction.coefficient, 0.0);  // no friction object: frictionless
+  EXPECT_EQ(d.parameters.detection.parallel_angle_tolerance, 0.0);
+  const ModelDescription with_friction = parse_model(
+      clearance_model("0.0099", R"(, "friction": {"coefficient": 0.1, "velocity_coefficient": 500})"), "m.json");
+  EXPECT_EQ(std::get<ClearanceRevoluteDescription>(with_friction.forces[0]).parameters.friction.velocity_coefficient, 500.0);
+}
+
+TEST(ModelFile, NamesTheFieldOfAJournalNoSmallerThanItsBearing) {
+  EXPECT_EQ(error_of(clearance_model("0.01")),
+            "m.json: forces[0].journal.radius = 0.01: must be smaller than bearing.radius = 0.01 "
+            "(the radial clearance Ri - Rj, eq. 1, must be positive)");
+  EXPECT_EQ(error_of(clearance_model("-1")), "m.json: forces[0].journal.radius = -1: must be positive");
+}
+
+TEST(ModelFile, RejectsAnUnknownContactLawAndAMisspeltFrictionKey) {
+  std::string model = clearance_model("0.0099");
+  model.replace(model.find("lankarani_nikravesh"), 19, "kelvin");
+  EXPECT_NE(error_of(model).find("forces[0].normal_force.model = \"kelvin\": unknown normal force model"),
+            std::string::npos) << error_of(model);
+  EXPECT_EQ(error_of(clearance_model("0.0099", R"(, "friction": {"coeficient": 0.1})")),
+            "m.json: forces[0].friction.coeficient: unknown key (a typo?)");
+}
+
 TEST(ModelFile, ReadsTheShippedModels) {
   for (const char* file : {"slider_crank_planar_ideal.json", "slider_crank_spatial_ideal.json"}) {
     const ModelDescription m = read_model_file(std::string(CLEARJOINT_MODELS_DIR) + "/" + file);
     EXPECT_EQ(m.bodies.size(), 3u) << file;
     EXPECT_EQ(m.joints.size(), 4u) << file;
     EXPECT_FALSE(m.notes.empty()) << file;
+  }
+  // The file's decimals (Ri = 0.01, Rj = 0.0097, ...) are each within half an ulp of 0.01 m
+  // (8.7e-19 m) of the real values, so a clearance is within ~2e-18 m of its decimal value.
+  constexpr double kDecimalRounding = 1e-17;
+  for (const char* file : {"slider_crank_planar_clearance_aligned.json",
+                           "slider_crank_planar_clearance_misaligned.json",
+                           "slider_crank_spatial_clearance.json"}) {
+    const ModelDescription m = read_model_file(std::string(CLEARJOINT_MODELS_DIR) + "/" + file);
+    EXPECT_EQ(m.joints.size(), 3u) << file;  // the clearance joint is a force element
+    ASSERT_EQ(m.forces.size(), 1u) << file;
+    const auto& joint = std::get<ClearanceRevoluteDescription>(m.forces[0]);
+    EXPECT_NEAR(joint.parameters.dimensions.radial_clearance(), 1e-4, kDecimalRounding) << file;
+    EXPECT_NEAR(joint.parameters.dimensions.axial_clearance(), 1e-4, kDecimalRounding) << file;
+  }
+  // The clearance study: 4 x 4 radial and axial clearances.
+  for (const char* cr : {"0.05", "0.1", "0.3", "0.5"}) {
+    for (const char* ca : {"0.05", "0.1", "0.3", "0.5"}) {
+      const std::string file = std::string(CLEARJOINT_MODELS_DIR) + "/clearance_study/spatial_cr" + cr + "_ca" + ca + ".json";
+      const ModelDescription m = read_model_file(file);
+      const auto& joint = std::get<ClearanceRevoluteDescription>(m.forces.at(0));
+      EXPECT_NEAR(joint.parameters.dimensions.radial_clearance(), 1e-3 * std::stod(cr), kDecimalRounding) << file;
+      EXPECT_NEAR(joint.parameters.dimensions.axial_clearance(), 1e-3 * std::stod(ca), kDecimalRounding) << file;
+    }
   }
 }
 

@@ -50,5 +50,31 @@ TEST(SpatialSliderCrank, ConservesMechanicalEnergyWithIdealJoints) {
   EXPECT_LT(s.max_position_violation, kConstraintTolerance);
 }
 
+TEST(SpatialSliderCrankWithClearance, WritesTheJointsContactTimeSeriesUnlessAskedNotTo) {
+  ModelDescription model = test::shipped_model("slider_crank_spatial_clearance.json");
+  model.solver.end_time = 0.02;
+  model.solver.report_step = 1e-3;
+  const auto dir = std::filesystem::temp_directory_path() / "clearjoint_spatial_clearance_test";
+  std::filesystem::remove_all(dir);
+  const SimulationSummary summary = simulate(model, dir);
+  const auto file = dir / "force_ground-crank_clearance.csv";
+  ASSERT_TRUE(std::filesystem::exists(file));
+  std::ifstream csv(file);
+  std::string header;
+  std::getline(csv, header);
+  EXPECT_EQ(header.rfind("time,scenario,aligned,certainty,contact_count,axis_angle,", 0), 0u) << header;
+  EXPECT_NE(header.find("line.impact_speed"), std::string::npos);
+  const auto rows = std::count(std::istreambuf_iterator<char>(csv), {}, '\n');
+  EXPECT_EQ(rows, 21);
+  ASSERT_EQ(summary.element_statistics.size(), 1u);
+  EXPECT_NE(summary.element_statistics[0].find("contact detections"), std::string::npos);
+
+  model.output_all_force_elements = false;  // "output": {"force_elements": []}
+  std::filesystem::remove_all(dir);
+  simulate(model, dir);
+  EXPECT_FALSE(std::filesystem::exists(file));
+  EXPECT_TRUE(std::filesystem::exists(dir / "body_slider.csv"));
+}
+
 }  // namespace
 }  // namespace clearjoint::dynamics

@@ -1,13 +1,17 @@
 #pragma once
 /// \file
 /// The interface of everything that adds to g in eq. (35): gravity, loads, spring-dampers, and
-/// later the clearance joint (issue 7). An element reads the bodies' kinematics (mass-centre
-/// position, rotation, linear and angular velocity in the world frame) and adds forces at points
-/// and moments. It may own extra ODE state (e.g. an impact-velocity memory): it declares how many
-/// variables, gives their initial values, and writes their rates on every evaluation.
+/// the clearance joint. An element reads the bodies' kinematics (mass-centre position, rotation,
+/// linear and angular velocity in the world frame) and adds forces at points and moments. It may
+/// own extra ODE state (e.g. an impact-velocity memory): it declares how many variables, gives
+/// their initial values, writes their rates on every evaluation, and may change them discretely
+/// between accepted integration steps (update_extra_state). It may also name output columns that
+/// the simulation records at every report time.
 
 #include <span>
+#include <string>
 #include <string_view>
+#include <vector>
 
 #include "clearjoint/dynamics/generalised_forces.hpp"
 
@@ -37,6 +41,23 @@ class ForceElement {
   /// Extra ODE state this element integrates along with the bodies.
   virtual int extra_state_count() const { return 0; }
   virtual void initial_extra_state(std::span<double> /*state*/) const {}
+
+  /// Discrete change of the extra state, called by the integrator with the state of every
+  /// accepted step (and the initial state), never with trial stages or rejected steps. Returns
+  /// true if it changed `state`; the integrator then restarts from the changed state. The
+  /// right-hand side must stay a function of (time, y) alone: anything remembered goes here.
+  virtual bool update_extra_state(double /*time*/, const SystemKinematics& /*kinematics*/,
+                                  std::span<double> /*state*/) const {
+    return false;
+  }
+
+  /// Names of the values record_outputs() writes (none by default).
+  virtual std::vector<std::string> output_columns() const { return {}; }
+  /// Write output_columns().size() values describing the element at this instant.
+  virtual void record_outputs(double /*time*/, const SystemKinematics& /*kinematics*/,
+                              std::span<const double> /*state*/, std::span<double> /*values*/) const {}
+  /// One line of counters for run summaries (empty: nothing to say).
+  virtual std::string statistics_text() const { return {}; }
 };
 
 }  // namespace clearjoint::dynamics

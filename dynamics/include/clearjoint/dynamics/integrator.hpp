@@ -32,12 +32,17 @@ struct IntegrationStatistics {
   long derivative_calls = 0;   ///< right-hand-side evaluations
   double smallest_step = 0.0;  ///< of the accepted steps [s]
   double largest_step = 0.0;
+  /// Restarts of the stepper after a force element changed its extra state (impact memory).
+  long restarts = 0;
 };
 
 /// Called at start_time and at every report time up to end_time with the interpolated state.
 using Observer = std::function<void(double time, std::span<const double> state)>;
 
 /// Integrate y from start_time to end_time; on return y is the state at end_time.
+/// After every accepted step (and at the start) the force elements may change their extra state
+/// (MultibodySystem::update_extra_states); the stepper then restarts from the changed state.
+/// Trial stages and rejected steps never reach that hook.
 /// Throws SolverError if the step collapses, max_steps is exceeded, the state stops being finite,
 /// or the right-hand side fails (e.g. singular constraints); the message gives the time.
 IntegrationStatistics integrate(MultibodySystem& system, std::vector<double>& y,

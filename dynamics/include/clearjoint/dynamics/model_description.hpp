@@ -8,6 +8,7 @@
 #include <variant>
 #include <vector>
 
+#include "clearjoint/dynamics/clearance_revolute_joint.hpp"
 #include "clearjoint/dynamics/initial_conditions.hpp"
 #include "clearjoint/dynamics/integrator.hpp"
 #include "clearjoint/dynamics/joint_description.hpp"
@@ -37,7 +38,24 @@ struct SpringDamperDescription {
   SpringDamperParameters parameters;
 };
 
-using ForceDescription = std::variant<PointLoadDescription, SpringDamperDescription>;
+/// One cylinder of a clearance joint as a model names it.
+struct ClearancePartDescription {
+  std::string body;
+  Vector3 point_B = Vector3::Zero();  ///< P, centre of the cylinder's axis segment, body frame
+  Vector3 axis_B = Vector3::UnitZ();  ///< a, body frame
+};
+
+/// A revolute joint with clearance between a bearing and a journal (force element, not a
+/// constraint); dimensions, force law, friction and detection options in `parameters`.
+struct ClearanceRevoluteDescription {
+  std::string name;
+  ClearancePartDescription bearing;
+  ClearancePartDescription journal;
+  ClearanceJointParameters parameters;
+};
+
+using ForceDescription =
+    std::variant<PointLoadDescription, SpringDamperDescription, ClearanceRevoluteDescription>;
 
 /// Component names: positions "x", "y", "z", "rx", "ry", "rz" (small rotations about the world
 /// axes); velocities "vx", "vy", "vz", "wx", "wy", "wz" (world frame).
@@ -63,6 +81,9 @@ struct ModelDescription {
   BaumgarteParameters baumgarte;
   IntegratorSettings solver;
   std::vector<std::string> output_bodies;  ///< bodies whose time series are written
+  /// Force elements whose outputs (force_<name>.csv) are written; all of them by default.
+  std::vector<std::string> output_force_elements;
+  bool output_all_force_elements = true;
 };
 
 }  // namespace clearjoint::dynamics

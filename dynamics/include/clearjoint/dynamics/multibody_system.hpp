@@ -62,6 +62,12 @@ class MultibodySystem {
   /// Throws SolverError if Phi_q loses rank. No heap allocation.
   void derivative(double time, std::span<const double> y, std::span<double> dydt);
 
+  /// Let the force elements change their extra state discretely at (t, y), an accepted state
+  /// (ForceElement::update_extra_state). Returns true if any element changed y.
+  bool update_extra_states(double time, std::span<double> y);
+  /// Force element e's extra variables within y.
+  std::span<const double> extra_state(std::span<const double> y, size_t e) const;
+
   /// Results of the last derivative() call.
   const SystemKinematics& kinematics() const { return kinematics_; }
   const Eigen::VectorXd& accelerations() const { return accelerations_; }  ///< dv/dt

@@ -9,6 +9,10 @@
 ///                    velocity_violation (max |Phi_q v + Phi_t|), euler_norm_drift (max ||p|-1|)
 ///   reactions.csv    time, then per joint <joint>.fx .. <joint>.mz: the reaction (eq. 37) on
 ///                    body j (body i for joints to ground), moment about the joint point, world frame
+///   force_<name>.csv time, then the columns a force element records (ForceElement::output_columns;
+///                    e.g. a clearance joint's contact depths, forces, scenario), for every element
+///                    that records any; characters other than letters, digits, - and _ in the
+///                    name become _
 
 #include <filesystem>
 #include <functional>
@@ -25,6 +29,7 @@ struct SimulationSummary {
   double max_position_violation = 0.0;
   double max_velocity_violation = 0.0;
   double max_euler_norm_drift = 0.0;
+  std::vector<std::string> element_statistics;  ///< ForceElement::statistics_text(), non-empty ones
 };
 
 /// progress(fraction in [0, 1]) is called at report times (may be empty).

@@ -1,0 +1,151 @@
+#pragma once
+/// \file
+/// The spatial revolute joint with radial and axial clearance as a force element (paper
+/// Sections 3-4): a bearing (body i) and a journal (body j), each a cylinder fixed in its body.
+/// On every evaluation it runs the certified contact detection (geometry::detect_contacts,
+/// eqs. 3-23), the contact kinematics (eqs. 24-26), a normal force law (eqs. 27-29 or an
+/// alternative) and regularised Coulomb friction (eq. 32), and applies the forces at the contact
+/// points: -F on the journal at C_j, +F on the bearing at C_i (eq. 35's g, "joints with clearances
+/// are introduced as external forces", Sec. 5).
+///
+/// Impact-velocity memory (the delta_dot(-) of eq. 28). It is part of the ODE state, one variable
+/// per contact slot (ContactSlot), with time derivative zero, so trial stages and rejected steps
+/// of the adaptive integrator read it but can never change it. It changes only between accepted
+/// steps, through update_extra_state(): a slot whose contact is present in the accepted state and
+/// has no memory (0) records max(delta_dot, minimum_impact_speed); a slot whose contact is absent
+/// is cleared to 0. The integrator then restarts its stepper from the changed state (a restart
+/// costs one right-hand-side evaluation and happens twice per impact). Until the first accepted
+/// step that sees a new contact, the trial stages use max(delta_dot, minimum_impact_speed) at
+/// the stage itself as delta_dot(-): a pure function of the stage's state. At those stages the
+/// penetration has only just begun (it is below one step's travel), so the damping term, which
+/// scales with delta^n, is small. Consequence: delta_dot(-) is the approach speed at the end of
+/// the first accepted step in contact, not at the exact instant of first touch; the difference
+/// is the speed the contact force removes in part of one step (measured in the tests through
+/// the effective restitution).
+///
+/// Contact slots: radial contact at rim A, at rim B, the aligned line contact, axial (point or
+/// face) contact at base A, at base B. Beyond the model a rim may cross the wall twice (two
+/// radial contacts at one base): both share that base's slot (forces add, the deeper one's
+/// approach speed is recorded). The paper's model has a discontinuity where the axes become
+/// exactly parallel: one line contact (aligned) becomes two rim contacts of about the same depth
+/// (misaligned), i.e. about twice the force. It is kept as the paper states it;
+/// DetectionOptions::parallel_angle_tolerance moves where it happens.
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include "clearjoint/dynamics/force_element.hpp"
+#include "clearjoint/dynamics/normal_contact_force.hpp"
+#include "clearjoint/dynamics/regularised_friction.hpp"
+#include "clearjoint/geometry/contact_kinematics.hpp"
+#include "clearjoint/geometry/detect_contacts.hpp"
+
+namespace clearjoint::dynamics {
+
+/// One cylinder of the joint, fixed in a body: the centre P of its axis segment and its axis
+/// direction a (need not be unit; only its direction is used), both in the body frame.
+struct ClearanceJointPart {
+  BodyIndex body = kGround;
+  Vector3 point_B = Vector3::Zero();
+  Vector3 axis_B = Vector3::UnitZ();
+};
+
+struct ClearanceJointParameters {
+  /// Ri, Li (bearing), Rj, Lj (journal); paper Table 2: 10, 20, 9.9, 19.8 mm.
+  geometry::JointDimensions dimensions{0.010, 0.020, 0.0099, 0.0198};
+  NormalForceParameters normal;
+  FrictionParameters friction;
+  geometry::DetectionOptions detection;
+};
+
+/// Where a contact's impact velocity is remembered, and its columns in the outputs.
+enum class ContactSlot { radial_a, radial_b, line, axial_a, axial_b };
+inline constexpr int kContactSlotCount = 5;
+/// "radial_a", "radial_b", "line", "axial_a", "axial_b".
+std::string_view to_string(ContactSlot slot) noexcept;
+/// The slot of a detected contact (radial at base mid is the line contact).
+ContactSlot slot_of(const geometry::Contact& contact) noexcept;
+
+/// One slot at one instant.
+struct SlotState {
+  bool active = false;
+  double depth = 0.0;           ///< delta [m], eq. (23) (deepest contact of the slot)
+  double approach_speed = 0.0;  ///< delta_dot [m/s], eq. (24)
+  double impact_speed = 0.0;    ///< delta_dot(-) used [m/s]: remembered, else provisional
+  double normal_force = 0.0;    ///< F_N [N], summed over the slot's contacts
+  double friction_force = 0.0;  ///< |f_F| [N], summed over the slot's contacts
+};
+
+/// Everything the joint computes at one instant.
+struct ClearanceJointState {
+  geometry::JointContacts contacts;
+  /// Force on the journal of each of contacts.contacts (the bearing gets the opposite).
+  std::array<Vector3, geometry::kMaxContacts> contact_force_on_journal_W{};
+  std::array<SlotState, kContactSlotCount> slots{};
+  Vector3 force_on_journal_W = Vector3::Zero();   ///< sum of the contact forces on the journal
+  Vector3 moment_on_journal_W = Vector3::Zero();  ///< their moment about the journal's P_j
+  /// Angle between the journal and bearing axes [rad], in [0, pi] (Fig. 11(b)).
+  double axis_angle = 0.0;
+  /// Centres of the journal rims facing bearing bases A and B, relative to the bearing's P_i, in
+  /// the bearing frame (u, v, a): u, v radial (bearing_frame_u/v_B below), a along the axis.
+  Vector3 rim_a_in_bearing = Vector3::Zero();
+  Vector3 rim_b_in_bearing = Vector3::Zero();
+};
+
+/// Counters for benchmarks and run summaries.
+struct ClearanceJointStatistics {
+  long detection_calls = 0;       ///< detect_contacts calls (forces, updates, outputs, energy)
+  long impacts = 0;               ///< impact velocities recorded (contact starts, accepted steps)
+  long beyond_model_updates = 0;  ///< accepted steps whose state was beyond the paper's model
+};
+
+class ClearanceRevoluteJoint final : public ForceElement {
+ public:
+  /// Throws ModelError naming "<name>.<field>" for bad dimensions (non-finite, non-positive,
+  /// journal not smaller than bearing), zero axes, bad force or friction parameters, or a
+  /// bearing and journal on the same body.
+  ClearanceRevoluteJoint(std::string name, const ClearanceJointPart& bearing,
+                         const ClearanceJointPart& journal, const ClearanceJointParameters& parameters);
+
+  std::string_view name() const override { return name_; }
+  /// Detection, forces, and application at the contact points. Throws SolverError (with the
+  /// time) if the detection rejects the poses (non-finite state).
+  void add_forces(const ForceContext& context, GeneralisedForces& forces) const override;
+  /// Elastic energy of every contact, K delta^(n+1)/(n+1): conserved with the total when the
+  /// law is hertz (or ce = 1) and there is no friction.
+  double potential_energy(const SystemKinematics& kinematics) const override;
+  int extra_state_count() const override { return kContactSlotCount; }
+  void initial_extra_state(std::span<double> state) const override;
+  bool update_extra_state(double time, const SystemKinematics& kinematics,
+                          std::span<double> state) const override;
+  std::vector<std::string> output_columns() const override;
+  void record_outputs(double time, const SystemKinematics& kinematics,
+                      std::span<const double> state, std::span<double> values) const override;
+  std::string statistics_text() const override;
+
+  /// Evaluate the joint at one instant with the given impact memory (kContactSlotCount values,
+  /// 0 = none). Used by add_forces and by the outputs; public for tests.
+  ClearanceJointState evaluate(double time, const SystemKinematics& kinematics,
+                               std::span<const double> impact_memory) const;
+
+  const ClearanceJointParameters& parameters() const { return parameters_; }
+  const ClearanceJointStatistics& statistics() const { return statistics_; }
+  /// The bearing frame used for rim_a/b_in_bearing: u, v perpendicular to the bearing axis.
+  const Vector3& bearing_frame_u_B() const { return bearing_u_B_; }
+  const Vector3& bearing_frame_v_B() const { return bearing_v_B_; }
+
+ private:
+  geometry::JointContacts detect(double time, const SystemKinematics& kinematics) const;
+
+  std::string name_;
+  ClearanceJointPart bearing_;
+  ClearanceJointPart journal_;
+  ClearanceJointParameters parameters_;
+  Vector3 bearing_axis_hat_B_;
+  Vector3 bearing_u_B_;
+  Vector3 bearing_v_B_;
+  mutable ClearanceJointStatistics statistics_;  // counters only; the physics is const
+};
+
+}  // namespace clearjoint::dynamics

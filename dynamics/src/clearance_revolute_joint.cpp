@@ -1,0 +1,271 @@
+#include "clearjoint/dynamics/clearance_revolute_joint.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "clearjoint/dynamics/errors.hpp"
+
+namespace clearjoint::dynamics {
+
+namespace {
+
+using geometry::Contact;
+using geometry::ContactBase;
+using geometry::ContactType;
+
+constexpr std::array<ContactSlot, kContactSlotCount> kSlots{
+    ContactSlot::radial_a, ContactSlot::radial_b, ContactSlot::line, ContactSlot::axial_a,
+    ContactSlot::axial_b};
+
+int index_of(ContactSlot slot) { return static_cast<int>(slot); }
+
+geometry::BodyMotion motion_of(const BodyKinematics& body) {
+  return {body.position_W, body.velocity_W, body.angular_velocity_W};
+}
+
+void validate_part(const ClearanceJointPart& part, const std::string& field) {
+  require_finite(field + ".point", part.point_B);
+  require_nonzero(field + ".axis", part.axis_B);
+}
+
+void validate_dimensions(const geometry::JointDimensions& d, const std::string& name) {
+  require_positive(name + ".bearing.radius", d.bearing_radius);
+  require_positive(name + ".bearing.length", d.bearing_length);
+  require_positive(name + ".journal.radius", d.journal_radius);
+  require_positive(name + ".journal.length", d.journal_length);
+  if (!(d.journal_radius < d.bearing_radius)) {
+    throw ModelError(name + ".journal.radius = " + format_number(d.journal_radius) +
+                     ": must be smaller than bearing.radius = " + format_number(d.bearing_radius) +
+                     " (the radial clearance Ri - Rj, eq. 1, must be positive)");
+  }
+  if (!(d.journal_length < d.bearing_length)) {
+    throw ModelError(name + ".journal.length = " + format_number(d.journal_length) +
+                     ": must be smaller than bearing.length = " + format_number(d.bearing_length) +
+                     " (the axial clearance (Li - Lj)/2, eq. 2, must be positive)");
+  }
+}
+
+/// Angle between two directions in [0, pi], from atan2(|a x b|, a . b): accurate near 0 and pi,
+/// where acos of the dot product loses half the digits.
+double angle_between(const Vector3& a, const Vector3& b) {
+  return std::atan2(a.cross(b).norm(), a.dot(b));
+}
+
+}  // namespace
+
+std::string_view to_string(ContactSlot slot) noexcept {
+  switch (slot) {
+    case ContactSlot::radial_a: return "radial_a";
+    case ContactSlot::radial_b: return "radial_b";
+    case ContactSlot::line: return "line";
+    case ContactSlot::axial_a: return "axial_a";
+    case ContactSlot::axial_b: return "axial_b";
+  }
+  return "unknown";
+}
+
+ContactSlot slot_of(const Contact& contact) noexcept {
+  if (contact.type == ContactType::axial) {
+    return contact.base == ContactBase::b ? ContactSlot::axial_b : ContactSlot::axial_a;
+  }
+  switch (contact.base) {
+    case ContactBase::a: return ContactSlot::radial_a;
+    case ContactBase::b: return ContactSlot::radial_b;
+    case ContactBase::mid: return ContactSlot::line;
+  }
+  return ContactSlot::line;
+}
+
+ClearanceRevoluteJoint::ClearanceRevoluteJoint(std::string name, const ClearanceJointPart& bearing,
+                                               const ClearanceJointPart& journal,
+                                               const ClearanceJointParameters& parameters)
+    : name_(std::move(name)), bearing_(bearing), journal_(journal), parameters_(parameters) {
+  validate_part(bearing_, name_ + ".bearing");
+  validate_part(journal_, name_ + ".journal");
+  if (bearing_.body == journal_.body) {
+    throw ModelError(name_ + ".journal.body: the journal and the bearing must be on different bodies");
+  }
+  validate_dimensions(parameters_.dimensions, name_);
+  validate(parameters_.normal, name_ + ".normal_force");
+  validate(parameters_.friction, name_ + ".friction");
+  const double tolerance = parameters_.detection.parallel_angle_tolerance;
+  require_finite(name_ + ".detection.parallel_angle_tolerance", tolerance);
+  if (!(tolerance >= 0.0 && tolerance < 0.5 * std::numbers::pi)) {
+    throw ModelError(name_ + ".detection.parallel_angle_tolerance = " + format_number(tolerance) +
+                     ": must lie in [0, pi/2) radians");
+  }
+  bearing_axis_hat_B_ = bearing_.axis_B.normalized();
+  bearing_u_B_ = bearing_axis_hat_B_.unitOrthogonal();
+  bearing_v_B_ = bearing_axis_hat_B_.cross(bearing_u_B_);
+}
+
+geometry::JointContacts ClearanceRevoluteJoint::detect(double time,
+                                                       const SystemKinematics& kinematics) const {
+  const BodyKinematics& bi = kinematics.body(bearing_.body);
+  const BodyKinematics& bj = kinematics.body(journal_.body);
+  const geometry::PartPose bearing_pose{bi.point_W(bearing_.point_B), bi.rotation * bearing_.axis_B};
+  const geometry::PartPose journal_pose{bj.point_W(journal_.point_B), bj.rotation * journal_.axis_B};
+  ++statistics_.detection_calls;
+  try {
+    return geometry::detect_contacts(parameters_.dimensions, bearing_pose, journal_pose,
+                                     parameters_.detection);
+  } catch (const geometry::InvalidInput& e) {
+    throw SolverError("clearance joint '" + name_ + "' at t = " + format_number(time) +
+                      ": the contact detection rejected the poses (" + e.what() + ")");
+  }
+}
+
+ClearanceJointState ClearanceRevoluteJoint::evaluate(double time, const SystemKinematics& kinematics,
+                                                     std::span<const double> impact_memory) const {
+  ClearanceJointState state;
+  state.contacts = detect(time, kinematics);
+  const BodyKinematics& bi = kinematics.body(bearing_.body);
+  const BodyKinematics& bj = kinematics.body(journal_.body);
+  const geometry::BodyMotion bearing_motion = motion_of(bi);
+  const geometry::BodyMotion journal_motion = motion_of(bj);
+  const Vector3 p_WPj = bj.point_W(journal_.point_B);
+  const NormalForceParameters& normal = parameters_.normal;
+
+  for (int c = 0; c < state.contacts.contact_count; ++c) {
+    const Contact& contact = state.contacts.contacts[c];
+    const geometry::ContactKinematics velocity =
+        geometry::contact_kinematics(contact, bearing_motion, journal_motion);  // eqs. (24)-(26)
+    const int slot = index_of(slot_of(contact));
+    // delta_dot(-): remembered from the accepted step where the contact began, else this
+    // stage's own approach speed (see the file comment).
+    const double impact_speed = impact_memory[slot] > 0.0
+                                    ? impact_memory[slot]
+                                    : std::max(velocity.approach_speed, normal.minimum_impact_speed);
+    const double normal_force =
+        normal_contact_force(normal, contact.depth, velocity.approach_speed, impact_speed);
+    const Vector3 friction = regularised_friction_force(parameters_.friction, normal_force,
+                                                        velocity.tangential_velocity_W);
+    // The journal is pushed back along -n (n points where it penetrates) and dragged against its
+    // tangential velocity relative to the bearing.
+    const Vector3 force_on_journal = -normal_force * contact.normal_W - friction;
+    state.contact_force_on_journal_W[c] = force_on_journal;
+    state.force_on_journal_W += force_on_journal;
+    state.moment_on_journal_W += (contact.p_WCj - p_WPj).cross(force_on_journal);
+
+    SlotState& s = state.slots[slot];
+    if (!s.active || contact.depth > s.depth) {
+      s.depth = contact.depth;
+      s.approach_speed = velocity.approach_speed;
+      s.impact_speed = impact_speed;
+    }
+    s.active = true;
+    s.normal_force += normal_force;
+    s.friction_force += friction.norm();
+  }
+
+  const Vector3 bearing_axis_W = bi.rotation * bearing_axis_hat_B_;
+  const Vector3 journal_axis_W = bj.rotation * journal_.axis_B;
+  state.axis_angle = angle_between(bearing_axis_W, journal_axis_W);
+  // Rim labels follow the bearing's bases, as in the detection: when the axes point opposite
+  // ways, the journal's base "B" faces the bearing's base A.
+  const geometry::BaseCenters rims = geometry::base_centers(
+      {p_WPj, journal_axis_W}, parameters_.dimensions.journal_length);
+  const bool same_direction = bearing_axis_W.dot(journal_axis_W) >= 0.0;
+  const Vector3 p_WPi = bi.point_W(bearing_.point_B);
+  const Matrix3 to_bearing_frame =
+      (Matrix3() << (bi.rotation * bearing_u_B_).transpose(),
+       (bi.rotation * bearing_v_B_).transpose(), bearing_axis_W.transpose())
+          .finished();
+  state.rim_a_in_bearing = to_bearing_frame * ((same_direction ? rims.p_WA : rims.p_WB) - p_WPi);
+  state.rim_b_in_bearing = to_bearing_frame * ((same_direction ? rims.p_WB : rims.p_WA) - p_WPi);
+  return state;
+}
+
+void ClearanceRevoluteJoint::add_forces(const ForceContext& context, GeneralisedForces& forces) const {
+  const ClearanceJointState state = evaluate(context.time, context.kinematics, context.extra_state);
+  for (int c = 0; c < state.contacts.contact_count; ++c) {
+    const Contact& contact = state.contacts.contacts[c];
+    const Vector3& force = state.contact_force_on_journal_W[c];
+    forces.add_force_at_point(journal_.body, force, contact.p_WCj);
+    forces.add_force_at_point(bearing_.body, -force, contact.p_WCi);
+  }
+  // The memory changes only in update_extra_state(); its rate stays zero (the context zeroes it).
+}
+
+double ClearanceRevoluteJoint::potential_energy(const SystemKinematics& kinematics) const {
+  const geometry::JointContacts contacts = detect(kinematics.time(), kinematics);
+  double energy = 0.0;
+  for (int c = 0; c < contacts.contact_count; ++c) {
+    energy += contact_elastic_energy(parameters_.normal, contacts.contacts[c].depth);
+  }
+  return energy;
+}
+
+void ClearanceRevoluteJoint::initial_extra_state(std::span<double> state) const {
+  std::fill(state.begin(), state.end(), 0.0);
+}
+
+bool ClearanceRevoluteJoint::update_extra_state(double time, const SystemKinematics& kinematics,
+                                                std::span<double> state) const {
+  const ClearanceJointState now = evaluate(time, kinematics, state);
+  if (now.contacts.scenario == geometry::ContactScenario::beyond_model) {
+    ++statistics_.beyond_model_updates;
+  }
+  bool changed = false;
+  for (int slot = 0; slot < kContactSlotCount; ++slot) {
+    const SlotState& s = now.slots[slot];
+    if (s.active && state[slot] == 0.0) {
+      state[slot] = s.impact_speed;  // max(delta_dot, floor) at the first accepted step in contact
+      ++statistics_.impacts;
+      changed = true;
+    } else if (!s.active && state[slot] != 0.0) {
+      state[slot] = 0.0;
+      changed = true;
+    }
+  }
+  return changed;
+}
+
+std::vector<std::string> ClearanceRevoluteJoint::output_columns() const {
+  std::vector<std::string> columns{"scenario", "aligned", "certainty", "contact_count",
+                                   "axis_angle", "rim_a_u", "rim_a_v", "rim_a_axial", "rim_b_u",
+                                   "rim_b_v", "rim_b_axial", "fx", "fy", "fz", "mx", "my", "mz"};
+  for (ContactSlot slot : kSlots) {
+    for (const char* quantity :
+         {"depth", "approach_speed", "impact_speed", "normal_force", "friction_force"}) {
+      columns.push_back(std::string(to_string(slot)) + "." + quantity);
+    }
+  }
+  return columns;
+}
+
+void ClearanceRevoluteJoint::record_outputs(double time, const SystemKinematics& kinematics,
+                                            std::span<const double> state,
+                                            std::span<double> values) const {
+  const ClearanceJointState s = evaluate(time, kinematics, state);
+  size_t k = 0;
+  values[k++] = static_cast<double>(s.contacts.scenario);
+  values[k++] = s.contacts.aligned ? 1.0 : 0.0;
+  values[k++] = static_cast<double>(s.contacts.certificate.level);
+  values[k++] = s.contacts.contact_count;
+  values[k++] = s.axis_angle;
+  for (const Vector3* v : {&s.rim_a_in_bearing, &s.rim_b_in_bearing, &s.force_on_journal_W,
+                           &s.moment_on_journal_W}) {
+    for (int i = 0; i < 3; ++i) values[k++] = (*v)[i];
+  }
+  for (const SlotState& slot : s.slots) {
+    // No contact: no depth or speeds (NaN), no force (0).
+    const double missing = std::numeric_limits<double>::quiet_NaN();
+    values[k++] = slot.active ? slot.depth : missing;
+    values[k++] = slot.active ? slot.approach_speed : missing;
+    values[k++] = slot.active ? slot.impact_speed : missing;
+    values[k++] = slot.normal_force;
+    values[k++] = slot.friction_force;
+  }
+}
+
+std::string ClearanceRevoluteJoint::statistics_text() const {
+  return "clearance joint '" + name_ + "': " + std::to_string(statistics_.detection_calls) +
+         " contact detections, " + std::to_string(statistics_.impacts) +
+         " impacts recorded, " + std::to_string(statistics_.beyond_model_updates) +
+         " accepted steps beyond the paper's model";
+}
+
+}  // namespace clearjoint::dynamics

@@ -1,0 +1,286 @@
+// The clearance joint integrated through impacts (issue 7's physics checks): a free journal in a
+// grounded bearing in zero gravity, and the shipped planar slider-crank with an aligned joint.
+
+#include <gtest/gtest.h>
+
+#include <boost/numeric/odeint.hpp>
+#include <cmath>
+
+#include "clearjoint/dynamics/clearance_revolute_joint.hpp"
+#include "clearjoint/dynamics/integrator.hpp"
+#include "clearjoint/dynamics/model_builder.hpp"
+#include "dynamics_test_support.hpp"
+
+namespace clearjoint::dynamics {
+namespace {
+
+constexpr double kStiffness = 1e11;  // Table 2, N/m^1.5
+constexpr double kRadialClearance = 1e-4;
+
+struct FreeJournal {
+  double mass = 1.0;
+  Vector3 offset_W = Vector3::Zero();  ///< P_j - P_i at t = 0
+  Vector4 euler_parameters{1.0, 0.0, 0.0, 0.0};
+  Vector3 velocity_W = Vector3::Zero();
+  Vector3 angular_velocity_B = Vector3::Zero();
+  ClearanceJointParameters joint;  ///< Table 2 dimensions; set the force law per test
+};
+
+/// A journal (its axis centre at its mass centre, axis z) inside a grounded bearing (origin, z).
+ModelDescription free_journal_model(const FreeJournal& f) {
+  ModelDescription model;
+  model.name = "free journal";
+  BodyDescription journal;
+  journal.properties = {"journal", f.mass, Vector3(2.5e-5, 2.5e-5, 4.9e-5)};  // ~ a 1 kg rod, mm scale
+  journal.initial.position_W = f.offset_W;
+  journal.initial.euler_parameters = f.euler_parameters;
+  journal.initial.velocity_W = f.velocity_W;
+  journal.initial.angular_velocity_B = f.angular_velocity_B;
+  model.bodies.push_back(journal);
+  model.forces.push_back(ClearanceRevoluteDescription{
+      "clearance", {"ground", Vector3::Zero(), Vector3::UnitZ()},
+      {"journal", Vector3::Zero(), Vector3::UnitZ()}, f.joint});
+  model.output_bodies = {"journal"};
+  return model;
+}
+
+/// The clearance joint is the model's last force element (gravity, if any, comes first).
+const ClearanceRevoluteJoint& joint_of(const MultibodySystem& system) {
+  return dynamic_cast<const ClearanceRevoluteJoint&>(*system.force_elements().back());
+}
+
+/// The joint's state at a reported (t, y): its impact memory is y's last extra variables.
+ClearanceJointState joint_state(const MultibodySystem& system, double t, std::span<const double> y) {
+  SystemKinematics kinematics(system.layout().body_count);
+  kinematics.update(t, y);
+  return joint_of(system).evaluate(t, kinematics,
+                                   system.extra_state(y, system.force_elements().size() - 1));
+}
+
+double total_energy(MultibodySystem& system, double t, std::span<const double> y) {
+  return system.kinetic_energy(y) + system.potential_energy(t, y);  // includes K delta^2.5 / 2.5
+}
+
+IntegratorSettings settings(double end_time, double report_step, double tolerance) {
+  IntegratorSettings s;
+  s.end_time = end_time;
+  s.report_step = report_step;
+  s.relative_tolerance = s.absolute_tolerance = tolerance;
+  return s;
+}
+
+/// Largest |E(t) - E(0)| / E(0) at the report times, and the impacts seen.
+struct EnergyRun {
+  double worst_relative_change = 0.0;
+  double largest_increase = 0.0;  ///< max over report times of E(t_k) - E(t_k-1), relative to E(0)
+  long impacts = 0;
+};
+
+EnergyRun run_energy(const FreeJournal& f, const IntegratorSettings& s) {
+  BuiltModel built = build_model(free_journal_model(f));
+  MultibodySystem& system = *built.system;
+  std::vector<double> y = built.initial_state;
+  const double E0 = total_energy(system, 0.0, y);
+  double previous = E0;
+  EnergyRun run;
+  integrate(system, y, s, [&](double t, std::span<const double> state) {
+    const double E = total_energy(system, t, state);
+    run.worst_relative_change = std::max(run.worst_relative_change, std::abs(E - E0) / E0);
+    run.largest_increase = std::max(run.largest_increase, (E - previous) / E0);
+    previous = E;
+  });
+  run.impacts = joint_of(system).statistics().impacts;
+  return run;
+}
+
+/// An aligned journal flying obliquely: line contacts on the wall and face contacts on both
+/// bases, about 60 impacts in 50 ms.
+FreeJournal oblique_aligned_journal() {
+  FreeJournal f;
+  f.velocity_W = Vector3(0.2, 0.13, 0.03);
+  return f;
+}
+
+// Energy is conserved when the law is elastic: Hertz, or Lankarani-Nikravesh with ce = 1 (the
+// damping factor 3 (1 - ce^2) / 4 is then 0). What remains is the integrator's error, which
+// accumulates over the thousands of steps the impacts take and must shrink with the tolerance:
+// 100 times tighter must give at least 10 times less (measured: 1.1e-5 at 1e-9, 2.1e-7 at 1e-11,
+// a factor 54, over 57 impacts).
+constexpr double kRequiredConvergenceFactor = 10.0;
+// An upper bound for the drift at 1e-11 over those 57 impacts: a millionth of the energy.
+constexpr double kEnergyDriftAtTightTolerance = 1e-6;
+// Between two report times 1e-5 s apart the integrator error is far below that (measured 8e-15).
+constexpr double kEnergyGainBetweenReports = 1e-9;
+
+TEST(ClearanceJointImpacts, ConserveEnergyThroughManyImpactsWithRestitutionOneAndNoFriction) {
+  FreeJournal f = oblique_aligned_journal();
+  f.joint.normal.model = NormalForceModel::lankarani_nikravesh;
+  f.joint.normal.restitution = 1.0;
+  f.joint.friction.coefficient = 0.0;
+  const EnergyRun coarse = run_energy(f, settings(0.05, 1e-5, 1e-9));
+  const EnergyRun fine = run_energy(f, settings(0.05, 1e-5, 1e-11));
+  std::printf("impacts %ld; max |E - E0| / E0 = %.3g at tolerance 1e-9, %.3g at 1e-11\n",
+              fine.impacts, coarse.worst_relative_change, fine.worst_relative_change);
+  EXPECT_GE(fine.impacts, 40);
+  EXPECT_LT(fine.worst_relative_change, kEnergyDriftAtTightTolerance);
+  EXPECT_LT(fine.worst_relative_change * kRequiredConvergenceFactor, coarse.worst_relative_change);
+}
+
+// Characterisation, not conservation: with a tilted journal the wall contacts are rim points at
+// the middle of the penetration arc (eqs. 18-21), which is not the rim's deepest point when the
+// arc is asymmetric, so K delta^n along that normal is not the gradient of any potential. The
+// energy then wanders by the contact model's error, which a tighter tolerance does not remove:
+// measured 2.0e-4 of E0 at 1e-9 and 2.6e-4 at 1e-11 over ~200 impacts, single impacts gaining up
+// to 4e-5. The bound below is 5 times the measurement; the aligned case above is exact.
+constexpr double kTiltedRimEnergyDrift = 1e-3;
+
+TEST(ClearanceJointImpacts, ConserveEnergyOnlyToTheContactModelsAccuracyWithTiltedRims) {
+  FreeJournal f = oblique_aligned_journal();
+  f.euler_parameters = euler_parameters_from_axis_angle(Vector3::UnitX(), 2e-3);
+  f.angular_velocity_B = Vector3(0.5, 0.3, 0.0);
+  f.joint.normal.model = NormalForceModel::hertz;
+  f.joint.friction.coefficient = 0.0;
+  const EnergyRun run = run_energy(f, settings(0.05, 1e-5, 1e-9));
+  std::printf("impacts %ld; max |E - E0| / E0 = %.3g, largest gain between reports %.3g\n",
+              run.impacts, run.worst_relative_change, run.largest_increase);
+  EXPECT_GE(run.impacts, 100);
+  EXPECT_LT(run.worst_relative_change, kTiltedRimEnergyDrift);
+}
+
+// With damping and friction the energy may only decrease, up to the integrator's error between
+// two report times.
+TEST(ClearanceJointImpacts, NeverGainEnergyWithDampingAndFriction) {
+  FreeJournal f = oblique_aligned_journal();
+  f.angular_velocity_B = Vector3(0.0, 0.0, 30.0);  // spin: friction at every contact
+  f.joint.friction = {0.1, 1000.0};                 // Table 2; Lankarani-Nikravesh ce = 0.9
+  constexpr double kTolerance = 1e-10;
+  const EnergyRun run = run_energy(f, settings(0.05, 1e-5, kTolerance));
+  std::printf("impacts %ld; energy lost %.3g of E0; largest increase between reports %.3g of E0\n",
+              run.impacts, run.worst_relative_change, run.largest_increase);
+  EXPECT_GE(run.impacts, 20);
+  EXPECT_GT(run.worst_relative_change, 0.1);  // it does dissipate
+  EXPECT_LT(run.largest_increase, kEnergyGainBetweenReports);
+}
+
+/// The journal sent along +x from the centre at `speed`; returns the largest line-contact depth
+/// and the x velocity once the contact is over.
+struct SingleImpact {
+  double peak_depth = 0.0;
+  double rebound_velocity = 0.0;
+  long impacts = 0;
+};
+
+SingleImpact single_impact(FreeJournal f, double speed, double tolerance, double report_step) {
+  f.velocity_W = Vector3(speed, 0.0, 0.0);
+  f.joint.friction.coefficient = 0.0;
+  BuiltModel built = build_model(free_journal_model(f));
+  MultibodySystem& system = *built.system;
+  std::vector<double> y = built.initial_state;
+  const ClearanceRevoluteJoint& joint = joint_of(system);
+  SingleImpact result;
+  // Reaches the wall after cr / v; the contact lasts ~3 delta_max / v; stop before the way back.
+  const double end = 1.5 * kRadialClearance / speed;
+  integrate(system, y, settings(end, report_step, tolerance), [&](double t, std::span<const double> state) {
+    const ClearanceJointState s = joint_state(system, t, state);
+    const SlotState& line = s.slots[static_cast<int>(ContactSlot::line)];
+    if (line.active) result.peak_depth = std::max(result.peak_depth, line.depth);
+    result.rebound_velocity = state[system.layout().velocity_offset(0)];
+  });
+  result.impacts = joint.statistics().impacts;
+  return result;
+}
+
+TEST(ClearanceJointImpacts, ReachTheHertzPeakPenetrationInASingleElasticImpact) {
+  FreeJournal f;
+  f.joint.normal.model = NormalForceModel::hertz;
+  const double v = 0.1;
+  // Energy balance m v^2 / 2 = K delta^2.5 / 2.5.
+  const double expected = std::pow(5.0 * f.mass * v * v / (4.0 * kStiffness), 0.4);
+  // Sampling every 1e-7 s misses the peak by at most a (dt/2)^2 / 2 = 2.3e-12 m (a = K delta^1.5 /
+  // m = 1.8e3 m/s^2), 3e-7 relative; the integration at 1e-12 adds ~1e-12 m. Bound: 1e-6 relative.
+  constexpr double kPeakTolerance = 1e-6;
+  const SingleImpact impact = single_impact(f, v, 1e-12, 1e-7);
+  std::printf("peak depth %.9g m, Hertz %.9g m, relative difference %.2g\n", impact.peak_depth,
+              expected, impact.peak_depth / expected - 1.0);
+  EXPECT_EQ(impact.impacts, 1);
+  EXPECT_NEAR(impact.peak_depth / expected, 1.0, kPeakTolerance);
+  EXPECT_NEAR(impact.rebound_velocity, -v, 1e-9);  // elastic: comes back at the same speed
+}
+
+/// Effective restitution of a law from the 1-D impact m x'' = -F(x, x') integrated independently
+/// (odeint Runge-Kutta-Fehlberg 7(8) at 1e-14), x the penetration.
+double one_dimensional_restitution(const NormalForceParameters& law, double mass, double speed) {
+  namespace odeint = boost::numeric::odeint;
+  using State = std::array<double, 2>;
+  State x{0.0, speed};
+  auto rhs = [&](const State& s, State& ds, double) {
+    ds[0] = s[1];
+    ds[1] = -normal_contact_force(law, s[0], s[1], speed) / mass;
+  };
+  auto stepper = odeint::make_dense_output(1e-14, 1e-14, odeint::runge_kutta_dopri5<State>());
+  stepper.initialize(x, 0.0, 1e-8);
+  while (stepper.current_state()[0] >= 0.0) stepper.do_step(rhs);
+  // Refine the exit time t* (x(t*) = 0) by bisection on the dense output.
+  double lo = stepper.previous_time(), hi = stepper.current_time();
+  State s;
+  for (int k = 0; k < 60; ++k) {
+    const double mid = 0.5 * (lo + hi);
+    stepper.calc_state(mid, s);
+    (s[0] >= 0.0 ? lo : hi) = mid;
+  }
+  stepper.calc_state(hi, s);
+  return -s[1] / speed;
+}
+
+TEST(ClearanceJointImpacts, GiveTheLankaraniNikravesEffectiveRestitution) {
+  FreeJournal f;  // Lankarani-Nikravesh, ce = 0.9
+  const double v = 0.1;
+  const double reference = one_dimensional_restitution(f.joint.normal, f.mass, v);
+  // The memory records the approach speed at the end of the first accepted step in contact, not
+  // at first touch; at the paper's tolerance 1e-7 that step removes a little speed. Measured
+  // difference from the 1-D law: see the printout; bound 1e-3 (restitution to 3 digits).
+  constexpr double kRestitutionTolerance = 1e-3;
+  const SingleImpact impact = single_impact(f, v, 1e-7, 1e-6);
+  const double restitution = -impact.rebound_velocity / v;
+  std::printf("effective restitution %.6f, 1-D law %.6f, chosen ce %.2f\n", restitution, reference,
+              f.joint.normal.restitution);
+  EXPECT_EQ(impact.impacts, 1);
+  EXPECT_NEAR(restitution, reference, kRestitutionTolerance);
+  // Lankarani-Nikravesh is derived for ce near 1: at ce = 0.9 its own effective restitution is
+  // 0.913 (the 1-D reference), close to the chosen value.
+  EXPECT_NEAR(restitution, f.joint.normal.restitution, 0.02);
+}
+
+TEST(PlanarSliderCrankWithAlignedClearanceJoint, KeepsTheRodsThirdEulerParameterZeroAndNoAxialMotion) {
+  ModelDescription model = test::shipped_model("slider_crank_planar_clearance_aligned.json");
+  model.solver.end_time = 0.03;
+  BuiltModel built = build_model(model);
+  MultibodySystem& system = *built.system;
+  const BodyIndex rod = system.body_index("rod", "test");
+  const ClearanceRevoluteJoint& joint = joint_of(system);
+  std::vector<double> y = built.initial_state;
+  double largest_e1_e2 = 0.0, largest_axis_angle = 0.0, largest_axial_offset = 0.0;
+  long axial_contacts = 0, line_contacts = 0;
+  integrate(system, y, model.solver, [&](double t, std::span<const double> state) {
+    const BodyState s = system.body_state(state, rod);
+    largest_e1_e2 = std::max({largest_e1_e2, std::abs(s.euler_parameters[1]), std::abs(s.euler_parameters[2])});
+    const ClearanceJointState c = joint_state(system, t, state);
+    largest_axis_angle = std::max(largest_axis_angle, c.axis_angle);
+    largest_axial_offset = std::max(largest_axial_offset, std::abs(c.rim_a_in_bearing.z() - 0.0099));
+    axial_contacts += c.slots[static_cast<int>(ContactSlot::axial_a)].active +
+                      c.slots[static_cast<int>(ContactSlot::axial_b)].active;
+    line_contacts += c.slots[static_cast<int>(ContactSlot::line)].active;
+  });
+  std::printf("impacts %ld, report times in line contact %ld\n", joint.statistics().impacts, line_contacts);
+  EXPECT_GE(joint.statistics().impacts, 3);
+  EXPECT_GT(line_contacts, 0);
+  // Exactly: every out-of-plane quantity is computed from exact zeros (products with 0, sums of
+  // 0), so a planar mechanism stays planar bit for bit; any non-zero would be a formulation error.
+  EXPECT_EQ(largest_e1_e2, 0.0);
+  EXPECT_EQ(largest_axis_angle, 0.0);
+  EXPECT_EQ(largest_axial_offset, 0.0);
+  EXPECT_EQ(axial_contacts, 0);
+}
+
+}  // namespace
+}  // namespace clearjoint::dynamics

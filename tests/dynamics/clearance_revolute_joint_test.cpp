@@ -1,0 +1,312 @@
+// Forces and moments of the clearance joint at one instant, its impact memory, its outputs and its
+// input checks. The integrated behaviour (impacts, energy) is in clearance_joint_impacts_test.cpp.
+
+#include "clearjoint/dynamics/clearance_revolute_joint.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "clearjoint/dynamics/errors.hpp"
+
+namespace clearjoint::dynamics {
+namespace {
+
+using geometry::ContactScenario;
+
+// Table 2: Ri = 10 mm, Rj = 9.9 mm, Li = 20 mm, Lj = 19.8 mm; clearances 0.1 mm.
+constexpr double kRadialClearance = 1e-4;
+constexpr double kAxialClearance = 1e-4;
+constexpr double kDepth = 2e-6;
+// The poses are built through mass centres 0.02-0.05 m away, where an ulp is 3.5e-18 to 7e-18 m:
+// a few of those in a depth of 2e-6 m is ~1e-11 relative, 1.5 times that in delta^1.5 and in the
+// sums of forces and moments. 1e-10 bounds it.
+constexpr double kRelativeTolerance = 1e-10;
+
+constexpr BodyIndex kBearing = 0;
+constexpr BodyIndex kJournal = 1;
+// Bearing body: mass centre at (0, 0, 0.05), bearing centre P_i at the world origin, axis z.
+const Vector3 kBearingCentre_B(0.0, 0.0, -0.05);
+// Journal body: P_j 20 mm from its mass centre along x, axis z, so that forces make moments.
+const Vector3 kJournalCentre_B(0.02, 0.0, 0.0);
+
+ClearanceJointParameters hertz_without_friction() {
+  ClearanceJointParameters p;
+  p.normal.model = NormalForceModel::hertz;
+  p.friction.coefficient = 0.0;
+  return p;
+}
+
+ClearanceRevoluteJoint make_joint(const ClearanceJointParameters& p) {
+  return ClearanceRevoluteJoint("joint", {kBearing, kBearingCentre_B, Vector3::UnitZ()},
+                                {kJournal, kJournalCentre_B, Vector3::UnitZ()}, p);
+}
+
+/// Bearing at rest with P_i at the origin; journal with P_j at `p_WPj`, rotated by `journal_p`.
+SystemKinematics poses(const Vector3& p_WPj, const Vector4& journal_p = Vector4(1, 0, 0, 0),
+                       const Vector3& journal_velocity_W = Vector3::Zero()) {
+  SystemKinematics k(2);
+  BodyState bearing;
+  bearing.position_W = Vector3(0.0, 0.0, 0.05);
+  k.set(kBearing, bearing);
+  BodyState journal;
+  journal.euler_parameters = journal_p;
+  journal.position_W = p_WPj - rotation_from_euler_parameters(journal_p) * kJournalCentre_B;
+  journal.velocity_W = journal_velocity_W;
+  k.set(kJournal, journal);
+  return k;
+}
+
+struct Applied {
+  Vector3 force_bearing, moment_bearing, force_journal, moment_journal;
+};
+
+Applied apply(const ClearanceRevoluteJoint& joint, const SystemKinematics& k,
+              std::span<const double> memory) {
+  GeneralisedForces forces(k);
+  std::array<double, kContactSlotCount> rate{};
+  joint.add_forces({0.0, k, memory, rate}, forces);
+  for (double r : rate) EXPECT_EQ(r, 0.0);  // the memory has no rate: it changes only between steps
+  return {forces.force_W(kBearing), forces.moment_W(kBearing), forces.force_W(kJournal),
+          forces.moment_W(kJournal)};
+}
+
+constexpr std::array<double, kContactSlotCount> kNoMemory{};
+
+double hertz(double depth) { return 1e11 * depth * std::sqrt(depth); }
+
+void expect_vector_near(const Vector3& actual, const Vector3& expected, double scale) {
+  EXPECT_LE((actual - expected).norm(), kRelativeTolerance * scale)
+      << "actual " << actual.transpose() << "\nexpected " << expected.transpose();
+}
+
+TEST(ClearanceRevoluteJoint, AppliesNothingToACentredJournal) {
+  const ClearanceRevoluteJoint joint = make_joint(hertz_without_friction());
+  const Applied a = apply(joint, poses(Vector3::Zero()), kNoMemory);
+  EXPECT_EQ(a.force_journal, Vector3::Zero());
+  EXPECT_EQ(a.force_bearing, Vector3::Zero());
+  EXPECT_EQ(joint.evaluate(0.0, poses(Vector3::Zero()), kNoMemory).contacts.scenario,
+            ContactScenario::none);
+}
+
+TEST(ClearanceRevoluteJoint, PushesAnAlignedJournalBackAtTheLineContactAndTheBearingForward) {
+  const ClearanceRevoluteJoint joint = make_joint(hertz_without_friction());
+  const Vector3 p_WPj(kRadialClearance + kDepth, 0.0, 0.0);
+  const SystemKinematics k = poses(p_WPj);
+  const Applied a = apply(joint, k, kNoMemory);
+  const double F = hertz(kDepth);
+  const Vector3 force_on_journal(-F, 0.0, 0.0);
+  // eq. (8): C_j = P_j + Rj n; eq. (7): C_i = P_i + ((P_j - P_i) . a) a + Ri n.
+  const Vector3 p_WCj = p_WPj + Vector3(0.0099, 0.0, 0.0);
+  const Vector3 p_WCi(0.010, 0.0, 0.0);
+  expect_vector_near(a.force_journal, force_on_journal, F);
+  expect_vector_near(a.moment_journal, (p_WCj - k.body(kJournal).position_W).cross(force_on_journal), F * 0.03);
+  expect_vector_near(a.force_bearing, -force_on_journal, F);
+  expect_vector_near(a.moment_bearing, (p_WCi - k.body(kBearing).position_W).cross(-force_on_journal), F * 0.06);
+  EXPECT_EQ(joint.evaluate(0.0, k, kNoMemory).contacts.scenario, ContactScenario::line);
+}
+
+TEST(ClearanceRevoluteJoint, PushesAJournalBaseBackFromTheBearingBaseAtItsCentre) {
+  const ClearanceRevoluteJoint joint = make_joint(hertz_without_friction());
+  const Vector3 p_WPj(0.0, 0.0, kAxialClearance + kDepth);  // rim A beyond base A (z = +10 mm)
+  const SystemKinematics k = poses(p_WPj);
+  const Applied a = apply(joint, k, kNoMemory);
+  const double F = hertz(kDepth);
+  const Vector3 force_on_journal(0.0, 0.0, -F);
+  const Vector3 p_WCj = p_WPj + Vector3(0.0, 0.0, 0.0099);  // eq. (10): the journal base centre
+  expect_vector_near(a.force_journal, force_on_journal, F);
+  expect_vector_near(a.moment_journal, (p_WCj - k.body(kJournal).position_W).cross(force_on_journal), F * 0.03);
+  expect_vector_near(a.force_bearing, -force_on_journal, F);
+  EXPECT_EQ(joint.evaluate(0.0, k, kNoMemory).contacts.scenario, ContactScenario::face);
+}
+
+TEST(ClearanceRevoluteJoint, DragsASlidingJournalAgainstItsTangentialVelocity) {
+  ClearanceJointParameters p = hertz_without_friction();
+  p.friction = {0.1, 1000.0};
+  const ClearanceRevoluteJoint joint = make_joint(p);
+  const Vector3 p_WPj(kRadialClearance + kDepth, 0.0, 0.0);
+  const SystemKinematics k = poses(p_WPj, Vector4(1, 0, 0, 0), Vector3(0.0, 0.004, 0.0));
+  const Applied a = apply(joint, k, kNoMemory);
+  const double F = hertz(kDepth);
+  const double friction = 0.1 * F * std::tanh(1000.0 * 0.004);  // eq. (32)
+  const Vector3 force_on_journal(-F, -friction, 0.0);
+  expect_vector_near(a.force_journal, force_on_journal, F);
+  expect_vector_near(a.force_bearing, -force_on_journal, F);
+  // The friction acts at C_j, Rj + 20 mm from the journal's mass centre along x: a moment about z.
+  const Vector3 p_WCj = p_WPj + Vector3(0.0099, 0.0, 0.0);
+  expect_vector_near(a.moment_journal, (p_WCj - k.body(kJournal).position_W).cross(force_on_journal), F * 0.03);
+  const ClearanceJointState s = joint.evaluate(0.0, k, kNoMemory);
+  EXPECT_NEAR(s.slots[static_cast<int>(ContactSlot::line)].friction_force, friction,
+              kRelativeTolerance * F);
+}
+
+TEST(ClearanceRevoluteJoint, DampsWithTheRememberedImpactVelocityElseWithTheCurrentOne) {
+  ClearanceJointParameters p;  // Lankarani-Nikravesh, ce = 0.9
+  p.friction.coefficient = 0.0;
+  const ClearanceRevoluteJoint joint = make_joint(p);
+  const SystemKinematics k =
+      poses(Vector3(kRadialClearance + kDepth, 0.0, 0.0), Vector4(1, 0, 0, 0), Vector3(0.05, 0.0, 0.0));
+  const int line = static_cast<int>(ContactSlot::line);
+  const double factor = 0.75 * (1 - 0.81);  // eq. (28)
+  // No memory yet: delta_dot(-) = delta_dot = 0.05 m/s, eq. (29) gives 1 + factor.
+  const SlotState fresh = joint.evaluate(0.0, k, kNoMemory).slots[line];
+  EXPECT_NEAR(fresh.normal_force, hertz(kDepth) * (1 + factor), kRelativeTolerance * hertz(kDepth));
+  EXPECT_DOUBLE_EQ(fresh.approach_speed, 0.05);
+  EXPECT_DOUBLE_EQ(fresh.impact_speed, 0.05);
+  // Remembered 0.1 m/s: 1 + factor 0.05 / 0.1.
+  std::array<double, kContactSlotCount> memory{};
+  memory[line] = 0.1;
+  const SlotState remembered = joint.evaluate(0.0, k, memory).slots[line];
+  EXPECT_NEAR(remembered.normal_force, hertz(kDepth) * (1 + factor / 2), kRelativeTolerance * hertz(kDepth));
+  EXPECT_EQ(remembered.impact_speed, 0.1);
+}
+
+TEST(ClearanceRevoluteJoint, RemembersTheImpactVelocityUntilTheContactEnds) {
+  ClearanceJointParameters p;
+  const ClearanceRevoluteJoint joint = make_joint(p);
+  const int line = static_cast<int>(ContactSlot::line);
+  std::array<double, kContactSlotCount> memory{};
+  const Vector3 in_contact(kRadialClearance + kDepth, 0.0, 0.0);
+  // First accepted state in contact: records the approach speed.
+  EXPECT_TRUE(joint.update_extra_state(0.0, poses(in_contact, Vector4(1, 0, 0, 0), Vector3(0.05, 0, 0)), memory));
+  EXPECT_EQ(memory[line], 0.05);
+  // Later in the same contact (restitution): kept.
+  EXPECT_FALSE(joint.update_extra_state(0.0, poses(in_contact, Vector4(1, 0, 0, 0), Vector3(-0.04, 0, 0)), memory));
+  EXPECT_EQ(memory[line], 0.05);
+  // Contact over: cleared.
+  EXPECT_TRUE(joint.update_extra_state(0.0, poses(Vector3::Zero()), memory));
+  EXPECT_EQ(memory[line], 0.0);
+  EXPECT_FALSE(joint.update_extra_state(0.0, poses(Vector3::Zero()), memory));
+  // A contact first seen while already separating records the floor, never a non-positive speed.
+  EXPECT_TRUE(joint.update_extra_state(0.0, poses(in_contact, Vector4(1, 0, 0, 0), Vector3(-0.04, 0, 0)), memory));
+  EXPECT_EQ(memory[line], p.normal.minimum_impact_speed);
+  EXPECT_EQ(joint.statistics().impacts, 2);
+  for (int slot = 0; slot < kContactSlotCount; ++slot) {
+    if (slot != line) {
+      EXPECT_EQ(memory[slot], 0.0) << to_string(static_cast<ContactSlot>(slot));
+    }
+  }
+}
+
+TEST(ClearanceRevoluteJoint, ActsAlongTheNormalAtATiltedRimWithoutNetMomentOnThePair) {
+  const ClearanceRevoluteJoint joint = make_joint(hertz_without_friction());
+  // Journal tilted 3 mrad about y: rim A (z = +9.9 mm) moves by +29.7 um in x. Shift the journal
+  // so that rim A reaches 3 um beyond the wall and rim B stays inside.
+  const double tilt = 3e-3;
+  const Vector4 p = euler_parameters_from_axis_angle(Vector3::UnitY(), tilt);
+  const Vector3 p_WPj(kRadialClearance + 3e-6 - 0.0099 * std::sin(tilt) + 0.0099 * (1 - std::cos(tilt)), 0.0, 0.0);
+  const SystemKinematics k = poses(p_WPj, p);
+  const ClearanceJointState s = joint.evaluate(0.0, k, kNoMemory);
+  ASSERT_EQ(s.contacts.scenario, ContactScenario::single_radial);
+  const geometry::Contact& c = s.contacts.contacts[0];
+  // By symmetry about the x-z plane the arc middle is the rim's farthest point from the axis, 3 um
+  // beyond the wall; the pose is built from rounded sines and cosines of 1e-2 m lengths (1e-18 m).
+  constexpr double kPoseRounding = 1e-16;
+  EXPECT_NEAR(c.depth, 3e-6, kPoseRounding);
+  EXPECT_NEAR(s.axis_angle, tilt, 1e-15);
+  const Applied a = apply(joint, k, kNoMemory);
+  const double F = hertz(c.depth);
+  expect_vector_near(a.force_journal, -F * c.normal_W, F);
+  expect_vector_near(a.force_bearing, F * c.normal_W, F);
+  // Equal and opposite forces along C_j - C_i (parallel to n, eqs. 22-23) have no net moment.
+  const Vector3 net_moment_about_origin =
+      k.body(kJournal).position_W.cross(a.force_journal) + a.moment_journal +
+      k.body(kBearing).position_W.cross(a.force_bearing) + a.moment_bearing;
+  EXPECT_LE(net_moment_about_origin.norm(), kRelativeTolerance * F * 0.05);
+}
+
+TEST(ClearanceRevoluteJoint, DropsTheForceOnAGroundBearing) {
+  const ClearanceRevoluteJoint joint("grounded", {kGround, Vector3::Zero(), Vector3::UnitZ()},
+                                     {0, Vector3::Zero(), Vector3::UnitZ()}, hertz_without_friction());
+  SystemKinematics k(1);
+  BodyState journal;
+  journal.position_W = Vector3(kRadialClearance + kDepth, 0.0, 0.0);
+  k.set(0, journal);
+  GeneralisedForces forces(k);
+  std::array<double, kContactSlotCount> rate{};
+  joint.add_forces({0.0, k, kNoMemory, rate}, forces);
+  expect_vector_near(forces.force_W(0), Vector3(-hertz(kDepth), 0.0, 0.0), hertz(kDepth));
+  EXPECT_NEAR(joint.potential_energy(k), 1e11 * std::pow(kDepth, 2.5) / 2.5,
+              kRelativeTolerance * 1e11 * std::pow(kDepth, 2.5));
+}
+
+TEST(ClearanceRevoluteJoint, RecordsOneValuePerColumnWithNaNDepthsForAbsentContacts) {
+  const ClearanceRevoluteJoint joint = make_joint(hertz_without_friction());
+  const std::vector<std::string> columns = joint.output_columns();
+  ASSERT_EQ(columns.size(), 17u + 5 * kContactSlotCount);
+  std::vector<double> values(columns.size(), -1.0);
+  const SystemKinematics k = poses(Vector3(kRadialClearance + kDepth, 0.0, 0.0));
+  joint.record_outputs(0.0, k, kNoMemory, values);
+  auto value = [&](const std::string& name) {
+    const auto it = std::find(columns.begin(), columns.end(), name);
+    EXPECT_NE(it, columns.end()) << name;
+    return values[static_cast<size_t>(it - columns.begin())];
+  };
+  EXPECT_EQ(value("scenario"), static_cast<double>(ContactScenario::line));
+  EXPECT_EQ(value("aligned"), 1.0);
+  EXPECT_EQ(value("contact_count"), 1.0);
+  EXPECT_NEAR(value("line.depth"), kDepth, kRelativeTolerance * kDepth);
+  EXPECT_NEAR(value("fx"), -hertz(kDepth), kRelativeTolerance * hertz(kDepth));
+  EXPECT_TRUE(std::isnan(value("axial_a.depth")));
+  EXPECT_EQ(value("axial_a.normal_force"), 0.0);
+  // Journal rims relative to the bearing centre, in its frame: +-Lj/2 along the axis.
+  EXPECT_DOUBLE_EQ(value("rim_a_axial"), 0.0099);
+  EXPECT_DOUBLE_EQ(value("rim_b_axial"), -0.0099);
+  constexpr double kUlpsOfTheMassCentres = 1e-17;  // see kRelativeTolerance
+  EXPECT_NEAR(std::hypot(value("rim_a_u"), value("rim_a_v")), kRadialClearance + kDepth, kUlpsOfTheMassCentres);
+}
+
+TEST(ClearanceRevoluteJoint, StopsWithTheTimeWhenTheStateIsNotFinite) {
+  const ClearanceRevoluteJoint joint = make_joint(hertz_without_friction());
+  const SystemKinematics k = poses(Vector3(std::numeric_limits<double>::quiet_NaN(), 0.0, 0.0));
+  GeneralisedForces forces(k);
+  std::array<double, kContactSlotCount> rate{};
+  try {
+    joint.add_forces({0.25, k, kNoMemory, rate}, forces);
+    FAIL() << "no error";
+  } catch (const SolverError& e) {
+    EXPECT_NE(std::string(e.what()).find("clearance joint 'joint' at t = 0.25"), std::string::npos) << e.what();
+  }
+}
+
+std::string construction_error(ClearanceJointParameters p, BodyIndex journal_body = kJournal,
+                               Vector3 journal_axis = Vector3::UnitZ()) {
+  try {
+    ClearanceRevoluteJoint("j", {kBearing, Vector3::Zero(), Vector3::UnitZ()},
+                           {journal_body, Vector3::Zero(), journal_axis}, p);
+  } catch (const ModelError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST(ClearanceRevoluteJoint, RejectsBadInputNamingTheField) {
+  ClearanceJointParameters p;
+  EXPECT_EQ(construction_error(p), "no error");
+  p.dimensions.journal_radius = 0.010;
+  EXPECT_EQ(construction_error(p), "j.journal.radius = 0.01: must be smaller than bearing.radius = "
+                                   "0.01 (the radial clearance Ri - Rj, eq. 1, must be positive)");
+  p = {};
+  p.dimensions.journal_length = 0.03125;  // exact in binary: the message prints 17 digits
+  EXPECT_EQ(construction_error(p), "j.journal.length = 0.03125: must be smaller than bearing.length = "
+                                   "0.02 (the axial clearance (Li - Lj)/2, eq. 2, must be positive)");
+  p = {};
+  p.dimensions.bearing_radius = -0.01;
+  EXPECT_EQ(construction_error(p), "j.bearing.radius = -0.01: must be positive");
+  p = {};
+  p.dimensions.journal_length = std::numeric_limits<double>::infinity();
+  EXPECT_EQ(construction_error(p), "j.journal.length = inf: must be finite");
+  p = {};
+  EXPECT_EQ(construction_error(p, kJournal, Vector3::Zero()), "j.journal.axis = [0, 0, 0]: must not be zero");
+  EXPECT_EQ(construction_error(p, kBearing),
+            "j.journal.body: the journal and the bearing must be on different bodies");
+  p.normal.restitution = -0.5;
+  EXPECT_EQ(construction_error(p), "j.normal_force.restitution = -0.5: must lie in [0, 1]");
+  p = {};
+  p.detection.parallel_angle_tolerance = 2.0;
+  EXPECT_EQ(construction_error(p), "j.detection.parallel_angle_tolerance = 2: must lie in [0, pi/2) radians");
+}
+
+}  // namespace
+}  // namespace clearjoint::dynamics

@@ -1,0 +1,66 @@
+#include "clearjoint/dynamics/regularised_friction.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "clearjoint/dynamics/errors.hpp"
+
+namespace clearjoint::dynamics {
+namespace {
+
+// The force is a product of a few correctly rounded operations (norm, tanh, scaling).
+constexpr double kFewUlps = 8 * std::numeric_limits<double>::epsilon();
+
+TEST(RegularisedFriction, HasCoulombMagnitudeTimesTanhAlongTheSlidingVelocity) {
+  const FrictionParameters table2;  // mu = 0.1, k = 1000 s/m
+  const Vector3 slip(3e-3, -4e-3, 0.0);  // |v_T| = 5 mm/s, k |v_T| = 5
+  const Vector3 f = regularised_friction_force(table2, 200.0, slip);
+  const double expected = 0.1 * 200.0 * std::tanh(5.0);  // eqs. (31)-(32)
+  EXPECT_NEAR(f.norm(), expected, kFewUlps * expected);
+  EXPECT_NEAR(f.normalized().dot(slip.normalized()), 1.0, kFewUlps);
+}
+
+TEST(RegularisedFriction, NeverExceedsTheCoulombForce) {
+  const FrictionParameters table2;
+  for (double speed : {1e-6, 1e-3, 1.0, 1e3}) {
+    EXPECT_LE(regularised_friction_force(table2, 10.0, Vector3(speed, 0, 0)).norm(), 0.1 * 10.0);
+  }
+}
+
+TEST(RegularisedFriction, VanishesContinuouslyAtZeroSlip) {
+  const FrictionParameters table2;
+  EXPECT_EQ(regularised_friction_force(table2, 10.0, Vector3::Zero()), Vector3::Zero());
+  // Near v_T = 0 eq. (32) is linear: mu F_N k v_T (tanh x = x - x^3/3: relative 3e-13 at x = 1e-6).
+  const Vector3 slip(1e-9, 0.0, 0.0);
+  const Vector3 f = regularised_friction_force(table2, 10.0, slip);
+  EXPECT_NEAR(f.x() / (0.1 * 10.0 * 1000.0 * 1e-9), 1.0, 1e-12);
+}
+
+TEST(RegularisedFriction, IsZeroWithoutNormalForceOrCoefficient) {
+  FrictionParameters p;
+  EXPECT_EQ(regularised_friction_force(p, 0.0, Vector3(1, 0, 0)), Vector3::Zero());
+  p.coefficient = 0.0;
+  EXPECT_EQ(regularised_friction_force(p, 10.0, Vector3(1, 0, 0)), Vector3::Zero());
+}
+
+std::string validation_error(const FrictionParameters& p) {
+  try {
+    validate(p, "f");
+  } catch (const ModelError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST(FrictionParameters, RejectBadValuesNamingTheField) {
+  EXPECT_EQ(validation_error({}), "no error");
+  EXPECT_EQ(validation_error({-0.1, 1000.0}), "f.coefficient = -0.10000000000000001: must be >= 0");
+  EXPECT_EQ(validation_error({0.1, 0.0}), "f.velocity_coefficient = 0: must be positive");
+  EXPECT_EQ(validation_error({std::numeric_limits<double>::infinity(), 1.0}),
+            "f.coefficient = inf: must be finite");
+}
+
+}  // namespace
+}  // namespace clearjoint::dynamics
