@@ -52,8 +52,12 @@ void compare_matched(const Contact& contact, const ReferenceContact& reference, 
   if (!reference.points_defined) return;
   const auto [journal_m, journal_ulps] = point_error(contact.p_WCj, reference.p_WCj);
   const auto [bearing_m, bearing_ulps] = point_error(contact.p_WCi, reference.p_WCi);
-  score.point_m.push_back(std::max(journal_m, bearing_m));
-  score.point_ulps.push_back(std::max(journal_ulps, bearing_ulps));
+  if (reference.all_round) {
+    score.all_round_point_m.push_back(std::max(journal_m, bearing_m));
+  } else {
+    score.point_m.push_back(std::max(journal_m, bearing_m));
+    score.point_ulps.push_back(std::max(journal_ulps, bearing_ulps));
+  }
   if (reference.depth > 0) {
     score.depth_relative.push_back(
         (abs(Real(contact.depth) - reference.depth) / reference.depth).convert_to<double>());
@@ -182,6 +186,7 @@ void Tally::add(const InputScore& score, geometry::ContactScenario reference_sce
   append(point_m, score.point_m);
   append(point_ulps, score.point_ulps);
   append(depth_relative, score.depth_relative);
+  append(all_round_point_m, score.all_round_point_m);
 }
 
 }  // namespace clearjoint::bench

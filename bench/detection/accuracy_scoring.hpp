@@ -15,7 +15,8 @@
 /// * depth relative error: |depth - depth_ref| / depth_ref;
 /// * enclosure: every crossing of a certified or exact answer that carries a finite point_error
 ///   must lie within point_error of its reference crossing point.
-/// Points of a contact whose rim is beyond the wall all round are not compared (no arc middle).
+/// Points of a contact whose rim is beyond the wall all round are not compared (no arc middle);
+/// those of a rim beyond a base all round are tallied apart (ReferenceContact::all_round).
 
 #include <cstddef>
 #include <string>
@@ -36,6 +37,8 @@ struct InputScore {
   int enclosures_checked = 0;
   int enclosures_missed = 0;
   std::vector<double> crossing_m, crossing_ulps, point_m, point_ulps, depth_relative;
+  /// Point errors of contacts whose rim is beyond a base all round (ReferenceContact::all_round).
+  std::vector<double> all_round_point_m;
   std::vector<std::string> problems;  ///< one line per failure, for the failure list
 
   bool failed() const {
@@ -67,6 +70,7 @@ struct Tally {
   std::size_t exact = 0, certified = 0, uncertain = 0;
   std::size_t enclosures_checked = 0, enclosures_missed = 0;
   std::vector<double> crossing_m, crossing_ulps, point_m, point_ulps, depth_relative;
+  std::vector<double> all_round_point_m;
 
   void add_undecided() {
     ++inputs;

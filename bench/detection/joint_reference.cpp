@@ -479,6 +479,7 @@ CandidateResult axial_candidate(const ReferenceJoint& joint, ContactBase base) {
       }
     } else {
       out.beyond_model = true;  // the whole rim is beyond the base plane
+      contact.all_round = true;
     }
     if (contact.depth > joint.axial_clearance) out.beyond_model = true;
     out.contacts.push_back(std::move(contact));

@@ -104,6 +104,11 @@ struct ReferenceContact {
   /// False for a rim beyond the wall all round: it has no arc middle, the library documents an
   /// approximation there, and its points are not compared.
   bool points_defined = true;
+  /// True for a rim beyond a base plane all round (beyond the model): its contact point is the
+  /// deepest rim point, whose direction is ill-conditioned for a rim nearly parallel to the base
+  /// (the base normal projected into the rim plane is as short as the tilt's sine), so its point
+  /// errors are tallied apart.
+  bool all_round = false;
 };
 
 struct ReferenceAnswer {

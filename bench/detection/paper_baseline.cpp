@@ -129,7 +129,8 @@ bool newton_crossing(const Setup& s, const Vector3& c, Vector3& x) {
     jacobian.row(0) = 2.0 * from_center.transpose();
     jacobian.row(1) = s.a_j.transpose();
     jacobian.row(2) = 2.0 * radial.transpose();  // gradient of |a~_i y|^2 for unit a_i
-    const Vector3 step = jacobian.partialPivLu().solve(-f);
+    // Eigen's closed-form 3x3 inverse (cofactors): the cheapest solve for one right-hand side.
+    const Vector3 step = jacobian.inverse() * (-f);
     if (!step.allFinite()) return false;
     x += step;
     if (step.norm() <= kNewtonStepTolerance * s.rj) return true;
