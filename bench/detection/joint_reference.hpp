@@ -25,6 +25,13 @@
 ///   contacts, with beyond_model when a rim has two penetration arcs, is beyond a surface all
 ///   round, or penetrates deeper than the clearance in its direction (cr radial, ca axial).
 ///
+/// Why hand-written: tests/geometry/reference/multiprecision_reference takes its rim centres as
+/// doubles, while the joint as given has centres P +- (L/2) a/|a| that no double holds; and
+/// CGAL's algebraic kernels isolate the roots of exact (rational) polynomials, while these
+/// coefficients carry square roots (a/|a|). The root isolation (Sturm sequence, bisection,
+/// safeguarded Newton) is therefore written here in MPFR; tests/test_joint_reference.cpp checks it
+/// against the test reference on rounded joints and against closed forms.
+///
 /// The reference says when it cannot decide (`decided == false`): roots closer than
 /// kAmbiguousSeparation, a root of even multiplicity, or a sign test within kTieWidth of zero.
 /// The benchmark families never come that close (their smallest margin is 1e-15 clearances).
