@@ -10,6 +10,8 @@
 #include "clearjoint/geometry/intersect_circle_cylinder.hpp"
 #include "clearjoint/geometry/intersect_circle_plane.hpp"
 #include "error_bounded.hpp"
+#include "rim_distance_polynomial.hpp"
+#include "rim_plane_quantities.hpp"
 
 namespace clearjoint::geometry {
 namespace {
@@ -177,8 +179,18 @@ void detect_misaligned(const JointSetup& s, const DetectionOptions& options,
                        JointContacts& out, ContactPresence& presence,
                        CertificateAccumulator& certificate) {
   const Cylinder3 wall{s.p_WPi, s.bearing_axis_W, s.bearing_radius};
+  // A rim proved to stay inside the wall or the base plane (the kernel's own first test, here
+  // without the kernel's input checks, rescaling and result assembly) has no contact there: in
+  // free flight this is the whole detection.
+  const Certificate proved_clear = options.intersection.certify
+                                       ? Certificate{Certainty::certified, ""}
+                                       : Certificate{Certainty::uncertain, "certificate switched off"};
   for (const ContactBase base : {ContactBase::a, ContactBase::b}) {
     const Circle3 rim = journal_rim(s, base);
+    if (detail::rim_reach(rim, wall) == detail::RimReach::strictly_inside) {
+      certificate.add(proved_clear);
+      continue;
+    }
     const CircleCylinderIntersection hit = intersect_circle_cylinder(rim, wall, options.intersection);
     certificate.add(hit.certificate);
     if (hit.arc_count == 0) continue;
@@ -194,6 +206,10 @@ void detect_misaligned(const JointSetup& s, const DetectionOptions& options,
   for (const ContactBase base : {ContactBase::a, ContactBase::b}) {
     const Circle3 rim = journal_rim(s, base);
     const Plane3 base_plane{bearing_base(s, base), outward_sign(base) * s.bearing_axis_W};
+    if (detail::rim_side_of_plane(rim, base_plane) == detail::RimSide::strictly_negative) {
+      certificate.add(proved_clear);
+      continue;
+    }
     const CirclePlaneIntersection hit = intersect_circle_plane(rim, base_plane, options.intersection);
     certificate.add(hit.certificate);
     if (!hit.has_penetration) continue;

@@ -26,19 +26,16 @@ void reject(std::string_view name, std::string_view field, const std::string& va
   throw InvalidInput(message.str());
 }
 
-void require_finite(const Vector3& v, std::string_view name, std::string_view field) {
-  if (!v.allFinite()) reject(name, field, format(v), "every component must be finite");
+void reject_not_finite(const Vector3& v, std::string_view name, std::string_view field) {
+  reject(name, field, format(v), "every component must be finite");
 }
 
-void require_nonzero(const Vector3& v, std::string_view name, std::string_view field) {
-  if (v.x() == 0.0 && v.y() == 0.0 && v.z() == 0.0) {
-    reject(name, field, format(v), "must not be the zero vector");
-  }
+void reject_zero(const Vector3& v, std::string_view name, std::string_view field) {
+  reject(name, field, format(v), "must not be the zero vector");
 }
 
-void require_positive(double x, std::string_view name, std::string_view field) {
-  if (!std::isfinite(x)) reject(name, field, format(x), "must be finite");
-  if (!(x > 0.0)) reject(name, field, format(x), "must be positive");
+void reject_not_positive(double x, std::string_view name, std::string_view field) {
+  reject(name, field, format(x), std::isfinite(x) ? "must be positive" : "must be finite");
 }
 
 }  // namespace clearjoint::geometry::detail

@@ -1,6 +1,9 @@
 #pragma once
 // Input checks shared by every validate(): each failure throws InvalidInput naming the field and
 // the value, e.g. "circle.radius = -1: must be positive".
+//
+// The checks run on every query, so the test is inline and branch-light (x - x is 0 exactly when
+// x is finite, NaN otherwise) and only the reporting, which formats text, is out of line.
 
 #include <string>
 #include <string_view>
@@ -15,9 +18,25 @@ std::string format(const Vector3& v);
 
 [[noreturn]] void reject(std::string_view name, std::string_view field, const std::string& value,
                          std::string_view why);
+[[noreturn]] void reject_not_finite(const Vector3& v, std::string_view name, std::string_view field);
+[[noreturn]] void reject_zero(const Vector3& v, std::string_view name, std::string_view field);
+[[noreturn]] void reject_not_positive(double x, std::string_view name, std::string_view field);
 
-void require_finite(const Vector3& v, std::string_view name, std::string_view field);
-void require_nonzero(const Vector3& v, std::string_view name, std::string_view field);
-void require_positive(double x, std::string_view name, std::string_view field);
+inline bool all_finite(const Vector3& v) {
+  return (v.x() - v.x()) + (v.y() - v.y()) + (v.z() - v.z()) == 0.0;
+}
+
+inline void require_finite(const Vector3& v, std::string_view name, std::string_view field) {
+  if (!all_finite(v)) [[unlikely]] reject_not_finite(v, name, field);
+}
+
+inline void require_nonzero(const Vector3& v, std::string_view name, std::string_view field) {
+  if (v.x() == 0.0 && v.y() == 0.0 && v.z() == 0.0) [[unlikely]] reject_zero(v, name, field);
+}
+
+/// Finite and > 0 (NaN fails the comparison, +infinity the finiteness test).
+inline void require_positive(double x, std::string_view name, std::string_view field) {
+  if (!(x > 0.0 && x - x == 0.0)) [[unlikely]] reject_not_positive(x, name, field);
+}
 
 }  // namespace clearjoint::geometry::detail

@@ -7,6 +7,7 @@
 #include "certified_rim_roots.hpp"
 #include "rim_cylinder_exact.hpp"
 #include "rim_distance_polynomial.hpp"
+#include "primitives_detail.hpp"
 #include "scale_normalisation.hpp"
 
 namespace clearjoint::geometry {
@@ -69,8 +70,9 @@ int CircleCylinderIntersection::root_count() const noexcept {
 CircleCylinderIntersection intersect_circle_cylinder(const Circle3& circle_in,
                                                      const Cylinder3& cylinder_in,
                                                      const IntersectionOptions& options) {
-  validate(circle_in, "circle");
-  validate(cylinder_in, "cylinder");
+  // The inline test first: validate() formats its message and is out of line.
+  if (!detail::passes_validation(circle_in)) validate(circle_in, "circle");
+  if (!detail::passes_validation(cylinder_in)) validate(cylinder_in, "cylinder");
   // Exact power-of-two rescaling (scale_normalisation.hpp): directions to [1, 2), extreme
   // lengths to near 1; crossing points and their errors are scaled back at the end.
   Circle3 circle{circle_in.center, detail::direction_scaled(circle_in.normal), circle_in.radius};

@@ -15,6 +15,8 @@
 #include "angles.hpp"
 #include "circle_plane_exact.hpp"
 #include "error_bounded.hpp"
+#include "primitives_detail.hpp"
+#include "rim_plane_quantities.hpp"
 #include "scale_normalisation.hpp"
 
 namespace clearjoint::geometry {
@@ -28,16 +30,25 @@ constexpr double kPointRoundingUlps = 32 * detail::kUnitRoundoff;
 /// acos and atan2 in glibc: at most 1-2 ulps; we allow 4 ulps of pi.
 constexpr double kLibmAngleError = 4 * 2 * detail::kUnitRoundoff * std::numbers::pi;
 
-BoundedVector3 exact(const Vector3& v) { return {v.x(), v.y(), v.z()}; }
+/// sqrt(x^2 + y^2) within 2 ulps; std::hypot (correctly rounded, but several times the cost)
+/// only where the squares could under- or overflow.
+double length_2d(double x, double y) {
+  constexpr double kSafeLow = 0x1p-500, kSafeHigh = 0x1p500;
+  const double m = std::fmax(std::fabs(x), std::fabs(y));
+  if (m > kSafeLow && m < kSafeHigh) return std::sqrt(x * x + y * y);
+  return std::hypot(x, y);
+}
 
 /// atan2 of an enclosed vector, with the angle error: a displacement delta of a vector of
-/// length L turns it by at most (pi / 2) delta / L (when delta < L).
+/// length L turns it by at most asin(delta / L) <= (pi / 2) delta / L (when delta < L). The
+/// computed length is within 2 ulps: (1 - 4u) makes it a lower bound.
 Bounded angle_of(const Bounded& x, const Bounded& y) {
   const double angle = std::atan2(y.value, x.value);
-  const double length = std::hypot(x.value, y.value);
-  const double delta = std::hypot(x.error, y.error) * detail::kErrorInflation;
+  const double length = length_2d(x.value, y.value) * (1 - 4 * detail::kUnitRoundoff);
+  const double delta = (x.error + y.error) * detail::kErrorInflation;  // >= hypot of the errors
   if (!(delta < 0.5 * length)) return {angle, std::numbers::pi};
-  return {angle, 0.5 * std::numbers::pi * delta / (length - delta) + kLibmAngleError};
+  return {angle, 0.5 * std::numbers::pi * delta / (length - delta) * detail::kErrorInflation +
+                     kLibmAngleError};
 }
 
 /// An angle enclosure with the cosine and sine of its centre value.
@@ -72,8 +83,9 @@ CirclePlaneIntersection intersect_scaled(const Circle3& circle, const Plane3& pl
 
 CirclePlaneIntersection intersect_circle_plane(const Circle3& circle_in, const Plane3& plane_in,
                                                const IntersectionOptions& options) {
-  validate(circle_in, "circle");
-  validate(plane_in, "plane");
+  // The inline test first: validate() formats its message and is out of line.
+  if (!detail::passes_validation(circle_in)) validate(circle_in, "circle");
+  if (!detail::passes_validation(plane_in)) validate(plane_in, "plane");
   // Exact power-of-two rescaling, as in intersect_circle_cylinder (scale_normalisation.hpp).
   Circle3 circle{circle_in.center, detail::direction_scaled(circle_in.normal), circle_in.radius};
   Plane3 plane{plane_in.point, detail::direction_scaled(plane_in.normal)};
@@ -106,10 +118,12 @@ CirclePlaneIntersection intersect_scaled(const Circle3& circle, const Plane3& pl
                                          const IntersectionOptions& options) {
   CirclePlaneIntersection out;
 
-  const BoundedVector3 nc = exact(circle.normal), np = exact(plane.normal);
-  const Bounded s = dot(np, exact(circle.center) - exact(plane.point));
-  const BoundedVector3 w = cross(np, nc);
-  const Bounded w2 = squared_norm(w), nc2 = squared_norm(nc), np2 = squared_norm(np);
+  const bool a_priori = detail::plane_a_priori_bounds_apply(circle, plane);
+  const detail::PlaneQuantities q = a_priori ? detail::plane_quantities_a_priori(circle, plane)
+                                             : detail::plane_quantities_running_error(circle, plane);
+  const Bounded& s = q.s;
+  const BoundedVector3& w = q.w;
+  const Bounded &w2 = q.w2, &nc2 = q.nc2, &np2 = q.np2;
   const Bounded r = circle.radius;
 
   // Filter: every sign the topology needs, proved from the running error bound.
@@ -122,7 +136,7 @@ CirclePlaneIntersection intersect_scaled(const Circle3& circle, const Plane3& pl
                               detail::exactly_equal_products(a.y(), b.z(), a.z(), b.y()) &&
                               detail::exactly_equal_products(a.z(), b.x(), a.x(), b.z()) &&
                               detail::exactly_equal_products(a.x(), b.y(), a.y(), b.x());
-  const Bounded discriminant = s * s * nc2 - r * r * w2;
+  const Bounded& discriminant = q.discriminant;
   detail::CirclePlaneTopologyAndSide decided{};
   bool filtered = false;
   if (parallel_exact && s.sign() != 0) {
@@ -180,9 +194,11 @@ CirclePlaneIntersection intersect_scaled(const Circle3& circle, const Plane3& pl
 
   // theta_m: angle of P n_p in the rim frame; P n_p is parallel to n_c x (n_p x n_c).
   const CircleFrame frame = frame_of(circle);
-  const BoundedVector3 toward = cross(nc, w);
-  const Bounded along_u = dot(toward, exact(frame.u));
-  const Bounded along_v = dot(toward, exact(frame.v));
+  const detail::InPlaneNormal toward =
+      a_priori ? detail::in_plane_normal_a_priori(circle, plane, frame)
+               : detail::in_plane_normal_running_error(circle, q, frame);
+  const Bounded& along_u = toward.along_u;
+  const Bounded& along_v = toward.along_v;
   // The stored frame is rounded: its vectors differ from the exact frame by a few ulps, which
   // turns the angle by at most as much; 8 u covers it.
   Bounded theta_m = angle_of(along_u, along_v);
@@ -191,7 +207,7 @@ CirclePlaneIntersection intersect_scaled(const Circle3& circle, const Plane3& pl
   const double rounding = kPointRoundingUlps * (circle.center.norm() + 2 * circle.radius);
   // Crossing points by angle addition from cos/sin of theta_m and beta: no libm sine or cosine.
   // They differ from point_at(angle) by a few ulps of the terms, inside `rounding`.
-  const double toward_length = std::hypot(along_u.value, along_v.value);
+  const double toward_length = length_2d(along_u.value, along_v.value);
   const double cos_m = along_u.value / toward_length, sin_m = along_v.value / toward_length;
   auto crossing_at = [&](double angle, double error, double cos_angle, double sin_angle,
                          int multiplicity) {

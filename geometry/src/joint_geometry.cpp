@@ -31,13 +31,9 @@ void validate(const JointDimensions& dimensions, std::string_view name) {
 }
 
 void validate(const PartPose& pose, std::string_view name) {
-  if (!pose.p_WP.allFinite()) reject(name, "p_WP", format(pose.p_WP), "every component must be finite");
-  if (!pose.axis_W.allFinite()) {
-    reject(name, "axis_W", format(pose.axis_W), "every component must be finite");
-  }
-  if (pose.axis_W.x() == 0.0 && pose.axis_W.y() == 0.0 && pose.axis_W.z() == 0.0) {
-    reject(name, "axis_W", format(pose.axis_W), "must not be the zero vector");
-  }
+  detail::require_finite(pose.p_WP, name, "p_WP");
+  detail::require_finite(pose.axis_W, name, "axis_W");
+  detail::require_nonzero(pose.axis_W, name, "axis_W");
 }
 
 Vector3 unit_axis(const PartPose& pose) {

@@ -1,7 +1,26 @@
 #pragma once
 #include "clearjoint/geometry/primitives.hpp"
+#include "input_checks.hpp"
 
 namespace clearjoint::geometry {
 /// Index k of the smallest |normal_k| (first on ties): the frame uses u' = normal x e_k.
 int frame_axis_index(const Vector3& normal);
+
+namespace detail {
+
+/// What validate() accepts, as one inline test for the queries' entry: validate() itself (out of
+/// line, and it formats the message) runs only when this fails.
+inline bool nonzero(const Vector3& v) { return (v.x() != 0.0) | (v.y() != 0.0) | (v.z() != 0.0); }
+inline bool finite_positive(double x) { return (x > 0.0) & (x - x == 0.0); }
+inline bool passes_validation(const Circle3& c) {
+  return all_finite(c.center) & all_finite(c.normal) & nonzero(c.normal) & finite_positive(c.radius);
+}
+inline bool passes_validation(const Plane3& p) {
+  return all_finite(p.point) & all_finite(p.normal) & nonzero(p.normal);
+}
+inline bool passes_validation(const Cylinder3& c) {
+  return all_finite(c.axis_point) & all_finite(c.axis) & nonzero(c.axis) & finite_positive(c.radius);
+}
+
+}  // namespace detail
 }  // namespace clearjoint::geometry

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "a_priori_bounds.hpp"
 #include "primitives_detail.hpp"
 
 namespace clearjoint::geometry::detail {
@@ -9,27 +10,8 @@ namespace {
 
 BoundedVector3 exact(const Vector3& v) { return {v.x(), v.y(), v.z()}; }
 
-/// Higham's gamma_k = k u / (1 - k u) (Lemma 3.3 counters: products and quotients add their
-/// counts, a sum adds one to each summand, sqrt at most one). Counted on the code below: k0 21,
-/// k1 20, k2 26, k3 39 (squares of the normalised axis components), k4 32, the reach test 8;
-/// gamma_64 leaves room for a miscount. Then |computed - exact| <= gamma_32 * (the same expression evaluated on
-/// absolute values, subtractions turned into additions), provided nothing underflows or
-/// overflows, which the magnitude guard below ensures.
-constexpr double kGamma64 = 64 * kUnitRoundoff / (1 - 64 * kUnitRoundoff);
-/// The absolute-value expressions are themselves rounded (relative 24 u at most): inflate.
-constexpr double kMagnitudeInflation = 1 + 0x1p-40;
-/// Inputs with magnitudes in this range keep every product of up to 8 factors (the longest
-/// here) normal and finite: 2^(8*100) < 2^1023 and 2^(-8*100) > 2^-1022.
-constexpr double kSmallestGuardedInput = 0x1p-100;
-constexpr double kLargestGuardedInput = 0x1p100;
-
-bool magnitude_in_range(double x) {
-  const double m = std::fabs(x);
-  return m == 0.0 || (m >= kSmallestGuardedInput && m <= kLargestGuardedInput);
-}
-bool magnitudes_in_range(const Vector3& v) {
-  return magnitude_in_range(v.x()) && magnitude_in_range(v.y()) && magnitude_in_range(v.z());
-}
+// Chains counted on the code below (a_priori_bounds.hpp): k0 21, k1 20, k2 26, k3 39 (squares
+// of the normalised axis components), k4 32, the reach test 8; all under kGamma64's 64.
 
 bool a_priori_bounds_apply(const Circle3& circle, const Cylinder3& cylinder) {
   const Vector3 q = circle.center - cylinder.axis_point;  // rounded, but that is fine for a range test
@@ -37,11 +19,6 @@ bool a_priori_bounds_apply(const Circle3& circle, const Cylinder3& cylinder) {
          magnitudes_in_range(q) && magnitudes_in_range(circle.normal) &&
          magnitudes_in_range(cylinder.axis) && magnitude_in_range(circle.radius) &&
          magnitude_in_range(cylinder.radius);
-}
-
-Vector3 abs_cross(const Vector3& a, const Vector3& b) {
-  return {a.y() * b.z() + a.z() * b.y(), a.z() * b.x() + a.x() * b.z(),
-          a.x() * b.y() + a.y() * b.x()};
 }
 
 RimDistancePolynomial rim_distance_polynomial_a_priori(const Circle3& circle,
@@ -180,33 +157,72 @@ double RimDistancePolynomial::approximate_newton_step(double theta) const {
   return value / slope;
 }
 
+namespace {
+
+/// Taylor polynomials of sin (degree 7) and cos (degree 8) at 0, for |x| <= kMaxAngleOffset.
+struct SmallAngleTrig {
+  double sin, cos;
+};
+SmallAngleTrig small_angle_trig(double x) {
+  const double x2 = x * x;
+  return {x * (1 - x2 * (1.0 / 6 - x2 * (1.0 / 120 - x2 / 5040))),
+          1 - x2 * (0.5 - x2 * (1.0 / 24 - x2 * (1.0 / 720 - x2 / 40320)))};
+}
+
+/// Bound on |computed - true| of the sine and cosine that value_near and approximate_near form
+/// by angle addition at base + x (|x| <= 1/16), in units: libm's base sine and cosine (4u each,
+/// error_bounded.hpp), the Taylor polynomials' rounding (4u, AngleBase::at) and the two products
+/// and one sum of the addition (3u each of terms at most 1 + 1/16) add to under 12u; 24u
+/// doubles that, and the slack also holds the cosine's Lagrange remainder (|x|^10 / 10! < 3e-19).
+/// The sine's remainder (|x|^9 / 9!) is added separately.
+constexpr double kAngleAdditionUlps = 24;
+
+}  // namespace
+
 BoundedSinCos AngleBase::at(double offset) const {
   // Taylor polynomials of sin (degree 7) and cos (degree 8) at 0 for |x| <= 1/16, in double.
   // Error: Lagrange remainders |x|^9/9! and |x|^10/10!, plus Horner rounding: every partial
   // result is at most 1 in magnitude (at most x^2/2 inside), so the cosine is off by < 2u and
   // the sine by < 3u |x| (the rounded constants 1/6, 1/120, ... add < u x^2); 4u covers both.
-  const double x = offset, x2 = x * x, a = std::fabs(x);
-  const double sin_small = x * (1 - x2 * (1.0 / 6 - x2 * (1.0 / 120 - x2 / 5040)));
-  const double cos_small = 1 - x2 * (0.5 - x2 * (1.0 / 24 - x2 * (1.0 / 720 - x2 / 40320)));
-  const double a3 = a * a, a9 = a3 * a3 * a3;
-  const Bounded s(sin_small, 4 * kUnitRoundoff * a + a9 / 362880 + kUnderflowError);
-  const Bounded c(cos_small, 4 * kUnitRoundoff + a9 * a / 3628800 + kUnderflowError);
+  const SmallAngleTrig small = small_angle_trig(offset);
+  const double a = std::fabs(offset);
+  const double a3 = a * a * a, a9 = a3 * a3 * a3;
+  const Bounded s(small.sin, 4 * kUnitRoundoff * a + a9 / 362880 + kUnderflowError);
+  const Bounded c(small.cos, 4 * kUnitRoundoff + a9 * a / 3628800 + kUnderflowError);
   return {trig.sin * c + trig.cos * s, trig.cos * c - trig.sin * s};
 }
 
 Bounded RimDistancePolynomial::value_near(const AngleBase& base, double offset) const {
-  const BoundedSinCos t = base.at(offset);
-  const Bounded cos2 = (t.cos - t.sin) * (t.cos + t.sin);
-  const Bounded sin2 = Bounded(2.0) * t.sin * t.cos;
-  return k[0] + k[1] * t.cos + k[2] * t.sin + k[3] * cos2 + k[4] * sin2;
+  // Plain double evaluation with an a priori bound instead of the running error of `value`:
+  // this is the proof step of every tier-1 root, so it should cost what approximate_near does.
+  // With e_t the error of the computed c, s (kAngleAdditionUlps u plus the Taylor remainder),
+  // cos2 = (c - s)(c + s) and sin2 = 2 s c are off by at most 2 (|c| + |s|) e_t + e_t^2 plus 3u
+  // of rounding, under 4 e_t + 4u since |c| + |s| <= 1.5 here; the sum k0 + k1 c + ... is off by
+  // sum |k_i| e_i (each true trig value is at most 1 in magnitude), the coefficients' own
+  // errors, and its rounding, gamma_6 of sum |k_i| |t_i| <= 8u sum |k_i| (|t_i| <= 1 + e_t).
+  // Each operation may also underflow (2^-1074 each, 32 of them cover the 25 here).
+  const SmallAngleTrig small = small_angle_trig(offset);
+  const double bc = base.trig.cos.value, bs = base.trig.sin.value;
+  const double c = bc * small.cos - bs * small.sin;
+  const double s = bs * small.cos + bc * small.sin;
+  const double cos2 = (c - s) * (c + s), sin2 = 2 * s * c;
+  const double value = k[0].value + k[1].value * c + k[2].value * s + k[3].value * cos2 + k[4].value * sin2;
+
+  const double a = std::fabs(offset), a3 = a * a * a;
+  const double trig_error = kAngleAdditionUlps * kUnitRoundoff + a3 * a3 * a3 / 362880;
+  const double double_angle_error = 4 * trig_error + 4 * kUnitRoundoff;
+  const double first = std::fabs(k[1].value) + std::fabs(k[2].value);
+  const double second = std::fabs(k[3].value) + std::fabs(k[4].value);
+  const double error = coefficient_error() + first * trig_error + second * double_angle_error +
+                       8 * kUnitRoundoff * (std::fabs(k[0].value) + first + second) +
+                       32 * kUnderflowError;
+  return {value, error * kErrorInflation};
 }
 
 ValueAndSlope RimDistancePolynomial::approximate_near(const AngleBase& base, double offset) const {
-  const double x2 = offset * offset;
-  const double sin_small = offset * (1 - x2 * (1.0 / 6 - x2 * (1.0 / 120 - x2 / 5040)));
-  const double cos_small = 1 - x2 * (0.5 - x2 * (1.0 / 24 - x2 * (1.0 / 720 - x2 / 40320)));
-  const double c = base.trig.cos.value * cos_small - base.trig.sin.value * sin_small;
-  const double s = base.trig.sin.value * cos_small + base.trig.cos.value * sin_small;
+  const SmallAngleTrig small = small_angle_trig(offset);
+  const double c = base.trig.cos.value * small.cos - base.trig.sin.value * small.sin;
+  const double s = base.trig.sin.value * small.cos + base.trig.cos.value * small.sin;
   const double cos2 = (c - s) * (c + s), sin2 = 2 * s * c;
   const double value = k[0].value + k[1].value * c + k[2].value * s + k[3].value * cos2 + k[4].value * sin2;
   const double slope = k[2].value * c - k[1].value * s + 2 * (k[4].value * cos2 - k[3].value * sin2);

@@ -5,7 +5,9 @@
 // steps of every tier (and the exact tier's mapping back to angles) away from under- and
 // overflow: a 1e-170 normal otherwise squares to zero.
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
 
 #include "clearjoint/geometry/vector3.hpp"
 
@@ -15,10 +17,35 @@ namespace clearjoint::geometry::detail {
 /// rim_distance_polynomial.cpp accept magnitudes in [2^-100, 2^100]).
 inline constexpr int kLengthExponentSlack = 60;
 
+/// The binary exponent of a normal double (floor(log2 |x|)), read from its bits: std::ilogb and
+/// std::ldexp are out-of-line libm calls that cost more than the rest of a cheap query.
+inline int normal_exponent(double x) {
+  return static_cast<int>((std::bit_cast<std::uint64_t>(x) >> 52) & 0x7ff) - 1023;
+}
+inline bool is_normal_nonzero(double x) {
+  const auto field = (std::bit_cast<std::uint64_t>(x) >> 52) & 0x7ff;
+  return field != 0 && field != 0x7ff;
+}
+/// 2^k, exactly, for -1022 <= k <= 1023.
+inline double power_of_two(int k) {
+  return std::bit_cast<double>(static_cast<std::uint64_t>(1023 + k) << 52);
+}
+
 /// v * 2^-e with e the exponent of its largest component (so that component is in [1, 2)), when
 /// that is exact; v itself otherwise.
 inline Vector3 direction_scaled(const Vector3& v) {
   const double largest = v.cwiseAbs().maxCoeff();
+  if (is_normal_nonzero(largest)) {
+    const int e = normal_exponent(largest);
+    if (e == 0) return v;
+    if (e > -1022 && e < 1023) {
+      // Fast path: one multiplication by an exact power of two, checked by the inverse one
+      // (a component that underflows to a subnormal loses bits and fails the check).
+      const double down = power_of_two(-e), up = power_of_two(e);
+      const Vector3 scaled = v * down;
+      return scaled * up == v ? scaled : v;
+    }
+  }
   if (largest == 0.0 || !std::isfinite(largest)) return v;
   const int e = std::ilogb(largest);
   if (e == 0) return v;
@@ -31,6 +58,9 @@ inline Vector3 direction_scaled(const Vector3& v) {
 /// The power of two 2^-e to multiply every length by (0 when none is needed or it would not be
 /// exact), from the largest length given.
 inline int length_exponent(double largest_length) {
+  constexpr double kSmallest = 0x1p-60, kLargest = 0x1p61;  // 2^+-kLengthExponentSlack
+  static_assert(kLengthExponentSlack == 60);
+  if (largest_length >= kSmallest && largest_length < kLargest) return 0;
   if (largest_length == 0.0 || !std::isfinite(largest_length)) return 0;
   const int e = std::ilogb(largest_length);
   return (e > kLengthExponentSlack || e < -kLengthExponentSlack) ? e : 0;

@@ -1,5 +1,5 @@
 // Tests of geometry/src/rim_distance_polynomial.{hpp,cpp}: the coefficients, value and
-// derivative must enclose the exact quantities of the stored primitives (256-bit MPFR from the
+// derivative (also by angle addition, value_near) must enclose the exact quantities of the stored primitives (256-bit MPFR from the
 // definitions in primitives.hpp), and rim_reach must never give a wrong decided answer.
 
 #include "rim_distance_polynomial.hpp"
@@ -122,6 +122,22 @@ void check_pose(const Pose& pose, std::mt19937_64& rng, bool tight) {
         << "g'(" << theta << ")";
     if (tight) {
       ASSERT_LE(Real(value.error), kUsefulRelativeError * scale);
+    }
+    // The angle-addition evaluation of the tier-1 proof (AngleBase, value_near) at the real
+    // angle theta + offset, for offsets across its whole range |offset| <= kMaxAngleOffset.
+    const AngleBase base(theta);
+    for (const double offset : {0.0, 1e-12, -3e-9, 1e-4, -0.01, kMaxAngleOffset, -kMaxAngleOffset,
+                                std::uniform_real_distribution<double>(-kMaxAngleOffset,
+                                                                       kMaxAngleOffset)(rng)}) {
+      const Real shifted = t + Real(offset);
+      const Bounded near = g.value_near(base, offset);
+      ASSERT_TRUE(Encloses(near, it::rim_distance_excess(pose.circle, pose.cylinder, shifted), scale))
+          << "g(" << theta << " + " << offset << ")";
+      ASSERT_TRUE(Encloses(near, it::trig_polynomial(k, shifted), scale))
+          << "g(" << theta << " + " << offset << ")";
+      if (tight) {
+        ASSERT_LE(Real(near.error), kUsefulRelativeError * scale);
+      }
     }
     const Real second = -k[1] * cos(t) - k[2] * sin(t) - 4 * k[3] * cos(2 * t) - 4 * k[4] * sin(2 * t);
     max_curvature = std::max(max_curvature, abs(second));

@@ -1,0 +1,46 @@
+#pragma once
+// The quantities that decide a rim against a plane (docs/circle-plane.md; paper eqs. 11-15), each
+// with a rigorous error bound, and the cheap "which side is the whole rim on" test built on them.
+// With s = n_p . (c - p) and w = n_p x n_c, the signed distance of rim point x(theta) from the
+// plane is, times |n_p|, s + r |w| / |n_c| cos(theta - theta_m); the rim stays strictly on one
+// side iff s^2 |n_c|^2 - r^2 |w|^2 > 0, the side of s.
+
+#include "clearjoint/geometry/primitives.hpp"
+#include "error_bounded.hpp"
+
+namespace clearjoint::geometry::detail {
+
+struct PlaneQuantities {
+  Bounded s;             ///< n_p . (c - p)
+  BoundedVector3 w;      ///< n_p x n_c
+  Bounded w2, nc2, np2;  ///< |w|^2, |n_c|^2, |n_p|^2
+  Bounded discriminant;  ///< s^2 |n_c|^2 - r^2 |w|^2
+};
+
+/// Whether the a priori bounds of a_priori_bounds.hpp hold for these inputs (magnitudes).
+bool plane_a_priori_bounds_apply(const Circle3& circle, const Plane3& plane);
+/// Plain double with a priori bounds; only when plane_a_priori_bounds_apply.
+PlaneQuantities plane_quantities_a_priori(const Circle3& circle, const Plane3& plane);
+/// Running error bounds (error_bounded.hpp): any finite input; overflow gives non-finite bounds.
+PlaneQuantities plane_quantities_running_error(const Circle3& circle, const Plane3& plane);
+
+/// Components of toward = n_c x (n_p x n_c) (parallel to the plane normal's part in the rim
+/// plane) along the rim frame's u and v: the angle theta_m of the deepest rim point.
+struct InPlaneNormal {
+  Bounded along_u, along_v;
+};
+InPlaneNormal in_plane_normal_a_priori(const Circle3& circle, const Plane3& plane,
+                                       const CircleFrame& frame);
+InPlaneNormal in_plane_normal_running_error(const Circle3& circle, const PlaneQuantities& q,
+                                            const CircleFrame& frame);
+
+/// Where the whole rim lies, proved; `undecided` when it crosses or touches the plane or the
+/// bounds cannot tell.
+enum class RimSide {
+  strictly_negative,  ///< every rim point strictly on the side away from the normal
+  strictly_positive,  ///< every rim point strictly on the normal's side
+  undecided,
+};
+RimSide rim_side_of_plane(const Circle3& circle, const Plane3& plane);
+
+}  // namespace clearjoint::geometry::detail

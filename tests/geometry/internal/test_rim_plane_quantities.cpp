@@ -1,0 +1,227 @@
+// Tests of geometry/src/rim_plane_quantities.{hpp,cpp}: both versions of the quantities (a priori
+// and running error) must enclose the exact values of the stored primitives (256-bit MPFR), and
+// rim_side_of_plane must never claim a side the exact rim does not keep.
+
+#include "rim_plane_quantities.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "mpfr_reference.hpp"
+
+namespace clearjoint::geometry::detail {
+namespace {
+
+using internal_testing::Real;
+using internal_testing::RealVector3;
+namespace it = internal_testing;
+
+struct Pose {
+  Circle3 circle;
+  Plane3 plane;
+};
+
+/// The exact quantities of rim_plane_quantities.hpp.
+struct Exact {
+  Real s, w2, nc2, np2, discriminant;
+  RealVector3 w;
+};
+Exact exact_quantities(const Pose& p) {
+  const RealVector3 nc = it::to_real(p.circle.normal), np = it::to_real(p.plane.normal);
+  Exact e;
+  e.s = it::dot(np, it::to_real(p.circle.center) - it::to_real(p.plane.point));
+  e.w = it::cross(np, nc);
+  e.w2 = it::dot(e.w, e.w);
+  e.nc2 = it::dot(nc, nc);
+  e.np2 = it::dot(np, np);
+  const Real r(p.circle.radius);
+  e.discriminant = e.s * e.s * e.nc2 - r * r * e.w2;
+  return e;
+}
+
+::testing::AssertionResult Encloses(const Bounded& b, const Real& truth, const Real& scale) {
+  if (!b.finite()) return ::testing::AssertionFailure() << "non-finite bound";
+  const Real distance = abs(truth - Real(b.value));
+  if (distance <= Real(b.error) + it::kReferenceRelativeError * scale)
+    return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure() << "value " << b.value << " error " << b.error
+                                       << " misses " << truth.str(30);
+}
+
+void check_quantities(const PlaneQuantities& q, const Pose& pose) {
+  const Exact e = exact_quantities(pose);
+  const Real length = it::norm(it::to_real(pose.circle.center) - it::to_real(pose.plane.point)) +
+                      Real(pose.circle.radius);
+  const Real n = it::norm(it::to_real(pose.circle.normal)) * it::norm(it::to_real(pose.plane.normal));
+  const Real scale = (length * length + 1) * (n * n + 1) * (it::dot(it::to_real(pose.circle.normal), it::to_real(pose.circle.normal)) + 1);
+  ASSERT_TRUE(Encloses(q.s, e.s, scale)) << "s";
+  ASSERT_TRUE(Encloses(q.w.x, e.w.x, scale)) << "w.x";
+  ASSERT_TRUE(Encloses(q.w.y, e.w.y, scale)) << "w.y";
+  ASSERT_TRUE(Encloses(q.w.z, e.w.z, scale)) << "w.z";
+  ASSERT_TRUE(Encloses(q.w2, e.w2, scale)) << "w2";
+  ASSERT_TRUE(Encloses(q.nc2, e.nc2, scale)) << "nc2";
+  ASSERT_TRUE(Encloses(q.np2, e.np2, scale)) << "np2";
+  ASSERT_TRUE(Encloses(q.discriminant, e.discriminant, scale)) << "discriminant";
+}
+
+Vector3 random_direction(std::mt19937_64& rng) {
+  std::normal_distribution<double> gauss;
+  return Vector3(gauss(rng), gauss(rng), gauss(rng)).normalized();
+}
+
+/// A rim near the plane (its centre within about one radius of it), lengths times `scale`,
+/// normals of magnitude 1e-3..1e3, tilt between the normals random or `tilt` radians.
+Pose random_pose(std::mt19937_64& rng, double scale, double tilt) {
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  std::uniform_real_distribution<double> decade(-3.0, 3.0);
+  const Vector3 plane_dir = random_direction(rng);
+  Vector3 normal_dir = random_direction(rng);
+  if (tilt >= 0) {
+    const Vector3 side = plane_dir.cross(random_direction(rng)).normalized();
+    normal_dir = std::cos(tilt) * plane_dir + std::sin(tilt) * side;
+  }
+  const double r = scale * (1.0 + 0.5 * unit(rng));
+  const Vector3 point = scale * Vector3(unit(rng), unit(rng), unit(rng));
+  const Vector3 along = plane_dir.cross(random_direction(rng)).normalized();
+  const Vector3 centre = point + scale * unit(rng) * along + r * unit(rng) * plane_dir;
+  return {{centre, normal_dir * std::pow(10.0, decade(rng)), r},
+          {point, plane_dir * std::pow(10.0, decade(rng))}};
+}
+
+/// Largest and smallest signed distance of a rim point from the plane, exactly (times 1):
+/// (s -+ r |w| / |n_c|) / |n_p|.
+std::pair<Real, Real> exact_side_range(const Pose& pose) {
+  const Exact e = exact_quantities(pose);
+  const Real half_width = Real(pose.circle.radius) * sqrt(e.w2 / e.nc2);
+  const Real np = sqrt(e.np2);
+  return {(e.s - half_width) / np, (e.s + half_width) / np};
+}
+
+void check_side_is_never_wrong(const Pose& pose) {
+  const RimSide side = rim_side_of_plane(pose.circle, pose.plane);
+  const auto [low, high] = exact_side_range(pose);
+  if (side == RimSide::strictly_negative) {
+    ASSERT_LT(high, 0) << "claimed strictly negative";
+  }
+  if (side == RimSide::strictly_positive) {
+    ASSERT_GT(low, 0) << "claimed strictly positive";
+  }
+}
+
+TEST(PlaneQuantities, BothVersionsEncloseTheExactValuesOnRandomPoses) {
+  std::mt19937_64 rng(71);
+  int a_priori = 0;
+  for (int i = 0; i < 500; ++i) {
+    const Pose pose = random_pose(rng, i % 2 == 0 ? 1.0 : 0.01, i % 5 == 0 ? 1e-9 : -1.0);
+    check_quantities(plane_quantities_running_error(pose.circle, pose.plane), pose);
+    if (plane_a_priori_bounds_apply(pose.circle, pose.plane)) {
+      ++a_priori;
+      check_quantities(plane_quantities_a_priori(pose.circle, pose.plane), pose);
+    }
+  }
+  EXPECT_EQ(a_priori, 500);  // every pose here is inside the guard
+}
+
+TEST(PlaneQuantities, RunningErrorEnclosesTheExactValuesAtHugeAndTinyScales) {
+  std::mt19937_64 rng(73);
+  // Up to 1e70 nothing overflows (the discriminant is a length^4 times normals^4 <= 1e12).
+  for (const double scale : {1e-150, 1e-60, 1e60, 1e70}) {
+    for (int i = 0; i < 50; ++i) {
+      const Pose pose = random_pose(rng, scale, -1.0);
+      EXPECT_EQ(plane_a_priori_bounds_apply(pose.circle, pose.plane), false);
+      check_quantities(plane_quantities_running_error(pose.circle, pose.plane), pose);
+    }
+  }
+}
+
+TEST(PlaneQuantities, RunningErrorGivesANonFiniteBoundRatherThanAWrongOneWhenTheDiscriminantOverflows) {
+  // Lengths 1e165: the discriminant (length^4 times normals^4, normals 1e-3..1e3) overflows for
+  // most poses. Its bound must then be non-finite, so that no sign is ever read from it
+  // (Bounded::sign of an infinite error is 0), and enclose the exact value otherwise; the
+  // kernel's queries rescale lengths before they get here.
+  std::mt19937_64 rng(74);
+  int overflowed = 0;
+  for (int i = 0; i < 50; ++i) {
+    const Pose pose = random_pose(rng, 1e165, -1.0);
+    const PlaneQuantities q = plane_quantities_running_error(pose.circle, pose.plane);
+    const Exact e = exact_quantities(pose);
+    if (!q.discriminant.finite()) {
+      ++overflowed;
+      EXPECT_EQ(q.discriminant.sign(), 0);
+    } else {
+      const Real scale = abs(e.s * e.s * e.nc2) + abs(e.discriminant);
+      ASSERT_TRUE(Encloses(q.discriminant, e.discriminant, scale));
+    }
+    const Real scale = Real(1e300) * Real(1e10);  // beyond every term of s
+    ASSERT_TRUE(Encloses(q.s, e.s, scale));
+  }
+  EXPECT_GT(overflowed, 10);
+}
+
+TEST(PlaneQuantities, InPlaneNormalEnclosesTheExactProjectionOnTheFrame) {
+  std::mt19937_64 rng(79);
+  for (int i = 0; i < 300; ++i) {
+    const Pose pose = random_pose(rng, 1.0, i % 3 == 0 ? 1e-7 : -1.0);
+    const CircleFrame frame = frame_of(pose.circle);
+    const RealVector3 nc = it::to_real(pose.circle.normal);
+    const RealVector3 toward = it::cross(nc, it::cross(it::to_real(pose.plane.normal), nc));
+    const Real along_u = it::dot(toward, it::to_real(frame.u));
+    const Real along_v = it::dot(toward, it::to_real(frame.v));
+    const Real scale = it::dot(nc, nc) * it::norm(it::to_real(pose.plane.normal)) + 1;
+    const InPlaneNormal fast = in_plane_normal_a_priori(pose.circle, pose.plane, frame);
+    const InPlaneNormal running = in_plane_normal_running_error(
+        pose.circle, plane_quantities_running_error(pose.circle, pose.plane), frame);
+    for (const InPlaneNormal& got : {fast, running}) {
+      ASSERT_TRUE(Encloses(got.along_u, along_u, scale)) << i;
+      ASSERT_TRUE(Encloses(got.along_v, along_v, scale)) << i;
+    }
+  }
+}
+
+TEST(RimSideOfPlane, IsNeverWrongOnRandomPosesAndDecidesMostOfThem) {
+  std::mt19937_64 rng(83);
+  int decided = 0;
+  for (int i = 0; i < 1000; ++i) {
+    const Pose pose = random_pose(rng, i % 3 == 0 ? 1e-40 : (i % 3 == 1 ? 1.0 : 1e40), -1.0);
+    check_side_is_never_wrong(pose);
+    decided += rim_side_of_plane(pose.circle, pose.plane) != RimSide::undecided;
+  }
+  EXPECT_GT(decided, 100);  // a test that decides nothing would pass vacuously
+}
+
+TEST(RimSideOfPlane, LeavesExactTouchingAndCrossingUndecidedAndDecidesParallelRims) {
+  const Plane3 z0{{0, 0, 0}, {0, 0, 1}};
+  // A rim perpendicular to the plane touching it at one point, from either side.
+  EXPECT_EQ(rim_side_of_plane({{0, 0, 1}, {1, 0, 0}, 1}, z0), RimSide::undecided);
+  EXPECT_EQ(rim_side_of_plane({{0, 0, -1}, {1, 0, 0}, 1}, z0), RimSide::undecided);
+  // 3-4-5 tilt touching exactly: centre height 3, in-plane reach r |w|/|n_c| = 5 * 3/5 = 3.
+  EXPECT_EQ(rim_side_of_plane({{0, 0, 3}, {3, 0, 4}, 5}, z0), RimSide::undecided);
+  EXPECT_EQ(rim_side_of_plane({{0, 0, 0.5}, {1, 0, 0}, 1}, z0), RimSide::undecided);  // crossing
+  EXPECT_EQ(rim_side_of_plane({{0, 0, 0}, {0, 0, 1}, 1}, z0), RimSide::undecided);    // in the plane
+  // Parallel rims off the plane, on either side, however large.
+  EXPECT_EQ(rim_side_of_plane({{0, 0, 1e-9}, {0, 0, 2}, 1e9}, z0), RimSide::strictly_positive);
+  EXPECT_EQ(rim_side_of_plane({{5, 7, -1e-9}, {0, 0, -3}, 1e9}, z0), RimSide::strictly_negative);
+  EXPECT_EQ(rim_side_of_plane({{0, 0, 4}, {1, 0, 1}, 5}, z0), RimSide::strictly_positive);
+}
+
+TEST(RimSideOfPlane, IsNeverWrongOneUlpAwayFromTouching) {
+  // The exact tangencies above with the centre moved by single ulps along the plane normal.
+  const std::vector<Pose> touching = {{{{0, 0, 1}, {1, 0, 0}, 1}, {{0, 0, 0}, {0, 0, 1}}},
+                                      {{{0, 0, 3}, {3, 0, 4}, 5}, {{0, 0, 0}, {0, 0, 1}}},
+                                      {{{0, 0, 9950}, {0, 1, 100}, 9900}, {{0, 0, 10000}, {0, 0, 1}}}};
+  for (const Pose& base : touching) {
+    for (const double direction : {-1.0, 1.0}) {
+      Pose pose = base;
+      for (int step = 0; step < 4; ++step) {
+        pose.circle.center.z() = std::nextafter(pose.circle.center.z(), direction * HUGE_VAL);
+        check_side_is_never_wrong(pose);
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace clearjoint::geometry::detail
