@@ -247,9 +247,11 @@ elseif(CASE STREQUAL "bad_lines")
   expect_error(19 "bearing.length" "0" "positive")
   expect_error(20 "bearing" "must be a JSON object")
   expect_error(21 "approach_velocity" "infinite")           # 1e308 - (-1e308) overflows
-  expect_no_error(22)
+  expect_error(22 "journal.center[1]" "1e+300" "[1e-150, 1e150]")
+  expect_error(23 "bearing.radius" "1e-300" "[1e-150, 1e150]")
+  expect_no_error(24)
   expect_in("${ERR}" "detect_bad_lines.jsonl" "stderr")
-  expect_in("${ERR}" "21 line(s)" "stderr")
+  expect_in("${ERR}" "23 line(s)" "stderr")
 
 elseif(CASE STREQUAL "missing_file")
   set(missing "${WORK_DIR}/no-such-joints.jsonl")
