@@ -60,7 +60,9 @@ timing_load=$(cut -d' ' -f1-3 /proc/loadavg)
   --benchmark_report_aggregates_only=true \
   --benchmark_context=commit="$commit" \
   --benchmark_context=geometry_files_modified_since_commit="$dirty" \
-  --benchmark_out="$out/timings.json" --benchmark_out_format=json >"$out/timings.txt"
+  --benchmark_out="$out/timings.json.tmp" --benchmark_out_format=json >"$out/timings.txt.tmp"
+mv "$out/timings.json.tmp" "$out/timings.json"   # complete files only, never half-written ones
+mv "$out/timings.txt.tmp" "$out/timings.txt"
 echo "timings: $out/timings.json (console: $out/timings.txt)"
 
 echo "== robustness export ($mode) =="

@@ -187,15 +187,24 @@ RealVector centre_at(const Real& s, const RealVector& d, const Real& z, const Re
 Real solve_radial_offset(const JointDimensions& d, const RealPose& bearing, const RealVector& axis,
                          const RealVector& direction, const Real& z, const RealVector& e,
                          ContactBase base, const Real& margin) {
+  // Newton stops when a step is below this fraction of cr: 45 orders below the smallest margin
+  // generated (1e-15 cr), and far above the reference's working precision (1e-120).
+  static const Real kStepTolerance("1e-60");
+  // The offset direction is within 60 degrees of the rim's lean, so the farthest point's radial
+  // direction has a component along it of about cos(60) = 0.5; a slope below this means the
+  // construction went wrong, not a hard input.
+  static const Real kSmallestSlope("0.05");
+  // Quadratic convergence from 2 cr needs ~10 steps; the cap only guards against a bug.
+  constexpr int kMaxSteps = 100;
   const Real cr = Real(d.bearing_radius) - Real(d.journal_radius);
   Real s = 2 * cr;  // beyond the root for the tilts used (the journal then reaches past the wall)
-  const Real tolerance = cr * Real("1e-60");
-  for (int iteration = 0; iteration < 100; ++iteration) {
+  const Real tolerance = cr * kStepTolerance;
+  for (int iteration = 0; iteration < kMaxSteps; ++iteration) {
     const ReferenceJoint joint = joint_as_given(d, bearing, RealPose{centre_at(s, direction, z, e), axis});
     const RadialMargin m = radial_margin(joint, base);
     const Real f = m.margin - margin;
     const Real slope = dot(m.direction, direction);
-    if (!(slope > Real("0.05"))) throw std::runtime_error("near-tangent generator: reach not increasing");
+    if (!(slope > kSmallestSlope)) throw std::runtime_error("near-tangent generator: reach not increasing");
     const Real step = f / slope;
     s -= step;
     if (abs(step) < tolerance) return s;

@@ -73,7 +73,8 @@ Json reference_answer_line(const DetectionInput& input, const ReferenceAnswer& a
         {"point_bearing", vector_json(c.p_WCi)},
         {"normal", vector_json(c.normal_W)},
         {"crossings", std::move(crossings)},
-        {"points_defined", c.points_defined}});
+        {"points_defined", c.points_defined},
+        {"rim_beyond_base_all_round", c.all_round}});
   }
   line["contacts"] = std::move(contacts);
   line["reference"] = Json{{"digits", kReferenceDigits10}, {"decided", answer.decided}, {"why", answer.why}};

@@ -27,7 +27,8 @@ Json detect_input_line(const DetectionInput& input);
 
 /// The reference answer in the `clearjoint detect` output format (every MPFR number rounded to the
 /// nearest double), plus "family", "group", "measured_margin" / "measured_tilt" where defined, and
-/// "reference": {"digits", "decided", "why"} in place of "certificate".
+/// "reference": {"digits", "decided", "why"} in place of "certificate", and per contact
+/// "points_defined" and "rim_beyond_base_all_round" (ReferenceContact's fields of those names).
 Json reference_answer_line(const DetectionInput& input, const ReferenceAnswer& answer);
 
 /// The input with every double as a C99 hex float ("0x1.47ae147ae147bp-7"), for failure reports

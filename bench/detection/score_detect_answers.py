@@ -8,7 +8,9 @@ REFERENCE.jsonl: `<family>.reference.jsonl` from `detection_suite export`. ANSWE
 answer line per input line of `<family>.jsonl`, matched by "id". Scores with the definitions of
 docs/benchmarks.md: wrong scenario, missed and spurious contacts (keyed by type and base, two arcs
 of one rim matched by nearest journal point), the largest contact-point and crossing errors, and
-the depth relative errors. Answers with "error" count as errors. Standard library only.
+the depth relative errors. Contact points of a rim beyond a base all round (ill-conditioned when the
+rim is nearly parallel to the base) are tallied apart. Answers with "error" count as errors.
+Standard library only.
 Exit status: 0 when every answer has the reference scenario and contacts, 1 otherwise, 2 on bad
 files.
 """
@@ -29,7 +31,9 @@ def read_lines(path):
             try:
                 line = json.loads(text)
             except json.JSONDecodeError as error:
-                sys.exit(f"{path}:{number}: not JSON: {error}")
+                raise ValueError(f"{path}:{number}: not JSON: {error}") from None
+            if not isinstance(line, dict):
+                raise ValueError(f"{path}:{number}: expected a JSON object, got {text.strip()[:60]}")
             key = json.dumps(line.get("id"))
             lines[key] = line
             order.append(key)
@@ -57,15 +61,20 @@ def main():
     try:
         reference, order = read_lines(args.reference)
         answers, _ = read_lines(args.answers)
-    except OSError as error:
+    except (OSError, ValueError) as error:
         print(f"score_detect_answers: {error}", file=sys.stderr)
         return 2
 
     counts = dict(inputs=0, undecided=0, no_answer=0, errors=0, wrong_scenario=0, missed=0, spurious=0)
-    point_errors, crossing_errors, depth_errors = [], [], []
+    point_errors, crossing_errors, depth_errors, all_round_errors = [], [], [], []
     failures = []
     for key in order:
         ref = reference[key]
+        for field in ("scenario", "contacts"):
+            if field not in ref:
+                print(f"score_detect_answers: {args.reference}: line with id {key}: missing \"{field}\"",
+                      file=sys.stderr)
+                return 2
         counts["inputs"] += 1
         if not ref.get("reference", {}).get("decided", True):
             counts["undecided"] += 1
@@ -93,8 +102,9 @@ def main():
                 unused.remove(match)
                 if not match.get("points_defined", True):
                     continue
-                point_errors.append(max(distance(match["point_journal"], contact["point_journal"]),
-                                        distance(match["point_bearing"], contact["point_bearing"])))
+                error = max(distance(match["point_journal"], contact["point_journal"]),
+                            distance(match["point_bearing"], contact["point_bearing"]))
+                (all_round_errors if match.get("rim_beyond_base_all_round") else point_errors).append(error)
                 if match["depth"] > 0:
                     depth_errors.append(abs(contact["depth"] - match["depth"]) / match["depth"])
                 for crossing in contact.get("crossings", []):
@@ -112,7 +122,8 @@ def main():
           f"spurious contacts {counts['spurious']}")
     for name, values in (("contact-point error (input units)", point_errors),
                          ("crossing error (input units)", crossing_errors),
-                         ("depth relative error", depth_errors)):
+                         ("depth relative error", depth_errors),
+                         ("contact-point error, rims beyond a base all round", all_round_errors)):
         print(f"{name}: median {percentile(values, 0.5):.3g}, p99 {percentile(values, 0.99):.3g}, "
               f"max {max(values) if values else float('nan'):.3g} over {len(values)}")
     for identifier, problems in failures[:args.list]:
