@@ -1,0 +1,277 @@
+#!/usr/bin/env python3
+"""Reproduce Section 6 of Marques et al. (2017): run the slider-crank models and draw Figs. 7-11
+and 13-19 as PNG files.
+
+    python3 scripts/reproduce_section6.py --clearjoint build/apps/clearjoint/clearjoint
+
+Runs (all in models/): the planar slider-crank with ideal joints and with the clearance joint
+aligned and misaligned (Sec. 6.1), the spatial one ideal and with the clearance joint (Sec. 6.2),
+and the 16 runs of the clearance study (models/clearance_study/). They run in parallel, one per
+core (--jobs), with a progress line on standard error. Each run's result is reduced to the columns
+the figures need and written atomically to RESULTS/<run>.npz (temporary name, then rename),
+together with the SHA-256 of its model file; a later call skips every run whose result exists for
+the same model file, so an interrupted sweep resumes where it stopped (--force redoes all).
+Figures go to FIGURES/fig<N>.png, a summary of the measured numbers to RESULTS/summary.json.
+
+Needs numpy and matplotlib (Debian: python3-matplotlib).
+"""
+import argparse
+import concurrent.futures
+import hashlib
+import json
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+import threading
+import time
+
+import numpy as np
+
+REPOSITORY = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+MODELS = os.path.join(REPOSITORY, "models")
+STUDY_MM = (0.05, 0.1, 0.3, 0.5)  # Sec. 6.2: radial and axial clearances [mm]
+RESULT_FORMAT = 1  # bump when the reduced contents change: old results are then redone
+SOURCE = "unknown"
+
+# Columns kept per run (file -> columns). Bodies: world-frame position, velocity, acceleration;
+# the rod's Euler parameters; the joint's scenario, axis angle and rim centres in the bearing frame.
+PLANAR_COLUMNS = {
+    "body_slider.csv": ["time", "x", "vx", "ax"],
+    "body_rod.csv": ["e0", "e1", "e2", "e3"],
+    "energy.csv": ["total"],
+}
+SPATIAL_COLUMNS = {
+    "body_slider.csv": ["time", "x", "vx", "ax"],
+    "energy.csv": ["total"],
+}
+JOINT_COLUMNS = ["scenario", "axis_angle", "rim_a_u", "rim_a_v", "rim_a_axial", "rim_b_u", "rim_b_v",
+                 "rim_b_axial"]
+
+
+# The clearance study once more at a tenth of the paper's tolerance: the peak acceleration of one
+# run is a single impact of a chaotic motion, and this shows how much of Fig. 19 survives a change
+# of integration tolerance.
+ROBUSTNESS_TOLERANCE = 1e-8
+
+
+def runs():
+    """name -> (model file, columns per file, joint outputs wanted[, solver overrides])."""
+    table = {
+        "planar_ideal": ("slider_crank_planar_ideal.json", PLANAR_COLUMNS, False),
+        "planar_aligned": ("slider_crank_planar_clearance_aligned.json", PLANAR_COLUMNS, True),
+        "planar_misaligned": ("slider_crank_planar_clearance_misaligned.json", PLANAR_COLUMNS, True),
+        "spatial_ideal": ("slider_crank_spatial_ideal.json", SPATIAL_COLUMNS, False),
+        "spatial_clearance": ("slider_crank_spatial_clearance.json", SPATIAL_COLUMNS, True),
+    }
+    for cr in STUDY_MM:
+        for ca in STUDY_MM:
+            model = os.path.join("clearance_study", "spatial_cr%g_ca%g.json" % (cr, ca))
+            table["study_cr%g_ca%g" % (cr, ca)] = (model, SPATIAL_COLUMNS, False)
+            table["study_tol1e-8_cr%g_ca%g" % (cr, ca)] = (
+                model, SPATIAL_COLUMNS, False,
+                {"relative_tolerance": ROBUSTNESS_TOLERANCE, "absolute_tolerance": ROBUSTNESS_TOLERANCE})
+    return table
+
+
+def model_text(spec):
+    """The model file's text, with the run's solver overrides applied (deterministic JSON)."""
+    with open(os.path.join(MODELS, spec[0])) as f:
+        text = f.read()
+    if len(spec) < 4:
+        return text
+    model = json.loads(text)
+    model["solver"].update(spec[3])
+    model["solver"]["comment"] = "reproduce_section6.py override: %s" % json.dumps(spec[3], sort_keys=True)
+    return json.dumps(model, indent=1, sort_keys=True) + "\n"
+
+
+def source_version():
+    """The commit the program was presumably built from, and whether the sources differed from it
+    (results depend on rounding-level details: the contact sequence is chaotic)."""
+    try:
+        head = subprocess.run(["git", "-C", REPOSITORY, "rev-parse", "--short", "HEAD"], capture_output=True,
+                              text=True, check=True).stdout.strip()
+        changed = subprocess.run(["git", "-C", REPOSITORY, "status", "--porcelain", "--", "geometry", "dynamics",
+                                  "apps"], capture_output=True, text=True, check=True).stdout.strip()
+        return head + (" with uncommitted changes in geometry/, dynamics/ or apps/" if changed else "")
+    except (OSError, subprocess.CalledProcessError):
+        return "unknown (not a git checkout)"
+
+
+def sha256(text):
+    return hashlib.sha256(text.encode()).hexdigest()
+
+
+def read_columns(path, names):
+    with open(path) as f:
+        header = f.readline().strip().split(",")
+    missing = [n for n in names if n not in header]
+    if missing:
+        raise RuntimeError("%s: no column %s" % (path, ", ".join(missing)))
+    indices = [header.index(n) for n in names]
+    data = np.loadtxt(path, delimiter=",", skiprows=1, usecols=indices, ndmin=2)
+    return {n: data[:, k] for k, n in enumerate(names)}
+
+
+def result_is_current(path, model_hash):
+    if not os.path.exists(path):
+        return False
+    try:
+        with np.load(path) as r:
+            return str(r["model_sha256"]) == model_hash and int(r["format"]) == RESULT_FORMAT
+    except Exception:  # unreadable (e.g. truncated by a crash before the rename existed): redo
+        return False
+
+
+def run_one(name, spec, clearjoint, results):
+    """Simulate one model into a scratch directory, reduce it, write RESULTS/name.npz atomically."""
+    columns, joint_outputs = spec[1], spec[2]
+    text = model_text(spec)
+    scratch = tempfile.mkdtemp(prefix=name + ".", dir=results)
+    try:
+        model_path = os.path.join(scratch, "model.json")  # the file as run, overrides included
+        with open(model_path, "w") as f:
+            f.write(text)
+        start = time.monotonic()
+        done = subprocess.run([clearjoint, "simulate", model_path, "--out", scratch],
+                              capture_output=True, text=True)
+        wall = time.monotonic() - start
+        if done.returncode != 0:
+            raise RuntimeError("%s: clearjoint simulate failed (status %d): %s" % (
+                name, done.returncode, (done.stderr or done.stdout).strip()))
+        arrays = {}
+        for file, names in columns.items():
+            for column, values in read_columns(os.path.join(scratch, file), names).items():
+                key = column if file in ("body_slider.csv", "energy.csv") else "rod_" + column
+                arrays[key] = values
+        if joint_outputs:
+            joint_file = [f for f in os.listdir(scratch) if f.startswith("force_")]
+            if len(joint_file) != 1:
+                raise RuntimeError("%s: expected one force_*.csv, found %s" % (name, joint_file))
+            for column, values in read_columns(os.path.join(scratch, joint_file[0]), JOINT_COLUMNS).items():
+                arrays["joint_" + column] = values
+        arrays["model_sha256"] = np.array(sha256(text))
+        arrays["format"] = np.array(RESULT_FORMAT)
+        arrays["wall_seconds"] = np.array(wall)
+        arrays["source"] = np.array(SOURCE)
+        arrays["simulate_output"] = np.array(done.stdout)
+        final = os.path.join(results, name + ".npz")
+        partial = final + ".partial-%d.npz" % os.getpid()
+        np.savez_compressed(partial, **arrays)
+        os.replace(partial, final)  # atomic on POSIX: readers see the old file or the whole new one
+        return name, wall
+    finally:
+        shutil.rmtree(scratch, ignore_errors=True)
+
+
+class Progress:
+    """One line on standard error: a bar over the runs, elapsed time and an estimate of the rest."""
+
+    def __init__(self, total):
+        self.total, self.done, self.start = total, 0, time.monotonic()
+        self.tty = sys.stderr.isatty()
+        self.lock = threading.Lock()
+        self.draw("")
+
+    def draw(self, last):
+        elapsed = time.monotonic() - self.start
+        rest = elapsed / self.done * (self.total - self.done) if self.done else float("nan")
+        width = 30
+        filled = width * self.done // max(1, self.total)
+        line = "[%s%s] %d/%d runs, %.0f s elapsed, ~%.0f s to go %s" % (
+            "#" * filled, " " * (width - filled), self.done, self.total, elapsed, rest, last)
+        sys.stderr.write(("\r" + line + "\x1b[K") if self.tty else line + "\n")
+        sys.stderr.flush()
+
+    def advance(self, last):
+        with self.lock:
+            self.done += 1
+            self.draw(last)
+
+    def finish(self):
+        if self.tty:
+            sys.stderr.write("\n")
+
+
+def run_all(clearjoint, results, jobs, force, only):
+    os.makedirs(results, exist_ok=True)
+    names = runs()
+    for leftover in os.listdir(results):  # scratch directories and partial files of a killed run
+        path = os.path.join(results, leftover)
+        ours = leftover.split(".")[0] in names
+        if ours and os.path.isdir(path):
+            shutil.rmtree(path, ignore_errors=True)
+        elif ours and ".partial-" in leftover:
+            os.remove(path)
+    todo = {}
+    for name, spec in names.items():
+        if only and name not in only:
+            continue
+        model_hash = sha256(model_text(spec))
+        if force or not result_is_current(os.path.join(results, name + ".npz"), model_hash):
+            todo[name] = spec
+    unknown = [name for name in (only or []) if name not in names]
+    if unknown:
+        raise SystemExit("--only: no run called %s (runs: %s)" % (", ".join(unknown), ", ".join(names)))
+    skipped = (len(only) if only else len(names)) - len(todo)
+    print("section 6: %d runs to do, %d up to date in %s, %d parallel jobs" % (
+        len(todo), skipped, results, jobs), file=sys.stderr)
+    if not todo:
+        return
+    progress = Progress(len(todo))
+    failures = []
+    with concurrent.futures.ThreadPoolExecutor(max_workers=jobs) as pool:
+        futures = {pool.submit(run_one, name, spec, clearjoint, results): name for name, spec in todo.items()}
+        for future in concurrent.futures.as_completed(futures):
+            try:
+                name, wall = future.result()
+                progress.advance("(%s: %.1f s)" % (name, wall))
+            except Exception as error:  # keep the others going; report at the end
+                failures.append(str(error))
+                progress.advance("(%s failed)" % futures[future])
+    progress.finish()
+    if failures:
+        raise SystemExit("section 6: %d runs failed:\n%s" % (len(failures), "\n".join(failures)))
+
+
+def load(results, name):
+    with np.load(os.path.join(results, name + ".npz")) as r:
+        return {k: r[k] for k in r.files}
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--clearjoint", required=True, help="the clearjoint program")
+    parser.add_argument("--results", default=os.path.join(REPOSITORY, "results", "section6"))
+    parser.add_argument("--figures", default=os.path.join(REPOSITORY, "docs", "figures", "section6"))
+    parser.add_argument("--jobs", type=int, default=os.cpu_count() or 1, help="parallel runs (all cores)")
+    parser.add_argument("--force", action="store_true", help="redo runs whose results are up to date")
+    parser.add_argument("--only", nargs="*", help="run only these (names as in the results)")
+    parser.add_argument("--no-figures", action="store_true")
+    parser.add_argument("--source", help="what the program was built from (default: this checkout's commit)")
+    args = parser.parse_args()
+    if not os.access(args.clearjoint, os.X_OK):
+        raise SystemExit("--clearjoint %s: not an executable program" % args.clearjoint)
+    if args.jobs < 1:
+        raise SystemExit("--jobs %d: must be at least 1" % args.jobs)
+    global SOURCE
+    SOURCE = args.source or source_version()
+    run_all(os.path.abspath(args.clearjoint), args.results, args.jobs, args.force, args.only)
+    if not args.no_figures and not args.only:
+        import section6_figures  # noqa: E402 (matplotlib only when drawing)
+        summary = section6_figures.draw_all(lambda name: load(args.results, name), args.figures, STUDY_MM)
+        summary["wall_seconds_per_run"] = {
+            name: float(load(args.results, name)["wall_seconds"]) for name in runs()}
+        summary["sources"] = sorted({str(load(args.results, name).get("source", "unknown")) for name in runs()})
+        path = os.path.join(args.results, "summary.json")
+        with open(path + ".partial", "w") as f:
+            json.dump(summary, f, indent=1, sort_keys=True)
+        os.replace(path + ".partial", path)
+        print("figures in %s, numbers in %s" % (args.figures, path), file=sys.stderr)
+
+
+if __name__ == "__main__":
+    sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+    main()
