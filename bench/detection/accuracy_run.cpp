@@ -94,7 +94,8 @@ Json tally_json(const Tally& t) {
               {"point_error_m", summary_json(t.point_m)},
               {"point_error_ulps", summary_json(t.point_ulps)},
               {"depth_relative_error", summary_json(t.depth_relative)},
-              {"point_error_m_rim_beyond_base_all_round", summary_json(t.all_round_point_m)}};
+              {"point_error_m_rim_beyond_base_all_round", summary_json(t.all_round_point_m)},
+              {"enclosure_radius_m", summary_json(t.enclosure_radius_m)}};
 }
 
 /// Runs `evaluate` on every input with `threads` workers; progress on stderr.

@@ -80,6 +80,7 @@ void compare_matched(const Contact& contact, const ReferenceContact& reference, 
     const bool proved = contact.certificate.level != Certainty::uncertain;
     if (proved && std::isfinite(crossing.point_error)) {
       ++score.enclosures_checked;
+      score.enclosure_radius_m.push_back(crossing.point_error);
       if (best > Real(crossing.point_error)) {
         ++score.enclosures_missed;
         score.problems.push_back("crossing of " + key_name(contact.type, contact.base) +
@@ -187,6 +188,7 @@ void Tally::add(const InputScore& score, geometry::ContactScenario reference_sce
   append(point_ulps, score.point_ulps);
   append(depth_relative, score.depth_relative);
   append(all_round_point_m, score.all_round_point_m);
+  append(enclosure_radius_m, score.enclosure_radius_m);
 }
 
 }  // namespace clearjoint::bench

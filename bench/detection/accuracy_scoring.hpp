@@ -39,6 +39,8 @@ struct InputScore {
   std::vector<double> crossing_m, crossing_ulps, point_m, point_ulps, depth_relative;
   /// Point errors of contacts whose rim is beyond a base all round (ReferenceContact::all_round).
   std::vector<double> all_round_point_m;
+  /// The point_error (enclosure radius, m) of every checked crossing: how tight the promises are.
+  std::vector<double> enclosure_radius_m;
   std::vector<std::string> problems;  ///< one line per failure, for the failure list
 
   bool failed() const {
@@ -71,6 +73,7 @@ struct Tally {
   std::size_t enclosures_checked = 0, enclosures_missed = 0;
   std::vector<double> crossing_m, crossing_ulps, point_m, point_ulps, depth_relative;
   std::vector<double> all_round_point_m;
+  std::vector<double> enclosure_radius_m;
 
   void add_undecided() {
     ++inputs;

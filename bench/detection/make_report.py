@@ -178,8 +178,8 @@ def plot_family(family, accuracy_rows, timing_table, groups, path, xlabel):
 
 def accuracy_table(accuracy, rows):
     lines = [
-        "| family | method | inputs | wrong scenario (within model) | missed contacts (inputs) | spurious contacts (inputs) | exact / certified / uncertain answers | enclosures checked | enclosures missing the reference |",
-        "| --- | --- | ---: | ---: | ---: | ---: | --- | ---: | ---: |",
+        "| family | method | inputs | wrong scenario (within model) | missed contacts (inputs) | spurious contacts (inputs) | exact / certified / uncertain answers | enclosures checked | enclosures missing the reference | enclosure radius m: median / max |",
+        "| --- | --- | ---: | ---: | ---: | ---: | --- | ---: | ---: | --- |",
     ]
     for family in FAMILIES:
         for method in METHODS + ["certified_vs_library_rounding"]:
@@ -192,7 +192,8 @@ def accuracy_table(accuracy, rows):
                 f"| {family} | {title} | {row['inputs']} | {row['wrong_scenarios']} ({row['wrong_scenarios_within_model']}) "
                 f"| {row['missed_contacts']} ({row['inputs_with_missed']}) | {row['spurious_contacts']} ({row['inputs_with_spurious']}) "
                 f"| {share(row['answers_exact'], scored)} / {share(row['answers_certified'], scored)} / {share(row['answers_uncertain'], scored)} "
-                f"| {row['enclosures_checked']} | {row['enclosures_missed']} |")
+                f"| {row['enclosures_checked']} | {row['enclosures_missed']} "
+                f"| {fmt(row['enclosure_radius_m']['median'])} / {fmt(row['enclosure_radius_m']['max'])} |")
     return "\n".join(lines)
 
 
@@ -431,7 +432,7 @@ those as it finds them). Missed / spurious: contacts keyed by type and base (rad
 axial A, axial B; aligned: line, face A, face B) present in the reference and not in the answer,
 or the reverse (in brackets: inputs with at least one). Enclosures: every crossing of a certified
 or exact answer with a finite `point_error` must lie within that distance of the reference
-crossing.
+crossing; the last column says how large those promised radii are.
 
 {accuracy_table(accuracy, rows)}
 
