@@ -91,6 +91,10 @@ int run_simulate(Arguments args) {
   if (summary.integration.restarts > 0) {
     std::printf("stepper restarts after impact-memory changes: %ld\n", summary.integration.restarts);
   }
+  if (summary.integration.failed_attempts > 0) {
+    std::printf("steps retried shorter after a trial stage could not be evaluated: %ld\n",
+                summary.integration.failed_attempts);
+  }
   for (const std::string& line : summary.element_statistics) std::printf("%s\n", line.c_str());
   std::printf("initial conditions: %d Newton iterations, |Phi| = %.3g, |Phi_q v + Phi_t| = %.3g\n",
               summary.initial_conditions.iterations, summary.initial_conditions.position_residual,

@@ -96,8 +96,13 @@ ClearanceRevoluteJoint::ClearanceRevoluteJoint(std::string name, const Clearance
     throw ModelError(name_ + ".detection.parallel_angle_tolerance = " + format_number(tolerance) +
                      ": must lie in [0, pi/2) radians");
   }
+  // Output frame (u, v, a) of the bearing: u is the body axis least aligned with a (first on
+  // ties), made perpendicular to a; v = a x u. For a bearing along z that is (x, y, z).
   bearing_axis_hat_B_ = bearing_.axis_B.normalized();
-  bearing_u_B_ = bearing_axis_hat_B_.unitOrthogonal();
+  Eigen::Index least_aligned = 0;
+  bearing_axis_hat_B_.cwiseAbs().minCoeff(&least_aligned);
+  const Vector3 e = Vector3::Unit(least_aligned);
+  bearing_u_B_ = (e - e.dot(bearing_axis_hat_B_) * bearing_axis_hat_B_).normalized();
   bearing_v_B_ = bearing_axis_hat_B_.cross(bearing_u_B_);
 }
 

@@ -68,11 +68,29 @@ IntegrationStatistics integrate(MultibodySystem& system, std::vector<double>& y,
   long k = 1;  // next report
   while (k <= report_count) {
     std::pair<double, double> interval;
-    try {
-      interval = stepper.do_step(rhs);
-    } catch (const odeint::step_adjustment_error& e) {
-      throw SolverError("integration stopped at t = " + format_number(stepper.current_time()) +
-                        ": no acceptable step size found (" + e.what() + ")");
+    for (;;) {
+      try {
+        interval = stepper.do_step(rhs);
+        break;
+      } catch (const odeint::step_adjustment_error& e) {
+        throw SolverError("integration stopped at t = " + format_number(stepper.current_time()) +
+                          ": no acceptable step size found (" + e.what() + ")");
+      } catch (const SolverError& e) {
+        // A trial stage of a long step can land where the right-hand side is undefined although
+        // the solution is not there: e.g. a stage that carries a journal far beyond its clearance
+        // gets a huge contact force, and the next stage finds the mechanism in a singular pose.
+        // Such a step would fail its error test anyway; treat it as rejected and retry a quarter
+        // of it from the last accepted state (odeint left that state and its time untouched).
+        // A failure that persists down to minimum_step is real and stops the run.
+        const double retry = 0.25 * stepper.current_time_step();
+        if (!(retry >= settings.minimum_step)) {
+          throw SolverError(std::string(e.what()) + " (persisting down to steps of " +
+                            format_number(retry) + " s)");
+        }
+        ++stats.failed_attempts;
+        accepted = stepper.current_state();
+        stepper.initialize(accepted, stepper.current_time(), retry);
+      }
     }
     ++stats.steps;
     const double taken = interval.second - interval.first;

@@ -257,6 +257,16 @@ TEST(ClearanceRevoluteJoint, RecordsOneValuePerColumnWithNaNDepthsForAbsentConta
   EXPECT_NEAR(std::hypot(value("rim_a_u"), value("rim_a_v")), kRadialClearance + kDepth, kUlpsOfTheMassCentres);
 }
 
+TEST(ClearanceRevoluteJoint, ReportsRimsInABearingFrameBuiltFromTheBodyAxes) {
+  const ClearanceRevoluteJoint along_z = make_joint(hertz_without_friction());
+  EXPECT_EQ(along_z.bearing_frame_u_B(), Vector3::UnitX());
+  EXPECT_EQ(along_z.bearing_frame_v_B(), Vector3::UnitY());
+  const ClearanceRevoluteJoint along_y("j", {kBearing, Vector3::Zero(), Vector3(0, 2, 0)},
+                                       {kJournal, Vector3::Zero(), Vector3::UnitY()}, {});
+  EXPECT_EQ(along_y.bearing_frame_u_B(), Vector3::UnitX());
+  EXPECT_EQ(along_y.bearing_frame_v_B(), -Vector3::UnitZ());  // (u, v, a) right-handed
+}
+
 TEST(ClearanceRevoluteJoint, StopsWithTheTimeWhenTheStateIsNotFinite) {
   const ClearanceRevoluteJoint joint = make_joint(hertz_without_friction());
   const SystemKinematics k = poses(Vector3(std::numeric_limits<double>::quiet_NaN(), 0.0, 0.0));

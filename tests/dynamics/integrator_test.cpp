@@ -175,6 +175,40 @@ TEST(Integrator, ChangesExtraStateOnlyAtAcceptedStepsEvenWhenStepsAreRejected) {
   EXPECT_EQ(counter.foreign_values, 0);
 }
 
+/// A stiff one-sided spring at x = 0.5 m that a ball at 1 m/s penetrates by 1 mm at most, and a
+/// right-hand side undefined (SolverError) beyond x = 0.52 m, where only trial stages of steps that
+/// are too long can go.
+class WallWithUndefinedBeyond final : public ForceElement {
+ public:
+  std::string_view name() const override { return "wall"; }
+  void add_forces(const ForceContext& context, GeneralisedForces& forces) const override {
+    const double x = context.kinematics.body(0).position_W.x();
+    if (x > 0.52) throw SolverError("undefined beyond x = 0.52 m");
+    forces.add_force(0, Vector3(x > 0.5 ? -1e6 * (x - 0.5) : 0.0, 0.0, 0.0));
+  }
+};
+
+TEST(Integrator, RetriesAShorterStepWhenATrialStageCannotBeEvaluated) {
+  std::vector<std::unique_ptr<ForceElement>> forces;
+  forces.push_back(std::make_unique<WallWithUndefinedBeyond>());
+  MultibodySystem system({{"ball", 1.0, Vector3(1, 1, 1)}}, {}, std::move(forces), {});
+  BodyState s;
+  s.position_W.x() = 0.45;
+  s.velocity_W.x() = 1.0;
+  std::vector<double> y = system.pack(std::vector<BodyState>{s});
+  IntegratorSettings settings;
+  settings.end_time = 0.2;
+  settings.report_step = 0.01;
+  settings.initial_step = 0.1;  // its stages reach x = 0.55
+  double largest_x = 0.0;
+  const IntegrationStatistics stats = integrate(system, y, settings, [&](double, std::span<const double> state) {
+    largest_x = std::max(largest_x, state[0]);
+  });
+  EXPECT_GE(stats.failed_attempts, 1);
+  EXPECT_LT(largest_x, 0.502);                 // the solution never goes near the undefined region
+  EXPECT_NEAR(y[7], -1.0, 1e-5);               // and comes back elastically at 1 m/s (x velocity)
+}
+
 TEST(IntegratorSettings, RejectNonPositiveToleranceNamingTheField) {
   IntegratorSettings settings;
   settings.relative_tolerance = 0.0;

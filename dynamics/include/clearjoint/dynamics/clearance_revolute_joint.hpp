@@ -131,7 +131,8 @@ class ClearanceRevoluteJoint final : public ForceElement {
 
   const ClearanceJointParameters& parameters() const { return parameters_; }
   const ClearanceJointStatistics& statistics() const { return statistics_; }
-  /// The bearing frame used for rim_a/b_in_bearing: u, v perpendicular to the bearing axis.
+  /// The bearing frame used for rim_a/b_in_bearing: u is the body axis least aligned with the
+  /// bearing axis a (first on ties) made perpendicular to it, v = a x u; for a along z: x, y.
   const Vector3& bearing_frame_u_B() const { return bearing_u_B_; }
   const Vector3& bearing_frame_v_B() const { return bearing_v_B_; }
 

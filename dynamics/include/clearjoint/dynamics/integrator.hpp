@@ -34,6 +34,9 @@ struct IntegrationStatistics {
   double largest_step = 0.0;
   /// Restarts of the stepper after a force element changed its extra state (impact memory).
   long restarts = 0;
+  /// Steps abandoned because the right-hand side failed (SolverError) at one of their trial
+  /// stages, and retried with a quarter of the step.
+  long failed_attempts = 0;
 };
 
 /// Called at start_time and at every report time up to end_time with the interpolated state.
@@ -43,6 +46,8 @@ using Observer = std::function<void(double time, std::span<const double> state)>
 /// After every accepted step (and at the start) the force elements may change their extra state
 /// (MultibodySystem::update_extra_states); the stepper then restarts from the changed state.
 /// Trial stages and rejected steps never reach that hook.
+/// A right-hand side that throws SolverError at a trial stage rejects that step: it is retried
+/// with a quarter of the step size; only a failure that persists below minimum_step stops the run.
 /// Throws SolverError if the step collapses, max_steps is exceeded, the state stops being finite,
 /// or the right-hand side fails (e.g. singular constraints); the message gives the time.
 IntegrationStatistics integrate(MultibodySystem& system, std::vector<double>& y,
