@@ -11,6 +11,9 @@ namespace {
 /// Newton steps from a good start: quadratic convergence from the first harmonic's roots (or an
 /// arc midpoint) reaches double precision in 3-4 steps; more only burns time before the proof.
 constexpr int kMaxNewtonSteps = 6;
+/// Newton stops after a step this small (relative to 1 + |angle|): the next step would be of
+/// the order of its square, 2^-52, below the enclosure's first trial width.
+constexpr double kNewtonLastStep = 0x1p-26;
 /// Growth of the trial enclosure when a sign check is inconclusive, and how often to try.
 constexpr double kEnclosureGrowth = 8.0;
 constexpr int kMaxEnclosureTrials = 8;
@@ -67,8 +70,10 @@ bool refine_and_enclose(const RimDistancePolynomial& g, double guess, int direct
                         RootEnclosure& out) {
   AngleBase base(guess);
   double offset = 0.0;
+  double slope = 0.0;
   for (int i = 0; i < kMaxNewtonSteps; ++i) {
     const ValueAndSlope at = g.approximate_near(base, offset);
+    slope = std::fabs(at.slope);
     const double step = at.value / at.slope;
     if (!std::isfinite(step)) break;
     const double next = offset - step;
@@ -78,14 +83,17 @@ bool refine_and_enclose(const RimDistancePolynomial& g, double guess, int direct
       continue;
     }
     offset = next;
-    if (std::fabs(step) < 4 * kUnitRoundoff * (1.0 + std::fabs(base.angle))) break;
+    // Quadratic convergence: after a step below kNewtonLastStep the iterate is off by about
+    // |g''/(2 g')| times its square, an ulp or less unless g' is small (near a tangency), where
+    // the enclosure below grows until its sign checks pass. Either way the proof decides.
+    if (std::fabs(step) < kNewtonLastStep * (1.0 + std::fabs(base.angle))) break;
   }
   const double angle = base.angle + offset;
   // The reported angle is the rounded sum: it is within u |angle| of base + offset.
   const double rounding = 2 * kUnitRoundoff * std::fabs(angle) + kUnderflowError;
   // First trial: twice the root's uncertainty, |g error| / |g'|, with g's error budget being the
-  // coefficient errors plus a few ulps of the terms; later trials grow by kEnclosureGrowth.
-  const double slope = std::fabs(g.approximate_near(base, offset).slope);
+  // coefficient errors plus a few ulps of the terms; later trials grow by kEnclosureGrowth. The
+  // slope is the last Newton iterate's: a heuristic for the first trial only.
   const double term_size = std::fabs(g.k[0].value) + std::fabs(g.k[1].value) +
                            std::fabs(g.k[2].value) + std::fabs(g.k[3].value) + std::fabs(g.k[4].value);
   const double budget = g.coefficient_error() + 16 * kUnitRoundoff * term_size;

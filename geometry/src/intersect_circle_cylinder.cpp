@@ -106,7 +106,8 @@ CircleCylinderIntersection intersect_scaled(const Circle3& circle, const Cylinde
   CircleCylinderIntersection out;
 
   // Bounding test on the rim's reach: most free-flight rims stop here.
-  const detail::RimReach reach = detail::rim_reach(circle, cylinder);
+  const bool a_priori = detail::cylinder_a_priori_bounds_apply(circle, cylinder);
+  const detail::RimReach reach = detail::rim_reach(circle, cylinder, a_priori);
   if (reach != detail::RimReach::undecided) {
     RimRoots none;
     none.sign_without_roots = reach == detail::RimReach::strictly_outside ? 1 : -1;
@@ -116,7 +117,7 @@ CircleCylinderIntersection intersect_scaled(const Circle3& circle, const Cylinde
     return out;
   }
 
-  const detail::RimDistancePolynomial g = detail::rim_distance_polynomial(circle, cylinder);
+  const detail::RimDistancePolynomial g = detail::rim_distance_polynomial(circle, cylinder, a_priori);
   if (!options.certify) {
     fill(circle, detail::approximate_rim_roots(g), false, out);
     out.certificate = {Certainty::uncertain, "certificate switched off"};

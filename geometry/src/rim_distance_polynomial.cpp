@@ -13,13 +13,17 @@ BoundedVector3 exact(const Vector3& v) { return {v.x(), v.y(), v.z()}; }
 // Chains counted on the code below (a_priori_bounds.hpp): k0 21, k1 20, k2 26, k3 39 (squares
 // of the normalised axis components), k4 32, the reach test 8; all under kGamma64's 64.
 
-bool a_priori_bounds_apply(const Circle3& circle, const Cylinder3& cylinder) {
+}  // namespace
+
+bool cylinder_a_priori_bounds_apply(const Circle3& circle, const Cylinder3& cylinder) {
   const Vector3 q = circle.center - cylinder.axis_point;  // rounded, but that is fine for a range test
   return magnitudes_in_range(circle.center) && magnitudes_in_range(cylinder.axis_point) &&
          magnitudes_in_range(q) && magnitudes_in_range(circle.normal) &&
          magnitudes_in_range(cylinder.axis) && magnitude_in_range(circle.radius) &&
          magnitude_in_range(cylinder.radius);
 }
+
+namespace {
 
 RimDistancePolynomial rim_distance_polynomial_a_priori(const Circle3& circle,
                                                        const Cylinder3& cylinder) {
@@ -76,7 +80,12 @@ RimDistancePolynomial rim_distance_polynomial_a_priori(const Circle3& circle,
 }  // namespace
 
 RimDistancePolynomial rim_distance_polynomial(const Circle3& circle, const Cylinder3& cylinder) {
-  if (a_priori_bounds_apply(circle, cylinder)) {
+  return rim_distance_polynomial(circle, cylinder, cylinder_a_priori_bounds_apply(circle, cylinder));
+}
+
+RimDistancePolynomial rim_distance_polynomial(const Circle3& circle, const Cylinder3& cylinder,
+                                              bool a_priori_bounds_apply) {
+  if (a_priori_bounds_apply) {
     return rim_distance_polynomial_a_priori(circle, cylinder);
   }
   return rim_distance_polynomial_running_error(circle, cylinder);
@@ -238,7 +247,11 @@ double RimDistancePolynomial::second_derivative_bound() const {
 }
 
 RimReach rim_reach(const Circle3& circle, const Cylinder3& cylinder) {
-  if (a_priori_bounds_apply(circle, cylinder)) {
+  return rim_reach(circle, cylinder, cylinder_a_priori_bounds_apply(circle, cylinder));
+}
+
+RimReach rim_reach(const Circle3& circle, const Cylinder3& cylinder, bool a_priori_bounds_apply) {
+  if (a_priori_bounds_apply) {
     // |q x d|^2 (rounding chain 6) against (R -+ r)^2 D (chain 6); the difference has chain 7:
     // error <= gamma_64 (|q x d|_abs^2 + (R -+ r)^2 D), see kGamma64.
     const Vector3 q = circle.center - cylinder.axis_point;

@@ -60,6 +60,13 @@ struct RimDistancePolynomial {
 /// expression) in plain double when every input magnitude lies in [2^-100, 2^100]; otherwise
 /// with the running error bound, which also handles underflow and overflow.
 RimDistancePolynomial rim_distance_polynomial(const Circle3& circle, const Cylinder3& cylinder);
+/// The same, with the magnitude guard already evaluated (cylinder_a_priori_bounds_apply): a
+/// query asks it once for both rim_reach and the polynomial.
+RimDistancePolynomial rim_distance_polynomial(const Circle3& circle, const Cylinder3& cylinder,
+                                              bool a_priori_bounds_apply);
+/// Whether every input magnitude lies in [2^-100, 2^100] (or is zero): the a priori bounds of
+/// a_priori_bounds.hpp hold.
+bool cylinder_a_priori_bounds_apply(const Circle3& circle, const Cylinder3& cylinder);
 /// The running-error version alone (the fallback, and a cross-check in the tests).
 RimDistancePolynomial rim_distance_polynomial_running_error(const Circle3& circle,
                                                             const Cylinder3& cylinder);
@@ -73,5 +80,6 @@ enum class RimReach {
 
 /// Proved with the running error bound of error_bounded.hpp: the answer is never wrong.
 RimReach rim_reach(const Circle3& circle, const Cylinder3& cylinder);
+RimReach rim_reach(const Circle3& circle, const Cylinder3& cylinder, bool a_priori_bounds_apply);
 
 }  // namespace clearjoint::geometry::detail

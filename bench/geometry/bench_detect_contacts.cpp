@@ -1,0 +1,148 @@
+// Timings of full-joint detection, detect_contacts (issue 4's targets), on the paper's joint
+// (Marques et al. 2017, Table 2): random poses split by outcome into "in contact" (at least one
+// contact) and "free flight" (none), and the aligned journal of the planar mechanism (Section 6.1).
+//
+// Every set is drawn once, before any timing, from a fixed seed written into the JSON context, and
+// filtered by the outcome of one certified call per pose; the timed loop cycles through the set.
+// Counters give the work behind a time: contacts per query and the share of each certificate
+// level. The certified and the plain double pipelines run on the same inputs in the same process:
+// compare them by their ratio. docs/benchmarks-kernel.md has the command and the table.
+//
+// Frames: the bearing is fixed (centre at the origin, axis +z); the journal centre P_j and axis a_j
+// are drawn at random.
+
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <numbers>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "clearjoint/geometry/detect_contacts.hpp"
+
+namespace {
+
+namespace geo = clearjoint::geometry;
+using geo::Vector3;
+
+// Paper Table 2, in metres.
+const geo::JointDimensions kTable2{.bearing_radius = 10.0e-3,
+                                   .bearing_length = 20.0e-3,
+                                   .journal_radius = 9.9e-3,
+                                   .journal_length = 19.8e-3};
+const double kRadialClearance = kTable2.radial_clearance();
+const double kAxialClearance = kTable2.axial_clearance();
+// Largest tilt of a centred journal spanning the radial clearance: 2 cr / Lj ~ 0.0101 rad.
+const double kMaxTilt = 2.0 * kRadialClearance / kTable2.journal_length;
+const geo::PartPose kBearing{Vector3::Zero(), Vector3::UnitZ()};
+
+constexpr std::uint64_t kSeed = 20170824;
+constexpr std::size_t kInputCount = 4096;
+// Draws allowed per kept pose before giving up (the in-contact share is ~0.7, free flight ~0.3).
+constexpr std::size_t kMaxDrawsPerInput = 50;
+
+const geo::DetectionOptions kCertified{};
+const geo::DetectionOptions kUncertified{.intersection = {.certify = false}};
+
+/// Uniform doubles from mt19937_64 with an explicit 53-bit conversion (same inputs everywhere).
+class UniformSource {
+ public:
+  explicit UniformSource(std::uint64_t seed) : engine_(seed) {}
+  double operator()(double low, double high) {
+    const double unit = static_cast<double>(engine_() >> 11) * 0x1.0p-53;
+    return low + (high - low) * unit;
+  }
+
+ private:
+  std::mt19937_64 engine_;
+};
+
+/// Journal centre off the bearing axis by up to 1.5 cr and along it by up to 1.5 ca either way;
+/// axis tilted by up to `max_tilt`, azimuths uniform.
+geo::PartPose random_journal(UniformSource& uniform, double max_tilt) {
+  const double offset = uniform(0.0, 1.5 * kRadialClearance);
+  const double offset_azimuth = uniform(0.0, 2.0 * std::numbers::pi);
+  const double shift = uniform(-1.5 * kAxialClearance, 1.5 * kAxialClearance);
+  const double tilt = uniform(0.0, max_tilt);
+  const double tilt_azimuth = uniform(0.0, 2.0 * std::numbers::pi);
+  return {{offset * std::cos(offset_azimuth), offset * std::sin(offset_azimuth), shift},
+          {std::sin(tilt) * std::cos(tilt_azimuth), std::sin(tilt) * std::sin(tilt_azimuth),
+           std::cos(tilt)}};
+}
+
+enum class Outcome { in_contact, free_flight };
+
+std::vector<geo::PartPose> journals(std::uint64_t stream, double max_tilt, Outcome wanted) {
+  UniformSource uniform(kSeed + stream);
+  std::vector<geo::PartPose> kept;
+  for (std::size_t draws = 0; kept.size() < kInputCount && draws < kMaxDrawsPerInput * kInputCount;
+       ++draws) {
+    const geo::PartPose journal = random_journal(uniform, max_tilt);
+    const bool contact = geo::detect_contacts(kTable2, kBearing, journal).contact_count > 0;
+    if (contact == (wanted == Outcome::in_contact)) kept.push_back(journal);
+  }
+  return kept;
+}
+
+void register_set(const std::string& name, const std::vector<geo::PartPose>& inputs,
+                  const geo::DetectionOptions& options) {
+  double contacts = 0, exact = 0, certified = 0, uncertain = 0, beyond = 0;
+  for (const geo::PartPose& journal : inputs) {
+    const geo::JointContacts found = geo::detect_contacts(kTable2, kBearing, journal, options);
+    contacts += found.contact_count;
+    exact += found.certificate.level == geo::Certainty::exact;
+    certified += found.certificate.level == geo::Certainty::certified;
+    uncertain += found.certificate.level == geo::Certainty::uncertain;
+    beyond += found.scenario == geo::ContactScenario::beyond_model;
+  }
+  const double n = static_cast<double>(inputs.size());
+  benchmark::RegisterBenchmark(name.c_str(), [=](benchmark::State& state) {
+    std::size_t next = 0;
+    for (auto _ : state) {
+      geo::JointContacts found = geo::detect_contacts(kTable2, kBearing, inputs[next], options);
+      benchmark::DoNotOptimize(found);
+      if (++next == inputs.size()) next = 0;
+    }
+    state.counters["queries_per_s"] =
+        benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+    state.counters["inputs"] = n;
+    state.counters["contacts_per_query"] = contacts / n;
+    state.counters["beyond_model"] = beyond / n;
+    state.counters["cert_exact"] = exact / n;
+    state.counters["cert_certified"] = certified / n;
+    state.counters["cert_uncertain"] = uncertain / n;
+  });
+}
+
+void register_all() {
+  const auto in_contact = journals(1, kMaxTilt, Outcome::in_contact);
+  const auto free_flight = journals(2, kMaxTilt, Outcome::free_flight);
+  const auto aligned_contact = journals(3, 0.0, Outcome::in_contact);
+  const auto aligned_free = journals(4, 0.0, Outcome::free_flight);
+  register_set("detect/in_contact/certified", in_contact, kCertified);
+  register_set("detect/in_contact/uncertified", in_contact, kUncertified);
+  register_set("detect/free_flight/certified", free_flight, kCertified);
+  register_set("detect/free_flight/uncertified", free_flight, kUncertified);
+  register_set("detect/aligned_in_contact/certified", aligned_contact, kCertified);
+  register_set("detect/aligned_free_flight/certified", aligned_free, kCertified);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::AddCustomContext("seed", std::to_string(kSeed));
+  benchmark::AddCustomContext("inputs_per_benchmark", std::to_string(kInputCount));
+  benchmark::AddCustomContext("joint",
+                              "Marques et al. 2017 Table 2: Ri = 10 mm, Rj = 9.9 mm, Li = 20 mm, "
+                              "Lj = 19.8 mm, cr = ca = 0.1 mm; journal offset <= 1.5 cr radially, "
+                              "<= 1.5 ca axially, tilt <= 2 cr / Lj");
+  register_all();
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}
