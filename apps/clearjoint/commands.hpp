@@ -11,7 +11,7 @@ using Arguments = std::span<char* const>;
 
 /// clearjoint intersect [FILE]: rim/plane and rim/cylinder queries as JSON Lines.
 int run_intersect(Arguments args);
-/// clearjoint detect [FILE]: joint contact detection (scenario, contacts, velocities) as JSON Lines.
+/// clearjoint detect [FILE]: joint contact detection (scenario, contacts, velocities), JSON Lines.
 int run_detect(Arguments args);
 #ifdef CLEARJOINT_WITH_DYNAMICS
 /// clearjoint simulate MODEL --out DIR: multibody simulation (dynamics/).

@@ -35,54 +35,27 @@ constexpr const char* kUsage =
     "and \"options\": {\"certify\": bool, \"exact_fallback\": bool,\n"
     "                \"parallel_angle_tolerance\": radians}.\n"
     "Writes one JSON line per joint line, in order (empty lines are skipped):\n"
-    "  {\"id\", \"scenario\": \"none\"|\"a\"..\"l\"|\"beyond_model\", \"aligned\", \"certificate\",\n"
-    "   \"certificate_reason\", \"contacts\": [{\"type\", \"base\", \"depth\", \"point_journal\",\n"
-    "   \"point_bearing\", \"normal\", \"crossings\", \"crossing_errors\", \"certificate\",\n"
-    "   \"certificate_reason\", \"approach_velocity\", \"tangential_velocity\"}]}\n"
+    "  {\"id\", \"scenario\": \"none\"|\"a\"..\"l\"|\"beyond_model\", \"aligned\",\n"
+    "   \"certificate\", \"certificate_reason\", \"contacts\": [{\"type\", \"base\", \"depth\",\n"
+    "   \"point_journal\", \"point_bearing\", \"normal\", \"crossings\", \"crossing_errors\",\n"
+    "   \"certificate\", \"certificate_reason\", \"approach_velocity\",\n"
+    "   \"tangential_velocity\"}]}\n"
     "(velocities only with motions), or {\"id\": ..., \"error\": \"...\"}. Any consistent units\n"
     "(SI: metres, m/s, rad/s). See docs/command-line.md and docs/contact-detection.md.\n"
     "\n"
     "Exit status: 0 all lines answered, 1 some line failed, 2 usage error or unreadable FILE.\n";
-
-// The magnitudes a dimension, centre or axis component may have (0 aside). Within them the
-// detection was checked end to end: scenario (a) scaled by 10^s answers right for
-// s = -150 ... 150, and about 10^4 random and near-tangent lines of such numbers were answered
-// without error, crash or hang (docs/command-line.md, "Limits"). Beyond them the library
-// (geometry/, at the time of writing) overflows into NaN contact points, can crash with SIGFPE
-// (an infinity handed to the exact rational fallback, from magnitudes ~1e308) or spend minutes in
-// that fallback (radius 1e-300 beside coordinates 1e147). No joint in any unit needs them.
-constexpr double kSmallestMagnitude = 1e-150;
-constexpr double kLargestMagnitude = 1e150;
-
-/// Throws unless `x` (read from `value`) is 0 or of a magnitude the command accepts.
-void require_in_range(double x, const Json& value, const std::string& path) {
-  const double magnitude = std::fabs(x);
-  if (magnitude == 0.0 || (magnitude >= kSmallestMagnitude && magnitude <= kLargestMagnitude)) {
-    return;
-  }
-  throw LineError(path + " = " + quote(value) +
-                  ": magnitude outside [1e-150, 1e150], the range clearjoint detect accepts "
-                  "(rescale the input, or write 0 for a negligible component)");
-}
 
 /// A number that must be positive, e.g. a radius.
 double read_positive(const Json& object, const std::string& path, const char* key) {
   const Json& value = member(object, path, key);
   const double x = read_number(value, field(path, key));
   if (!(x > 0.0)) throw LineError(field(path, key) + " = " + quote(value) + ": must be positive");
-  require_in_range(x, value, field(path, key));
-  return x;
+  return read_geometric_number(value, field(path, key));
 }
 
-/// A centre or axis: 3 numbers, each 0 or within the accepted magnitudes.
+/// A centre or axis: 3 numbers, each 0 or within the accepted magnitudes (json_lines.hpp).
 geo::Vector3 read_pose_vector(const Json& object, const std::string& path, const char* key) {
-  const Json& value = member(object, path, key);
-  const geo::Vector3 v = read_vector(value, field(path, key));
-  for (int k = 0; k < 3; ++k) {
-    require_in_range(v[k], value[static_cast<std::size_t>(k)],
-                     field(path, key) + "[" + std::to_string(k) + "]");
-  }
-  return v;
+  return read_geometric_vector(member(object, path, key), field(path, key));
 }
 
 /// Throws unless the journal's `key` ("radius" or "length") is smaller than the bearing's:
@@ -94,7 +67,8 @@ void require_smaller(const Json& journal, const Json& bearing, const char* key) 
 }
 
 /// One part: its dimensions go to `radius` and `length`, its pose is returned.
-geo::PartPose read_part(const Json& object, const std::string& path, double& radius, double& length) {
+geo::PartPose read_part(const Json& object, const std::string& path, double& radius,
+                        double& length) {
   check_object(object, path, {"radius", "length", "center", "axis"});
   radius = read_positive(object, path, "radius");
   length = read_positive(object, path, "length");
@@ -174,10 +148,10 @@ std::string reason(const geo::Certificate& certificate) {
   return certificate.reason != nullptr ? certificate.reason : "";
 }
 
-/// Throws when a computed value is not finite. The contact points are double-precision
-/// evaluations of the paper's formulas (not the certified kernel), and with lengths or speeds near
-/// the limits of double (around 1e155 and above, or 1e-155 and below, docs/command-line.md) they
-/// can overflow or underflow; a null in the answer would hide that.
+/// Throws when a computed value is not finite. The contact points and velocities are
+/// double-precision evaluations of the paper's formulas (not the certified kernel); speeds near
+/// the limits of double (motions are not range-checked) overflow them, and a null in the answer
+/// would hide that.
 void require_finite(double value, const std::string& what) {
   if (std::isfinite(value)) return;
   throw LineError(what + " is " + (std::isnan(value) ? "NaN" : "infinite") +

@@ -38,24 +38,25 @@ constexpr const char* kUsage =
 geo::Circle3 read_circle(const Json& value) {
   const std::string path = "circle";
   check_object(value, path, {"center", "normal", "radius"});
-  return geo::Circle3{read_vector(member(value, path, "center"), path + ".center"),
-                      read_vector(member(value, path, "normal"), path + ".normal"),
-                      read_number(member(value, path, "radius"), path + ".radius")};
+  return geo::Circle3{read_geometric_vector(member(value, path, "center"), path + ".center"),
+                      read_geometric_vector(member(value, path, "normal"), path + ".normal"),
+                      read_geometric_number(member(value, path, "radius"), path + ".radius")};
 }
 
 geo::Plane3 read_plane(const Json& value) {
   const std::string path = "plane";
   check_object(value, path, {"point", "normal"});
-  return geo::Plane3{read_vector(member(value, path, "point"), path + ".point"),
-                     read_vector(member(value, path, "normal"), path + ".normal")};
+  return geo::Plane3{read_geometric_vector(member(value, path, "point"), path + ".point"),
+                     read_geometric_vector(member(value, path, "normal"), path + ".normal")};
 }
 
 geo::Cylinder3 read_cylinder(const Json& value) {
   const std::string path = "cylinder";
   check_object(value, path, {"axis_point", "axis", "radius"});
-  return geo::Cylinder3{read_vector(member(value, path, "axis_point"), path + ".axis_point"),
-                        read_vector(member(value, path, "axis"), path + ".axis"),
-                        read_number(member(value, path, "radius"), path + ".radius")};
+  return geo::Cylinder3{
+      read_geometric_vector(member(value, path, "axis_point"), path + ".axis_point"),
+      read_geometric_vector(member(value, path, "axis"), path + ".axis"),
+      read_geometric_number(member(value, path, "radius"), path + ".radius")};
 }
 
 geo::IntersectionOptions read_options(const Json& query) {

@@ -156,6 +156,25 @@ geo::Vector3 read_vector(const Json& value, const std::string& path) {
   return v;
 }
 
+double read_geometric_number(const Json& value, const std::string& path) {
+  const double x = read_number(value, path);
+  const double magnitude = std::fabs(x);
+  if (magnitude == 0.0 || (magnitude >= kSmallestMagnitude && magnitude <= kLargestMagnitude)) {
+    return x;
+  }
+  throw LineError(path + " = " + quote(value) +
+                  ": magnitude outside [1e-150, 1e150], the range accepted (rescale the input, "
+                  "or write 0 for a negligible component)");
+}
+
+geo::Vector3 read_geometric_vector(const Json& value, const std::string& path) {
+  const geo::Vector3 v = read_vector(value, path);  // checks the shape and the types
+  for (std::size_t k = 0; k < 3; ++k) {
+    read_geometric_number(value[k], path + "[" + std::to_string(k) + "]");
+  }
+  return v;
+}
+
 void read_optional_bool(const Json& object, const std::string& path, const char* key, bool& out) {
   const auto flag = object.find(key);
   if (flag == object.end()) return;

@@ -96,7 +96,8 @@ elseif(CASE STREQUAL "bad_lines")
   expect_error(9 "line 12" "[1,2,3]" "object")
   expect_error(10 "plane.normal" "0")                        # InvalidInput from the kernel
   expect_error(11 "1e999")
-  expect_no_error(12)
+  expect_error(12 "line 15" "circle.radius" "1e+300" "[1e-150, 1e150]")
+  expect_no_error(13)
   expect_in("${ERR}" "bad_lines.jsonl" "stderr")
 
 elseif(CASE STREQUAL "number_ids")
