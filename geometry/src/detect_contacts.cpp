@@ -174,6 +174,13 @@ Contact axial_contact(const JointSetup& s, ContactBase base, const Circle3& rim,
   return contact;
 }
 
+/// The certificate of a "no contact" proved by a reach prefilter: as the kernel gives for the
+/// same decision (its own first test), so that switching the certificate off reads the same.
+Certificate clear_certificate(const DetectionOptions& options) {
+  return options.intersection.certify ? Certificate{Certainty::certified, ""}
+                                      : Certificate{Certainty::uncertain, "certificate switched off"};
+}
+
 /// The misaligned case: four candidate point contacts.
 void detect_misaligned(const JointSetup& s, const DetectionOptions& options,
                        JointContacts& out, ContactPresence& presence,
@@ -182,9 +189,7 @@ void detect_misaligned(const JointSetup& s, const DetectionOptions& options,
   // A rim proved to stay inside the wall or the base plane (the kernel's own first test, here
   // without the kernel's input checks, rescaling and result assembly) has no contact there: in
   // free flight this is the whole detection.
-  const Certificate proved_clear = options.intersection.certify
-                                       ? Certificate{Certainty::certified, ""}
-                                       : Certificate{Certainty::uncertain, "certificate switched off"};
+  const Certificate proved_clear = clear_certificate(options);
   for (const ContactBase base : {ContactBase::a, ContactBase::b}) {
     const Circle3 rim = journal_rim(s, base);
     if (detail::rim_reach(rim, wall) == detail::RimReach::strictly_inside) {
@@ -235,13 +240,19 @@ void detect_aligned(const JointSetup& s, const DetectionOptions& options, bool e
   // axes every cross-section has the same eccentricity e, and max distance e + Rj > Ri.
   bool line = false;
   Certificate line_certificate = tolerance_certificate;
+  const Certificate proved_clear = clear_certificate(options);
   if (exactly_parallel) {
     const Circle3 mid_section{s.p_WPj, s.journal_axis_W, s.journal_radius};
     const Cylinder3 wall{s.p_WPi, s.bearing_axis_W, s.bearing_radius};
-    const CircleCylinderIntersection hit =
-        intersect_circle_cylinder(mid_section, wall, options.intersection);
-    line = hit.arc_count > 0;
-    line_certificate = hit.certificate;
+    if (detail::rim_reach(mid_section, wall) == detail::RimReach::strictly_inside) {
+      line = false;  // the kernel's first test, without its input checks and result assembly
+      line_certificate = proved_clear;
+    } else {
+      const CircleCylinderIntersection hit =
+          intersect_circle_cylinder(mid_section, wall, options.intersection);
+      line = hit.arc_count > 0;
+      line_certificate = hit.certificate;
+    }
   } else {
     line = eccentricity > s.radial_clearance;
   }
@@ -269,10 +280,15 @@ void detect_aligned(const JointSetup& s, const DetectionOptions& options, bool e
     Certificate face_certificate = tolerance_certificate;
     if (exactly_parallel) {
       const Plane3 base_plane{bearing_base(s, base), outward_sign(base) * s.bearing_axis_W};
-      const CirclePlaneIntersection hit =
-          intersect_circle_plane(journal_rim(s, base), base_plane, options.intersection);
-      face = hit.topology == CirclePlaneTopology::disjoint && hit.side > 0;
-      face_certificate = hit.certificate;
+      const Circle3 rim = journal_rim(s, base);
+      if (detail::rim_side_of_plane(rim, base_plane) == detail::RimSide::strictly_negative) {
+        face = false;
+        face_certificate = proved_clear;
+      } else {
+        const CirclePlaneIntersection hit = intersect_circle_plane(rim, base_plane, options.intersection);
+        face = hit.topology == CirclePlaneTopology::disjoint && hit.side > 0;
+        face_certificate = hit.certificate;
+      }
     } else {
       face = beyond_base > 0.0;
     }
