@@ -51,12 +51,12 @@ double read_number(const Json& value, const std::string& path);
 geometry::Vector3 read_vector(const Json& value, const std::string& path);
 
 // The magnitudes a geometric input (a length, or a coordinate of a point or direction) may have,
-// 0 aside. Within them the commands were checked end to end (scaled and random inputs, about
-// 10^4 lines each, docs/command-line.md "Limits"): every line answered, none in more than 2 s.
-// Beyond them the library (geometry/, at the time of writing) overflows into NaN or infinite
-// points, can crash with SIGFPE (an infinity handed to the exact rational fallback, from
-// magnitudes ~1e300 and above) or spend minutes in that fallback (1e-300 beside 1e147). No joint
-// in any unit needs such numbers.
+// 0 aside. Within them the commands were checked end to end on scaled and random inputs
+// (docs/command-line.md, "Limits"): every line answered, although a vector mixing magnitudes
+// ~200 orders apart can still take seconds in the exact fallback. Beyond them the library
+// (geometry/, at the time of writing) overflows into NaN or infinite points, can crash with
+// SIGFPE (an infinity handed to the exact rational fallback, from magnitudes ~1e300 and above) or
+// spend minutes in that fallback (1e-300 beside 1e147). No joint in any unit needs such numbers.
 inline constexpr double kSmallestMagnitude = 1e-150;
 inline constexpr double kLargestMagnitude = 1e150;
 
