@@ -486,7 +486,7 @@ JointDimensions table2_dimensions() { return {10.0e-3, 20.0e-3, 9.9e-3, 19.8e-3}
 const std::vector<FamilySpec>& family_specs() {
   static const std::vector<FamilySpec> specs = {
       {"realistic", 20170501,
-       "Table 2, bearing anywhere within 0.2 m, tilt up to the largest, offsets up to 1.5 clearances"},
+       "Table 2, bearing anywhere within 0.2 m, tilt up to the largest, offsets up to 1.5 times the room the clearances leave at that tilt"},
       {"near_tangent", 20170502,
        "one candidate contact at a signed margin of 10^-k clearances from touching, k = 3..15"},
       {"near_parallel", 20170503, "journal tilts of 10^-k rad, k = 4..16, and exactly parallel axes"},
