@@ -80,6 +80,25 @@ def phase_portraits(figures, name, title, ideal, clearance):
     save(fig, figures, name)
 
 
+def initial_impacts(figures, ideal, aligned, misaligned, end=0.012):
+    """Extra (not in the paper): the impacts before continuous contact, aligned and misaligned."""
+    fig, axes = plt.subplots(2, 1, figsize=(8, 6), sharex=True, sharey=True)
+    for ax, run, label, letter in zip(axes, (aligned, misaligned), ("aligned", "misaligned 0.2$^\\circ$"), "ab"):
+        part, reference = window(run, 0.0, end), window(ideal, 0.0, end)
+        ax.plot(part["time"] * 1e3, part["ax"], color="tab:blue", linewidth=0.8, label="clearance joint, " + label)
+        ax.plot(reference["time"] * 1e3, reference["ax"], **dict(IDEAL, label="ideal joint"))
+        ax.set_ylabel("slider acceleration [m/s$^2$]")
+        ax.set_title("(%s) %s: peak |a| = %.0f m/s$^2$" % (letter, label, np.abs(part["ax"]).max()),
+                     loc="left", fontsize=9)
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=8, loc="lower right")
+    axes[-1].set_xlabel("time [ms]")
+    fig.suptitle("Planar slider-crank: the first %g ms (the impacts before continuous contact)" % (end * 1e3),
+                 fontsize=10)
+    fig.tight_layout()
+    save(fig, figures, "fig07_08_initial_impacts.png")
+
+
 def rod_rotation(figures, aligned, misaligned):
     """Fig. 11: the rod's third Euler parameter e2, and the angle between journal and bearing."""
     fig, axes = plt.subplots(2, 1, figsize=(7, 6.5), sharex=True)
@@ -257,6 +276,7 @@ def draw_all(load, figures, clearances_mm):
     phase_portraits(figures, "fig10.png", "Fig. 10: phase portraits, misaligned clearance joint "
                     "(t = %g-%g s)" % w, window(pi, *w), window(pm, *w))
     rod_rotation(figures, pa, pm)
+    initial_impacts(figures, pi, pa, pm)
 
     si, sc = load("spatial_ideal"), load("spatial_clearance")
     spatial_comparison(figures, si, sc)
