@@ -21,6 +21,7 @@ import hashlib
 import json
 import os
 import shutil
+import signal
 import subprocess
 import sys
 import tempfile
@@ -34,6 +35,10 @@ MODELS = os.path.join(REPOSITORY, "models")
 STUDY_MM = (0.05, 0.1, 0.3, 0.5)  # Sec. 6.2: radial and axial clearances [mm]
 RESULT_FORMAT = 1  # bump when the reduced contents change: old results are then redone
 SOURCE = "unknown"
+# The simulations in progress, so that an interrupt can stop them (by their own process ids).
+RUNNING = set()
+RUNNING_LOCK = threading.Lock()
+INTERRUPTED = threading.Event()
 
 # Columns kept per run (file -> columns). Bodies: world-frame position, velocity, acceleration;
 # the rod's Euler parameters; the joint's scenario, axis angle and rim centres in the bearing frame.
@@ -135,12 +140,21 @@ def run_one(name, spec, clearjoint, results):
         with open(model_path, "w") as f:
             f.write(text)
         start = time.monotonic()
-        done = subprocess.run([clearjoint, "simulate", model_path, "--out", scratch],
-                              capture_output=True, text=True)
+        with RUNNING_LOCK:
+            if INTERRUPTED.is_set():
+                raise RuntimeError("%s: not started (interrupted)" % name)
+            process = subprocess.Popen([clearjoint, "simulate", model_path, "--out", scratch],
+                                       stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+            RUNNING.add(process)
+        try:
+            stdout, stderr = process.communicate()
+        finally:
+            with RUNNING_LOCK:
+                RUNNING.discard(process)
         wall = time.monotonic() - start
-        if done.returncode != 0:
+        if process.returncode != 0:
             raise RuntimeError("%s: clearjoint simulate failed (status %d): %s" % (
-                name, done.returncode, (done.stderr or done.stdout).strip()))
+                name, process.returncode, (stderr or stdout).strip()))
         arrays = {}
         for file, names in columns.items():
             for column, values in read_columns(os.path.join(scratch, file), names).items():
@@ -156,7 +170,7 @@ def run_one(name, spec, clearjoint, results):
         arrays["format"] = np.array(RESULT_FORMAT)
         arrays["wall_seconds"] = np.array(wall)
         arrays["source"] = np.array(SOURCE)
-        arrays["simulate_output"] = np.array(done.stdout)
+        arrays["simulate_output"] = np.array(stdout)
         final = os.path.join(results, name + ".npz")
         partial = final + ".partial-%d.npz" % os.getpid()
         np.savez_compressed(partial, **arrays)
@@ -177,10 +191,10 @@ class Progress:
 
     def draw(self, last):
         elapsed = time.monotonic() - self.start
-        rest = elapsed / self.done * (self.total - self.done) if self.done else float("nan")
+        rest = "~%.0f s" % (elapsed / self.done * (self.total - self.done)) if self.done else "?"
         width = 30
         filled = width * self.done // max(1, self.total)
-        line = "[%s%s] %d/%d runs, %.0f s elapsed, ~%.0f s to go %s" % (
+        line = "[%s%s] %d/%d runs, %.0f s elapsed, %s to go %s" % (
             "#" * filled, " " * (width - filled), self.done, self.total, elapsed, rest, last)
         sys.stderr.write(("\r" + line + "\x1b[K") if self.tty else line + "\n")
         sys.stderr.flush()
@@ -200,7 +214,7 @@ def run_all(clearjoint, results, jobs, force, only):
     names = runs()
     for leftover in os.listdir(results):  # scratch directories and partial files of a killed run
         path = os.path.join(results, leftover)
-        ours = leftover.split(".")[0] in names
+        ours = any(leftover.startswith(name + ".") for name in names)  # names contain dots too
         if ours and os.path.isdir(path):
             shutil.rmtree(path, ignore_errors=True)
         elif ours and ".partial-" in leftover:
@@ -222,8 +236,9 @@ def run_all(clearjoint, results, jobs, force, only):
         return
     progress = Progress(len(todo))
     failures = []
-    with concurrent.futures.ThreadPoolExecutor(max_workers=jobs) as pool:
-        futures = {pool.submit(run_one, name, spec, clearjoint, results): name for name, spec in todo.items()}
+    pool = concurrent.futures.ThreadPoolExecutor(max_workers=jobs)
+    futures = {pool.submit(run_one, name, spec, clearjoint, results): name for name, spec in todo.items()}
+    try:
         for future in concurrent.futures.as_completed(futures):
             try:
                 name, wall = future.result()
@@ -231,6 +246,20 @@ def run_all(clearjoint, results, jobs, force, only):
             except Exception as error:  # keep the others going; report at the end
                 failures.append(str(error))
                 progress.advance("(%s failed)" % futures[future])
+    except KeyboardInterrupt:
+        # Runs not started are dropped and running simulations stopped; finished results are
+        # complete files, and the next call removes the scratch directories and resumes. A second
+        # interrupt (a terminal sends one to every process of the group) must not cut this short.
+        signal.signal(signal.SIGINT, signal.SIG_IGN)
+        with RUNNING_LOCK:
+            INTERRUPTED.set()
+            for process in RUNNING:
+                process.terminate()
+        pool.shutdown(wait=True, cancel_futures=True)
+        progress.finish()
+        raise SystemExit("section 6: interrupted after %d of %d runs; run again to resume" % (
+            progress.done, progress.total))
+    pool.shutdown()
     progress.finish()
     if failures:
         raise SystemExit("section 6: %d runs failed:\n%s" % (len(failures), "\n".join(failures)))
