@@ -108,6 +108,10 @@ bool refine_and_enclose(const RimDistancePolynomial& g, double guess, int direct
       out.radius = (eps * (1 + 4 * kUnitRoundoff) + rounding) * kSlack;
       out.multiplicity = 1;
       out.sign_after = direction;
+      // cos and sin of the real base + offset, which lies inside the enclosure.
+      const ValueAndSlope at = g.approximate_near(base, offset);
+      out.cos = at.cos;
+      out.sin = at.sin;
       return true;
     }
   }

@@ -8,6 +8,7 @@
 // Where both fail (tangency, double roots) the caller goes to the exact tier (rim_cylinder_exact).
 
 #include <array>
+#include <limits>
 
 #include "rim_distance_polynomial.hpp"
 
@@ -20,6 +21,12 @@ struct RootEnclosure {
   int multiplicity = 1;
   /// Sign of g just after the root (counter-clockwise): +1 the rim leaves the cylinder there.
   int sign_after = 0;
+  /// cos and sin of the root's angle when the tier already has them (tier 1, by angle addition,
+  /// within kAngleAdditionTrigError of the true values; the angle's own rounding is inside
+  /// `radius`); NaN otherwise. They save the crossing point its libm sine and cosine.
+  double cos = kNoTrig, sin = kNoTrig;
+  static constexpr double kNoTrig = std::numeric_limits<double>::quiet_NaN();
+  bool has_trig() const { return cos == cos; }
 };
 
 struct RimRoots {

@@ -64,8 +64,14 @@ struct JointSetup {
   BaseCenters journal_rims;   // centres of the journal rims facing bearing bases A and B
 };
 
-JointSetup set_up(const JointDimensions& dimensions, const PartPose& bearing,
-                  const PartPose& journal) {
+/// Everything is computed in a frame translated to the bearing centre P_i: the rounding of the
+/// base and rim centres (eqs. 3-4) is then relative to the joint's size, not to how far the
+/// joint sits from the world origin (at 1e13 m from it an ulp is larger than the clearance).
+/// The contact points are translated back at the end.
+JointSetup set_up(const JointDimensions& dimensions, const PartPose& bearing_in_world,
+                  const PartPose& journal_in_world) {
+  const PartPose bearing{Vector3::Zero(), bearing_in_world.axis_W};
+  const PartPose journal{journal_in_world.p_WP - bearing_in_world.p_WP, journal_in_world.axis_W};
   JointSetup s;
   s.bearing_radius = dimensions.bearing_radius;
   s.journal_radius = dimensions.journal_radius;
@@ -308,6 +314,23 @@ void detect_aligned(const JointSetup& s, const DetectionOptions& options, bool e
   }
 }
 
+/// Back from the bearing-centred frame of set_up: each translated point is rounded once more,
+/// by at most half an ulp per component (|x| u per component, sqrt(3) u |x| in length).
+void translate_to_world(const Vector3& p_WPi, JointContacts& out) {
+  if (p_WPi.isZero()) return;
+  constexpr double kTranslationRounding = 2 * detail::kUnitRoundoff;  // > sqrt(3) u, relative
+  for (int i = 0; i < out.contact_count; ++i) {
+    Contact& contact = out.contacts[i];
+    contact.p_WCj += p_WPi;
+    contact.p_WCi += p_WPi;
+    for (int k = 0; k < contact.crossing_count; ++k) {
+      RimCrossing& crossing = contact.crossings[k];
+      crossing.point += p_WPi;
+      crossing.point_error += kTranslationRounding * crossing.point.norm();
+    }
+  }
+}
+
 void validate(const DetectionOptions& options) {
   const double tolerance = options.parallel_angle_tolerance;
   if (!(tolerance >= 0.0 && tolerance < 0.5 * std::numbers::pi)) {
@@ -347,6 +370,7 @@ JointContacts detect_contacts(const JointDimensions& dimensions, const PartPose&
   }
   out.scenario = classify_scenario(presence);
   out.certificate = certificate.result();
+  translate_to_world(bearing.p_WP, out);
   return out;
 }
 

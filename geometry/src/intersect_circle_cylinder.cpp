@@ -18,6 +18,11 @@ using detail::RimRoots;
 /// Rounding in point_at: the rounded frame (a few ulps per unit vector), cos and sin (1 ulp
 /// each, glibc) and two multiply-adds; 32 unit roundoffs of |center| + 2 radius cover them.
 constexpr double kPointRoundingUlps = 32 * detail::kUnitRoundoff;
+/// The same with tier 1's cos and sin (RootEnclosure::cos, sin), each off by at most
+/// kAngleAdditionTrigError (~25 u) instead of 1 ulp: 2 * 25u r more on the radius term, which
+/// 64 unit roundoffs of |center| + 2 radius cover with room to spare.
+constexpr double kPointFromRootTrigUlps = 64 * detail::kUnitRoundoff;
+static_assert(2 * detail::kAngleAdditionTrigError < 64 * detail::kUnitRoundoff);
 
 void fill(const Circle3& circle, const RimRoots& roots, bool bounded,
           CircleCylinderIntersection& out) {
@@ -33,13 +38,19 @@ void fill(const Circle3& circle, const RimRoots& roots, bool bounded,
   }
   out.topology = CircleCylinderTopology::crossing;
   const CircleFrame frame = frame_of(circle);
-  const double rounding = kPointRoundingUlps * (circle.center.norm() + 2 * circle.radius);
+  const double size = circle.center.norm() + 2 * circle.radius;
   out.crossing_count = roots.count;
   for (int i = 0; i < roots.count; ++i) {
     const detail::RootEnclosure& root = roots.roots[i];
     RimCrossing& crossing = out.crossings[i];
     crossing.angle = root.angle;
-    crossing.point = point_at(circle, frame, root.angle);
+    double rounding = kPointRoundingUlps * size;
+    if (root.has_trig()) {
+      crossing.point = circle.center + circle.radius * (root.cos * frame.u + root.sin * frame.v);
+      rounding = kPointFromRootTrigUlps * size;
+    } else {
+      crossing.point = point_at(circle, frame, root.angle);
+    }
     crossing.multiplicity = root.multiplicity;
     // A chord is never longer than its arc: |x(t*) - x(t)| <= r |t* - t|.
     crossing.angle_error = bounded ? root.radius : kNoErrorBound;
@@ -96,6 +107,19 @@ CircleCylinderIntersection intersect_circle_cylinder(const Circle3& circle_in,
     out.crossings[i].point = detail::scaled(out.crossings[i].point, -e);
     out.crossings[i].point_error = std::ldexp(out.crossings[i].point_error, e);
   }
+  // Inputs whose magnitudes lie hundreds of orders apart can under- or overflow the double
+  // steps after the root count: then the points are not answers.
+  for (int i = 0; i < out.crossing_count; ++i) {
+    if (!std::isfinite(out.crossings[i].angle) || !out.crossings[i].point.allFinite()) {
+      out.certificate = {Certainty::uncertain,
+                         "crossing points not representable in double (intermediate under- or "
+                         "overflow: input magnitudes too far apart); the root count is still decided"};
+      for (int k = 0; k < out.crossing_count; ++k) {
+        out.crossings[k].angle_error = out.crossings[k].point_error = kNoErrorBound;
+      }
+      break;
+    }
+  }
   return out;
 }
 
@@ -128,8 +152,14 @@ CircleCylinderIntersection intersect_scaled(const Circle3& circle, const Cylinde
     fill(circle, roots, true, out);
     out.certificate = {Certainty::certified, ""};
   } else if (options.exact_fallback) {
-    fill(circle, detail::exact_rim_roots(circle, cylinder), true, out);
-    out.certificate = {Certainty::exact, roots.failure};
+    const RimRoots exact = detail::exact_rim_roots(circle, cylinder);
+    if (exact.proved) {
+      fill(circle, exact, true, out);
+      out.certificate = {Certainty::exact, roots.failure};
+    } else {  // the exact tier gave up (magnitudes far apart): the best guess, marked so
+      fill(circle, detail::approximate_rim_roots(g), false, out);
+      out.certificate = {Certainty::uncertain, exact.failure};
+    }
   } else {
     fill(circle, detail::approximate_rim_roots(g), false, out);
     out.certificate = {Certainty::uncertain, roots.failure};

@@ -25,6 +25,11 @@ namespace {
 using detail::Bounded;
 using detail::BoundedVector3;
 
+/// Reason given when the topology is decided but a crossing or the depth is not finite.
+constexpr const char* kNotRepresentable =
+    "crossing points or depth not representable in double (intermediate under- or overflow: "
+    "input magnitudes too far apart); the topology is still decided";
+
 /// See intersect_circle_cylinder.cpp: rounding of point_at.
 constexpr double kPointRoundingUlps = 32 * detail::kUnitRoundoff;
 /// acos and atan2 in glibc: at most 1-2 ulps; we allow 4 ulps of pi.
@@ -76,6 +81,16 @@ AngleWithTrig acos_of(const Bounded& c) {
   return {{middle, 0.5 * (high - low) + kLibmAngleError}, std::cos(middle), std::sin(middle)};
 }
 
+/// |P n_p| = |w| / |n_c|. When |w|^2 would underflow (normals parallel to within ~1e-150, or a
+/// subnormal tilt), w is first scaled by an exact power of two, so that a rim barely tipped
+/// through the plane still gets representable crossing angles.
+Bounded in_plane_normal_length(const detail::PlaneQuantities& q) {
+  constexpr double kTinySquare = 0x1p-1000, kUp = 0x1p600, kDown = 0x1p-600;
+  if (!(q.w2.value < kTinySquare)) return sqrt(q.w2 / q.nc2);
+  const BoundedVector3 w{q.w.x * kUp, q.w.y * kUp, q.w.z * kUp};
+  return sqrt(squared_norm(w) / q.nc2) * kDown;
+}
+
 CirclePlaneIntersection intersect_scaled(const Circle3& circle, const Plane3& plane,
                                          const IntersectionOptions& options);
 
@@ -109,6 +124,19 @@ CirclePlaneIntersection intersect_circle_plane(const Circle3& circle_in, const P
     out.max_signed_distance = std::ldexp(out.max_signed_distance, e);
     out.max_signed_distance_error = std::ldexp(out.max_signed_distance_error, e);
   }
+  // Inputs whose magnitudes lie hundreds of orders apart can under- or overflow the double
+  // steps after the topology (decided exactly regardless): then the points are not answers.
+  bool finite = std::isfinite(out.max_signed_distance);
+  for (int i = 0; i < out.crossing_count; ++i) {
+    finite = finite && std::isfinite(out.crossings[i].angle) && out.crossings[i].point.allFinite();
+  }
+  if (!finite) {
+    out.certificate = {Certainty::uncertain, kNotRepresentable};
+    for (int i = 0; i < out.crossing_count; ++i) {
+      out.crossings[i].angle_error = out.crossings[i].point_error = kNoErrorBound;
+    }
+    out.max_signed_distance_error = kNoErrorBound;
+  }
   return out;
 }
 
@@ -123,7 +151,7 @@ CirclePlaneIntersection intersect_scaled(const Circle3& circle, const Plane3& pl
                                              : detail::plane_quantities_running_error(circle, plane);
   const Bounded& s = q.s;
   const BoundedVector3& w = q.w;
-  const Bounded &w2 = q.w2, &nc2 = q.nc2, &np2 = q.np2;
+  const Bounded &w2 = q.w2, &np2 = q.np2;
   const Bounded r = circle.radius;
 
   // Filter: every sign the topology needs, proved from the running error bound.
@@ -175,7 +203,7 @@ CirclePlaneIntersection intersect_scaled(const Circle3& circle, const Plane3& pl
   const bool bounded = options.certify && out.certificate.level != Certainty::uncertain;
 
   // Deepest reach beyond the plane, in metres: (s + r |P n_p|) / |n_p|.
-  const Bounded in_plane_normal = sqrt(w2 / nc2);  // |P n_p|
+  const Bounded in_plane_normal = in_plane_normal_length(q);  // |P n_p|
   const Bounded deepest = (s + r * in_plane_normal) / sqrt(np2);
   out.max_signed_distance = deepest.value;
   out.max_signed_distance_error = bounded && deepest.finite() ? deepest.error : kNoErrorBound;

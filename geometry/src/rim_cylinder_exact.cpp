@@ -35,6 +35,36 @@ using Polynomial = CGAL::Polynomial<Rational>;
 /// well under one double ulp of the crossing coordinate, so the reported enclosure is limited by
 /// the final rounding to double, not by the isolation.
 constexpr int kRefinementBits = 64;
+/// Sign evaluations allowed per exact query (Sturm counts and bisection signs). A realistic
+/// query needs a few hundred; inputs whose magnitudes lie hundreds of orders apart make
+/// coefficients of thousands of bits and root clusters that bisection would chase for minutes.
+/// Past this budget the tier gives up and says so (the answer is then `uncertain`), never hangs.
+constexpr int kMaxSignEvaluations = 20000;
+
+/// Thrown inside this file only, caught by exact_rim_roots: the tier cannot finish.
+struct GiveUp {
+  const char* why;
+};
+constexpr const char* kBudgetExhausted =
+    "exact tier gave up: root isolation exceeded its budget (input magnitudes too far apart)";
+constexpr const char* kBeyondDoubleRange =
+    "exact tier gave up: an intermediate value left the double range (input magnitudes too far apart)";
+
+/// A double computed from rationals, about to become a rational or an angle: a Gmpq made from
+/// an infinity or a NaN aborts the process (GMP raises SIGFPE), so refuse it first.
+double finite_or_give_up(double x) {
+  if (!std::isfinite(x)) throw GiveUp{kBeyondDoubleRange};
+  return x;
+}
+
+/// Counts sign evaluations against kMaxSignEvaluations.
+struct EvaluationBudget {
+  int used = 0;
+  void spend(int n = 1) {
+    used += n;
+    if (used > kMaxSignEvaluations) throw GiveUp{kBudgetExhausted};
+  }
+};
 
 struct RationalVector {
   Rational x, y, z;
@@ -102,9 +132,10 @@ bool tighten_with_double_newton(const Polynomial& f, Rational& low, Rational& hi
   double coefficient[5] = {0, 0, 0, 0, 0};
   double scale = 0.0;
   for (int i = 0; i <= degree && i < 5; ++i) scale = std::max(scale, std::fabs(CGAL::to_double(f[i])));
-  if (!(scale > 0.0) || degree > 4) return false;
+  if (!(scale > 0.0) || !std::isfinite(scale) || degree > 4) return false;
   for (int i = 0; i <= degree; ++i) coefficient[i] = CGAL::to_double(f[i]) / scale;
   const double lo = CGAL::to_double(low), hi = CGAL::to_double(high);
+  if (!std::isfinite(lo) || !std::isfinite(hi)) return false;
   double x = 0.5 * (lo + hi);
   for (int step = 0; step < 60; ++step) {
     double value = 0.0, slope = 0.0;
@@ -120,6 +151,7 @@ bool tighten_with_double_newton(const Polynomial& f, Rational& low, Rational& hi
   const CGAL::Sign sign_high = f.sign_at(high);
   for (double spread = 4; spread < 0x1p20; spread *= 16) {
     const double delta = spread * std::numeric_limits<double>::epsilon() * std::max(std::fabs(x), 1e-300);
+    if (!std::isfinite(x - delta) || !std::isfinite(x + delta)) return false;  // Gmpq(inf) aborts
     const Rational a(x - delta), b(x + delta);
     if (a <= low || b > high) return false;
     const CGAL::Sign sign_a = f.sign_at(a), sign_b = f.sign_at(b);
@@ -138,7 +170,8 @@ bool tighten_with_double_newton(const Polynomial& f, Rational& low, Rational& hi
 }
 
 /// Real roots of f in (-bound, bound], isolated and refined, with multiplicities.
-void real_roots(const Polynomial& f, const Rational& bound, std::vector<RationalRoot>& out) {
+void real_roots(const Polynomial& f, const Rational& bound, std::vector<RationalRoot>& out,
+                EvaluationBudget& budget) {
   if (f.is_zero() || f.degree() < 1) return;
   std::vector<std::pair<Polynomial, int>> factors;
   CGAL::Polynomial_traits_d<Polynomial>::Square_free_factorize_up_to_constant_factor()(
@@ -151,6 +184,7 @@ void real_roots(const Polynomial& f, const Rational& bound, std::vector<Rational
     while (!pending.empty()) {
       auto [low, high] = pending.back();
       pending.pop_back();
+      budget.spend();
       const int n = sturm.roots_in(low, high);
       if (n == 0) continue;
       if (n >= 2) {
@@ -166,6 +200,7 @@ void real_roots(const Polynomial& f, const Rational& bound, std::vector<Rational
       }
       if (!tighten_with_double_newton(factor, low, high)) {
         while (high - low > width_goal) {
+          budget.spend();
           const Rational middle = (low + high) / 2;
           const CGAL::Sign at_middle = factor.sign_at(middle);
           if (at_middle == CGAL::ZERO) {
@@ -284,7 +319,10 @@ int exact_sign_at(const RimConic& conic, const Rational& x, int y_sign) {
 
 }  // namespace
 
-RimRoots exact_rim_roots(const Circle3& circle, const Cylinder3& cylinder) {
+namespace {
+
+RimRoots exact_rim_roots_within_budget(const Circle3& circle, const Cylinder3& cylinder,
+                                      EvaluationBudget& budget) {
   const RationalVector c = exact(circle.center), n = exact(circle.normal);
   const RationalVector q = c - exact(cylinder.axis_point), d = exact(cylinder.axis);
   const Vector3 u_double = circle.normal.cross(Vector3::Unit(frame_axis_index(circle.normal)));
@@ -302,8 +340,12 @@ RimRoots exact_rim_roots(const Circle3& circle, const Cylinder3& cylinder) {
   const Rational q20 = dot(B, B), q11 = 2 * dot(B, C), q02 = dot(C, C);
   conic.L = Polynomial(q00 + q02 * conic.r2 / conic.b, q10, q20 - q02 * conic.a / conic.b);
   conic.M = Polynomial(q01, q11);
-  // |X| <= r / sqrt(a) on the ellipse; use a power of two above it.
-  conic.bound = Rational(std::ldexp(1.0, std::ilogb(circle.radius / std::sqrt(CGAL::to_double(conic.a))) + 2));
+  // |X| <= r / sqrt(a) on the ellipse; use a power of two above it. The first guess comes from
+  // the binary exponents (r / sqrt(a) itself can overflow a double, and a Gmpq made from an
+  // infinity aborts the process), clamped to the double range; the loop makes it a bound.
+  const int bound_exponent = std::clamp(
+      std::ilogb(circle.radius) - std::ilogb(CGAL::to_double(conic.a)) / 2 + 2, -1000, 1000);
+  conic.bound = Rational(std::ldexp(1.0, bound_exponent));
   while (conic.bound * conic.bound * conic.a <= conic.r2) conic.bound = conic.bound * 2;
 
   RimRoots result;
@@ -317,7 +359,7 @@ RimRoots exact_rim_roots(const Circle3& circle, const Cylinder3& cylinder) {
   std::vector<RationalRoot> roots;
   if (conic.M.is_zero()) {
     // The cylinder meets E along vertical lines L(X) = 0.
-    real_roots(conic.L, conic.bound * 2, roots);
+    real_roots(conic.L, conic.bound * 2, roots, budget);
     for (const RationalRoot& root : roots)
       add_vertical_line_crossings(conic, root, root.multiplicity, crossings);
   } else {
@@ -326,7 +368,7 @@ RimRoots exact_rim_roots(const Circle3& circle, const Cylinder3& cylinder) {
     if (!shared_root) {
       const Polynomial ellipse(-conic.r2, Rational(0), conic.a);
       const Polynomial eliminated = ellipse * conic.M * conic.M + conic.b * conic.L * conic.L;
-      real_roots(eliminated, conic.bound, roots);
+      real_roots(eliminated, conic.bound, roots, budget);
       for (const RationalRoot& root : roots)
         add_graph_crossings(conic, conic.L, conic.M, root, crossings);
     } else {
@@ -339,7 +381,7 @@ RimRoots exact_rim_roots(const Circle3& circle, const Cylinder3& cylinder) {
       add_vertical_line_crossings(conic, {x0, x0, 1, Polynomial(-x0, Rational(1))}, 1, on_lines);
       const Polynomial ellipse(-conic.r2, Rational(0), conic.a);
       const Polynomial second_line = ellipse * m1 * m1 + conic.b * l1 * l1;
-      real_roots(second_line, conic.bound, roots);
+      real_roots(second_line, conic.bound, roots, budget);
       for (const RationalRoot& root : roots) {
         if (root.low <= x0 && x0 <= root.high && second_line.evaluate(x0) == Rational(0)) {
           // The two lines meet on E: that vertical-line point gains this multiplicity.
@@ -359,13 +401,15 @@ RimRoots exact_rim_roots(const Circle3& circle, const Cylinder3& cylinder) {
   // Rational (X, Y) enclosures to rim angles: theta = atan2(Y |v'|, X |u'|); the vector
   // (X |u'|, Y |v'|) has length r, so a displacement delta moves the angle by at most
   // (pi / 2) |delta| / r.
-  const double u_norm = std::sqrt(CGAL::to_double(conic.a));
-  const double v_norm = std::sqrt(CGAL::to_double(conic.b));
+  const double u_norm = finite_or_give_up(std::sqrt(CGAL::to_double(conic.a)));
+  const double v_norm = finite_or_give_up(std::sqrt(CGAL::to_double(conic.b)));
+  if (!(u_norm > 0.0 && v_norm > 0.0)) throw GiveUp{kBeyondDoubleRange};
   for (const Crossing& crossing : crossings) {
     if (result.count == 4) break;  // cannot happen for a proper rim (degree 4)
     RootEnclosure& root = result.roots[result.count++];
     root.angle = wrap_angle(std::atan2(crossing.y.value * v_norm, crossing.x.value * u_norm));
-    const double displacement = std::hypot(crossing.x.error * u_norm, crossing.y.error * v_norm);
+    const double displacement =
+        finite_or_give_up(std::hypot(crossing.x.error * u_norm, crossing.y.error * v_norm));
     root.radius = (0.5 * std::numbers::pi * displacement / circle.radius +
                    8 * kUnitRoundoff * (1.0 + root.angle)) * kErrorInflation;
     root.multiplicity = crossing.multiplicity;
@@ -388,7 +432,8 @@ RimRoots exact_rim_roots(const Circle3& circle, const Cylinder3& cylinder) {
   }
   const double sample = result.count == 0 ? 1.0 : gap_start + 0.5 * widest;
   // A rational X on the rim with the sample's half: shrink by a part in 2^40 to stay on E.
-  const Rational x_sample = Rational(circle.radius * std::cos(sample) / u_norm * (1 - 0x1p-40));
+  const Rational x_sample =
+      Rational(finite_or_give_up(circle.radius * std::cos(sample) / u_norm * (1 - 0x1p-40)));
   int sign = exact_sign_at(conic, x_sample, std::sin(sample) >= 0 ? 1 : -1);
   if (result.count == 0) {
     result.sign_without_roots = sign;
@@ -401,6 +446,20 @@ RimRoots exact_rim_roots(const Circle3& circle, const Cylinder3& cylinder) {
     if (result.roots[next].multiplicity % 2 == 1) sign = -sign;
   }
   return result;
+}
+
+}  // namespace
+
+RimRoots exact_rim_roots(const Circle3& circle, const Cylinder3& cylinder) {
+  EvaluationBudget budget;
+  try {
+    return exact_rim_roots_within_budget(circle, cylinder, budget);
+  } catch (const GiveUp& gave_up) {
+    RimRoots result;
+    result.proved = false;
+    result.failure = gave_up.why;
+    return result;
+  }
 }
 
 }  // namespace clearjoint::geometry::detail

@@ -7,9 +7,11 @@
 
 namespace clearjoint::geometry::detail {
 
-/// Always `proved`. count == 0 with sign_without_roots == 0 means the rim lies on the cylinder.
-/// Roots carry exact multiplicities; enclosures are certified (rational isolation, then rigorous
-/// double bounds for the angle).
+/// `proved` unless the tier gives up (`failure` says why): on inputs whose magnitudes lie so far
+/// apart that an intermediate double leaves the double range, or that root isolation exceeds
+/// its budget of sign evaluations (it never hangs). count == 0 with sign_without_roots == 0
+/// means the rim lies on the cylinder. Roots carry exact multiplicities; enclosures are
+/// certified (rational isolation, then rigorous double bounds for the angle).
 RimRoots exact_rim_roots(const Circle3& circle, const Cylinder3& cylinder);
 
 }  // namespace clearjoint::geometry::detail

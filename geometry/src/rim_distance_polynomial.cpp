@@ -183,8 +183,9 @@ SmallAngleTrig small_angle_trig(double x) {
 /// error_bounded.hpp), the Taylor polynomials' rounding (4u, AngleBase::at) and the two products
 /// and one sum of the addition (3u each of terms at most 1 + 1/16) add to under 12u; 24u
 /// doubles that, and the slack also holds the cosine's Lagrange remainder (|x|^10 / 10! < 3e-19).
-/// The sine's remainder (|x|^9 / 9!) is added separately.
-constexpr double kAngleAdditionUlps = 24;
+/// The sine's remainder (|x|^9 / 9! <= (1/16)^9 / 9! < 4.1e-17) is added separately.
+/// (kAngleAdditionUlps, in rim_distance_polynomial.hpp.)
+static_assert(kMaxAngleOffset == 1.0 / 16);
 
 }  // namespace
 
@@ -235,7 +236,7 @@ ValueAndSlope RimDistancePolynomial::approximate_near(const AngleBase& base, dou
   const double cos2 = (c - s) * (c + s), sin2 = 2 * s * c;
   const double value = k[0].value + k[1].value * c + k[2].value * s + k[3].value * cos2 + k[4].value * sin2;
   const double slope = k[2].value * c - k[1].value * s + 2 * (k[4].value * cos2 - k[3].value * sin2);
-  return {value, slope};
+  return {value, slope, c, s};
 }
 
 double RimDistancePolynomial::second_derivative_bound() const {

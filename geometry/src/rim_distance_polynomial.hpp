@@ -30,7 +30,14 @@ struct AngleBase {
 struct ValueAndSlope {
   double value;
   double slope;
+  double cos, sin;  ///< of the angle evaluated at (approximate_near), see kAngleAdditionTrigError
 };
+
+/// Bound on |computed - true| of the cos and sin that approximate_near and value_near form by
+/// angle addition at base + offset (|offset| <= kMaxAngleOffset): see rim_distance_polynomial.cpp.
+inline constexpr double kAngleAdditionUlps = 24;
+inline constexpr double kAngleAdditionTrigError =
+    kAngleAdditionUlps * kUnitRoundoff + 4.1e-17;  // + the sine's Taylor remainder (1/16)^9 / 9!
 
 struct RimDistancePolynomial {
   std::array<Bounded, 5> k;

@@ -704,5 +704,28 @@ TEST(CircleCylinder, FindsCrossingsAtPiOverSixWhenAllLengthsAreNearTheOverflowLi
   EXPECT_NE(r.crossings[0].point.y() > 0, r.crossings[1].point.y() > 0);
 }
 
+// Found by fuzzing `clearjoint detect`: a radius of 1e308 next to a subnormal axis point (so the
+// lengths cannot be rescaled exactly) sent an infinity into a CGAL rational, which made GMP
+// raise SIGFPE. The exact tier now refuses non-finite intermediates and gives up with a reason.
+TEST(CircleCylinder, AnswersWithoutCrashingWhenMagnitudesLieHundredsOfOrdersApart) {
+  const Circle3 rim{{0.0001066730970030485, -0.017055439295696573, 405.4779034944622},
+                    {-6605.137064002415, -0.0009145328975634364, -954092.7138507926}, 1e308};
+  const Cylinder3 wall{{5e-324, 6.02688337003884e-08, 744516.0306718774},
+                       {73.75369479187992, -0.009966669369927525, 9.113820629672232e-06},
+                       377353.9049903767};
+  const CircleCylinderIntersection hit = intersect_circle_cylinder(rim, wall);
+  // The rim's radius dwarfs every other length: it passes far outside the wall.
+  if (hit.certificate.level != Certainty::uncertain) {
+    EXPECT_EQ(hit.topology, CircleCylinderTopology::outside);
+  } else {
+    EXPECT_NE(std::string(hit.certificate.reason).find("gave up"), std::string::npos);
+  }
+  for (int i = 0; i < hit.crossing_count; ++i) {
+    if (hit.certificate.level != Certainty::uncertain) {
+      EXPECT_TRUE(std::isfinite(hit.crossings[i].angle));
+    }
+  }
+}
+
 }  // namespace
 }  // namespace clearjoint::geometry

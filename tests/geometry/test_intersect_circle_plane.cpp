@@ -566,5 +566,25 @@ TEST(CirclePlane, FindsTheTangencyWhenTheRimNormalIsTiny) {
   EXPECT_LE(std::fabs(r.max_signed_distance - 2.0), r.max_signed_distance_error);
 }
 
+// Found by fuzzing `clearjoint intersect`: normals parallel to within 1e-174 relative, whose
+// cross product squares to an underflow. The topology is still decided (exactly), but the crossing
+// angles came back NaN under an `exact` certificate; they are now marked not representable.
+TEST(CirclePlane, MarksCrossingsUncertainWhenTheyCannotBeRepresentedButKeepsTheTopology) {
+  const Circle3 rim{{0.0, 5.559413776010442e-95, -6.638819147733542e-18},
+                    {-6.575504629844338e+116, -7.838670103276075e-58, 0.0}, 4.0176110858492975e+146};
+  const Plane3 plane{{-3.8591066755890875e-145, 7.714252813339273e+43, -2.6829322357842167e+90},
+                     {-9.628437497306519e+89, 1.599893526918954e-130, 0.0}};
+  const CirclePlaneIntersection hit = intersect_circle_plane(rim, plane);
+  EXPECT_EQ(hit.topology, CirclePlaneTopology::two_crossings);
+  bool finite = true;
+  for (int i = 0; i < hit.crossing_count; ++i) {
+    finite = finite && std::isfinite(hit.crossings[i].angle) && hit.crossings[i].point.allFinite();
+  }
+  if (!finite) {
+    EXPECT_EQ(hit.certificate.level, Certainty::uncertain);
+    EXPECT_EQ(hit.crossings[0].angle_error, kNoErrorBound);
+  }
+}
+
 }  // namespace
 }  // namespace clearjoint::geometry

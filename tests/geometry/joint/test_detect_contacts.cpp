@@ -505,5 +505,54 @@ TEST(DetectContacts, BadInputsAreRejectedWithTheirNames) {
   EXPECT_THROW(detect_contacts(kTable2, PartPose{}, PartPose{}, options), InvalidInput);
 }
 
+// Found by fuzzing `clearjoint detect`: the base and rim centres (eqs. 3-4) were rounded in world
+// coordinates, so 1e13 m from the origin (an ulp of 2 mm, twenty clearances) a centred, slightly
+// tilted journal came back as scenario (d). Detection now works relative to the bearing centre.
+TEST(DetectContacts, GivesTheSameAnswerForAJointFarFromTheOrigin) {
+  const Vector3 tilted_axis(0.0, 0.005, 1.0);
+  const JointContacts at_origin =
+      detect_contacts(kTable2, PartPose{Vector3::Zero(), Vector3::UnitZ()},
+                      PartPose{Vector3::Zero(), tilted_axis});
+  ASSERT_EQ(at_origin.scenario, ContactScenario::none);
+  for (const double far : {1e9, 1e13, -1e15}) {
+    const Vector3 centre(far, far, far);  // both parts share it exactly
+    const JointContacts moved = detect_contacts(kTable2, PartPose{centre, Vector3::UnitZ()},
+                                                PartPose{centre, tilted_axis});
+    EXPECT_EQ(moved.scenario, at_origin.scenario) << far;
+    EXPECT_EQ(moved.contact_count, 0) << far;
+  }
+}
+
+// Found by fuzzing `clearjoint detect`: joints whose numbers lie hundreds of orders of magnitude
+// apart crashed (SIGFPE inside GMP) or kept the exact tier busy for minutes. They must come back,
+// and every contact that is not marked uncertain must have finite numbers.
+TEST(DetectContacts, ComesBackWithoutCrashingOrHangingWhenMagnitudesLieHundredsOfOrdersApart) {
+  struct Joint {
+    JointDimensions dimensions;
+    PartPose bearing, journal;
+  };
+  const Joint joints[] = {
+      {{1e-300, 1.575384515905611e-151, 9.900000000000001e-301, 7.876922579528056e-152},
+       {{-2.0687103341290957e+82, 5.919393313130888e-129, -7.95690373977745e+45},
+        {2.8671301291721063e+113, 1e-300, 6.330020853250564e+115}},
+       {{-4.6608518798052456e+125, 8.630725688781501e-41, -9.714339045571734e+131},
+        {-7.088122218224904e+147, -4.022925612848003e+93, 1e-300}}},
+      {{1.7e+308, 5813.066039239765, 8.5e+307, 5754.935378847367},
+       {{-4408673.018689724, -0.08610969950031569, 0.0026643831445110422},
+        {401161.5775188713, 43735964.99146108, 382966.3675463995}},
+       {{643800.211523991, 47957.74228088685, 5.246818470893499e-07},
+        {-9.245901800796875e-06, 0.0009331053976989397, 0.00787128668568102}}},
+  };
+  for (const Joint& joint : joints) {
+    const JointContacts result = detect_contacts(joint.dimensions, joint.bearing, joint.journal);
+    for (int i = 0; i < result.contact_count; ++i) {
+      const Contact& contact = result.contacts[i];
+      if (contact.certificate.level == Certainty::uncertain) continue;
+      EXPECT_TRUE(std::isfinite(contact.depth)) << i;
+      EXPECT_TRUE(contact.p_WCj.allFinite()) << i;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace clearjoint::geometry

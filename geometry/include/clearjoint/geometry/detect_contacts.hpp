@@ -16,6 +16,15 @@
 /// Model limits (documented, not detected): the journal's lateral surface against a bearing's
 /// base edge, and a rim against the opposite base, are not candidate contacts (the paper's
 /// small-tilt model).
+///
+/// What the certificates are about: the rims and base planes whose centres eqs. (3)-(4) give,
+/// evaluated in double precision in a frame centred on the bearing (P +- (L/2) a/|a|, rounded:
+/// each centre is off the exact one by a few ulps of |P_j - P_i| + L). Every decision and bound is
+/// proved for those rounded rims and planes. For the joint exactly as its input numbers describe
+/// it, answers can differ where a rim is within that rounding (about 1e-14 clearances for the
+/// paper's joint in metres) of touching, and near a tangency a crossing point moves by about the
+/// square root of it; bench/detection (docs/benchmarks.md) measures both against an MPFR
+/// reference of the joint as given.
 
 #include <array>
 
