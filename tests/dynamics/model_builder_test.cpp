@@ -45,6 +45,35 @@ TEST(ModelBuilder, RejectsUnknownHeldComponents) {
             "initial_conditions.hold_positions[0].components = \"theta\": must be one of x, y, z, rx, ry, rz");
 }
 
+/// The pendulum with a clearance joint between its bob (journal) and the ground (bearing).
+ModelDescription pendulum_with_clearance_joint() {
+  ModelDescription model = test::pendulum_model({});
+  model.forces.push_back(ClearanceRevoluteDescription{
+      "gap", {"ground", Vector3::Zero(), Vector3::UnitZ()}, {"bob", Vector3(0, 0.5, 0), Vector3::UnitZ()}, {}});
+  return model;
+}
+
+TEST(ModelBuilder, BuildsAClearanceJointAfterGravityWithItsImpactMemory) {
+  BuiltModel built = build_model(pendulum_with_clearance_joint());
+  ASSERT_EQ(built.system->force_elements().size(), 2u);
+  EXPECT_EQ(built.system->force_elements()[1]->name(), "gap");
+  EXPECT_EQ(built.system->layout().extra_count, kContactSlotCount);
+}
+
+TEST(ModelBuilder, NamesAnUnknownBodyOfAClearanceJoint) {
+  ModelDescription model = pendulum_with_clearance_joint();
+  std::get<ClearanceRevoluteDescription>(model.forces[0]).journal.body = "bobb";
+  EXPECT_EQ(error_of(model), "forces[0].journal.body = \"bobb\": no body of that name (use \"ground\" "
+                             "for the world frame)");
+}
+
+TEST(ModelBuilder, NamesAnUnknownForceElementAmongTheOutputs) {
+  ModelDescription model = pendulum_with_clearance_joint();
+  model.output_all_force_elements = false;
+  model.output_force_elements = {"gap", "gapp"};
+  EXPECT_EQ(error_of(model), "output.force_elements[1] = \"gapp\": no force element of that name");
+}
+
 TEST(ModelBuilder, AddsGravityAsAForceElementWithPotentialEnergy) {
   BuiltModel built = build_model(test::pendulum_model({}));
   ASSERT_EQ(built.system->force_elements().size(), 1u);
