@@ -53,10 +53,9 @@ geometry::Vector3 read_vector(const Json& value, const std::string& path);
 // The magnitudes a geometric input (a length, or a coordinate of a point or direction) may have,
 // 0 aside. Within them the commands were checked end to end on scaled and random inputs
 // (docs/command-line.md, "Limits"): every line answered, although a vector mixing magnitudes
-// ~200 orders apart can still take seconds in the exact fallback. Beyond them the library
-// (geometry/, at the time of writing) overflows into NaN or infinite points, can crash with
-// SIGFPE (an infinity handed to the exact rational fallback, from magnitudes ~1e300 and above) or
-// spend minutes in that fallback (1e-300 beside 1e147). No joint in any unit needs such numbers.
+// ~200 orders apart can still take seconds in the exact fallback. Beyond them the library's
+// contact points can overflow into NaN or infinite values (the SIGFPE and the minutes-long exact
+// fallback first found there are fixed in geometry/). No joint in any unit needs such numbers.
 inline constexpr double kSmallestMagnitude = 1e-150;
 inline constexpr double kLargestMagnitude = 1e150;
 
