@@ -109,7 +109,8 @@ FreeJournal oblique_aligned_journal() {
 constexpr double kRequiredConvergenceFactor = 10.0;
 // An upper bound for the drift at 1e-11 over those 57 impacts: a millionth of the energy.
 constexpr double kEnergyDriftAtTightTolerance = 1e-6;
-// Between two report times 1e-5 s apart the integrator error is far below that (measured 8e-15).
+// Between two report times 1e-5 s apart the integrator error is far below that (measured 1e-14
+// aligned, 1e-16 tilted with damping and friction).
 constexpr double kEnergyGainBetweenReports = 1e-9;
 
 TEST(ClearanceJointImpacts, ConserveEnergyThroughManyImpactsWithRestitutionOneAndNoFriction) {
@@ -150,16 +151,19 @@ TEST(ClearanceJointImpacts, ConserveEnergyOnlyToTheContactModelsAccuracyWithTilt
 // With damping and friction the energy may only decrease, up to the integrator's error between
 // two report times.
 TEST(ClearanceJointImpacts, NeverGainEnergyWithDampingAndFriction) {
-  FreeJournal f = oblique_aligned_journal();
-  f.angular_velocity_B = Vector3(0.0, 0.0, 30.0);  // spin: friction at every contact
-  f.joint.friction = {0.1, 1000.0};                 // Table 2; Lankarani-Nikravesh ce = 0.9
   constexpr double kTolerance = 1e-10;
-  const EnergyRun run = run_energy(f, settings(0.05, 1e-5, kTolerance));
-  std::printf("impacts %ld; energy lost %.3g of E0; largest increase between reports %.3g of E0\n",
-              run.impacts, run.worst_relative_change, run.largest_increase);
-  EXPECT_GE(run.impacts, 20);
-  EXPECT_GT(run.worst_relative_change, 0.1);  // it does dissipate
-  EXPECT_LT(run.largest_increase, kEnergyGainBetweenReports);
+  for (const double tilt : {0.0, 2e-3}) {  // aligned (line, face contacts); tilted (rim contacts)
+    FreeJournal f = oblique_aligned_journal();
+    f.euler_parameters = euler_parameters_from_axis_angle(Vector3::UnitX(), tilt);
+    f.angular_velocity_B = Vector3(0.0, 0.0, 30.0);  // spin: friction at every contact
+    f.joint.friction = {0.1, 1000.0};                 // Table 2; Lankarani-Nikravesh ce = 0.9
+    const EnergyRun run = run_energy(f, settings(0.05, 1e-5, kTolerance));
+    std::printf("tilt %g: impacts %ld; energy lost %.3g of E0; largest increase between reports %.3g of E0\n",
+                tilt, run.impacts, run.worst_relative_change, run.largest_increase);
+    EXPECT_GE(run.impacts, 20) << "tilt " << tilt;
+    EXPECT_GT(run.worst_relative_change, 0.1) << "tilt " << tilt;  // it does dissipate
+    EXPECT_LT(run.largest_increase, kEnergyGainBetweenReports) << "tilt " << tilt;
+  }
 }
 
 /// The journal sent along +x from the centre at `speed`; returns the largest line-contact depth
@@ -232,7 +236,7 @@ double one_dimensional_restitution(const NormalForceParameters& law, double mass
   return -s[1] / speed;
 }
 
-TEST(ClearanceJointImpacts, GiveTheLankaraniNikravesEffectiveRestitution) {
+TEST(ClearanceJointImpacts, GiveTheLankaraniNikraveshEffectiveRestitution) {
   FreeJournal f;  // Lankarani-Nikravesh, ce = 0.9
   const double v = 0.1;
   const double reference = one_dimensional_restitution(f.joint.normal, f.mass, v);
