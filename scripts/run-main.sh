@@ -1,11 +1,15 @@
 #!/usr/bin/env bash
-# The main job: install what is missing, build, run the shipped example.
+# The main job: install what is missing, build, run the shipped examples and the paper's spatial
+# slider-crank (Section 6.2) with its clearance joint.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/build.sh
+clearjoint=./build/apps/clearjoint/clearjoint
 echo "== clearjoint intersect examples/rims.jsonl (certified rim/base and rim/wall intersections)"
-./build/apps/clearjoint/clearjoint intersect examples/rims.jsonl
-echo "== clearjoint simulate models/slider_crank_spatial_ideal.json (paper section 6.2, ideal joints)"
-./build/apps/clearjoint/clearjoint simulate models/slider_crank_spatial_ideal.json --out build/results/spatial_ideal
-echo "results: build/results/spatial_ideal/ (body_*.csv, energy.csv, reactions.csv)"
-tail -n 1 build/results/spatial_ideal/energy.csv
+"$clearjoint" intersect examples/rims.jsonl
+echo "== clearjoint detect examples/joints.jsonl (contact scenarios of the paper's Fig. 2)"
+"$clearjoint" detect examples/joints.jsonl
+echo "== clearjoint simulate models/slider_crank_spatial_clearance.json (paper section 6.2, clearance joint)"
+"$clearjoint" simulate models/slider_crank_spatial_clearance.json --out build/results/spatial_clearance
+echo "results: build/results/spatial_clearance/ (body_*.csv, energy.csv, reactions.csv, force_*.csv)"
+tail -n 1 build/results/spatial_clearance/energy.csv
