@@ -11,6 +11,7 @@
 #include <random>
 #include <vector>
 
+#include "enclosure_checks.hpp"
 #include "mpfr_reference.hpp"
 
 namespace clearjoint::geometry::detail {
@@ -19,6 +20,8 @@ namespace {
 using internal_testing::Real;
 using internal_testing::RealVector3;
 namespace it = internal_testing;
+using internal_testing::Encloses;
+using internal_testing::random_direction;
 
 struct Pose {
   Circle3 circle;
@@ -32,15 +35,6 @@ Real magnitude(const Pose& pose) {
   return s * s;
 }
 
-::testing::AssertionResult Encloses(const Bounded& b, const Real& truth, const Real& scale) {
-  if (!b.finite()) return ::testing::AssertionFailure() << "non-finite bound";
-  const Real distance = abs(truth - Real(b.value));
-  if (distance <= Real(b.error) + it::kReferenceRelativeError * scale)
-    return ::testing::AssertionSuccess();
-  return ::testing::AssertionFailure() << "value " << b.value << " error " << b.error
-                                       << " misses " << truth.str(30) << " by "
-                                       << (distance - Real(b.error)).str(6);
-}
 
 /// The five exact coefficients, derived independently of the implementation's cross-product
 /// forms: project q, u, v off the axis and expand |q_perp + r (cos u_perp + sin v_perp)|^2 - R^2
@@ -59,10 +53,6 @@ std::array<Real, 5> exact_coefficients(const Pose& pose) {
           r * r * (it::dot(u, u) - it::dot(v, v)) / 2, r * r * it::dot(u, v)};
 }
 
-Vector3 random_direction(std::mt19937_64& rng) {
-  std::normal_distribution<double> gauss;
-  return Vector3(gauss(rng), gauss(rng), gauss(rng)).normalized();
-}
 
 /// A random pose whose rim comes near the wall, with lengths times `scale`, non-unit normal
 /// and axis (magnitudes 1e-3..1e3), and a tilt between the rim normal and the axis of `tilt`

@@ -10,6 +10,7 @@
 #include <random>
 #include <vector>
 
+#include "enclosure_checks.hpp"
 #include "mpfr_reference.hpp"
 
 namespace clearjoint::geometry::detail {
@@ -18,6 +19,8 @@ namespace {
 using internal_testing::Real;
 using internal_testing::RealVector3;
 namespace it = internal_testing;
+using internal_testing::Encloses;
+using internal_testing::random_direction;
 
 struct Pose {
   Circle3 circle;
@@ -42,14 +45,6 @@ Exact exact_quantities(const Pose& p) {
   return e;
 }
 
-::testing::AssertionResult Encloses(const Bounded& b, const Real& truth, const Real& scale) {
-  if (!b.finite()) return ::testing::AssertionFailure() << "non-finite bound";
-  const Real distance = abs(truth - Real(b.value));
-  if (distance <= Real(b.error) + it::kReferenceRelativeError * scale)
-    return ::testing::AssertionSuccess();
-  return ::testing::AssertionFailure() << "value " << b.value << " error " << b.error
-                                       << " misses " << truth.str(30);
-}
 
 void check_quantities(const PlaneQuantities& q, const Pose& pose) {
   const Exact e = exact_quantities(pose);
@@ -67,10 +62,6 @@ void check_quantities(const PlaneQuantities& q, const Pose& pose) {
   ASSERT_TRUE(Encloses(q.discriminant, e.discriminant, scale)) << "discriminant";
 }
 
-Vector3 random_direction(std::mt19937_64& rng) {
-  std::normal_distribution<double> gauss;
-  return Vector3(gauss(rng), gauss(rng), gauss(rng)).normalized();
-}
 
 /// A rim near the plane (its centre within about one radius of it), lengths times `scale`,
 /// normals of magnitude 1e-3..1e3, tilt between the normals random or `tilt` radians.
