@@ -9,7 +9,9 @@
 
 #include "clearjoint/geometry/intersect_circle_cylinder.hpp"
 #include "clearjoint/geometry/intersect_circle_plane.hpp"
+#include "a_priori_bounds.hpp"
 #include "error_bounded.hpp"
+#include "primitives_detail.hpp"
 #include "rim_distance_polynomial.hpp"
 #include "rim_plane_quantities.hpp"
 
@@ -83,8 +85,9 @@ JointSetup set_up(const JointDimensions& dimensions, const PartPose& bearing_in_
   s.journal_axis_W = journal.axis_W;
   s.bearing_axis_hat_W = unit_axis(bearing);
   s.journal_axis_hat_W = unit_axis(journal);
-  s.bearing_bases = base_centers(bearing, dimensions.bearing_length);
-  const BaseCenters journal_bases = base_centers(journal, dimensions.journal_length);
+  s.bearing_bases = base_centers(bearing.p_WP, s.bearing_axis_hat_W, dimensions.bearing_length);
+  const BaseCenters journal_bases =
+      base_centers(journal.p_WP, s.journal_axis_hat_W, dimensions.journal_length);
   // Labels follow the bearing: when a_j points against a_i, the journal's "B" base faces A.
   const bool same_direction = bearing.axis_W.dot(journal.axis_W) >= 0.0;
   s.journal_rims = same_direction ? journal_bases : BaseCenters{journal_bases.p_WB, journal_bases.p_WA};
@@ -187,6 +190,24 @@ Certificate clear_certificate(const DetectionOptions& options) {
                                       : Certificate{Certainty::uncertain, "certificate switched off"};
 }
 
+/// The magnitude guard of the a priori bounds (a_priori_bounds.hpp) for all four prefilter tests
+/// at once: every value that enters a rim against the wall or a base plane (rim centres and
+/// normal, wall axis point and axis, base points, their differences, the radii). One guard
+/// instead of four: in free flight the guards were a third of the detection's instructions.
+bool prefilter_guard(const JointSetup& s) {
+  using detail::magnitude_in_range;
+  using detail::magnitudes_in_range;
+  const Vector3& c_a = s.journal_rims.p_WA;
+  const Vector3& c_b = s.journal_rims.p_WB;
+  return magnitudes_in_range(s.bearing_axis_W) && magnitudes_in_range(s.journal_axis_W) &&
+         magnitudes_in_range(s.p_WPi) && magnitudes_in_range(c_a) && magnitudes_in_range(c_b) &&
+         magnitudes_in_range(c_a - s.p_WPi) && magnitudes_in_range(c_b - s.p_WPi) &&
+         magnitudes_in_range(s.bearing_bases.p_WA) && magnitudes_in_range(s.bearing_bases.p_WB) &&
+         magnitudes_in_range(c_a - s.bearing_bases.p_WA) &&
+         magnitudes_in_range(c_b - s.bearing_bases.p_WB) &&
+         magnitude_in_range(s.journal_radius) && magnitude_in_range(s.bearing_radius);
+}
+
 /// The misaligned case: four candidate point contacts.
 void detect_misaligned(const JointSetup& s, const DetectionOptions& options,
                        JointContacts& out, ContactPresence& presence,
@@ -196,9 +217,10 @@ void detect_misaligned(const JointSetup& s, const DetectionOptions& options,
   // without the kernel's input checks, rescaling and result assembly) has no contact there: in
   // free flight this is the whole detection.
   const Certificate proved_clear = clear_certificate(options);
+  const bool guard = prefilter_guard(s);
   for (const ContactBase base : {ContactBase::a, ContactBase::b}) {
     const Circle3 rim = journal_rim(s, base);
-    if (detail::rim_reach(rim, wall) == detail::RimReach::strictly_inside) {
+    if (detail::rim_reach(rim, wall, guard) == detail::RimReach::strictly_inside) {
       certificate.add(proved_clear);
       continue;
     }
@@ -217,7 +239,7 @@ void detect_misaligned(const JointSetup& s, const DetectionOptions& options,
   for (const ContactBase base : {ContactBase::a, ContactBase::b}) {
     const Circle3 rim = journal_rim(s, base);
     const Plane3 base_plane{bearing_base(s, base), outward_sign(base) * s.bearing_axis_W};
-    if (detail::rim_side_of_plane(rim, base_plane) == detail::RimSide::strictly_negative) {
+    if (detail::rim_side_of_plane(rim, base_plane, guard) == detail::RimSide::strictly_negative) {
       certificate.add(proved_clear);
       continue;
     }
@@ -346,9 +368,10 @@ void validate(const DetectionOptions& options) {
 
 JointContacts detect_contacts(const JointDimensions& dimensions, const PartPose& bearing,
                               const PartPose& journal, const DetectionOptions& options) {
-  validate(dimensions);
-  validate(bearing, "bearing");
-  validate(journal, "journal");
+  // The inline tests first: validate() formats its message and is out of line.
+  if (!detail::passes_validation(dimensions)) validate(dimensions);
+  if (!detail::passes_validation(bearing)) validate(bearing, "bearing");
+  if (!detail::passes_validation(journal)) validate(journal, "journal");
   validate(options);
   const JointSetup setup = set_up(dimensions, bearing, journal);
 

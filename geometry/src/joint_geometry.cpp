@@ -47,9 +47,13 @@ Vector3 unit_axis(const PartPose& pose) {
 }
 
 BaseCenters base_centers(const PartPose& pose, double length) {
-  const Vector3 half_axis = (0.5 * length) * unit_axis(pose);
-  return {pose.p_WP + half_axis,   // eq. (3)
-          pose.p_WP - half_axis};  // eq. (4)
+  return base_centers(pose.p_WP, unit_axis(pose), length);
+}
+
+BaseCenters base_centers(const Vector3& p_WP, const Vector3& unit_axis_W, double length) {
+  const Vector3 half_axis = (0.5 * length) * unit_axis_W;
+  return {p_WP + half_axis,   // eq. (3)
+          p_WP - half_axis};  // eq. (4)
 }
 
 }  // namespace clearjoint::geometry

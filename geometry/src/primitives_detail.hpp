@@ -1,4 +1,5 @@
 #pragma once
+#include "clearjoint/geometry/joint_geometry.hpp"
 #include "clearjoint/geometry/primitives.hpp"
 #include "input_checks.hpp"
 
@@ -20,6 +21,15 @@ inline bool passes_validation(const Plane3& p) {
 }
 inline bool passes_validation(const Cylinder3& c) {
   return all_finite(c.axis_point) & all_finite(c.axis) & nonzero(c.axis) & finite_positive(c.radius);
+}
+
+inline bool passes_validation(const JointDimensions& d) {
+  return finite_positive(d.bearing_radius) & finite_positive(d.bearing_length) &
+         finite_positive(d.journal_radius) & finite_positive(d.journal_length) &
+         (d.journal_radius < d.bearing_radius) & (d.journal_length < d.bearing_length);
+}
+inline bool passes_validation(const PartPose& pose) {
+  return all_finite(pose.p_WP) & all_finite(pose.axis_W) & nonzero(pose.axis_W);
 }
 
 }  // namespace detail

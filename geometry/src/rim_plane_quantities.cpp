@@ -65,11 +65,29 @@ InPlaneNormal in_plane_normal_running_error(const Circle3& circle, const PlaneQu
 }
 
 RimSide rim_side_of_plane(const Circle3& circle, const Plane3& plane) {
-  const PlaneQuantities q = plane_a_priori_bounds_apply(circle, plane)
-                                ? plane_quantities_a_priori(circle, plane)
-                                : plane_quantities_running_error(circle, plane);
-  if (q.discriminant.sign() <= 0) return RimSide::undecided;
-  const int side = q.s.sign();
+  return rim_side_of_plane(circle, plane, plane_a_priori_bounds_apply(circle, plane));
+}
+
+RimSide rim_side_of_plane(const Circle3& circle, const Plane3& plane, bool a_priori_bounds_apply) {
+  Bounded s, discriminant;
+  if (a_priori_bounds_apply) {
+    // Only what the side needs, with the chains of plane_quantities_a_priori.
+    const Vector3 d = circle.center - plane.point;
+    const Vector3& np = plane.normal;
+    const Vector3& nc = circle.normal;
+    const Vector3 np_abs = np.cwiseAbs(), nc_abs = nc.cwiseAbs();
+    const double s_value = np.dot(d), s_abs = np_abs.dot(d.cwiseAbs());
+    const double w2 = np.cross(nc).squaredNorm(), w2_abs = abs_cross(np_abs, nc_abs).squaredNorm();
+    const double nc2 = nc.squaredNorm(), r2 = circle.radius * circle.radius;
+    s = a_priori(s_value, s_abs);
+    discriminant = a_priori(s_value * s_value * nc2 - r2 * w2, s_abs * s_abs * nc2 + r2 * w2_abs);
+  } else {
+    const PlaneQuantities q = plane_quantities_running_error(circle, plane);
+    s = q.s;
+    discriminant = q.discriminant;
+  }
+  if (discriminant.sign() <= 0) return RimSide::undecided;
+  const int side = s.sign();
   return side < 0 ? RimSide::strictly_negative
                   : side > 0 ? RimSide::strictly_positive : RimSide::undecided;
 }

@@ -42,5 +42,8 @@ enum class RimSide {
   undecided,
 };
 RimSide rim_side_of_plane(const Circle3& circle, const Plane3& plane);
+/// The same with the magnitude guard already evaluated (plane_a_priori_bounds_apply, or a
+/// caller's guard over a superset of the same values).
+RimSide rim_side_of_plane(const Circle3& circle, const Plane3& plane, bool a_priori_bounds_apply);
 
 }  // namespace clearjoint::geometry::detail

@@ -49,5 +49,7 @@ struct BaseCenters {
   Vector3 p_WB = Vector3::Zero();
 };
 BaseCenters base_centers(const PartPose& pose, double length);
+/// The same from a unit axis already computed (unit_axis(pose)).
+BaseCenters base_centers(const Vector3& p_WP, const Vector3& unit_axis_W, double length);
 
 }  // namespace clearjoint::geometry
