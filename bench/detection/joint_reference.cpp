@@ -575,13 +575,25 @@ ReferenceJoint joint_as_rounded_by_library(const geometry::JointDimensions& dime
                                            const geometry::PartPose& bearing,
                                            const geometry::PartPose& journal) {
   ReferenceJoint joint = joint_as_given(dimensions, bearing, journal);
-  const geometry::BaseCenters bearing_bases = geometry::base_centers(bearing, dimensions.bearing_length);
-  const geometry::BaseCenters journal_bases = geometry::base_centers(journal, dimensions.journal_length);
+  // As detect_contacts does (since commit befc772): in a frame centred on the bearing, with the
+  // journal centre rounded once as P_j - P_i, the centres rounded there, and the bearing centre
+  // itself (added back here exactly) as the origin of that frame.
+  const geometry::PartPose local_bearing{geometry::Vector3::Zero(), bearing.axis_W};
+  const geometry::PartPose local_journal{journal.p_WP - bearing.p_WP, journal.axis_W};
+  const geometry::BaseCenters bearing_bases =
+      geometry::base_centers(local_bearing, dimensions.bearing_length);
+  const geometry::BaseCenters journal_bases =
+      geometry::base_centers(local_journal, dimensions.journal_length);
+  const RealVector origin = to_real(bearing.p_WP);
+  auto world = [&origin](const geometry::Vector3& local) {
+    const RealVector l = to_real(local);
+    return RealVector{origin[0] + l[0], origin[1] + l[1], origin[2] + l[2]};
+  };
   const bool same_direction = bearing.axis_W.dot(journal.axis_W) >= 0.0;
-  joint.bearing_base = {to_real(bearing_bases.p_WA), to_real(bearing_bases.p_WB)};
+  joint.bearing_base = {world(bearing_bases.p_WA), world(bearing_bases.p_WB)};
   joint.journal_rim = same_direction
-                          ? std::array<RealVector, 2>{to_real(journal_bases.p_WA), to_real(journal_bases.p_WB)}
-                          : std::array<RealVector, 2>{to_real(journal_bases.p_WB), to_real(journal_bases.p_WA)};
+                          ? std::array<RealVector, 2>{world(journal_bases.p_WA), world(journal_bases.p_WB)}
+                          : std::array<RealVector, 2>{world(journal_bases.p_WB), world(journal_bases.p_WA)};
   return joint;
 }
 

@@ -5,9 +5,9 @@
 ///
 /// The joint is taken as its input doubles describe it, exactly: base centres P +- (L/2) a/|a|
 /// (eqs. 3-4) and rim centres are evaluated in MPFR with kReferenceDigits10 digits, never rounded
-/// to double (unlike the library, which rounds a/|a| and the centres to double before its
-/// certified queries; joint_as_rounded_by_library() builds that joint instead, to tell the two
-/// apart). The formulation is independent of the library's kernel:
+/// to double (unlike the library, which rounds a/|a| and the centres to double, in a frame
+/// centred on the bearing, before its certified queries; joint_as_rounded_by_library() builds
+/// that joint instead, to tell the two apart). The formulation is independent of the library's kernel:
 ///
 /// * Radial (eqs. 16-21): with the rim x(theta) = c + Rj (u cos theta + v sin theta) and
 ///   w = c - P_i, the excess G(theta) = |(x(theta) - P_i) x e_i|^2 - Ri^2 (e_i = a_i/|a_i|) is a

@@ -225,7 +225,8 @@ Real from_test_reference(const test::reference::Real& x) { return Real(x.str(kRe
 
 TEST(JointReference, AgreesWithTheTestReferenceOnTheCrossingsOfRoundedRims) {
   // The independent reference of tests/geometry/reference takes rims with double centres: the
-  // joint as the library rounds it. Both must find the same crossings of each rim with the wall.
+  // joint as the library rounds it, in the library's frame centred on the bearing (the rounded
+  // centres are doubles there). Both must find the same crossings of each rim with the wall.
   const std::vector<DetectionInput> inputs = generate_family("realistic", SuiteSize::quick);
   int compared = 0;
   for (const DetectionInput& input : inputs) {
@@ -236,9 +237,11 @@ TEST(JointReference, AgreesWithTheTestReferenceOnTheCrossingsOfRoundedRims) {
     if (answer.aligned) continue;
     for (const ContactBase base : {ContactBase::a, ContactBase::b}) {
       const std::size_t k = base == ContactBase::a ? 0 : 1;
-      const geometry::Circle3 rim{to_double(joint.journal_rim[k]), input.journal.axis_W, input.dimensions.journal_radius};
-      ASSERT_EQ(to_real(rim.center), joint.journal_rim[k]);  // the rounded centre is a double
-      const geometry::Cylinder3 wall{input.bearing.p_WP, input.bearing.axis_W, input.dimensions.bearing_radius};
+      const RealVector origin = to_real(input.bearing.p_WP);
+      const RealVector local_centre = sub(joint.journal_rim[k], origin);
+      const geometry::Circle3 rim{to_double(local_centre), input.journal.axis_W, input.dimensions.journal_radius};
+      ASSERT_EQ(to_real(rim.center), local_centre);  // the rounded centre is a double in that frame
+      const geometry::Cylinder3 wall{geometry::Vector3::Zero(), input.bearing.axis_W, input.dimensions.bearing_radius};
       const test::reference::CylinderReference other = test::reference::reference_circle_cylinder(rim, wall);
       ASSERT_FALSE(other.ambiguous) << other.why;
       std::vector<RealVector> ours;
@@ -247,8 +250,9 @@ TEST(JointReference, AgreesWithTheTestReferenceOnTheCrossingsOfRoundedRims) {
       }
       ASSERT_EQ(ours.size(), other.roots.size());
       for (const test::reference::ReferenceRoot& root : other.roots) {
-        const RealVector point{from_test_reference(root.point[0]), from_test_reference(root.point[1]),
-                               from_test_reference(root.point[2])};
+        const RealVector point{origin[0] + from_test_reference(root.point[0]),
+                               origin[1] + from_test_reference(root.point[1]),
+                               origin[2] + from_test_reference(root.point[2])};
         Real nearest = -1;
         for (const RealVector& x : ours) {
           const Real d = norm(sub(x, point));
