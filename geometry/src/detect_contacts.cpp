@@ -199,10 +199,11 @@ bool prefilter_guard(const JointSetup& s) {
   using detail::magnitudes_in_range;
   const Vector3& c_a = s.journal_rims.p_WA;
   const Vector3& c_b = s.journal_rims.p_WB;
-  return magnitudes_in_range(s.bearing_axis_W) && magnitudes_in_range(s.journal_axis_W) &&
-         magnitudes_in_range(s.p_WPi) && magnitudes_in_range(c_a) && magnitudes_in_range(c_b) &&
-         magnitudes_in_range(c_a - s.p_WPi) && magnitudes_in_range(c_b - s.p_WPi) &&
-         magnitudes_in_range(s.bearing_bases.p_WA) && magnitudes_in_range(s.bearing_bases.p_WB) &&
+  // set_up works in the bearing-centred frame: P_i is exactly zero, so c - P_i is c itself.
+  return s.p_WPi.isZero() && magnitudes_in_range(s.bearing_axis_W) &&
+         magnitudes_in_range(s.journal_axis_W) && magnitudes_in_range(c_a) &&
+         magnitudes_in_range(c_b) && magnitudes_in_range(s.bearing_bases.p_WA) &&
+         magnitudes_in_range(s.bearing_bases.p_WB) &&
          magnitudes_in_range(c_a - s.bearing_bases.p_WA) &&
          magnitudes_in_range(c_b - s.bearing_bases.p_WB) &&
          magnitude_in_range(s.journal_radius) && magnitude_in_range(s.bearing_radius);
