@@ -68,7 +68,11 @@ double normal_contact_force(const NormalForceParameters& p, double depth, double
                             double impact_speed) noexcept {
   if (!(depth > 0.0)) return 0.0;
   const double elastic = p.stiffness * power_of_depth(depth, p.exponent);
-  const double damping = 1.0 + hysteresis_factor(p) * approach_speed / impact_speed;  // eq. (29)
+  // The floor once more here (callers apply it too): an impact speed of 0 would otherwise make
+  // 0 / 0 for Hertz's zero factor and a NaN force, which the clamp below turns into a silent 0.
+  const double reference_speed =
+      impact_speed > p.minimum_impact_speed ? impact_speed : p.minimum_impact_speed;
+  const double damping = 1.0 + hysteresis_factor(p) * approach_speed / reference_speed;  // eq. (29)
   return std::max(0.0, elastic * damping);
 }
 

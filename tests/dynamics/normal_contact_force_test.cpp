@@ -31,6 +31,19 @@ TEST(NormalContactForce, HertzIsKTimesDepthToTheExponentWhateverTheSpeed) {
   }
 }
 
+TEST(NormalContactForce, RaisesAZeroOrMissingImpactSpeedToTheFloorInsteadOfReturningNothing) {
+  // An impact speed of 0 used to make 0 / 0 in the damping term: a NaN force, clamped to 0.
+  NormalForceParameters hertz;
+  hertz.model = NormalForceModel::hertz;
+  hertz.stiffness = 4.0;
+  EXPECT_EQ(normal_contact_force(hertz, 0.25, 0.0, 0.0), 0.5);  // 4 * 0.25^1.5, exact
+  NormalForceParameters ln;  // Lankarani-Nikravesh: the floor stands in for the impact speed
+  const double at_floor = normal_contact_force(ln, 1e-6, 0.5, ln.minimum_impact_speed);
+  EXPECT_EQ(normal_contact_force(ln, 1e-6, 0.5, 0.0), at_floor);
+  EXPECT_EQ(normal_contact_force(ln, 1e-6, 0.5, std::nan("")), at_floor);
+  EXPECT_GT(at_floor, normal_contact_force(ln, 1e-6, 0.0, 1.0));
+}
+
 TEST(NormalContactForce, UsesTheGivenExponent) {
   NormalForceParameters linear = law(NormalForceModel::hertz);
   linear.exponent = 1.0;

@@ -8,5 +8,7 @@ cmake --install "$build_dir" --prefix "$scratch/prefix" > "$scratch.install.log"
 cmake -S "$consumer" -B "$scratch/consumer-build" -DCMAKE_BUILD_TYPE=Release \
       -DCMAKE_PREFIX_PATH="$scratch/prefix"
 cmake --build "$scratch/consumer-build" -j2
-# The installed shared library is found through the consumer's build RPATH.
+# The installed shared libraries are found through the consumers' build RPATH (and the dynamics
+# library finds the geometry library beside it through its own RUNPATH).
 "$scratch/consumer-build/consumer"
+"$scratch/consumer-build/dynamics_consumer"

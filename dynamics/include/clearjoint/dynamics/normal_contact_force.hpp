@@ -51,8 +51,9 @@ double hysteresis_factor(const NormalForceParameters& parameters) noexcept;
 /// F_N = max(0, K delta^n (1 + hysteresis_factor delta_dot / delta_dot(-))), eq. (29) and its
 /// alternatives. The clamp at 0 removes the pull that a strongly damped law gives at the end of
 /// restitution (bodies in contact do not stick); it only ever removes force while the bodies
-/// separate, so it never adds energy. Preconditions: depth >= 0 (0 gives 0), impact_speed > 0
-/// (callers apply minimum_impact_speed). No allocation; noexcept.
+/// separate, so it never adds energy. depth <= 0 gives 0; an impact_speed below
+/// minimum_impact_speed (or 0, or NaN) is raised to it, as the clearance joint does before the
+/// call. No allocation; noexcept.
 double normal_contact_force(const NormalForceParameters& parameters, double depth,
                             double approach_speed, double impact_speed) noexcept;
 
