@@ -9,24 +9,48 @@ BoundedVector3 exact(const Vector3& v) { return {v.x(), v.y(), v.z()}; }
 
 }  // namespace
 
-/// Plain double with a priori bounds (a_priori_bounds.hpp). Chains of roundings: c - p 1, s 4,
-/// w 2, w2 5, nc2 and np2 3, discriminant 10 (s^2 nc2 9, r^2 w2 7, then the difference).
-PlaneQuantities plane_quantities_a_priori(const Circle3& circle, const Plane3& plane) {
+namespace {
+
+/// The a priori computation in plain double, each value beside its absolute-value twin
+/// (a_priori_bounds.hpp). Chains of roundings: c - p 1, s 4, w 2, w2 5, nc2 and np2 3,
+/// discriminant 10 (s^2 nc2 9, r^2 w2 7, then the difference).
+struct APrioriTerms {
+  double s, s_abs;
+  Vector3 w, w_abs;
+  double w2, w2_abs, nc2;
+  double discriminant, discriminant_abs;
+};
+APrioriTerms a_priori_terms(const Circle3& circle, const Plane3& plane) {
   const Vector3 d = circle.center - plane.point;
   const Vector3& np = plane.normal;
   const Vector3& nc = circle.normal;
   const Vector3 np_abs = np.cwiseAbs(), nc_abs = nc.cwiseAbs();
-  const double s = np.dot(d), s_abs = np_abs.dot(d.cwiseAbs());
-  const Vector3 w = np.cross(nc), w_abs = abs_cross(np_abs, nc_abs);
-  const double w2 = w.squaredNorm(), w2_abs = w_abs.squaredNorm();
-  const double nc2 = nc.squaredNorm(), np2 = np.squaredNorm();
+  APrioriTerms t;
+  t.s = np.dot(d);
+  t.s_abs = np_abs.dot(d.cwiseAbs());
+  t.w = np.cross(nc);
+  t.w_abs = abs_cross(np_abs, nc_abs);
+  t.w2 = t.w.squaredNorm();
+  t.w2_abs = t.w_abs.squaredNorm();
+  t.nc2 = nc.squaredNorm();
   const double r2 = circle.radius * circle.radius;
-  return {a_priori(s, s_abs),
-          {a_priori(w.x(), w_abs.x()), a_priori(w.y(), w_abs.y()), a_priori(w.z(), w_abs.z())},
-          a_priori(w2, w2_abs),
-          a_priori(nc2, nc2),
+  t.discriminant = t.s * t.s * t.nc2 - r2 * t.w2;
+  t.discriminant_abs = t.s_abs * t.s_abs * t.nc2 + r2 * t.w2_abs;
+  return t;
+}
+
+}  // namespace
+
+PlaneQuantities plane_quantities_a_priori(const Circle3& circle, const Plane3& plane) {
+  const APrioriTerms t = a_priori_terms(circle, plane);
+  const double np2 = plane.normal.squaredNorm();
+  return {a_priori(t.s, t.s_abs),
+          {a_priori(t.w.x(), t.w_abs.x()), a_priori(t.w.y(), t.w_abs.y()),
+           a_priori(t.w.z(), t.w_abs.z())},
+          a_priori(t.w2, t.w2_abs),
+          a_priori(t.nc2, t.nc2),
           a_priori(np2, np2),
-          a_priori(s * s * nc2 - r2 * w2, s_abs * s_abs * nc2 + r2 * w2_abs)};
+          a_priori(t.discriminant, t.discriminant_abs)};
 }
 
 /// The running error bound of error_bounded.hpp, for inputs outside the a priori guard (it also
@@ -70,17 +94,10 @@ RimSide rim_side_of_plane(const Circle3& circle, const Plane3& plane) {
 
 RimSide rim_side_of_plane(const Circle3& circle, const Plane3& plane, bool a_priori_bounds_apply) {
   Bounded s, discriminant;
-  if (a_priori_bounds_apply) {
-    // Only what the side needs, with the chains of plane_quantities_a_priori.
-    const Vector3 d = circle.center - plane.point;
-    const Vector3& np = plane.normal;
-    const Vector3& nc = circle.normal;
-    const Vector3 np_abs = np.cwiseAbs(), nc_abs = nc.cwiseAbs();
-    const double s_value = np.dot(d), s_abs = np_abs.dot(d.cwiseAbs());
-    const double w2 = np.cross(nc).squaredNorm(), w2_abs = abs_cross(np_abs, nc_abs).squaredNorm();
-    const double nc2 = nc.squaredNorm(), r2 = circle.radius * circle.radius;
-    s = a_priori(s_value, s_abs);
-    discriminant = a_priori(s_value * s_value * nc2 - r2 * w2, s_abs * s_abs * nc2 + r2 * w2_abs);
+  if (a_priori_bounds_apply) {  // only the two values the side needs, not all the quantities
+    const APrioriTerms t = a_priori_terms(circle, plane);
+    s = a_priori(t.s, t.s_abs);
+    discriminant = a_priori(t.discriminant, t.discriminant_abs);
   } else {
     const PlaneQuantities q = plane_quantities_running_error(circle, plane);
     s = q.s;
