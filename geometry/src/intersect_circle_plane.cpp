@@ -154,7 +154,7 @@ CirclePlaneIntersection intersect_scaled(const Circle3& circle, const Plane3& pl
   const Bounded &w2 = q.w2, &np2 = q.np2;
   const Bounded r = circle.radius;
 
-  // Filter: every sign the topology needs, proved from the running error bound.
+  // Filter: every sign the topology needs, proved from the error bounds (a priori or running).
   const bool parallel_proved_false = w.x.sign() != 0 || w.y.sign() != 0 || w.z.sign() != 0;
   // Exactly parallel normals (the paper's aligned joints keep them so): every component of
   // n_p x n_c is a difference of two products, zero exactly when the products are equal.
