@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "joint_reference.hpp"
+#include "uniform_source.hpp"
 
 namespace clearjoint::bench {
 namespace {
@@ -21,26 +22,15 @@ using geometry::Vector3;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kPi = std::numbers::pi;
 
-/// Uniform doubles from mt19937_64 (whose output the standard fixes) with an explicit 53-bit
-/// conversion, so that every standard library gives the same inputs.
-class UniformSource {
- public:
-  explicit UniformSource(std::uint64_t seed) : engine_(seed) {}
-  double operator()(double low, double high) {
-    const double unit = static_cast<double>(engine_() >> 11) * 0x1.0p-53;  // [0, 1)
-    return low + (high - low) * unit;
-  }
-  /// A direction uniform on the sphere (Archimedes: z uniform in [-1, 1]), rounded to double.
-  Vector3 direction() {
-    const double z = (*this)(-1.0, 1.0);
-    const double azimuth = (*this)(0.0, 2.0 * kPi);
-    const double rho = std::sqrt(1.0 - z * z);
-    return {rho * std::cos(azimuth), rho * std::sin(azimuth), z};
-  }
+using clearjoint::bench::UniformSource;
 
- private:
-  std::mt19937_64 engine_;
-};
+/// A direction uniform on the sphere (Archimedes: z uniform in [-1, 1]), rounded to double.
+Vector3 random_direction(UniformSource& uniform) {
+  const double z = uniform(-1.0, 1.0);
+  const double azimuth = uniform(0.0, 2.0 * kPi);
+  const double rho = std::sqrt(1.0 - z * z);
+  return {rho * std::cos(azimuth), rho * std::sin(azimuth), z};
+}
 
 /// Two unit vectors completing the unit `axis` to a right-handed orthonormal frame.
 std::pair<Vector3, Vector3> perpendiculars(const Vector3& axis) {
@@ -125,7 +115,7 @@ Room room_at_tilt(const JointDimensions& d, double tilt) {
 std::pair<PartPose, PartPose> realistic_pose(UniformSource& uniform, const JointDimensions& d,
                                              double reach) {
   const PartPose bearing{Vector3(uniform(-reach, reach), uniform(-reach, reach), uniform(-reach, reach)),
-                         uniform.direction()};
+                         random_direction(uniform)};
   const double tilt = uniform(0.0, largest_tilt(d));
   const Room room = room_at_tilt(d, tilt);
   const double lean = uniform(0.0, 2.0 * kPi);
@@ -216,7 +206,7 @@ Real solve_radial_offset(const JointDimensions& d, const RealPose& bearing, cons
 DetectionInput near_tangent_input(UniformSource& uniform, TangentKind kind, int k, int sign,
                                   std::size_t serial) {
   const JointDimensions d = table2_dimensions();
-  const Vector3 bearing_axis = uniform.direction();
+  const Vector3 bearing_axis = random_direction(uniform);
   const PartPose bearing{Vector3::Zero(), bearing_axis};
   const RealPose real_bearing = to_real(bearing);
   const RealVector e = normalized(real_bearing.axis_W);
@@ -326,7 +316,7 @@ std::vector<DetectionInput> near_parallel(std::uint64_t seed, SuiteSize size) {
       // Half the bearings along z, where a tilt of 1e-16 is representable exactly, half along a
       // random axis, where the rounded journal axis carries the tilt only to ~1e-16 rad.
       const bool canonical = n % 2 == 0;
-      const PartPose bearing{Vector3::Zero(), canonical ? Vector3::UnitZ() : uniform.direction()};
+      const PartPose bearing{Vector3::Zero(), canonical ? Vector3::UnitZ() : random_direction(uniform)};
       const Vector3 e = bearing.axis_W.normalized();
       const auto [p, q] = perpendiculars(e);
       const double lean = uniform(0.0, 2.0 * kPi);
@@ -377,7 +367,7 @@ std::vector<DetectionInput> extreme(std::uint64_t seed, SuiteSize size) {
         return std::string(text);
       }() + ")";
       for (std::size_t n = 0; n < scaled_count(size, 8, 2); ++n) {
-        const PartPose bearing{Vector3::Zero(), n % 2 == 0 ? Vector3::UnitZ() : uniform.direction()};
+        const PartPose bearing{Vector3::Zero(), n % 2 == 0 ? Vector3::UnitZ() : random_direction(uniform)};
         const PartPose journal = journal_in_bearing_frame(bearing, t_max * (1.0 + excess),
                                                           uniform(0.0, 2.0 * kPi), 0.0, 0.0, 0.0);
         out.push_back(make_input("extreme", group, kNaN, n, table2, bearing, journal));
@@ -394,7 +384,7 @@ std::vector<DetectionInput> extreme(std::uint64_t seed, SuiteSize size) {
   {
     std::size_t n = 0;
     for (const bool canonical : {true, false}) {
-      const PartPose bearing{Vector3::Zero(), canonical ? Vector3::UnitZ() : uniform.direction()};
+      const PartPose bearing{Vector3::Zero(), canonical ? Vector3::UnitZ() : random_direction(uniform)};
       for (const double factor : {1.0, -1.0, 0.5}) {
         for (const double shift : {0.0, 0.5, -0.5, 1.0, -1.0, 1.5, -1.5}) {
           const PartPose journal{shift * table2.axial_clearance() * bearing.axis_W,

@@ -13,6 +13,8 @@
 
 #include <benchmark/benchmark.h>
 
+#include "uniform_source.hpp"
+
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -47,18 +49,7 @@ constexpr std::size_t kMaxDrawsPerInput = 50;
 const geo::DetectionOptions kCertified{};
 const geo::DetectionOptions kUncertified{.intersection = {.certify = false}};
 
-/// Uniform doubles from mt19937_64 with an explicit 53-bit conversion (same inputs everywhere).
-class UniformSource {
- public:
-  explicit UniformSource(std::uint64_t seed) : engine_(seed) {}
-  double operator()(double low, double high) {
-    const double unit = static_cast<double>(engine_() >> 11) * 0x1.0p-53;
-    return low + (high - low) * unit;
-  }
-
- private:
-  std::mt19937_64 engine_;
-};
+using clearjoint::bench::UniformSource;
 
 /// Journal centre off the bearing axis by up to 1.5 cr and along it by up to 1.5 ca either way;
 /// axis tilted by up to `max_tilt`, azimuths uniform.

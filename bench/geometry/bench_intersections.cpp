@@ -14,6 +14,8 @@
 
 #include <benchmark/benchmark.h>
 
+#include "uniform_source.hpp"
+
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -70,19 +72,7 @@ struct RimPlaneQuery {
   geo::Plane3 base;
 };
 
-/// Uniform doubles from mt19937_64 (whose output sequence the standard fixes) with an explicit
-/// 53-bit conversion, so the inputs are the same with any standard library.
-class UniformSource {
- public:
-  explicit UniformSource(std::uint64_t seed) : engine_(seed) {}
-  double operator()(double low, double high) {
-    const double unit = static_cast<double>(engine_() >> 11) * 0x1.0p-53;  // [0, 1)
-    return low + (high - low) * unit;
-  }
-
- private:
-  std::mt19937_64 engine_;
-};
+using clearjoint::bench::UniformSource;
 
 /// A direction tilted from +z by an angle in [0, max_tilt], azimuth uniform.
 Vector3 tilted_axis(UniformSource& uniform, double max_tilt) {
