@@ -14,6 +14,7 @@
 
 #include "input_families.hpp"
 #include "multiprecision_reference.hpp"
+#include "tilted_journal_scenarios.hpp"
 
 namespace clearjoint::bench {
 namespace {
@@ -24,27 +25,19 @@ using geometry::ContactType;
 using geometry::JointDimensions;
 using geometry::PartPose;
 using geometry::Vector3;
-
-// Table 2 of the paper in millimetres (cr = ca = 0.1), and the two variants of
-// test_detect_contacts.cpp that make scenarios (c) and (d) reachable.
-const JointDimensions kTable2{10.0, 20.0, 9.9, 19.8};
-const JointDimensions kWideRadialClearance{10.0, 20.0, 9.0, 19.8};
-const JointDimensions kLongAxialClearance{10.0, 20.0, 9.9, 19.0};
+using geometry::testing::bearing_on_z;
+using geometry::testing::kMisalignedCases;
+using geometry::testing::kTable2;
+using geometry::testing::misaligned_case;
+using geometry::testing::ScenarioCase;
+using geometry::testing::TiltedJournal;
 
 // The reference refines roots to 1e-90 (in tan of the half angle) at 1e-120 working precision;
 // depths and points from the arc middle then agree with a closed form to far better than this
 // (relative to the joint's size, 10 mm).
 const Real kAgreement("1e-80");
 
-PartPose bearing_on_z() { return {Vector3::Zero(), Vector3::UnitZ()}; }
-
-/// A journal centred at (0, y0, z0) with axis (0, sin t, cos t) rounded to double.
-struct TiltedJournal {
-  double y0, z0, tilt;
-  PartPose pose() const { return {Vector3(0.0, y0, z0), Vector3(0.0, std::sin(tilt), std::cos(tilt))}; }
-};
-
-/// Closed-form depths (test_detect_contacts.cpp derives them): with the unit axis
+/// Closed-form depths (tilted_journal_scenarios.hpp derives them): with the unit axis
 /// (0, s, c) = a/|a| taken exactly and rim centres c_X = P +- (Lj/2)(0, s, c), a rim with
 /// |c_y| c >= Rj s^2 reaches |c_y| + Rj c from the axis (radial depth |c_y| + Rj c - Ri), and
 /// heights c_z -+ Rj s (axial depths c_zA + Rj s - Li/2 at A, Rj s - c_zB - Li/2 at B).
@@ -73,25 +66,6 @@ const ReferenceContact* find(const ReferenceAnswer& answer, ContactType type, Co
   return nullptr;
 }
 
-struct ScenarioCase {
-  const char* name;
-  JointDimensions dimensions;
-  TiltedJournal journal;
-  ContactScenario scenario;
-};
-
-const ScenarioCase kMisalignedCases[] = {
-    {"none", kTable2, {0.0, 0.0, 0.005}, ContactScenario::none},
-    {"a", kTable2, {0.08, 0.0, 0.005}, ContactScenario::single_radial},
-    {"b", kTable2, {0.0, 0.08, 0.005}, ContactScenario::single_axial},
-    {"c", kLongAxialClearance, {0.0, 0.0, 0.015}, ContactScenario::radial_at_both_bases},
-    {"d", kWideRadialClearance, {0.0, 0.0, 0.02}, ContactScenario::axial_at_both_bases},
-    {"e", kTable2, {0.08, 0.08, 0.005}, ContactScenario::radial_and_axial_same_base},
-    {"f", kTable2, {0.08, -0.08, 0.005}, ContactScenario::radial_and_axial_opposite_bases},
-    {"g", kTable2, {0.0, 0.04, 0.013}, ContactScenario::two_radial_one_axial},
-    {"h", kTable2, {0.04, 0.0, 0.013}, ContactScenario::one_radial_two_axial},
-    {"i", kTable2, {0.0, 0.0, 0.013}, ContactScenario::all_four},
-};
 
 TEST(JointReference, EachMisalignedScenarioHasTheClosedFormDepths) {
   for (const ScenarioCase& c : kMisalignedCases) {
@@ -121,7 +95,7 @@ TEST(JointReference, EachMisalignedScenarioHasTheClosedFormDepths) {
 
 TEST(JointReference, ContactPointsSatisfyTheDepthAndNormalRelation) {
   // eqs. (22)-(23): p_WCj - p_WCi = depth * normal, and the bearing point lies on its surface.
-  const ScenarioCase& c = kMisalignedCases[9];  // (i): all four contacts
+  const ScenarioCase& c = misaligned_case("i");  // all four contacts
   const ReferenceAnswer answer = reference_detect(joint_as_given(c.dimensions, bearing_on_z(), c.journal.pose()));
   ASSERT_EQ(answer.contacts.size(), 4u);
   for (const ReferenceContact& contact : answer.contacts) {

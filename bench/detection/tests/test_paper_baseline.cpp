@@ -6,10 +6,12 @@
 #include "paper_baseline.hpp"
 
 #include <cmath>
+#include <vector>
 
 #include <gtest/gtest.h>
 
 #include "joint_reference.hpp"
+#include "tilted_journal_scenarios.hpp"
 
 namespace clearjoint::bench {
 namespace {
@@ -23,19 +25,18 @@ using geometry::JointDimensions;
 using geometry::PartPose;
 using geometry::Vector3;
 
-// Table 2 in millimetres and the variants of test_detect_contacts.cpp for (c) and (d).
-const JointDimensions kTable2{10.0, 20.0, 9.9, 19.8};
-const JointDimensions kWideRadialClearance{10.0, 20.0, 9.0, 19.8};
-const JointDimensions kLongAxialClearance{10.0, 20.0, 9.9, 19.0};
+// Table 2 in millimetres and the tilted journals of tilted_journal_scenarios.hpp, shared with the
+// library's detection tests.
+using geometry::testing::bearing_on_z;
+using geometry::testing::kMisalignedCases;
+using geometry::testing::kTable2;
+using geometry::testing::TiltedJournal;
 
 // Newton stops within kNewtonStepTolerance Rj ~ 1e-11 mm of a crossing; the contact point
 // (a chord midpoint pushed to the rim) and the depth then err by about that much.
 constexpr double kBaselineTolerance = 1e-9;  // mm
 
-PartPose bearing_on_z() { return {Vector3::Zero(), Vector3::UnitZ()}; }
-PartPose tilted(double y0, double z0, double tilt) {
-  return {Vector3(0.0, y0, z0), Vector3(0.0, std::sin(tilt), std::cos(tilt))};
-}
+PartPose tilted(double y0, double z0, double tilt) { return TiltedJournal{y0, z0, tilt}.pose(); }
 
 struct Case {
   const char* name;
@@ -44,24 +45,20 @@ struct Case {
   ContactScenario scenario;
 };
 
-const Case kCases[] = {
-    {"none", kTable2, tilted(0.0, 0.0, 0.005), ContactScenario::none},
-    {"a", kTable2, tilted(0.08, 0.0, 0.005), ContactScenario::single_radial},
-    {"b", kTable2, tilted(0.0, 0.08, 0.005), ContactScenario::single_axial},
-    {"c", kLongAxialClearance, tilted(0.0, 0.0, 0.015), ContactScenario::radial_at_both_bases},
-    {"d", kWideRadialClearance, tilted(0.0, 0.0, 0.02), ContactScenario::axial_at_both_bases},
-    {"e", kTable2, tilted(0.08, 0.08, 0.005), ContactScenario::radial_and_axial_same_base},
-    {"f", kTable2, tilted(0.08, -0.08, 0.005), ContactScenario::radial_and_axial_opposite_bases},
-    {"g", kTable2, tilted(0.0, 0.04, 0.013), ContactScenario::two_radial_one_axial},
-    {"h", kTable2, tilted(0.04, 0.0, 0.013), ContactScenario::one_radial_two_axial},
-    {"i", kTable2, tilted(0.0, 0.0, 0.013), ContactScenario::all_four},
-    {"j", kTable2, {Vector3(0.0, 0.15, 0.02), Vector3::UnitZ()}, ContactScenario::line},
-    {"k", kTable2, {Vector3(0.03, 0.04, 0.13), Vector3::UnitZ()}, ContactScenario::face},
-    {"l", kTable2, {Vector3(0.0, 0.15, -0.13), -Vector3::UnitZ()}, ContactScenario::line_and_face},
-};
+/// The misaligned scenarios (a)-(i) and none, then the aligned (j)-(l).
+std::vector<Case> all_cases() {
+  std::vector<Case> cases;
+  for (const geometry::testing::ScenarioCase& c : kMisalignedCases) {
+    cases.push_back({c.name, c.dimensions, c.journal.pose(), c.scenario});
+  }
+  cases.push_back({"j", kTable2, {Vector3(0.0, 0.15, 0.02), Vector3::UnitZ()}, ContactScenario::line});
+  cases.push_back({"k", kTable2, {Vector3(0.03, 0.04, 0.13), Vector3::UnitZ()}, ContactScenario::face});
+  cases.push_back({"l", kTable2, {Vector3(0.0, 0.15, -0.13), -Vector3::UnitZ()}, ContactScenario::line_and_face});
+  return cases;
+}
 
 TEST(PaperBaseline, FindsEveryScenarioWhereThePapersAssumptionsHold) {
-  for (const Case& c : kCases) {
+  for (const Case& c : all_cases()) {
     SCOPED_TRACE(c.name);
     const JointContacts answer = detect_contacts_paper_baseline(c.dimensions, bearing_on_z(), c.journal);
     const ReferenceAnswer reference = reference_detect(joint_as_given(c.dimensions, bearing_on_z(), c.journal));

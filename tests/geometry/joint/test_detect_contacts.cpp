@@ -14,55 +14,26 @@
 #include <gtest/gtest.h>
 
 #include "../geometry_test_support.hpp"
+#include "tilted_journal_scenarios.hpp"
 
 namespace clearjoint::geometry {
 namespace {
 
+using testing::bearing_on_z;
+using testing::kLongAxialClearance;
+using testing::kMisalignedCases;
+using testing::kTable2;
+using testing::kWideRadialClearance;
 using testing::RigidMotion;
+using testing::ScenarioCase;
+using testing::TiltedJournal;
 using testing::random_motion;
-
-// Table 2 of the paper, in millimetres: cr = ca = 0.1.
-const JointDimensions kTable2{10.0, 20.0, 9.9, 19.8};
-// A larger radial clearance (cr = 1, ca = 0.1): both rims can reach their bases without
-// touching the wall (scenario (d)), which Table 2 does not allow (there the radial and axial
-// reaches grow alike with the tilt, see TiltedJournal).
-const JointDimensions kWideRadialClearance{10.0, 20.0, 9.0, 19.8};
-// A longer axial clearance (cr = 0.1, ca = 0.5): both rims reach the wall without reaching the
-// bases (scenario (c)).
-const JointDimensions kLongAxialClearance{10.0, 20.0, 9.9, 19.0};
 
 // Tolerances, in units of the joint (mm here). Inputs are O(10); each double operation errs by
 // ~1e-15 relative. The contact point sits at the middle of certified crossing angles (errors
 // ~1e-14 rad, times Rj = 10); depths are differences of O(10) numbers. 1e-11 leaves three orders
 // of margin above that and is still ten orders below the clearance 0.1.
 constexpr double kLengthTolerance = 1e-11;
-
-/// The bearing on the z axis, centred at the origin: base A at z = Li/2, base B at z = -Li/2.
-PartPose bearing_pose() { return {Vector3::Zero(), Vector3::UnitZ()}; }
-
-/// A journal centred at (0, y0, z0) with axis (0, sin tilt, cos tilt).
-///
-/// Closed forms. A rim with centre c = (0, c_y, c_z) has points
-///   x(s) = c + Rj (cos(theta) e_x + s e_perp),  s = sin(theta),  e_perp = (0, cos tilt, -sin tilt).
-/// Squared distance to the z axis: f(s) = Rj^2 + c_y^2 + 2 c_y Rj cos(tilt) s - Rj^2 sin^2(tilt) s^2,
-/// concave in s, largest at s = sign(c_y) when |c_y| cos(tilt) >= Rj sin^2(tilt) (always so
-/// below; else the rim crosses the wall four times), with value (|c_y| + Rj cos tilt)^2. So the
-/// radial depth is |c_y| + Rj cos(tilt) - Ri at the point c + sign(c_y) Rj e_perp. The mirror
-/// symmetry x -> -x makes that point the middle of the penetration arc (eq. 18).
-/// Height of a rim point: c_z - Rj s sin(tilt): the axial depth at A is c_z + Rj sin(tilt) - Li/2
-/// at c - Rj e_perp, at B it is Rj sin(tilt) - c_z - Li/2 at c + Rj e_perp.
-/// With rim A centre c_A = P + (Lj/2) a and rim B c_B = P - (Lj/2) a, and |y0| below
-/// (Lj/2) sin(tilt): radial depths +-y0 + S, axial depths +-z0 + T, with
-/// S = (Lj/2) sin(tilt) + Rj cos(tilt) - Ri and T = (Lj/2) cos(tilt) + Rj sin(tilt) - Li/2.
-struct TiltedJournal {
-  double y0 = 0.0;
-  double z0 = 0.0;
-  double tilt = 0.0;
-
-  PartPose pose() const {
-    return {Vector3(0.0, y0, z0), Vector3(0.0, std::sin(tilt), std::cos(tilt))};
-  }
-};
 
 /// One expected contact, from the closed forms.
 struct ExpectedContact {
@@ -150,35 +121,10 @@ void expect_analytic(const JointContacts& result, const JointDimensions& d, cons
   EXPECT_NE(result.certificate.level, Certainty::uncertain);
 }
 
-struct ScenarioCase {
-  const char* name;
-  JointDimensions dimensions;
-  TiltedJournal journal;
-  ContactScenario scenario;
-};
-
-// Table 2: S = T = 9.9 (sin + cos)(tilt) - 10, i.e. -0.0506 at tilt 0.005 and +0.0279 at 0.013.
-const ScenarioCase kMisalignedCases[] = {
-    {"none", kTable2, {0.0, 0.0, 0.005}, ContactScenario::none},
-    {"a", kTable2, {0.08, 0.0, 0.005}, ContactScenario::single_radial},
-    {"a_at_b", kTable2, {-0.08, 0.0, 0.005}, ContactScenario::single_radial},
-    {"b", kTable2, {0.0, 0.08, 0.005}, ContactScenario::single_axial},
-    {"b_at_b", kTable2, {0.0, -0.08, 0.005}, ContactScenario::single_axial},
-    // kLongAxialClearance at tilt 0.015: S = +0.047, T = -0.353.
-    {"c", kLongAxialClearance, {0.0, 0.0, 0.015}, ContactScenario::radial_at_both_bases},
-    // kWideRadialClearance at tilt 0.02: S = -0.80, T = +0.078.
-    {"d", kWideRadialClearance, {0.0, 0.0, 0.02}, ContactScenario::axial_at_both_bases},
-    {"e", kTable2, {0.08, 0.08, 0.005}, ContactScenario::radial_and_axial_same_base},
-    {"f", kTable2, {0.08, -0.08, 0.005}, ContactScenario::radial_and_axial_opposite_bases},
-    {"g", kTable2, {0.0, 0.04, 0.013}, ContactScenario::two_radial_one_axial},
-    {"h", kTable2, {0.04, 0.0, 0.013}, ContactScenario::one_radial_two_axial},
-    {"i", kTable2, {0.0, 0.0, 0.013}, ContactScenario::all_four},
-};
-
 TEST(DetectContacts, EachMisalignedScenarioMatchesTheClosedForms) {
   for (const ScenarioCase& c : kMisalignedCases) {
     SCOPED_TRACE(c.name);
-    const JointContacts result = detect_contacts(c.dimensions, bearing_pose(), c.journal.pose());
+    const JointContacts result = detect_contacts(c.dimensions, bearing_on_z(), c.journal.pose());
     EXPECT_EQ(result.scenario, c.scenario) << to_string(result.scenario);
     expect_analytic(result, c.dimensions, c.journal);
   }
@@ -186,7 +132,7 @@ TEST(DetectContacts, EachMisalignedScenarioMatchesTheClosedForms) {
 
 TEST(DetectContacts, ContactsAreListedRadialFirstThenByBase) {
   const JointContacts result =
-      detect_contacts(kTable2, bearing_pose(), TiltedJournal{0.0, 0.0, 0.013}.pose());
+      detect_contacts(kTable2, bearing_on_z(), TiltedJournal{0.0, 0.0, 0.013}.pose());
   ASSERT_EQ(result.contact_count, 4);
   EXPECT_EQ(result.contacts[0].type, ContactType::radial);
   EXPECT_EQ(result.contacts[0].base, ContactBase::a);
@@ -199,7 +145,7 @@ TEST(DetectContacts, ContactsAreListedRadialFirstThenByBase) {
 // ---- aligned axes: eqs. (6)-(10) ------------------------------------------------------------
 
 TEST(DetectContacts, CentredAlignedJournalHasNoContact) {
-  const JointContacts result = detect_contacts(kTable2, bearing_pose(), PartPose{});
+  const JointContacts result = detect_contacts(kTable2, bearing_on_z(), PartPose{});
   EXPECT_TRUE(result.aligned);
   EXPECT_EQ(result.scenario, ContactScenario::none);
   EXPECT_EQ(result.contact_count, 0);
@@ -209,7 +155,7 @@ TEST(DetectContacts, CentredAlignedJournalHasNoContact) {
 TEST(DetectContacts, OffsetAlignedJournalTouchesAlongALine) {
   // (j): eccentricity e = 0.15 > cr = 0.1 along +y; depth e - cr (eqs. 6-8, 23).
   const PartPose journal{Vector3(0.0, 0.15, 0.02), Vector3::UnitZ()};
-  const JointContacts result = detect_contacts(kTable2, bearing_pose(), journal);
+  const JointContacts result = detect_contacts(kTable2, bearing_on_z(), journal);
   EXPECT_TRUE(result.aligned);
   EXPECT_EQ(result.scenario, ContactScenario::line);
   ASSERT_EQ(result.contact_count, 1);
@@ -227,7 +173,7 @@ TEST(DetectContacts, OffsetAlignedJournalTouchesAlongALine) {
 TEST(DetectContacts, AlignedJournalPushedAlongItsAxisTouchesAFace) {
   // (k): the journal's base A at z = 0.13 + 9.9 is 0.03 beyond base A at z = 10 (eqs. 9-10).
   const PartPose journal{Vector3(0.03, 0.04, 0.13), Vector3::UnitZ()};
-  const JointContacts result = detect_contacts(kTable2, bearing_pose(), journal);
+  const JointContacts result = detect_contacts(kTable2, bearing_on_z(), journal);
   EXPECT_EQ(result.scenario, ContactScenario::face);
   ASSERT_EQ(result.contact_count, 1);
   const Contact& c = result.contacts[0];
@@ -243,7 +189,7 @@ TEST(DetectContacts, AlignedJournalCanTouchLineAndFaceTogether) {
   // (l): line along +y (depth 0.05) and the face at B (depth 0.03), axis pointing down (-z):
   // labels follow the bearing, so the face contact is still reported at B.
   const PartPose journal{Vector3(0.0, 0.15, -0.13), -Vector3::UnitZ()};
-  const JointContacts result = detect_contacts(kTable2, bearing_pose(), journal);
+  const JointContacts result = detect_contacts(kTable2, bearing_on_z(), journal);
   EXPECT_EQ(result.scenario, ContactScenario::line_and_face);
   const Contact* line = find_contact(result, ContactType::radial, ContactBase::mid);
   const Contact* face = find_contact(result, ContactType::axial, ContactBase::b);
@@ -278,12 +224,12 @@ TEST(DetectContacts, AngleToleranceTreatsNearlyParallelAxesAsAlignedButUncertain
   // Tilt 1e-6 rad with eccentricity 0.15: misaligned, two radial contacts of nearly equal depth
   // (scenario (c)); with a 1e-5 rad tolerance, a line contact of depth 0.05 (eq. 6-8).
   const TiltedJournal nearly{0.15, 0.0, 1e-6};
-  const JointContacts exact = detect_contacts(kTable2, bearing_pose(), nearly.pose());
+  const JointContacts exact = detect_contacts(kTable2, bearing_on_z(), nearly.pose());
   EXPECT_FALSE(exact.aligned);
   EXPECT_EQ(exact.scenario, ContactScenario::radial_at_both_bases);
   DetectionOptions options;
   options.parallel_angle_tolerance = 1e-5;
-  const JointContacts relaxed = detect_contacts(kTable2, bearing_pose(), nearly.pose(), options);
+  const JointContacts relaxed = detect_contacts(kTable2, bearing_on_z(), nearly.pose(), options);
   EXPECT_TRUE(relaxed.aligned);
   EXPECT_EQ(relaxed.scenario, ContactScenario::line);
   ASSERT_EQ(relaxed.contact_count, 1);
@@ -292,7 +238,7 @@ TEST(DetectContacts, AngleToleranceTreatsNearlyParallelAxesAsAlignedButUncertain
   EXPECT_EQ(relaxed.certificate.level, Certainty::uncertain);
   // A tolerance below the tilt changes nothing.
   options.parallel_angle_tolerance = 1e-7;
-  EXPECT_FALSE(detect_contacts(kTable2, bearing_pose(), nearly.pose(), options).aligned);
+  EXPECT_FALSE(detect_contacts(kTable2, bearing_on_z(), nearly.pose(), options).aligned);
 }
 
 // ---- beyond the model ---------------------------------------------------------------------------
@@ -300,13 +246,13 @@ TEST(DetectContacts, AngleToleranceTreatsNearlyParallelAxesAsAlignedButUncertain
 TEST(DetectContacts, PenetrationDeeperThanTheClearanceIsBeyondTheModel) {
   // Aligned, e = 0.25: line depth 0.15 > cr = 0.1. The contact is still reported.
   const PartPose journal{Vector3(0.0, 0.25, 0.0), Vector3::UnitZ()};
-  const JointContacts result = detect_contacts(kTable2, bearing_pose(), journal);
+  const JointContacts result = detect_contacts(kTable2, bearing_on_z(), journal);
   EXPECT_EQ(result.scenario, ContactScenario::beyond_model);
   ASSERT_EQ(result.contact_count, 1);
   EXPECT_NEAR(result.contacts[0].depth, 0.15, kLengthTolerance);
   // Misaligned: radial depth at A is 0.2 + S(0.005) = 0.149 > cr.
   const TiltedJournal deep{0.2, 0.0, 0.005};
-  const JointContacts misaligned = detect_contacts(kTable2, bearing_pose(), deep.pose());
+  const JointContacts misaligned = detect_contacts(kTable2, bearing_on_z(), deep.pose());
   EXPECT_EQ(misaligned.scenario, ContactScenario::beyond_model);
   const Contact* radial = find_contact(misaligned, ContactType::radial, ContactBase::a);
   ASSERT_NE(radial, nullptr);
@@ -322,7 +268,7 @@ TEST(DetectContacts, RimCrossingTheWallFourTimesIsBeyondTheModel) {
   const JointDimensions short_journal{10.0, 20.0, 9.9, 2.0};
   const double tilt = 0.5;
   const TiltedJournal journal{1.0 - std::sin(tilt), 0.0, tilt};
-  const JointContacts result = detect_contacts(short_journal, bearing_pose(), journal.pose());
+  const JointContacts result = detect_contacts(short_journal, bearing_on_z(), journal.pose());
   EXPECT_EQ(result.scenario, ContactScenario::beyond_model);
   ASSERT_EQ(result.contact_count, 2);
   const Contact& first = result.contacts[0];
@@ -346,7 +292,7 @@ TEST(DetectContacts, RimEntirelyBeyondABaseIsBeyondTheModelWithItsDeepestPoint) 
   // above base A at z = 10. The contact is the deepest rim point (closed form of TiltedJournal),
   // depth 0.449 > ca; no crossings bound it.
   const TiltedJournal lifted{0.0, 0.5, 0.005};
-  const JointContacts result = detect_contacts(kTable2, bearing_pose(), lifted.pose());
+  const JointContacts result = detect_contacts(kTable2, bearing_on_z(), lifted.pose());
   EXPECT_EQ(result.scenario, ContactScenario::beyond_model);
   const std::vector<ExpectedContact> expected = analytic_contacts(kTable2, lifted);
   ASSERT_EQ(expected.size(), 1u);
@@ -392,7 +338,7 @@ std::vector<JointCase> all_cases() {
 TEST(DetectContacts, InvarianceCasesHaveTheirScenarios) {
   for (const JointCase& c : all_cases()) {
     SCOPED_TRACE(c.name);
-    EXPECT_EQ(detect_contacts(c.dimensions, bearing_pose(), c.journal).scenario, c.scenario);
+    EXPECT_EQ(detect_contacts(c.dimensions, bearing_on_z(), c.journal).scenario, c.scenario);
   }
 }
 
@@ -430,10 +376,10 @@ TEST(DetectContacts, EveryScenarioIsInvariantUnderRigidMotionsOfTheWholeJoint) {
   constexpr double kMotionTolerance = 1e-9;
   for (const JointCase& c : all_cases()) {
     SCOPED_TRACE(c.name);
-    const JointContacts reference = detect_contacts(c.dimensions, bearing_pose(), c.journal);
+    const JointContacts reference = detect_contacts(c.dimensions, bearing_on_z(), c.journal);
     for (int trial = 0; trial < 8; ++trial) {
       const RigidMotion motion = random_motion(rng, 100.0);
-      const JointContacts result = detect_contacts(c.dimensions, moved(motion, bearing_pose()),
+      const JointContacts result = detect_contacts(c.dimensions, moved(motion, bearing_on_z()),
                                                    moved(motion, c.journal));
       expect_equivalent(reference, result,
                         [&](const Vector3& x, double w) {
@@ -450,8 +396,8 @@ TEST(DetectContacts, FlippingTheJournalAxisChangesNothing) {
     SCOPED_TRACE(c.name);
     const PartPose journal = c.journal;
     const PartPose flipped{journal.p_WP, -journal.axis_W};
-    const JointContacts reference = detect_contacts(c.dimensions, bearing_pose(), journal);
-    const JointContacts result = detect_contacts(c.dimensions, bearing_pose(), flipped);
+    const JointContacts reference = detect_contacts(c.dimensions, bearing_on_z(), journal);
+    const JointContacts result = detect_contacts(c.dimensions, bearing_on_z(), flipped);
     expect_equivalent(reference, result, [](const Vector3& x, double) { return x; }, 1.0,
                       kFlipTolerance);
   }
@@ -467,9 +413,9 @@ TEST(DetectContacts, ChangingUnitsScalesLengthsOnly) {
       const JointDimensions scaled{d.bearing_radius * factor, d.bearing_length * factor,
                                    d.journal_radius * factor, d.journal_length * factor};
       const PartPose journal = c.journal;
-      const JointContacts reference = detect_contacts(d, bearing_pose(), journal);
+      const JointContacts reference = detect_contacts(d, bearing_on_z(), journal);
       const JointContacts result =
-          detect_contacts(scaled, bearing_pose(), PartPose{journal.p_WP * factor, journal.axis_W});
+          detect_contacts(scaled, bearing_on_z(), PartPose{journal.p_WP * factor, journal.axis_W});
       expect_equivalent(reference, result,
                         [&](const Vector3& x, double w) { return Vector3(w == 0.0 ? x : x * factor); },
                         factor, kUnitTolerance);
@@ -483,7 +429,7 @@ TEST(DetectContacts, SwitchingCertificatesOffGivesTheSameContactsMarkedUncertain
   DetectionOptions options;
   options.intersection.certify = false;
   const TiltedJournal journal{0.0, 0.0, 0.013};  // (i)
-  const JointContacts result = detect_contacts(kTable2, bearing_pose(), journal.pose(), options);
+  const JointContacts result = detect_contacts(kTable2, bearing_on_z(), journal.pose(), options);
   EXPECT_EQ(result.scenario, ContactScenario::all_four);
   EXPECT_EQ(result.certificate.level, Certainty::uncertain);
 }
