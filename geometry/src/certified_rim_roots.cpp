@@ -65,7 +65,7 @@ bool enclose_simple_root(const RimDistancePolynomial& g, double theta, int direc
 }
 
 /// Newton from `guess`, then the proof of a simple root with sign change `direction`, all from
-/// one libm sine-cosine: later points are reached by angle addition (AngleBase::at).
+/// one libm sine-cosine: later points are reached by angle addition (value_near, approximate_near).
 bool refine_and_enclose(const RimDistancePolynomial& g, double guess, int direction,
                         RootEnclosure& out) {
   AngleBase base(guess);

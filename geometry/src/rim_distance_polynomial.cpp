@@ -147,17 +147,6 @@ Bounded RimDistancePolynomial::derivative(double theta) const {
   return k[2] * t.cos - k[1] * t.sin + Bounded(2.0) * (k[4] * cos2 - k[3] * sin2);
 }
 
-double RimDistancePolynomial::approximate_value(double theta) const {
-  const double c = std::cos(theta), s = std::sin(theta);
-  return k[0].value + k[1].value * c + k[2].value * s + k[3].value * (c - s) * (c + s) +
-         k[4].value * 2 * s * c;
-}
-
-double RimDistancePolynomial::approximate_derivative(double theta) const {
-  const double c = std::cos(theta), s = std::sin(theta);
-  return k[2].value * c - k[1].value * s + 2 * (k[4].value * (c - s) * (c + s) - k[3].value * 2 * s * c);
-}
-
 double RimDistancePolynomial::approximate_newton_step(double theta) const {
   const double c = std::cos(theta), s = std::sin(theta);
   const double cos2 = (c - s) * (c + s), sin2 = 2 * s * c;
@@ -169,6 +158,9 @@ double RimDistancePolynomial::approximate_newton_step(double theta) const {
 namespace {
 
 /// Taylor polynomials of sin (degree 7) and cos (degree 8) at 0, for |x| <= kMaxAngleOffset.
+/// Error: Lagrange remainders |x|^9/9! and |x|^10/10!, plus Horner rounding: every partial result
+/// is at most 1 in magnitude (at most x^2/2 inside), so the cosine is off by < 2u and the sine by
+/// < 3u |x| (the rounded constants 1/6, 1/120, ... add < u x^2); 4u covers both.
 struct SmallAngleTrig {
   double sin, cos;
 };
@@ -180,7 +172,7 @@ SmallAngleTrig small_angle_trig(double x) {
 
 /// Bound on |computed - true| of the sine and cosine that value_near and approximate_near form
 /// by angle addition at base + x (|x| <= 1/16), in units: libm's base sine and cosine (4u each,
-/// error_bounded.hpp), the Taylor polynomials' rounding (4u, AngleBase::at) and the two products
+/// error_bounded.hpp), the Taylor polynomials' rounding (4u, small_angle_trig) and the two products
 /// and one sum of the addition (3u each of terms at most 1 + 1/16) add to under 12u; 24u
 /// doubles that, and the slack also holds the cosine's Lagrange remainder (|x|^10 / 10! < 3e-19).
 /// The sine's remainder (|x|^9 / 9! <= (1/16)^9 / 9! < 4.1e-17) is added separately.
@@ -188,19 +180,6 @@ SmallAngleTrig small_angle_trig(double x) {
 static_assert(kMaxAngleOffset == 1.0 / 16);
 
 }  // namespace
-
-BoundedSinCos AngleBase::at(double offset) const {
-  // Taylor polynomials of sin (degree 7) and cos (degree 8) at 0 for |x| <= 1/16, in double.
-  // Error: Lagrange remainders |x|^9/9! and |x|^10/10!, plus Horner rounding: every partial
-  // result is at most 1 in magnitude (at most x^2/2 inside), so the cosine is off by < 2u and
-  // the sine by < 3u |x| (the rounded constants 1/6, 1/120, ... add < u x^2); 4u covers both.
-  const SmallAngleTrig small = small_angle_trig(offset);
-  const double a = std::fabs(offset);
-  const double a3 = a * a * a, a9 = a3 * a3 * a3;
-  const Bounded s(small.sin, 4 * kUnitRoundoff * a + a9 / 362880 + kUnderflowError);
-  const Bounded c(small.cos, 4 * kUnitRoundoff + a9 * a / 3628800 + kUnderflowError);
-  return {trig.sin * c + trig.cos * s, trig.cos * c - trig.sin * s};
-}
 
 Bounded RimDistancePolynomial::value_near(const AngleBase& base, double offset) const {
   // Plain double evaluation with an a priori bound instead of the running error of `value`:

@@ -22,9 +22,6 @@ struct AngleBase {
   double angle;
   BoundedSinCos trig;
   explicit AngleBase(double theta) : angle(theta), trig(sincos_of(theta)) {}
-  /// sin and cos of angle + offset (a real number, not rounded), by angle addition with
-  /// Taylor polynomials of degree 9 and 10 and their remainder bounds.
-  BoundedSinCos at(double offset) const;
 };
 
 struct ValueAndSlope {
@@ -44,9 +41,6 @@ struct RimDistancePolynomial {
 
   Bounded value(double theta) const;
   Bounded derivative(double theta) const;
-  /// Plain double evaluation, for Newton steps (no error bound).
-  double approximate_value(double theta) const;
-  double approximate_derivative(double theta) const;
   /// g / g' at theta from one sine-cosine evaluation (the Newton step).
   double approximate_newton_step(double theta) const;
   /// g, g' near a base angle whose sine and cosine are known, at the real angle
