@@ -1,15 +1,17 @@
 #!/usr/bin/env bash
 # Reproduce Section 6 of Marques et al. (2017): build the clearjoint program, run the slider-crank
-# models (planar and spatial, ideal and with the clearance joint, and the 4 x 4 clearance study, in
-# parallel on all cores) and draw Figs. 7-11 and 13-19 into docs/figures/section6/.
+# models (planar and spatial, ideal and with the clearance joint, the 4 x 4 clearance study and
+# ensembles of 9 slightly perturbed runs per point of its three sweeps, in parallel on all cores)
+# and draw Figs. 7-11 and 13-19 and the ensemble statistics into docs/figures/section6/.
 #
 #   bash scripts/reproduce-section6.sh            # resumes: finished runs are not redone
 #   bash scripts/reproduce-section6.sh --force    # redo every run (after changing the code)
 #   BUILD_DIR=build-mine JOBS=1 bash scripts/reproduce-section6.sh
 #
 # Results (reduced time series, one .npz per run, written atomically) go to results/section6/,
-# the numbers quoted in docs/reproduction.md to results/section6/summary.json. Measured: 3-10 s per
-# run on one core of a 2-core machine, about 3 minutes for all 37 runs with 2 jobs.
+# the numbers quoted in docs/reproduction.md to results/section6/summary.json. Measured: 1-13 s per
+# run on one core of a 2-core machine; 1 min 42 s for the 37 runs of the figures and 3 min 15 s for
+# the 90 ensemble runs with 2 jobs.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 BUILD_DIR=${BUILD_DIR:-build}

@@ -6,7 +6,9 @@ and 13-19 as PNG files.
 
 Runs (all in models/): the planar slider-crank with ideal joints and with the clearance joint
 aligned and misaligned (Sec. 6.1), the spatial one ideal and with the clearance joint (Sec. 6.2),
-and the 16 runs of the clearance study (models/clearance_study/). They run in parallel, one per
+the 16 runs of the clearance study (models/clearance_study/), the same at tolerance 1e-8, and an
+ensemble of 9 runs (initial crank speed x (1 + k 1e-9), k = -4..4) for each point of the radial,
+axial and diagonal sweeps (ensemble_vs_clearance.png, section6_ensemble.py). They run in parallel, one per
 core (--jobs), with a progress line on standard error. Each run's result is reduced to the columns
 the figures need and written atomically to RESULTS/<run>.npz (temporary name, then rename),
 together with the SHA-256 of its model file; a later call skips every run whose result exists for
@@ -61,8 +63,32 @@ JOINT_COLUMNS = ["scenario", "axis_angle", "rim_a_u", "rim_a_v", "rim_a_axial", 
 ROBUSTNESS_TOLERANCE = 1e-8
 
 
+# Ensembles for the clearance trend of Figs. 15, 16 and 19. One run's peak acceleration is a single
+# impact of a chaotic motion (it changes by a factor 0.69-1.88 with the tolerance), so each study
+# point is also run with the held initial crank velocities scaled by 1 + k ENSEMBLE_STEP, k in
+# ENSEMBLE_OFFSETS: a change far below anything the paper specifies (2 pi rad/s to 9 digits) and
+# far above double rounding (2e-16), so the members share the physics and differ only in which
+# impacts the chaotic motion happens to make. The member k = 0 is the study's model unchanged, run
+# again here so that every member of an ensemble comes from the same build.
+# Points: the radial sweep (axial 0.1 mm), the axial sweep (radial 0.1 mm) and the diagonal.
+ENSEMBLE_STEP = 1e-9
+ENSEMBLE_OFFSETS = (-4, -3, -2, -1, 0, 1, 2, 3, 4)
+
+
+def ensemble_points():
+    """(radial, axial) clearances [mm] of the study points that get an ensemble."""
+    points = [(cr, 0.1) for cr in STUDY_MM] + [(0.1, ca) for ca in STUDY_MM] + [(c, c) for c in STUDY_MM]
+    return list(dict.fromkeys(points))  # (0.1, 0.1) once, order kept
+
+
+def ensemble_run_name(cr, ca, k):
+    """The run of study point (cr, ca) [mm] with crank speed factor 1 + k ENSEMBLE_STEP."""
+    return "ensemble_cr%g_ca%g_k%+d" % (cr, ca, k)
+
+
 def runs():
-    """name -> (model file, columns per file, joint outputs wanted[, solver overrides])."""
+    """name -> (model file, columns per file, joint outputs wanted[, solver overrides[, crank
+    speed factor]])."""
     table = {
         "planar_ideal": ("slider_crank_planar_ideal.json", PLANAR_COLUMNS, False),
         "planar_aligned": ("slider_crank_planar_clearance_aligned.json", PLANAR_COLUMNS, True),
@@ -77,18 +103,43 @@ def runs():
             table["study_tol1e-8_cr%g_ca%g" % (cr, ca)] = (
                 model, SPATIAL_COLUMNS, False,
                 {"relative_tolerance": ROBUSTNESS_TOLERANCE, "absolute_tolerance": ROBUSTNESS_TOLERANCE})
+    for cr, ca in ensemble_points():
+        model = os.path.join("clearance_study", "spatial_cr%g_ca%g.json" % (cr, ca))
+        for k in ENSEMBLE_OFFSETS:
+            table[ensemble_run_name(cr, ca, k)] = (model, SPATIAL_COLUMNS, False, {}, 1 + k * ENSEMBLE_STEP)
     return table
+
+
+def scale_crank_speed(model, factor):
+    """Scales the crank's held initial velocities (and their guesses) by `factor`: the same rigid
+    rotation about the journal's centre, a little faster or slower."""
+    held = [h for h in model["initial_conditions"]["hold_velocities"] if h["body"] == "crank"]
+    if not held:
+        raise RuntimeError("crank speed factor: the model holds no crank velocity")
+    for h in held:
+        h["value"] *= factor
+    crank = [b for b in model["bodies"] if b["name"] == "crank"][0]
+    for key in ("velocity", "angular_velocity"):
+        if key in crank:
+            crank[key] = [v * factor for v in crank[key]]
+    model["initial_conditions"]["comment"] = (
+        "reproduce_section6.py ensemble member: held crank velocities scaled by %r" % factor)
 
 
 def model_text(spec):
     """The model file's text, with the run's solver overrides applied (deterministic JSON)."""
     with open(os.path.join(MODELS, spec[0])) as f:
         text = f.read()
-    if len(spec) < 4:
+    solver = spec[3] if len(spec) > 3 else {}
+    factor = spec[4] if len(spec) > 4 else None
+    if not solver and factor is None:
         return text
     model = json.loads(text)
-    model["solver"].update(spec[3])
-    model["solver"]["comment"] = "reproduce_section6.py override: %s" % json.dumps(spec[3], sort_keys=True)
+    if solver:
+        model["solver"].update(solver)
+        model["solver"]["comment"] = "reproduce_section6.py override: %s" % json.dumps(solver, sort_keys=True)
+    if factor is not None:
+        scale_crank_speed(model, factor)
     return json.dumps(model, indent=1, sort_keys=True) + "\n"
 
 
@@ -290,7 +341,11 @@ def main():
     run_all(os.path.abspath(args.clearjoint), args.results, args.jobs, args.force, args.only)
     if not args.no_figures and not args.only:
         import section6_figures  # noqa: E402 (matplotlib only when drawing)
+        import section6_ensemble  # noqa: E402
         summary = section6_figures.draw_all(lambda name: load(args.results, name), args.figures, STUDY_MM)
+        summary["ensemble"] = section6_ensemble.draw(lambda name: load(args.results, name), args.figures,
+                                                     STUDY_MM, ensemble_points(), ENSEMBLE_OFFSETS,
+                                                     ensemble_run_name)
         summary["wall_seconds_per_run"] = {
             name: float(load(args.results, name)["wall_seconds"]) for name in runs()}
         summary["sources"] = sorted({str(load(args.results, name).get("source", "unknown")) for name in runs()})
