@@ -31,10 +31,10 @@ struct InputOutcome {
   ContactScenario reference_scenario = ContactScenario::none;
   std::array<InputScore, kMethodCount> scores;
   std::array<ContactScenario, kMethodCount> scenarios{};
-  /// The certified pipeline scored against the joint as the library rounds it.
-  bool rounded_decided = true;
-  InputScore certified_vs_rounded;
-  ContactScenario rounded_scenario = ContactScenario::none;
+  /// The certified pipeline scored against the joint with exactly normalised axes (diagnostic).
+  bool exact_axes_decided = true;
+  InputScore certified_vs_exact_axes;
+  ContactScenario exact_axes_scenario = ContactScenario::none;
 };
 
 InputOutcome evaluate(const DetectionInput& input) {
@@ -58,11 +58,11 @@ InputOutcome evaluate(const DetectionInput& input) {
     }
   }
   if (certified_answer) {
-    const ReferenceAnswer rounded = reference_detect(
-        joint_as_rounded_by_library(input.dimensions, input.bearing, input.journal));
-    outcome.rounded_decided = rounded.decided;
-    outcome.rounded_scenario = rounded.scenario;
-    if (rounded.decided) outcome.certified_vs_rounded = score_answer(*certified_answer, rounded);
+    const ReferenceAnswer exact_axes = reference_detect(
+        joint_with_exact_unit_axes(input.dimensions, input.bearing, input.journal));
+    outcome.exact_axes_decided = exact_axes.decided;
+    outcome.exact_axes_scenario = exact_axes.scenario;
+    if (exact_axes.decided) outcome.certified_vs_exact_axes = score_answer(*certified_answer, exact_axes);
   }
   return outcome;
 }
@@ -148,7 +148,7 @@ AccuracyResult run_accuracy(const AccuracyOptions& options) {
     const std::vector<InputOutcome> outcomes = evaluate_all(inputs, options.threads, family, options.progress);
 
     // Tallies: the whole family ("" group) and each group, per method, plus the certified
-    // pipeline against the rounded joint.
+    // pipeline against the joint with exactly normalised axes.
     std::vector<std::string> groups{""};
     for (const DetectionInput& input : inputs) {
       if (!input.group.empty() && std::find(groups.begin(), groups.end(), input.group) == groups.end()) {
@@ -156,7 +156,7 @@ AccuracyResult run_accuracy(const AccuracyOptions& options) {
       }
     }
     std::map<std::string, double> group_values;
-    std::map<std::pair<std::string, std::size_t>, Tally> tallies;  // (group, method; 3 = certified vs rounded)
+    std::map<std::pair<std::string, std::size_t>, Tally> tallies;  // (group, method; 3 = certified vs exact unit axes)
     std::map<std::string, std::size_t> reference_scenarios;
     std::map<std::string, std::map<std::string, std::size_t>> method_listed;
     for (std::size_t i = 0; i < inputs.size(); ++i) {
@@ -176,19 +176,19 @@ AccuracyResult run_accuracy(const AccuracyOptions& options) {
       ++reference_scenarios[scenario_label(o.reference_scenario)];
       for (const std::string& g : own_groups) {
         for (std::size_t m = 0; m < kMethodCount; ++m) tallies[{g, m}].add(o.scores[m], o.reference_scenario);
-        if (o.rounded_decided) {
-          tallies[{g, kMethodCount}].add(o.certified_vs_rounded, o.rounded_scenario);
+        if (o.exact_axes_decided) {
+          tallies[{g, kMethodCount}].add(o.certified_vs_exact_axes, o.exact_axes_scenario);
         } else {
           tallies[{g, kMethodCount}].add_undecided();
         }
       }
       const bool certified_failed = o.scores[kCertifiedIndex].failed();
-      const bool rounded_failed = o.rounded_decided && o.certified_vs_rounded.failed();
+      const bool exact_axes_failed = o.exact_axes_decided && o.certified_vs_exact_axes.failed();
       if (certified_failed) ++result.certified_failures_as_given;
-      if (rounded_failed) ++result.certified_failures_as_rounded;
+      if (exact_axes_failed) ++result.certified_failures_exact_axes;
       for (std::size_t m = 0; m < kMethodCount; ++m) {
         const bool certified = m == kCertifiedIndex;
-        const bool failed = o.scores[m].failed() || (certified && rounded_failed);
+        const bool failed = o.scores[m].failed() || (certified && exact_axes_failed);
         if (!failed) continue;
         const std::string method(to_string(kMethods[m]));
         if (!certified && method_listed[method][family]++ >= static_cast<std::size_t>(options.listed_failures)) {
@@ -204,11 +204,11 @@ AccuracyResult run_accuracy(const AccuracyOptions& options) {
         if (std::isfinite(input.measured_margin)) entry["measured_margin"] = input.measured_margin;
         if (std::isfinite(input.measured_tilt)) entry["measured_tilt"] = input.measured_tilt;
         if (certified) {
-          entry["against_library_rounding"] =
-              Json{{"decided", o.rounded_decided},
-                   {"reference_scenario", scenario_label(o.rounded_scenario)},
-                   {"failed", rounded_failed},
-                   {"problems", o.certified_vs_rounded.problems}};
+          entry["against_exact_unit_axes"] =
+              Json{{"decided", o.exact_axes_decided},
+                   {"reference_scenario", scenario_label(o.exact_axes_scenario)},
+                   {"failed", exact_axes_failed},
+                   {"problems", o.certified_vs_exact_axes.problems}};
         }
         entry["input"] = hex_input(input);
         failures_json.push_back(std::move(entry));
@@ -217,7 +217,7 @@ AccuracyResult run_accuracy(const AccuracyOptions& options) {
     for (const std::string& group : groups) {
       for (std::size_t m = 0; m <= kMethodCount; ++m) {
         const std::string method = m < kMethodCount ? std::string(to_string(kMethods[m]))
-                                                    : std::string("certified_vs_library_rounding");
+                                                    : std::string("certified_vs_exact_unit_axes");
         Json row{{"family", family}, {"group", group}, {"method", method}};
         if (!group.empty()) row["group_value"] = group_values[group];
         row.update(tally_json(tallies[{group, m}]));
@@ -256,7 +256,7 @@ AccuracyResult run_accuracy(const AccuracyOptions& options) {
                        {"families", std::move(families_json)},
                        {"results", std::move(results_json)},
                        {"certified_failures_against_joint_as_given", result.certified_failures_as_given},
-                       {"certified_failures_against_library_rounding", result.certified_failures_as_rounded},
+                       {"certified_failures_against_exact_unit_axes", result.certified_failures_exact_axes},
                        {"reference_undecided", std::move(undecided_json)},
                        {"failures", std::move(failures_json)}};
   return result;

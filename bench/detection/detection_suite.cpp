@@ -3,7 +3,7 @@
 // families as `clearjoint detect` JSON Lines with their reference answers.
 //
 //   detection_suite accuracy [--quick] [--threads N] [--families a,b] [--out FILE]
-//                            [--check | --check-as-given]
+//                            [--check]
 //   detection_suite export   [--quick] [--threads N] [--families a,b] --out-dir DIR
 //
 // docs/benchmarks.md describes the families, the scores and the file formats.
@@ -29,7 +29,7 @@ namespace bench = clearjoint::bench;
 
 constexpr const char* kUsage =
     "usage: detection_suite accuracy [--quick] [--threads N] [--families a,b] [--out FILE]\n"
-    "                                [--check | --check-as-given]\n"
+    "                                [--check]\n"
     "       detection_suite export   [--quick] [--threads N] [--families a,b] --out-dir DIR\n"
     "\n"
     "accuracy  scores the paper baseline, clearjoint uncertified and clearjoint certified on every\n"
@@ -37,10 +37,9 @@ constexpr const char* kUsage =
     "          detection_accuracy.json) and a summary to stdout.\n"
     "          --check: exit status 1 unless the reference decided every input and the certified\n"
     "          pipeline has no wrong scenario, no missed or spurious contact and no enclosure\n"
-    "          missing the reference, scored against the joint as the library rounds it (base and\n"
-    "          rim centres rounded to double by geometry::base_centers: what its certificates\n"
-    "          are about). --check-as-given: the same against the joint as its doubles describe\n"
-    "          it (the centres exact).\n"
+    "          missing the reference, scored against the joint as given (its certificates'\n"
+    "          claim; joint_reference.hpp). Failures against the joint with exactly normalised\n"
+    "          axes are reported beside it, not checked.\n"
     "export    writes DIR/<family>.jsonl (clearjoint detect input lines) and\n"
     "          DIR/<family>.reference.jsonl (the reference answers, same ids, same order).\n"
     "families  realistic, near_tangent, near_parallel, extreme, trajectories (default: all).\n"
@@ -53,7 +52,7 @@ struct Arguments {
   std::vector<std::string> families;
   std::string out = "detection_accuracy.json";
   std::string out_dir;
-  enum class Check { none, library_rounding, as_given } check = Check::none;
+  bool check = false;
 };
 
 [[noreturn]] void usage_error(const std::string& message) {
@@ -97,9 +96,7 @@ Arguments parse(int argc, char** argv) {
     } else if (arg == "--out" && a.command == "accuracy") {
       a.out = value();
     } else if (arg == "--check" && a.command == "accuracy") {
-      a.check = Arguments::Check::library_rounding;
-    } else if (arg == "--check-as-given" && a.command == "accuracy") {
-      a.check = Arguments::Check::as_given;
+      a.check = true;
     } else if (arg == "--out-dir" && a.command == "export") {
       a.out_dir = value();
     } else {
@@ -133,27 +130,19 @@ int run_accuracy(const Arguments& a) {
   bench::write_file_atomically(a.out, result.report.dump(1) + "\n");
   print_summary(result.report);
   std::printf("\ncertified pipeline, inputs with a failure: %zu against the joint as given, %zu against "
-              "the joint as the library rounds it; reference undecided on %zu inputs\nreport: %s\n",
-              result.certified_failures_as_given, result.certified_failures_as_rounded,
+              "the joint with exactly normalised axes; reference undecided on %zu inputs\nreport: %s\n",
+              result.certified_failures_as_given, result.certified_failures_exact_axes,
               result.reference_undecided, a.out.c_str());
-  if (a.check == Arguments::Check::none) return 0;
-  const bool as_given = a.check == Arguments::Check::as_given;
-  const std::size_t failures =
-      as_given ? result.certified_failures_as_given : result.certified_failures_as_rounded;
+  if (!a.check) return 0;
+  const std::size_t failures = result.certified_failures_as_given;
   if (failures > 0 || result.reference_undecided > 0) {
     std::fprintf(stderr,
-                 "detection_suite: CHECK FAILED: %zu inputs with a certified failure against the joint %s, "
+                 "detection_suite: CHECK FAILED: %zu inputs with a certified failure against the joint as given, "
                  "%zu inputs the reference left undecided (\"failures\" and \"reference_undecided\" in %s)\n",
-                 failures, as_given ? "as given" : "as the library rounds it", result.reference_undecided,
-                 a.out.c_str());
+                 failures, result.reference_undecided, a.out.c_str());
     return 1;
   }
-  std::printf("check passed: no certified failure against the joint %s\n",
-              as_given ? "as given" : "as the library rounds it");
-  if (!as_given && result.certified_failures_as_given > 0) {
-    std::printf("note: %zu inputs have a certified failure against the joint as given (centres not "
-                "rounded); docs/benchmarks.md explains them\n", result.certified_failures_as_given);
-  }
+  std::printf("check passed: no certified failure against the joint as given\n");
   return 0;
 }
 

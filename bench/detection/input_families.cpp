@@ -275,7 +275,9 @@ DetectionInput near_tangent_input(UniformSource& uniform, TangentKind kind, int 
   input.id = std::string("near_tangent/") + kind_name(kind) + "/" + group + "/" + (sign > 0 ? "+" : "-") +
              "/" + std::to_string(serial);
   const ReferenceJoint rounded = joint_as_given(d, bearing, journal);
-  const Real measured = radial ? radial_margin(rounded, base).margin : axial_margin(rounded, base);
+  const Real measured = kind == TangentKind::line ? line_margin(rounded)
+                        : radial                  ? radial_margin(rounded, base).margin
+                                                  : axial_margin(rounded, base);
   input.measured_margin = (measured / Real(clearance)).convert_to<double>();
   return input;
 }

@@ -1,5 +1,7 @@
 #include "joint_reference.hpp"
 
+#include <stdexcept>
+
 #include <algorithm>
 #include <cmath>
 #include <utility>
@@ -535,8 +537,27 @@ void detect_aligned(const ReferenceJoint& joint, ReferenceAnswer& answer, Contac
   }
 }
 
+/// How the base and rim centres P +- (L/2) a_hat take their unit axis a_hat (normals and the wall
+/// always use the exact direction of the axis as given).
+enum class CentreAxes {
+  library_unit_axis,  ///< a_hat = geometry::unit_axis(pose), a double (the library's definition)
+  exact_unit_axis,    ///< a_hat = a / |a| in MPFR
+};
+
+/// The unit axis that offsets the centres: see CentreAxes. The library's a_hat is a function of
+/// the double axis; generator poses (RealPose) carry double axes, which is checked.
+RealVector centre_axis(const RealVector& axis, CentreAxes axes) {
+  if (axes == CentreAxes::exact_unit_axis) return normalized(axis);
+  const geometry::Vector3 axis_double = to_double(axis);
+  const RealVector back = to_real(axis_double);
+  if (back[0] != axis[0] || back[1] != axis[1] || back[2] != axis[2]) {
+    throw std::invalid_argument("joint reference: an axis that is not a double has no library unit axis");
+  }
+  return to_real(geometry::unit_axis(geometry::PartPose{geometry::Vector3::Zero(), axis_double}));
+}
+
 ReferenceJoint build_joint(const geometry::JointDimensions& d, const RealPose& bearing,
-                           const RealPose& journal) {
+                           const RealPose& journal, CentreAxes axes) {
   ReferenceJoint joint;
   joint.bearing_radius = Real(d.bearing_radius);
   joint.journal_radius = Real(d.journal_radius);
@@ -548,8 +569,8 @@ ReferenceJoint build_joint(const geometry::JointDimensions& d, const RealPose& b
   joint.journal_axis_hat = normalized(journal.axis_W);
   const RealVector c = cross(bearing.axis_W, journal.axis_W);
   joint.exactly_parallel = c[0] == 0 && c[1] == 0 && c[2] == 0;
-  const RealVector half_i = scale(Real(d.bearing_length) / 2, joint.bearing_axis_hat);
-  const RealVector half_j = scale(Real(d.journal_length) / 2, joint.journal_axis_hat);
+  const RealVector half_i = scale(Real(d.bearing_length) / 2, centre_axis(bearing.axis_W, axes));
+  const RealVector half_j = scale(Real(d.journal_length) / 2, centre_axis(journal.axis_W, axes));
   joint.bearing_base = {add(bearing.p_WP, half_i), sub(bearing.p_WP, half_i)};  // eqs. (3)-(4)
   // Labels follow the bearing: the journal's base on the side of bearing base A is rim A.
   const bool same_direction = dot(bearing.axis_W, journal.axis_W) >= 0;
@@ -562,39 +583,20 @@ ReferenceJoint build_joint(const geometry::JointDimensions& d, const RealPose& b
 
 ReferenceJoint joint_as_given(const geometry::JointDimensions& dimensions, const RealPose& bearing,
                               const RealPose& journal) {
-  return build_joint(dimensions, bearing, journal);
+  return build_joint(dimensions, bearing, journal, CentreAxes::library_unit_axis);
 }
 
 ReferenceJoint joint_as_given(const geometry::JointDimensions& dimensions,
                               const geometry::PartPose& bearing, const geometry::PartPose& journal) {
   return build_joint(dimensions, {to_real(bearing.p_WP), to_real(bearing.axis_W)},
-                     {to_real(journal.p_WP), to_real(journal.axis_W)});
+                     {to_real(journal.p_WP), to_real(journal.axis_W)}, CentreAxes::library_unit_axis);
 }
 
-ReferenceJoint joint_as_rounded_by_library(const geometry::JointDimensions& dimensions,
-                                           const geometry::PartPose& bearing,
-                                           const geometry::PartPose& journal) {
-  ReferenceJoint joint = joint_as_given(dimensions, bearing, journal);
-  // As detect_contacts does (since commit befc772): in a frame centred on the bearing, with the
-  // journal centre rounded once as P_j - P_i, the centres rounded there, and the bearing centre
-  // itself (added back here exactly) as the origin of that frame.
-  const geometry::PartPose local_bearing{geometry::Vector3::Zero(), bearing.axis_W};
-  const geometry::PartPose local_journal{journal.p_WP - bearing.p_WP, journal.axis_W};
-  const geometry::BaseCenters bearing_bases =
-      geometry::base_centers(local_bearing, dimensions.bearing_length);
-  const geometry::BaseCenters journal_bases =
-      geometry::base_centers(local_journal, dimensions.journal_length);
-  const RealVector origin = to_real(bearing.p_WP);
-  auto world = [&origin](const geometry::Vector3& local) {
-    const RealVector l = to_real(local);
-    return RealVector{origin[0] + l[0], origin[1] + l[1], origin[2] + l[2]};
-  };
-  const bool same_direction = bearing.axis_W.dot(journal.axis_W) >= 0.0;
-  joint.bearing_base = {world(bearing_bases.p_WA), world(bearing_bases.p_WB)};
-  joint.journal_rim = same_direction
-                          ? std::array<RealVector, 2>{world(journal_bases.p_WA), world(journal_bases.p_WB)}
-                          : std::array<RealVector, 2>{world(journal_bases.p_WB), world(journal_bases.p_WA)};
-  return joint;
+ReferenceJoint joint_with_exact_unit_axes(const geometry::JointDimensions& dimensions,
+                                          const geometry::PartPose& bearing,
+                                          const geometry::PartPose& journal) {
+  return build_joint(dimensions, {to_real(bearing.p_WP), to_real(bearing.axis_W)},
+                     {to_real(journal.p_WP), to_real(journal.axis_W)}, CentreAxes::exact_unit_axis);
 }
 
 ReferenceAnswer reference_detect(const ReferenceJoint& joint) {
@@ -652,6 +654,12 @@ RadialMargin radial_margin(const ReferenceJoint& joint, ContactBase base) {
   out.margin = distance_to_axis - joint.bearing_radius;
   out.direction = direction;
   return out;
+}
+
+Real line_margin(const ReferenceJoint& joint) {
+  const RealVector& e = joint.bearing_axis_hat;
+  const RealVector offset = sub(joint.p_WPj, joint.p_WPi);
+  return norm(sub(offset, scale(dot(offset, e), e))) - joint.radial_clearance;
 }
 
 Real axial_margin(const ReferenceJoint& joint, ContactBase base) {

@@ -3,11 +3,13 @@
 /// A multiprecision reference for full-joint contact detection (paper Section 3, eqs. 5-23), the
 /// yardstick of the detection benchmarks. Bench-only code, never linked into the library.
 ///
-/// The joint is taken as its input doubles describe it, exactly: base centres P +- (L/2) a/|a|
-/// (eqs. 3-4) and rim centres are evaluated in MPFR with kReferenceDigits10 digits, never rounded
-/// to double (unlike the library, which rounds a/|a| and the centres to double, in a frame
-/// centred on the bearing, before its certified queries; joint_as_rounded_by_library() builds
-/// that joint instead, to tell the two apart). The formulation is independent of the library's kernel:
+/// The joint is taken as the library defines it from its input doubles (joint_geometry.hpp),
+/// exactly: base centres P +- (L/2) a_hat (eqs. 3-4) with a_hat = geometry::unit_axis(pose), the
+/// axis normalised in double (the one rounding in the joint's definition; bitwise a itself when
+/// a . a evaluates to 1), and the centres, the rims and every decision evaluated in MPFR with
+/// kReferenceDigits10 digits, never rounded to double. joint_with_exact_unit_axes() takes
+/// a_hat = a/|a| in MPFR instead, to show what the rounded direction changes. The formulation is
+/// independent of the library's kernel:
 ///
 /// * Radial (eqs. 16-21): with the rim x(theta) = c + Rj (u cos theta + v sin theta) and
 ///   w = c - P_i, the excess G(theta) = |(x(theta) - P_i) x e_i|^2 - Ri^2 (e_i = a_i/|a_i|) is a
@@ -26,7 +28,7 @@
 ///   round, or penetrates deeper than the clearance in its direction (cr radial, ca axial).
 ///
 /// Why hand-written: tests/geometry/reference/multiprecision_reference takes its rim centres as
-/// doubles, while the joint as given has centres P +- (L/2) a/|a| that no double holds; and
+/// doubles, while the joint as given has centres P +- (L/2) a_hat that no double holds; and
 /// CGAL's algebraic kernels isolate the roots of exact (rational) polynomials, while these
 /// coefficients carry square roots (a/|a|). The root isolation (Sturm sequence, bisection,
 /// safeguarded Newton) is therefore written here in MPFR; tests/test_joint_reference.cpp checks it
@@ -87,18 +89,17 @@ struct ReferenceJoint {
   bool exactly_parallel = false;                  ///< eq. (5) on the stored axes, exactly
 };
 
-/// The joint exactly as its doubles describe it.
+/// The joint exactly as the library defines it from its doubles (see the file comment).
 ReferenceJoint joint_as_given(const geometry::JointDimensions& dimensions,
                               const geometry::PartPose& bearing, const geometry::PartPose& journal);
-/// The same from MPFR poses (generators).
+/// The same from MPFR poses (generators); their axes must be doubles (std::invalid_argument).
 ReferenceJoint joint_as_given(const geometry::JointDimensions& dimensions, const RealPose& bearing,
                               const RealPose& journal);
-/// The joint as the library builds it before its certified queries: base and rim centres
-/// rounded to double by geometry::base_centers (a/|a| rounded, then P +- (L/2) a_hat rounded), rim
-/// labels by the sign of the double dot product a_i . a_j. Axes, radii and P_i as given.
-ReferenceJoint joint_as_rounded_by_library(const geometry::JointDimensions& dimensions,
-                                           const geometry::PartPose& bearing,
-                                           const geometry::PartPose& journal);
+/// The joint with its centres offset along a/|a| computed in MPFR instead of the library's
+/// double unit axis: a diagnostic of the one rounding left in the joint's definition.
+ReferenceJoint joint_with_exact_unit_axes(const geometry::JointDimensions& dimensions,
+                                          const geometry::PartPose& bearing,
+                                          const geometry::PartPose& journal);
 
 struct ReferenceContact {
   geometry::ContactType type = geometry::ContactType::radial;
@@ -131,7 +132,9 @@ ReferenceAnswer reference_detect(const ReferenceJoint& joint);
 
 /// Signed margin of rim `base` from the lateral wall: its farthest distance from the bearing axis
 /// minus Ri (positive: beyond the wall by that much). Also for parallel axes, where it is
-/// e - cr (e the eccentricity). Sets `decided` false when the maximum cannot be located.
+/// e - cr up to the lateral offset of the rim centre from the journal's axis line (the centres
+/// are offset along the library's rounded unit axis, ~1e-16 rad off the axis direction; the line
+/// contact itself is line_margin). Sets `decided` false when the maximum cannot be located.
 struct RadialMargin {
   bool decided = true;
   Real margin;
@@ -139,6 +142,8 @@ struct RadialMargin {
   RealVector direction;
 };
 RadialMargin radial_margin(const ReferenceJoint& joint, geometry::ContactBase base);
+/// The aligned line contact's margin, eqs. (6)-(8): the eccentricity of P_j minus cr.
+Real line_margin(const ReferenceJoint& joint);
 /// Largest signed distance of rim `base` beyond its bearing base plane (positive: beyond).
 Real axial_margin(const ReferenceJoint& joint, geometry::ContactBase base);
 

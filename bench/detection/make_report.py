@@ -24,14 +24,14 @@ METHOD_TITLES = {
     "paper_baseline": "paper baseline (plain Newton)",
     "uncertified": "clearjoint, certificate off",
     "certified": "clearjoint, certified (default)",
-    "certified_vs_library_rounding": "clearjoint certified, scored against the joint as the library rounds it",
+    "certified_vs_exact_unit_axes": "clearjoint certified, scored against the joint with a/|a| normalised exactly",
 }
 FAMILIES = ["realistic", "near_tangent", "near_parallel", "extreme", "trajectories"]
 STYLE = {
     "paper_baseline": dict(color="tab:red", marker="s"),
     "uncertified": dict(color="tab:orange", marker="^"),
     "certified": dict(color="tab:blue", marker="o"),
-    "certified_vs_library_rounding": dict(color="tab:cyan", marker="o", linestyle="--"),
+    "certified_vs_exact_unit_axes": dict(color="tab:cyan", marker="o", linestyle="--"),
 }
 
 
@@ -120,7 +120,7 @@ def plot_family(family, accuracy_rows, timing_table, groups, path, xlabel):
     figure, axes = plt.subplots(1, 3, figsize=(15, 5.2))
     # Failures.
     ax = axes[0]
-    for method in METHODS + ["certified_vs_library_rounding"]:
+    for method in METHODS + ["certified_vs_exact_unit_axes"]:
         ys = []
         for g in groups:
             row = accuracy_rows.get((family, g, method))
@@ -182,12 +182,12 @@ def accuracy_table(accuracy, rows):
         "| --- | --- | ---: | ---: | ---: | ---: | --- | ---: | ---: | --- |",
     ]
     for family in FAMILIES:
-        for method in METHODS + ["certified_vs_library_rounding"]:
+        for method in METHODS + ["certified_vs_exact_unit_axes"]:
             row = rows.get((family, "", method))
             if not row:
                 continue
             scored = row["inputs"] - row["reference_undecided"]
-            title = "certified vs library rounding" if method == "certified_vs_library_rounding" else method
+            title = "certified vs exact a/|a|" if method == "certified_vs_exact_unit_axes" else method
             lines.append(
                 f"| {family} | {title} | {row['inputs']} | {row['wrong_scenarios']} ({row['wrong_scenarios_within_model']}) "
                 f"| {row['missed_contacts']} ({row['inputs_with_missed']}) | {row['spurious_contacts']} ({row['inputs_with_spurious']}) "
@@ -238,15 +238,15 @@ def cost_table(table):
 
 def group_table(family, rows, timing_table, groups, label):
     lines = [
-        f"| {label} | inputs | failed inputs: baseline / uncertified / certified / certified vs rounding | certified p99 point error m | certified per-input median / p99 ns | baseline per-input median ns |",
+        f"| {label} | inputs | failed inputs: baseline / uncertified / certified / certified vs exact a/\\|a\\| | certified p99 point error m | certified per-input median / p99 ns | baseline per-input median ns |",
         "| --- | ---: | --- | ---: | --- | ---: |",
     ]
     for g in groups:
-        r = {m: rows.get((family, g, m)) for m in METHODS + ["certified_vs_library_rounding"]}
+        r = {m: rows.get((family, g, m)) for m in METHODS + ["certified_vs_exact_unit_axes"]}
         if not r["certified"]:
             continue
         t = timing_table.get(f"{family}/{g}", {})
-        fails = " / ".join(str(r[m]["failed_inputs"]) for m in METHODS + ["certified_vs_library_rounding"])
+        fails = " / ".join(str(r[m]["failed_inputs"]) for m in METHODS + ["certified_vs_exact_unit_axes"])
         cert = t.get("certified")
         base = t.get("paper_baseline")
         lines.append(f"| {g} | {r['certified']['inputs']} | {fails} | {fmt(r['certified']['point_error_m']['p99'])} "
@@ -261,33 +261,30 @@ def failure_kind(problems):
     return "enclosure only"
 
 
-def failure_lines(accuracy, per_key=2):
-    """The certified pipeline's failures: counts per (family, group, kind) and, for each, the
-    first `per_key` inputs in full (hex floats). accuracy.json lists every one."""
-    certified = [f for f in accuracy["failures"] if f["method"] == "certified"]
+def exact_axes_problems(f):
+    return f.get("against_exact_unit_axes", {}).get("problems", [])
+
+
+def failure_lines(accuracy, per_key=2, problems_of=lambda f: f["problems"]):
+    """The certified pipeline's failures (against the joint as given, or with `problems_of` =
+    exact_axes_problems against a/|a| normalised exactly): counts per (family, group, kind) and,
+    for each, the first `per_key` inputs in full (hex floats). accuracy.json lists every one."""
+    certified = [f for f in accuracy["failures"] if f["method"] == "certified" and problems_of(f)]
     counts, shown, lines = {}, {}, []
     for f in certified:
-        key = (f["family"], f["group"], failure_kind(f["problems"]))
+        key = (f["family"], f["group"], failure_kind(problems_of(f)))
         counts[key] = counts.get(key, 0) + 1
-    summary = ["| family | group | kind | inputs | of which also wrong against the library's rounding |",
-               "| --- | --- | --- | ---: | ---: |"]
+    summary = ["| family | group | kind | inputs |", "| --- | --- | --- | ---: |"]
     for key, count in counts.items():
-        also = sum(1 for f in certified
-                   if (f["family"], f["group"], failure_kind(f["problems"])) == key
-                   and f.get("against_library_rounding", {}).get("failed"))
-        summary.append(f"| {key[0]} | {key[1] or '-'} | {key[2]} | {count} | {also} |")
+        summary.append(f"| {key[0]} | {key[1] or '-'} | {key[2]} | {count} |")
     for f in certified:
-        key = (f["family"], f["group"], failure_kind(f["problems"]))
+        key = (f["family"], f["group"], failure_kind(problems_of(f)))
         if shown.get(key, 0) >= per_key:
             continue
         shown[key] = shown.get(key, 0) + 1
-        rounding = f.get("against_library_rounding", {})
-        verdict = ("right for the joint as the library rounds it"
-                   if rounding.get("decided") and not rounding.get("failed") else
-                   "ALSO WRONG for the joint as the library rounds it")
         margin = f" measured margin {f['measured_margin']:.3g} clearances;" if "measured_margin" in f else ""
-        lines.append(f"- `{f['id']}`:{margin} " + "; ".join(f["problems"]) +
-                     f" ({verdict}). Input: `{json.dumps(f['input'], separators=(',', ':'))}`")
+        lines.append(f"- `{f['id']}`:{margin} " + "; ".join(problems_of(f)) +
+                     f". Input: `{json.dumps(f['input'], separators=(',', ':'))}`")
     return certified, "\n".join(summary), lines
 
 
@@ -328,24 +325,22 @@ def main():
     ratio_p50 = realistic["certified"]["input_p50_ns"] / realistic["paper_baseline"]["input_p50_ns"]
     ratio_uncert = realistic["uncertified"]["cpu_time"] / realistic["paper_baseline"]["cpu_time"]
     certified_failures, failure_summary, failure_text = failure_lines(accuracy)
+    axes_differences, axes_summary, axes_text = failure_lines(accuracy, problems_of=exact_axes_problems)
     as_given = accuracy["certified_failures_against_joint_as_given"]
-    as_rounded = accuracy["certified_failures_against_library_rounding"]
+    as_exact_axes = accuracy["certified_failures_against_exact_unit_axes"]
     undecided = len(accuracy["reference_undecided"])
     if as_given == 0:
         rounding_explanation = " The certified pipeline is right on every input."
     else:
-        rounding_explanation = f""" {'Every' if as_rounded == 0 else 'Most'} failure below is an input
-where the certified pipeline answered with a certificate (`certified` or `exact`) that is right for
-the rims and base planes whose centres `geometry::base_centers` rounded to double, and wrong for the
-joint the input describes. The rounding moves each centre by a few ulps of its coordinates (about
-1e-18 m, or 1e-14 clearances, for Table 2 in metres near the origin): that flips the topology when
-a margin is smaller than the shift, and it moves a near-tangent crossing, whose position is
-conditioned like 1/sqrt(margin), by more than its stated `point_error` (the groups below say where).
-`joint_geometry.hpp` documents that a/|a| is rounded, but `detect_contacts.hpp` does not say that
-the certificates are about the rounded centres."""
-    if as_rounded > 0:
-        rounding_explanation += (f" **{as_rounded} inputs are wrong even against the joint as the library"
-                                 " rounds it: a defect of the certified pipeline itself.**")
+        rounding_explanation = (f" **{as_given} inputs have a certified answer that is wrong for the joint"
+                                " as given: a defect of the certified pipeline.**")
+    rounding_explanation += f""" Against the joint whose centres are offset along a/|a| computed
+exactly (not the library's definition, which normalises the axis in double), {as_exact_axes} inputs
+differ: the rounded direction moves a centre by a few ulps of L (about 1e-18 m, or 1e-14
+clearances, for Table 2 in metres), which flips a topology when a margin is smaller than that and
+moves a near-tangent crossing, conditioned like 1/sqrt(margin), by more than its `point_error`.
+That is the one rounding left in the joint's definition (`joint_geometry.hpp`); the table below
+lists what remains of the certified pipeline's failures against the joint as given, if any."""
     now = datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d %H:%M UTC")
 
     family_lines = ["| family | seed | inputs | reference scenarios (count) | what |", "| --- | ---: | ---: | --- | --- |"]
@@ -381,11 +376,13 @@ Three full-joint detection methods run on the same inputs, in the same process:
 
 They are scored against a multiprecision reference (`bench/detection/joint_reference.cpp`,
 {accuracy['reference_digits']} decimal digits of MPFR) that takes the joint **as its input doubles
-describe it**: base and rim centres P +- (L/2) a/|a| are never rounded to double. The library
-rounds them (`geometry::base_centers`) before its certified queries, so its certificates are about
-those rounded rims; the row "certified vs library rounding" scores the certified pipeline against
-the reference of that rounded joint instead. The reference decided every input
-({undecided} undecided).
+define it** (`joint_geometry.hpp`): base and rim centres P +- (L/2) a_hat, a_hat the axis
+normalised in double by `geometry::unit_axis` (bitwise a for an axis whose a . a evaluates to 1),
+never rounded to double afterwards. The library rounds the centres for speed but carries the
+rounding into its bounds and decides on the exact centres in its exact tier, so its certificates
+are about this joint. The row "certified vs exact a/|a|" scores the certified pipeline against the
+joint with a/|a| normalised exactly in MPFR instead, to show what the one rounding in that
+definition changes. The reference decided every input ({undecided} undecided).
 
 ## Running it
 
@@ -405,10 +402,9 @@ builds `detection_suite` and `bench_detection` (Release, `-j2`), and runs
 
 ctest runs `detection_suite accuracy --quick --check` (test `detection_suite_quick_check`, under
 a minute): it fails when the certified pipeline has a wrong scenario, a missed or spurious contact,
-or an enclosure missing the reference, scored against the joint as the library rounds it (what its
-certificates claim), or when the reference leaves an input undecided. The same failures against the
-joint as given are printed but do not fail the test (see "Certified pipeline against the joint as
-given" below; `--check-as-given` makes them fail).
+or an enclosure missing the reference, scored against the joint as given (what its certificates
+claim), or when the reference leaves an input undecided. Differences against the joint with a/|a|
+normalised exactly are printed but do not fail the test.
 
 ## Input families
 
@@ -482,15 +478,22 @@ below shows from which margin on it sets the 99th percentile.
 ## Certified pipeline against the joint as given
 
 Against the reference of the joint as given, {as_given} inputs have a certified failure; against
-the joint as the library rounds it, {as_rounded}.{rounding_explanation}
+the joint with a/|a| normalised exactly, {as_exact_axes}.{rounding_explanation}
 
-{failure_summary}
+Certified failures against the joint as given:
 
-The first inputs of each line above, in C99 hex floats exactly as generated (all
-{len(certified_failures)} are in `build/detection/accuracy.json`, key `failures`, which the command
+{failure_summary if certified_failures else '(none)'}
+
+{chr(10).join(failure_text) if failure_text else ''}
+
+Differences against the joint with a/|a| normalised exactly ({len(axes_differences)} inputs; the
+first of each line in C99 hex floats exactly as generated; all of them are in
+`build/detection/accuracy.json`, key `failures`, field `against_exact_unit_axes`, which the command
 regenerates from the fixed seeds):
 
-{chr(10).join(failure_text) if failure_text else '(none)'}
+{axes_summary if axes_differences else '(none)'}
+
+{chr(10).join(axes_text) if axes_text else ''}
 
 ## Robustness mode: scoring another implementation
 

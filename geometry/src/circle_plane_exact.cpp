@@ -2,6 +2,8 @@
 
 #include <CGAL/Gmpq.h>
 
+#include "exact_rational_point.hpp"
+
 namespace clearjoint::geometry::detail {
 namespace {
 
@@ -10,11 +12,19 @@ struct RationalVector {
   Rational x, y, z;
 };
 RationalVector exact(const Vector3& v) { return {v.x(), v.y(), v.z()}; }
+RationalVector exact(const Vector3& stored, const RoundedPoint* recipe, int scale_exponent) {
+  if (recipe == nullptr) return exact(stored);
+  const std::array<Rational, 3> x = exact_rational_point(*recipe, scale_exponent);
+  return {x[0], x[1], x[2]};
+}
 
 }  // namespace
 
-CirclePlaneTopologyAndSide exact_circle_plane_topology(const Circle3& circle, const Plane3& plane) {
-  const RationalVector c = exact(circle.center), p = exact(plane.point);
+CirclePlaneTopologyAndSide exact_circle_plane_topology(const Circle3& circle, const Plane3& plane,
+                                                       const RoundedPoint* centre,
+                                                       const RoundedPoint* point, int scale_exponent) {
+  const RationalVector c = exact(circle.center, centre, scale_exponent);
+  const RationalVector p = exact(plane.point, point, scale_exponent);
   const RationalVector nc = exact(circle.normal), np = exact(plane.normal);
   const Rational s = np.x * (c.x - p.x) + np.y * (c.y - p.y) + np.z * (c.z - p.z);
   const Rational wx = np.y * nc.z - np.z * nc.y;

@@ -2,6 +2,7 @@
 // Exact fallback of the circle-plane topology predicate (CGAL rationals).
 
 #include "clearjoint/geometry/intersect_circle_plane.hpp"
+#include "rounded_point.hpp"
 
 namespace clearjoint::geometry::detail {
 
@@ -12,6 +13,11 @@ struct CirclePlaneTopologyAndSide {
 
 /// Decides, exactly on the stored doubles: parallel normals (n_p x n_c = 0), the sign of
 /// s = n_p . (c - p), and the sign of s^2 |n_c|^2 - r^2 |n_p x n_c|^2 (docs/circle-plane.md).
-CirclePlaneTopologyAndSide exact_circle_plane_topology(const Circle3& circle, const Plane3& plane);
+/// `centre` and `point`, when given, are the recipes of the exact rim centre and plane point that
+/// circle.center and plane.point round (before the query's rescaling by 2^-scale_exponent).
+CirclePlaneTopologyAndSide exact_circle_plane_topology(const Circle3& circle, const Plane3& plane,
+                                                       const RoundedPoint* centre = nullptr,
+                                                       const RoundedPoint* point = nullptr,
+                                                       int scale_exponent = 0);
 
 }  // namespace clearjoint::geometry::detail

@@ -14,6 +14,7 @@
 #include "primitives_detail.hpp"
 #include "rim_distance_polynomial.hpp"
 #include "rim_plane_quantities.hpp"
+#include "rounded_point_queries.hpp"
 
 namespace clearjoint::geometry {
 namespace {
@@ -62,18 +63,24 @@ struct JointSetup {
   Vector3 journal_axis_hat_W = Vector3::UnitZ();
   Vector3 bearing_axis_W = Vector3::UnitZ();  // as given, for the kernel primitives
   Vector3 journal_axis_W = Vector3::UnitZ();
-  BaseCenters bearing_bases;  // eqs. (3)-(4)
-  BaseCenters journal_rims;   // centres of the journal rims facing bearing bases A and B
+  // Rounded, each with its exact recipe and error bound (rounded_point.hpp): the kernel's
+  // certificates then hold for the exact centres. Index 0: base A, 1: base B.
+  std::array<detail::RoundedPoint, 2> bearing_bases;  // eqs. (3)-(4)
+  std::array<detail::RoundedPoint, 2> journal_rims;   // centres of the journal rims facing A and B
+  detail::RoundedPoint journal_centre;                // P_j (the journal's mid-length centre)
 };
 
 /// Everything is computed in a frame translated to the bearing centre P_i: the rounding of the
 /// base and rim centres (eqs. 3-4) is then relative to the joint's size, not to how far the
 /// joint sits from the world origin (at 1e13 m from it an ulp is larger than the clearance).
-/// The contact points are translated back at the end.
+/// The contact points are translated back at the end. The centres are exactly
+/// P_j - P_i +- (L/2) a_hat (a_hat = unit_axis, the joint's definition in joint_geometry.hpp);
+/// their roundings are carried into the kernel's bounds and exact tiers.
 JointSetup set_up(const JointDimensions& dimensions, const PartPose& bearing_in_world,
                   const PartPose& journal_in_world) {
   const PartPose bearing{Vector3::Zero(), bearing_in_world.axis_W};
   const PartPose journal{journal_in_world.p_WP - bearing_in_world.p_WP, journal_in_world.axis_W};
+  const Vector3 zero = Vector3::Zero();
   JointSetup s;
   s.bearing_radius = dimensions.bearing_radius;
   s.journal_radius = dimensions.journal_radius;
@@ -85,20 +92,32 @@ JointSetup set_up(const JointDimensions& dimensions, const PartPose& bearing_in_
   s.journal_axis_W = journal.axis_W;
   s.bearing_axis_hat_W = unit_axis(bearing);
   s.journal_axis_hat_W = unit_axis(journal);
-  s.bearing_bases = base_centers(bearing.p_WP, s.bearing_axis_hat_W, dimensions.bearing_length);
-  const BaseCenters journal_bases =
-      base_centers(journal.p_WP, s.journal_axis_hat_W, dimensions.journal_length);
+  // The same roundings as base_centers (eqs. 3-4), recorded with their recipes.
+  const double Li = dimensions.bearing_length, Lj = dimensions.journal_length;
+  s.bearing_bases = {detail::rounded_point(zero, zero, Li, +1, s.bearing_axis_hat_W),
+                     detail::rounded_point(zero, zero, Li, -1, s.bearing_axis_hat_W)};
+  s.journal_centre = detail::rounded_point(journal_in_world.p_WP, bearing_in_world.p_WP, 0.0, 0, zero);
   // Labels follow the bearing: when a_j points against a_i, the journal's "B" base faces A.
   const bool same_direction = bearing.axis_W.dot(journal.axis_W) >= 0.0;
-  s.journal_rims = same_direction ? journal_bases : BaseCenters{journal_bases.p_WB, journal_bases.p_WA};
+  const int toward_a = same_direction ? +1 : -1;
+  s.journal_rims = {detail::rounded_point(journal_in_world.p_WP, bearing_in_world.p_WP, Lj, toward_a,
+                                          s.journal_axis_hat_W),
+                    detail::rounded_point(journal_in_world.p_WP, bearing_in_world.p_WP, Lj, -toward_a,
+                                          s.journal_axis_hat_W)};
   return s;
 }
 
+const detail::RoundedPoint& bearing_base_point(const JointSetup& s, ContactBase base) {
+  return s.bearing_bases[base == ContactBase::a ? 0 : 1];
+}
+const detail::RoundedPoint& journal_rim_point(const JointSetup& s, ContactBase base) {
+  return s.journal_rims[base == ContactBase::a ? 0 : 1];
+}
 const Vector3& bearing_base(const JointSetup& s, ContactBase base) {
-  return base == ContactBase::a ? s.bearing_bases.p_WA : s.bearing_bases.p_WB;
+  return bearing_base_point(s, base).value;
 }
 const Vector3& journal_rim_center(const JointSetup& s, ContactBase base) {
-  return base == ContactBase::a ? s.journal_rims.p_WA : s.journal_rims.p_WB;
+  return journal_rim_point(s, base).value;
 }
 /// Outward normal of the bearing base: +a_i at A, -a_i at B.
 double outward_sign(ContactBase base) { return base == ContactBase::a ? 1.0 : -1.0; }
@@ -197,15 +216,15 @@ Certificate clear_certificate(const DetectionOptions& options) {
 bool prefilter_guard(const JointSetup& s) {
   using detail::magnitude_in_range;
   using detail::magnitudes_in_range;
-  const Vector3& c_a = s.journal_rims.p_WA;
-  const Vector3& c_b = s.journal_rims.p_WB;
+  const Vector3& c_a = s.journal_rims[0].value;
+  const Vector3& c_b = s.journal_rims[1].value;
+  const Vector3& p_a = s.bearing_bases[0].value;
+  const Vector3& p_b = s.bearing_bases[1].value;
   // set_up works in the bearing-centred frame: P_i is exactly zero, so c - P_i is c itself.
   return s.p_WPi.isZero() && magnitudes_in_range(s.bearing_axis_W) &&
          magnitudes_in_range(s.journal_axis_W) && magnitudes_in_range(c_a) &&
-         magnitudes_in_range(c_b) && magnitudes_in_range(s.bearing_bases.p_WA) &&
-         magnitudes_in_range(s.bearing_bases.p_WB) &&
-         magnitudes_in_range(c_a - s.bearing_bases.p_WA) &&
-         magnitudes_in_range(c_b - s.bearing_bases.p_WB) &&
+         magnitudes_in_range(c_b) && magnitudes_in_range(p_a) && magnitudes_in_range(p_b) &&
+         magnitudes_in_range(c_a - p_a) && magnitudes_in_range(c_b - p_b) &&
          magnitude_in_range(s.journal_radius) && magnitude_in_range(s.bearing_radius);
 }
 
@@ -221,11 +240,13 @@ void detect_misaligned(const JointSetup& s, const DetectionOptions& options,
   const bool guard = prefilter_guard(s);
   for (const ContactBase base : {ContactBase::a, ContactBase::b}) {
     const Circle3 rim = journal_rim(s, base);
-    if (detail::rim_reach(rim, wall, guard) == detail::RimReach::strictly_inside) {
+    const detail::RoundedPoint& centre = journal_rim_point(s, base);
+    if (detail::rim_reach(rim, wall, guard, centre.error) == detail::RimReach::strictly_inside) {
       certificate.add(proved_clear);
       continue;
     }
-    const CircleCylinderIntersection hit = intersect_circle_cylinder(rim, wall, options.intersection);
+    const CircleCylinderIntersection hit =
+        detail::intersect_circle_cylinder(rim, wall, options.intersection, &centre);
     certificate.add(hit.certificate);
     if (hit.arc_count == 0) continue;
     (base == ContactBase::a ? presence.radial_at_a : presence.radial_at_b) = true;
@@ -239,12 +260,16 @@ void detect_misaligned(const JointSetup& s, const DetectionOptions& options,
   }
   for (const ContactBase base : {ContactBase::a, ContactBase::b}) {
     const Circle3 rim = journal_rim(s, base);
-    const Plane3 base_plane{bearing_base(s, base), outward_sign(base) * s.bearing_axis_W};
-    if (detail::rim_side_of_plane(rim, base_plane, guard) == detail::RimSide::strictly_negative) {
+    const detail::RoundedPoint& centre = journal_rim_point(s, base);
+    const detail::RoundedPoint& point = bearing_base_point(s, base);
+    const Plane3 base_plane{point.value, outward_sign(base) * s.bearing_axis_W};
+    if (detail::rim_side_of_plane(rim, base_plane, guard, centre.error + point.error) ==
+        detail::RimSide::strictly_negative) {
       certificate.add(proved_clear);
       continue;
     }
-    const CirclePlaneIntersection hit = intersect_circle_plane(rim, base_plane, options.intersection);
+    const CirclePlaneIntersection hit =
+        detail::intersect_circle_plane(rim, base_plane, options.intersection, &centre, &point);
     certificate.add(hit.certificate);
     if (!hit.has_penetration) continue;
     (base == ContactBase::a ? presence.axial_at_a : presence.axial_at_b) = true;
@@ -273,12 +298,14 @@ void detect_aligned(const JointSetup& s, const DetectionOptions& options, bool e
   if (exactly_parallel) {
     const Circle3 mid_section{s.p_WPj, s.journal_axis_W, s.journal_radius};
     const Cylinder3 wall{s.p_WPi, s.bearing_axis_W, s.bearing_radius};
-    if (detail::rim_reach(mid_section, wall) == detail::RimReach::strictly_inside) {
+    const bool guard = detail::cylinder_a_priori_bounds_apply(mid_section, wall);
+    if (detail::rim_reach(mid_section, wall, guard, s.journal_centre.error) ==
+        detail::RimReach::strictly_inside) {
       line = false;  // the kernel's first test, without its input checks and result assembly
       line_certificate = proved_clear;
     } else {
       const CircleCylinderIntersection hit =
-          intersect_circle_cylinder(mid_section, wall, options.intersection);
+          detail::intersect_circle_cylinder(mid_section, wall, options.intersection, &s.journal_centre);
       line = hit.arc_count > 0;
       line_certificate = hit.certificate;
     }
@@ -308,13 +335,18 @@ void detect_aligned(const JointSetup& s, const DetectionOptions& options, bool e
     bool face = false;
     Certificate face_certificate = tolerance_certificate;
     if (exactly_parallel) {
-      const Plane3 base_plane{bearing_base(s, base), outward_sign(base) * s.bearing_axis_W};
+      const detail::RoundedPoint& centre = journal_rim_point(s, base);
+      const detail::RoundedPoint& point = bearing_base_point(s, base);
+      const Plane3 base_plane{point.value, outward_sign(base) * s.bearing_axis_W};
       const Circle3 rim = journal_rim(s, base);
-      if (detail::rim_side_of_plane(rim, base_plane) == detail::RimSide::strictly_negative) {
+      const bool guard = detail::plane_a_priori_bounds_apply(rim, base_plane);
+      if (detail::rim_side_of_plane(rim, base_plane, guard, centre.error + point.error) ==
+          detail::RimSide::strictly_negative) {
         face = false;
         face_certificate = proved_clear;
       } else {
-        const CirclePlaneIntersection hit = intersect_circle_plane(rim, base_plane, options.intersection);
+        const CirclePlaneIntersection hit =
+            detail::intersect_circle_plane(rim, base_plane, options.intersection, &centre, &point);
         face = hit.topology == CirclePlaneTopology::disjoint && hit.side > 0;
         face_certificate = hit.certificate;
       }

@@ -8,6 +8,7 @@
 #include "rim_cylinder_exact.hpp"
 #include "rim_distance_polynomial.hpp"
 #include "primitives_detail.hpp"
+#include "rounded_point_queries.hpp"
 #include "scale_normalisation.hpp"
 
 namespace clearjoint::geometry {
@@ -24,7 +25,9 @@ constexpr double kPointRoundingUlps = 32 * detail::kUnitRoundoff;
 constexpr double kPointFromRootTrigUlps = 64 * detail::kUnitRoundoff;
 static_assert(2 * detail::kAngleAdditionTrigError < 64 * detail::kUnitRoundoff);
 
-void fill(const Circle3& circle, const RimRoots& roots, bool bounded,
+/// `centre_error`: how far the exact rim centre may lie from circle.center (rounded_point.hpp);
+/// a crossing of the exact rim is that much farther from the computed point.
+void fill(const Circle3& circle, const RimRoots& roots, bool bounded, double centre_error,
           CircleCylinderIntersection& out) {
   if (roots.count == 0) {
     out.topology = roots.sign_without_roots > 0   ? CircleCylinderTopology::outside
@@ -54,7 +57,9 @@ void fill(const Circle3& circle, const RimRoots& roots, bool bounded,
     crossing.multiplicity = root.multiplicity;
     // A chord is never longer than its arc: |x(t*) - x(t)| <= r |t* - t|.
     crossing.angle_error = bounded ? root.radius : kNoErrorBound;
-    crossing.point_error = bounded ? circle.radius * root.radius + rounding : kNoErrorBound;
+    crossing.point_error =
+        bounded ? (circle.radius * root.radius + rounding + centre_error) * (1 + 4 * detail::kUnitRoundoff)
+                : kNoErrorBound;
   }
   // The rim is beyond the wall after every root whose sign_after is +1, up to the next root.
   for (int i = 0; i < roots.count && out.arc_count < 2; ++i) {
@@ -67,8 +72,11 @@ void fill(const Circle3& circle, const RimRoots& roots, bool bounded,
   }
 }
 
+/// The query on rescaled inputs; `centre` (unscaled recipe) and `scale_exponent` only for the
+/// exact tier, `centre_error` already scaled.
 CircleCylinderIntersection intersect_scaled(const Circle3& circle, const Cylinder3& cylinder,
-                                            const IntersectionOptions& options);
+                                            const IntersectionOptions& options, double centre_error,
+                                            const detail::RoundedPoint* centre, int scale_exponent);
 
 }  // namespace
 
@@ -78,9 +86,16 @@ int CircleCylinderIntersection::root_count() const noexcept {
   return total;
 }
 
-CircleCylinderIntersection intersect_circle_cylinder(const Circle3& circle_in,
-                                                     const Cylinder3& cylinder_in,
+CircleCylinderIntersection intersect_circle_cylinder(const Circle3& circle,
+                                                     const Cylinder3& cylinder,
                                                      const IntersectionOptions& options) {
+  return detail::intersect_circle_cylinder(circle, cylinder, options, nullptr);
+}
+
+CircleCylinderIntersection detail::intersect_circle_cylinder(const Circle3& circle_in,
+                                                             const Cylinder3& cylinder_in,
+                                                             const IntersectionOptions& options,
+                                                             const RoundedPoint* centre) {
   // The inline test first: validate() formats its message and is out of line.
   if (!detail::passes_validation(circle_in)) validate(circle_in, "circle");
   if (!detail::passes_validation(cylinder_in)) validate(cylinder_in, "cylinder");
@@ -102,7 +117,8 @@ CircleCylinderIntersection intersect_circle_cylinder(const Circle3& circle_in,
     cylinder.axis_point = detail::scaled(cylinder.axis_point, e);
     cylinder.radius = std::ldexp(cylinder.radius, -e);
   }
-  CircleCylinderIntersection out = intersect_scaled(circle, cylinder, options);
+  const double centre_error = centre == nullptr ? 0.0 : detail::scaled_error(centre->error, e);
+  CircleCylinderIntersection out = intersect_scaled(circle, cylinder, options, centre_error, centre, e);
   for (int i = 0; e != 0 && i < out.crossing_count; ++i) {
     out.crossings[i].point = detail::scaled(out.crossings[i].point, -e);
     out.crossings[i].point_error = std::ldexp(out.crossings[i].point_error, e);
@@ -126,42 +142,44 @@ CircleCylinderIntersection intersect_circle_cylinder(const Circle3& circle_in,
 namespace {
 
 CircleCylinderIntersection intersect_scaled(const Circle3& circle, const Cylinder3& cylinder,
-                                            const IntersectionOptions& options) {
+                                            const IntersectionOptions& options, double centre_error,
+                                            const detail::RoundedPoint* centre, int scale_exponent) {
   CircleCylinderIntersection out;
 
   // Bounding test on the rim's reach: most free-flight rims stop here.
   const bool a_priori = detail::cylinder_a_priori_bounds_apply(circle, cylinder);
-  const detail::RimReach reach = detail::rim_reach(circle, cylinder, a_priori);
+  const detail::RimReach reach = detail::rim_reach(circle, cylinder, a_priori, centre_error);
   if (reach != detail::RimReach::undecided) {
     RimRoots none;
     none.sign_without_roots = reach == detail::RimReach::strictly_outside ? 1 : -1;
-    fill(circle, none, options.certify, out);
+    fill(circle, none, options.certify, centre_error, out);
     out.certificate = options.certify ? Certificate{Certainty::certified, ""}
                                       : Certificate{Certainty::uncertain, "certificate switched off"};
     return out;
   }
 
-  const detail::RimDistancePolynomial g = detail::rim_distance_polynomial(circle, cylinder, a_priori);
+  detail::RimDistancePolynomial g = detail::rim_distance_polynomial(circle, cylinder, a_priori);
   if (!options.certify) {
-    fill(circle, detail::approximate_rim_roots(g), false, out);
+    fill(circle, detail::approximate_rim_roots(g), false, centre_error, out);
     out.certificate = {Certainty::uncertain, "certificate switched off"};
     return out;
   }
+  detail::widen_for_centre_error(g, circle, cylinder, centre_error);
   const RimRoots roots = detail::certified_rim_roots(g);
   if (roots.proved) {
-    fill(circle, roots, true, out);
+    fill(circle, roots, true, centre_error, out);
     out.certificate = {Certainty::certified, ""};
   } else if (options.exact_fallback) {
-    const RimRoots exact = detail::exact_rim_roots(circle, cylinder);
+    const RimRoots exact = detail::exact_rim_roots(circle, cylinder, centre, scale_exponent);
     if (exact.proved) {
-      fill(circle, exact, true, out);
+      fill(circle, exact, true, centre_error, out);
       out.certificate = {Certainty::exact, roots.failure};
     } else {  // the exact tier gave up (magnitudes far apart): the best guess, marked so
-      fill(circle, detail::approximate_rim_roots(g), false, out);
+      fill(circle, detail::approximate_rim_roots(g), false, centre_error, out);
       out.certificate = {Certainty::uncertain, exact.failure};
     }
   } else {
-    fill(circle, detail::approximate_rim_roots(g), false, out);
+    fill(circle, detail::approximate_rim_roots(g), false, centre_error, out);
     out.certificate = {Certainty::uncertain, roots.failure};
   }
   return out;

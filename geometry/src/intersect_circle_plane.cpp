@@ -17,6 +17,7 @@
 #include "error_bounded.hpp"
 #include "primitives_detail.hpp"
 #include "rim_plane_quantities.hpp"
+#include "rounded_point_queries.hpp"
 #include "scale_normalisation.hpp"
 
 namespace clearjoint::geometry {
@@ -91,13 +92,29 @@ Bounded in_plane_normal_length(const detail::PlaneQuantities& q) {
   return sqrt(squared_norm(w) / q.nc2) * kDown;
 }
 
+/// How far the exact rim centre and plane point may lie from the stored ones (already scaled),
+/// and their recipes (unscaled) with the scale, for the exact tier (rounded_point.hpp).
+struct PointErrors {
+  double centre = 0.0, point = 0.0;
+  const detail::RoundedPoint* centre_recipe = nullptr;
+  const detail::RoundedPoint* point_recipe = nullptr;
+  int scale_exponent = 0;
+};
+
 CirclePlaneIntersection intersect_scaled(const Circle3& circle, const Plane3& plane,
-                                         const IntersectionOptions& options);
+                                         const IntersectionOptions& options, const PointErrors& errors);
 
 }  // namespace
 
-CirclePlaneIntersection intersect_circle_plane(const Circle3& circle_in, const Plane3& plane_in,
+CirclePlaneIntersection intersect_circle_plane(const Circle3& circle, const Plane3& plane,
                                                const IntersectionOptions& options) {
+  return detail::intersect_circle_plane(circle, plane, options, nullptr, nullptr);
+}
+
+CirclePlaneIntersection detail::intersect_circle_plane(const Circle3& circle_in, const Plane3& plane_in,
+                                                       const IntersectionOptions& options,
+                                                       const RoundedPoint* centre,
+                                                       const RoundedPoint* point) {
   // The inline test first: validate() formats its message and is out of line.
   if (!detail::passes_validation(circle_in)) validate(circle_in, "circle");
   if (!detail::passes_validation(plane_in)) validate(plane_in, "plane");
@@ -115,7 +132,12 @@ CirclePlaneIntersection intersect_circle_plane(const Circle3& circle_in, const P
     circle.radius = std::ldexp(circle.radius, -e);
     plane.point = detail::scaled(plane.point, e);
   }
-  CirclePlaneIntersection out = intersect_scaled(circle, plane, options);
+  PointErrors errors;
+  if (centre != nullptr || point != nullptr) {
+    errors = {centre == nullptr ? 0.0 : detail::scaled_error(centre->error, e),
+              point == nullptr ? 0.0 : detail::scaled_error(point->error, e), centre, point, e};
+  }
+  CirclePlaneIntersection out = intersect_scaled(circle, plane, options, errors);
   if (e != 0) {
     for (int i = 0; i < out.crossing_count; ++i) {
       out.crossings[i].point = detail::scaled(out.crossings[i].point, -e);
@@ -143,12 +165,14 @@ CirclePlaneIntersection intersect_circle_plane(const Circle3& circle_in, const P
 namespace {
 
 CirclePlaneIntersection intersect_scaled(const Circle3& circle, const Plane3& plane,
-                                         const IntersectionOptions& options) {
+                                         const IntersectionOptions& options, const PointErrors& errors) {
   CirclePlaneIntersection out;
 
   const bool a_priori = detail::plane_a_priori_bounds_apply(circle, plane);
-  const detail::PlaneQuantities q = a_priori ? detail::plane_quantities_a_priori(circle, plane)
-                                             : detail::plane_quantities_running_error(circle, plane);
+  detail::PlaneQuantities q = a_priori ? detail::plane_quantities_a_priori(circle, plane)
+                                       : detail::plane_quantities_running_error(circle, plane);
+  // Every bound below then holds for the exact centre and point too (rounded_point.hpp).
+  detail::widen_for_point_error(q, errors.centre + errors.point);
   const Bounded& s = q.s;
   const BoundedVector3& w = q.w;
   const Bounded &w2 = q.w2, &np2 = q.np2;
@@ -190,7 +214,8 @@ CirclePlaneIntersection intersect_scaled(const Circle3& circle, const Plane3& pl
     else decided = {CirclePlaneTopology::two_crossings, 0};
     out.certificate = {Certainty::uncertain, "certificate switched off"};
   } else if (options.exact_fallback) {
-    decided = detail::exact_circle_plane_topology(circle, plane);
+    decided = detail::exact_circle_plane_topology(circle, plane, errors.centre_recipe,
+                                                  errors.point_recipe, errors.scale_exponent);
     out.certificate = {Certainty::exact, "floating-point filter could not decide (tangent or parallel)"};
   } else {
     const int side = s.value > 0 ? 1 : (s.value < 0 ? -1 : 0);
@@ -244,7 +269,10 @@ CirclePlaneIntersection intersect_scaled(const Circle3& circle, const Plane3& pl
     // wrapping subtracts a rounded 2 pi: one more ulp of 2 pi.
     crossing.angle_error = bounded ? error + 4 * detail::kUnitRoundoff * detail::kTwoPi : kNoErrorBound;
     crossing.point = circle.center + circle.radius * (cos_angle * frame.u + sin_angle * frame.v);
-    crossing.point_error = bounded ? circle.radius * crossing.angle_error + rounding : kNoErrorBound;
+    // The exact rim's crossing is also errors.centre farther away (its centre moved that much).
+    crossing.point_error =
+        bounded ? (circle.radius * crossing.angle_error + rounding + errors.centre) * (1 + 4 * detail::kUnitRoundoff)
+                : kNoErrorBound;
     crossing.multiplicity = multiplicity;
     return crossing;
   };

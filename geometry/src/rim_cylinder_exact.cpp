@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "angles.hpp"
+#include "exact_rational_point.hpp"
 #include "primitives_detail.hpp"
 
 namespace clearjoint::geometry::detail {
@@ -321,9 +322,16 @@ int exact_sign_at(const RimConic& conic, const Rational& x, int y_sign) {
 
 namespace {
 
+RationalVector exact_centre(const Circle3& circle, const RoundedPoint* centre, int scale_exponent) {
+  if (centre == nullptr) return exact(circle.center);
+  const std::array<Rational, 3> c = exact_rational_point(*centre, scale_exponent);
+  return {c[0], c[1], c[2]};
+}
+
 RimRoots exact_rim_roots_within_budget(const Circle3& circle, const Cylinder3& cylinder,
+                                      const RoundedPoint* centre, int scale_exponent,
                                       EvaluationBudget& budget) {
-  const RationalVector c = exact(circle.center), n = exact(circle.normal);
+  const RationalVector c = exact_centre(circle, centre, scale_exponent), n = exact(circle.normal);
   const RationalVector q = c - exact(cylinder.axis_point), d = exact(cylinder.axis);
   const Vector3 u_double = circle.normal.cross(Vector3::Unit(frame_axis_index(circle.normal)));
   const RationalVector u = exact(u_double);
@@ -450,10 +458,11 @@ RimRoots exact_rim_roots_within_budget(const Circle3& circle, const Cylinder3& c
 
 }  // namespace
 
-RimRoots exact_rim_roots(const Circle3& circle, const Cylinder3& cylinder) {
+RimRoots exact_rim_roots(const Circle3& circle, const Cylinder3& cylinder,
+                         const RoundedPoint* centre, int scale_exponent) {
   EvaluationBudget budget;
   try {
-    return exact_rim_roots_within_budget(circle, cylinder, budget);
+    return exact_rim_roots_within_budget(circle, cylinder, centre, scale_exponent, budget);
   } catch (const GiveUp& gave_up) {
     RimRoots result;
     result.proved = false;

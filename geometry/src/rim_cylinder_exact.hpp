@@ -4,6 +4,7 @@
 // called when the floating-point tiers cannot decide. docs/circle-cylinder.md, section 4.
 
 #include "certified_rim_roots.hpp"
+#include "rounded_point.hpp"
 
 namespace clearjoint::geometry::detail {
 
@@ -12,6 +13,9 @@ namespace clearjoint::geometry::detail {
 /// its budget of sign evaluations (it never hangs). count == 0 with sign_without_roots == 0
 /// means the rim lies on the cylinder. Roots carry exact multiplicities; enclosures are
 /// certified (rational isolation, then rigorous double bounds for the angle).
-RimRoots exact_rim_roots(const Circle3& circle, const Cylinder3& cylinder);
+/// `centre`, when given, is the recipe of the exact rim centre that circle.center rounds (before
+/// the query's rescaling by 2^-scale_exponent): the tier then decides that rim, not the rounded one.
+RimRoots exact_rim_roots(const Circle3& circle, const Cylinder3& cylinder,
+                         const RoundedPoint* centre = nullptr, int scale_exponent = 0);
 
 }  // namespace clearjoint::geometry::detail

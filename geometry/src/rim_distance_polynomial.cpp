@@ -1,6 +1,7 @@
 #include "rim_distance_polynomial.hpp"
 
 #include <cmath>
+#include <limits>
 
 #include "a_priori_bounds.hpp"
 #include "primitives_detail.hpp"
@@ -231,38 +232,70 @@ RimReach rim_reach(const Circle3& circle, const Cylinder3& cylinder) {
 }
 
 RimReach rim_reach(const Circle3& circle, const Cylinder3& cylinder, bool a_priori_bounds_apply) {
+  return rim_reach(circle, cylinder, a_priori_bounds_apply, 0.0);
+}
+
+RimReach rim_reach(const Circle3& circle, const Cylinder3& cylinder, bool a_priori_bounds_apply,
+                   double centre_error) {
+  // dist(x, axis) lies within dist(c, axis) +- r for every rim point x, and dist(c, axis) moves
+  // by at most centre_error with the centre: compare |q x d|^2 against (R - r - e)^2 |d|^2 and
+  // (R + r + e)^2 |d|^2.
+  const double R = cylinder.radius, r = circle.radius;
   if (a_priori_bounds_apply) {
-    // |q x d|^2 (rounding chain 6) against (R -+ r)^2 D (chain 6); the difference has chain 7:
-    // error <= gamma_64 (|q x d|_abs^2 + (R -+ r)^2 D), see kGamma64.
+    // |q x d|^2 (rounding chain 6) against gap^2 D (chain 7: R - r, then - e, then squares);
+    // the difference has chain 8: error <= gamma_64 (|q x d|_abs^2 + gap_abs^2 D), see
+    // kGamma64, with gap_abs = (R - r) + e the twin of (R - r) - e (each subtraction of the
+    // gap is rounded relative to its result, which is at most gap_abs).
     const Vector3 q = circle.center - cylinder.axis_point;
     const double offset2 = q.cross(cylinder.axis).squaredNorm();
     const double offset2_abs = abs_cross(q.cwiseAbs(), cylinder.axis.cwiseAbs()).squaredNorm();
     const double axis_norm2 = cylinder.axis.squaredNorm();
-    const double R = cylinder.radius, r = circle.radius;
-    if (R > r) {
-      const double gap2 = (R - r) * (R - r) * axis_norm2;
-      if (gap2 - offset2 > kGamma64 * (gap2 + offset2_abs) * kMagnitudeInflation)
+    if (R - r > centre_error) {
+      const double gap = (R - r) - centre_error, gap_abs = (R - r) + centre_error;
+      const double gap2 = gap * gap * axis_norm2;
+      if (gap2 - offset2 > kGamma64 * (gap_abs * gap_abs * axis_norm2 + offset2_abs) * kMagnitudeInflation)
         return RimReach::strictly_inside;
     }
-    const double reach2 = (R + r) * (R + r) * axis_norm2;
+    const double reach = (R + r) + centre_error;
+    const double reach2 = reach * reach * axis_norm2;
     if (offset2 - reach2 > kGamma64 * (reach2 + offset2_abs) * kMagnitudeInflation)
       return RimReach::strictly_outside;
     return RimReach::undecided;
   }
-  // dist(x, axis) lies within dist(c, axis) +- r for every rim point x. Compare squares:
-  // |q x d|^2 against (R -+ r)^2 |d|^2.
   const BoundedVector3 q = exact(circle.center) - exact(cylinder.axis_point);
   const BoundedVector3 d = exact(cylinder.axis);
   const Bounded offset2 = squared_norm(cross(q, d));
   const Bounded axis_norm2 = squared_norm(d);
-  const double R = cylinder.radius, r = circle.radius;
   if (R > r) {
-    const Bounded gap = Bounded(R) - Bounded(r);
-    if ((gap * gap * axis_norm2 - offset2).sign() > 0) return RimReach::strictly_inside;
+    const Bounded gap = Bounded(R) - Bounded(r) - Bounded(centre_error);
+    if (gap.sign() > 0 && (gap * gap * axis_norm2 - offset2).sign() > 0) return RimReach::strictly_inside;
   }
-  const Bounded reach = Bounded(R) + Bounded(r);
+  const Bounded reach = Bounded(R) + Bounded(r) + Bounded(centre_error);
   if ((offset2 - reach * reach * axis_norm2).sign() > 0) return RimReach::strictly_outside;
   return RimReach::undecided;
+}
+
+void widen_for_centre_error(RimDistancePolynomial& g, const Circle3& circle,
+                            const Cylinder3& cylinder, double centre_error) {
+  if (centre_error == 0.0) return;
+  // With P the projection off the axis, k0 = |P q|^2 + (terms free of the centre) and
+  // (k1, k2) = 2 r (P q . P u_hat, P q . P v_hat) (rim_distance_polynomial_running_error: (q x d)
+  // . (u x d) / |d|^2 = P q . P u). A centre moved by delta, |delta| <= e, changes k0 by
+  // |P(q + delta)|^2 - |P q|^2 <= (2 |P q| + e) e and k1, k2 by at most 2 r e (|P u_hat| <= 1).
+  // |P q| = |q x d| / |d| is bounded above by the absolute-value twin of q x d (componentwise
+  // a bound of the exact cross product of the exact q = c - p, rounded once), its roundings
+  // covered by 2^-40 (they are a few tens of u), and an underflow allowance.
+  const Vector3 q = circle.center - cylinder.axis_point;
+  const double offset2_abs = abs_cross(q.cwiseAbs(), cylinder.axis.cwiseAbs()).squaredNorm();
+  double distance = std::sqrt(offset2_abs / cylinder.axis.squaredNorm()) * (1 + 0x1p-40) +
+                    0x1p-1000;
+  if (!std::isfinite(distance)) distance = std::numeric_limits<double>::infinity();
+  constexpr double kRounding = 1 + 16 * kUnitRoundoff;  // the few products below, rounded up
+  g.k[0].error = (g.k[0].error + (2 * distance + centre_error) * centre_error * kRounding +
+                  kUnderflowError) * kRounding;
+  const double first = 2 * circle.radius * centre_error * kRounding + kUnderflowError;
+  g.k[1].error = (g.k[1].error + first) * kRounding;
+  g.k[2].error = (g.k[2].error + first) * kRounding;
 }
 
 }  // namespace clearjoint::geometry::detail

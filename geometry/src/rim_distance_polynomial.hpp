@@ -72,6 +72,13 @@ bool cylinder_a_priori_bounds_apply(const Circle3& circle, const Cylinder3& cyli
 RimDistancePolynomial rim_distance_polynomial_running_error(const Circle3& circle,
                                                             const Cylinder3& cylinder);
 
+/// Widens the coefficient bounds so that they also hold for every rim whose centre lies within
+/// `centre_error` (Euclidean) of circle.center: only k0 = dist(c, axis)^2 - ... and the first
+/// harmonic depend on the centre (docs/circle-cylinder.md, section 1). Every tier then proves
+/// its answer for all those rims at once, the exact centre among them (rounded_point.hpp).
+void widen_for_centre_error(RimDistancePolynomial& g, const Circle3& circle,
+                            const Cylinder3& cylinder, double centre_error);
+
 /// Outcome of the cheap test on the rim's reach before any root finding.
 enum class RimReach {
   strictly_inside,   ///< dist(center, axis) + r < R: no rim point reaches the wall
@@ -82,5 +89,8 @@ enum class RimReach {
 /// Proved with the running error bound of error_bounded.hpp: the answer is never wrong.
 RimReach rim_reach(const Circle3& circle, const Cylinder3& cylinder);
 RimReach rim_reach(const Circle3& circle, const Cylinder3& cylinder, bool a_priori_bounds_apply);
+/// The same, proved for every centre within `centre_error` of circle.center (rounded_point.hpp).
+RimReach rim_reach(const Circle3& circle, const Cylinder3& cylinder, bool a_priori_bounds_apply,
+                   double centre_error);
 
 }  // namespace clearjoint::geometry::detail

@@ -1,5 +1,7 @@
 #include "rim_plane_quantities.hpp"
 
+#include <cmath>
+
 #include "a_priori_bounds.hpp"
 
 namespace clearjoint::geometry::detail {
@@ -92,14 +94,54 @@ RimSide rim_side_of_plane(const Circle3& circle, const Plane3& plane) {
   return rim_side_of_plane(circle, plane, plane_a_priori_bounds_apply(circle, plane));
 }
 
+namespace {
+
+/// The s and discriminant perturbations of widen_for_point_error, from |n_p|^2 and |n_c|^2.
+void widen(Bounded& s, Bounded& discriminant, const Bounded& np2, const Bounded& nc2,
+           double distance_error) {
+  if (distance_error == 0.0) return;
+  constexpr double kRounding = 1 + 16 * kUnitRoundoff;  // the few operations below, rounded up
+  auto high = [](const Bounded& x) { return std::fabs(x.value) + x.error; };
+  // s moves by delta, |delta| <= shift = |n_p| e (|n_p| <= sqrt(high(np2)), rounded up).
+  const double shift = std::sqrt(high(np2)) * distance_error * kRounding + kUnderflowError;
+  // s^2 moves by 2 s delta + delta^2, in [-2 |s| shift + shift^2, 2 |s| shift + shift^2] when
+  // |s| >= shift (centre shift^2, half-width 2 |s| shift); otherwise in
+  // [-s^2, 2 |s| shift + shift^2], within shift^2 +- (2 |s| + shift) shift. Times |n_c|^2.
+  const double low_s = std::fabs(s.value) - s.error;
+  const double centre_shift = shift * shift;
+  const double half_width = low_s >= shift ? 2 * high(s) * shift : (2 * high(s) + shift) * shift;
+  const double value = discriminant.value + centre_shift * nc2.value;
+  const double added_error =
+      (half_width * high(nc2) + centre_shift * nc2.error) * kRounding + kUnitRoundoff * std::fabs(value) +
+      2 * kUnderflowError;
+  s.error = (s.error + shift) * kRounding;
+  discriminant = Bounded(value, (discriminant.error + added_error) * kRounding);
+}
+
+}  // namespace
+
+void widen_for_point_error(PlaneQuantities& q, double distance_error) {
+  widen(q.s, q.discriminant, q.np2, q.nc2, distance_error);
+}
+
 RimSide rim_side_of_plane(const Circle3& circle, const Plane3& plane, bool a_priori_bounds_apply) {
+  return rim_side_of_plane(circle, plane, a_priori_bounds_apply, 0.0);
+}
+
+RimSide rim_side_of_plane(const Circle3& circle, const Plane3& plane, bool a_priori_bounds_apply,
+                          double distance_error) {
   Bounded s, discriminant;
   if (a_priori_bounds_apply) {  // only the two values the side needs, not all the quantities
     const APrioriTerms t = a_priori_terms(circle, plane);
     s = a_priori(t.s, t.s_abs);
     discriminant = a_priori(t.discriminant, t.discriminant_abs);
+    if (distance_error != 0.0) {
+      const double np2 = plane.normal.squaredNorm();
+      widen(s, discriminant, a_priori(np2, np2), a_priori(t.nc2, t.nc2), distance_error);
+    }
   } else {
-    const PlaneQuantities q = plane_quantities_running_error(circle, plane);
+    PlaneQuantities q = plane_quantities_running_error(circle, plane);
+    widen_for_point_error(q, distance_error);
     s = q.s;
     discriminant = q.discriminant;
   }

@@ -24,6 +24,11 @@ PlaneQuantities plane_quantities_a_priori(const Circle3& circle, const Plane3& p
 /// Running error bounds (error_bounded.hpp): any finite input; overflow gives non-finite bounds.
 PlaneQuantities plane_quantities_running_error(const Circle3& circle, const Plane3& plane);
 
+/// Widens s and the discriminant so that they hold for every rim centre c' and plane point p'
+/// with |c' - c| + |p' - p| <= distance_error (rounded_point.hpp): s moves by at most
+/// |n_p| distance_error.
+void widen_for_point_error(PlaneQuantities& q, double distance_error);
+
 /// Components of toward = n_c x (n_p x n_c) (parallel to the plane normal's part in the rim
 /// plane) along the rim frame's u and v: the angle theta_m of the deepest rim point.
 struct InPlaneNormal {
@@ -45,5 +50,9 @@ RimSide rim_side_of_plane(const Circle3& circle, const Plane3& plane);
 /// The same with the magnitude guard already evaluated (plane_a_priori_bounds_apply, or a
 /// caller's guard over a superset of the same values).
 RimSide rim_side_of_plane(const Circle3& circle, const Plane3& plane, bool a_priori_bounds_apply);
+/// The same, proved for every centre and plane point within distance_error (together) of the
+/// stored ones (widen_for_point_error).
+RimSide rim_side_of_plane(const Circle3& circle, const Plane3& plane, bool a_priori_bounds_apply,
+                          double distance_error);
 
 }  // namespace clearjoint::geometry::detail

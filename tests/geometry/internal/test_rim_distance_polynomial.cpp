@@ -39,13 +39,15 @@ Real magnitude(const Pose& pose) {
 /// The five exact coefficients, derived independently of the implementation's cross-product
 /// forms: project q, u, v off the axis and expand |q_perp + r (cos u_perp + sin v_perp)|^2 - R^2
 /// (cos^2 = (1 + cos 2t)/2, sin^2 = (1 - cos 2t)/2, 2 sin cos = sin 2t).
-std::array<Real, 5> exact_coefficients(const Pose& pose) {
+/// `centre_shift`: the rim's centre moved by this much (exactly, in MPFR).
+std::array<Real, 5> exact_coefficients(const Pose& pose,
+                                       const RealVector3& centre_shift = {Real(0), Real(0), Real(0)}) {
   const it::RealFrame frame = it::documented_frame(pose.circle.normal);
   const RealVector3 d = it::to_real(pose.cylinder.axis);
   const RealVector3 d_hat = Real(1) / it::norm(d) * d;
   auto perp = [&](const RealVector3& w) { return w - it::dot(w, d_hat) * d_hat; };
-  const RealVector3 q =
-      perp(it::to_real(pose.circle.center) - it::to_real(pose.cylinder.axis_point));
+  const RealVector3 q = perp(it::to_real(pose.circle.center) + centre_shift -
+                             it::to_real(pose.cylinder.axis_point));
   const RealVector3 u = perp(frame.u), v = perp(frame.v);
   const Real r(pose.circle.radius), R(pose.cylinder.radius);
   return {it::dot(q, q) + r * r * (it::dot(u, u) + it::dot(v, v)) / 2 - R * R,
@@ -190,6 +192,44 @@ TEST(RimDistancePolynomial, MatchesTheAnalyticPolynomialOfATiltedCircleCentredOn
   }
 }
 
+// ---- widen_for_centre_error -------------------------------------------------------------
+
+TEST(RimDistancePolynomial, WidenedForACentreErrorEnclosesEveryRimWithinIt) {
+  // The widened coefficients must enclose the exact coefficients of the rim at any centre within
+  // the error; shifts of exactly the error's length in random directions (and along the
+  // worst-case directions: towards the axis, along u and v) are checked.
+  std::mt19937_64 rng(20261123);
+  std::uniform_real_distribution<double> decade(-14.0, -1.0);
+  for (int i = 0; i < 200; ++i) {
+    const Pose pose = random_pose(rng, i % 2 == 0 ? 1.0 : 1e-3, -1.0);
+    const double error = std::pow(10.0, decade(rng)) * pose.cylinder.radius;
+    RimDistancePolynomial g = rim_distance_polynomial(pose.circle, pose.cylinder);
+    widen_for_centre_error(g, pose.circle, pose.cylinder, error);
+    const Vector3 d = pose.cylinder.axis.normalized();
+    const Vector3 q = pose.circle.center - pose.cylinder.axis_point;
+    const Vector3 toward_axis = -(q - q.dot(d) * d).normalized();
+    const CircleFrame frame = frame_of(pose.circle);
+    for (const Vector3& direction : {toward_axis, Vector3(-toward_axis), frame.u, frame.v,
+                                     random_direction(rng), random_direction(rng)}) {
+      // A shift of exactly the error's length (in MPFR: a double sum would round).
+      const RealVector3 unit = Real(1) / it::norm(it::to_real(direction)) * it::to_real(direction);
+      const std::array<Real, 5> k = exact_coefficients(pose, Real(error) * unit);
+      for (int c = 0; c < 5; ++c) {
+        ASSERT_TRUE(Encloses(g.k[c], k[c], magnitude(pose))) << i << " k" << c;
+      }
+    }
+  }
+}
+
+TEST(RimDistancePolynomial, WideningByZeroChangesNothing) {
+  std::mt19937_64 rng(7);
+  const Pose pose = random_pose(rng, 1.0, -1.0);
+  const RimDistancePolynomial g = rim_distance_polynomial(pose.circle, pose.cylinder);
+  RimDistancePolynomial widened = g;
+  widen_for_centre_error(widened, pose.circle, pose.cylinder, 0.0);
+  for (int c = 0; c < 5; ++c) EXPECT_EQ(widened.k[c].error, g.k[c].error);
+}
+
 // ---- rim_reach --------------------------------------------------------------------------
 
 /// Sampled max and min of dist(x(t), axis) - R over the rim, in MPFR.
@@ -252,6 +292,29 @@ TEST(RimReach, DecidesClearCasesAndLeavesExactTouchingUndecided) {
   EXPECT_EQ(rim_reach({{2, 0, 0}, {0, 0, 1}, 1}, wall), RimReach::undecided);  // crossing
   // A rim larger than the wall can never be strictly inside.
   EXPECT_NE(rim_reach({{0, 0, 0}, {0, 0, 1}, 3}, wall), RimReach::strictly_inside);
+}
+
+TEST(RimReach, WithACentreErrorIsNeverWrongForAnyCentreWithinIt) {
+  // A rim whose centre is only known to within e: strictly inside must hold for the farthest
+  // centre, strictly outside for the nearest. Rims with dist + r = R - e/2 (inside for the stored
+  // centre, not for every centre within e) must stay undecided; at R - 2e they are decided when
+  // e is well above the rounding of the test (a priori: 64 u of the squares, ~1e-14 here).
+  const Cylinder3 wall{{0, 0, 0}, {0, 0, 1}, 2};
+  for (const bool a_priori : {true, false}) {
+    for (const double e : {1e-3, 1e-9, 1e-15}) {
+      SCOPED_TRACE(e);
+      const Circle3 barely{{1 - 0.5 * e, 0, 0}, {0, 0, 1}, 1};
+      const Circle3 barely_out{{3 + 0.5 * e, 0, 0}, {0, 0, 1}, 1};
+      EXPECT_EQ(rim_reach(barely, wall, a_priori, e), RimReach::undecided);
+      EXPECT_EQ(rim_reach(barely_out, wall, a_priori, e), RimReach::undecided);
+      if (e < 1e-12) continue;
+      EXPECT_EQ(rim_reach(barely, wall, a_priori, 0.0), RimReach::strictly_inside);
+      EXPECT_EQ(rim_reach(Circle3{{1 - 2 * e, 0, 0}, {0, 0, 1}, 1}, wall, a_priori, e),
+                RimReach::strictly_inside);
+      EXPECT_EQ(rim_reach(Circle3{{3 + 2 * e, 0, 0}, {0, 0, 1}, 1}, wall, a_priori, e),
+                RimReach::strictly_outside);
+    }
+  }
 }
 
 TEST(RimReach, IsNeverWrongOneUlpAwayFromTouching) {

@@ -183,6 +183,55 @@ TEST(RimSideOfPlane, IsNeverWrongOnRandomPosesAndDecidesMostOfThem) {
   EXPECT_GT(decided, 100);  // a test that decides nothing would pass vacuously
 }
 
+TEST(PlaneQuantities, WidenedForAPointErrorEncloseEveryRimAndPlaneWithinIt) {
+  // s and the discriminant, widened by e, must enclose the exact values of the rim and plane
+  // with the centre and the plane point moved by e together; s depends on the two only through
+  // n_p . (c - p), so the extremes are a shift of e along the plane normal, either way.
+  std::mt19937_64 rng(20261123);
+  std::uniform_real_distribution<double> decade(-14.0, -1.0);
+  for (int i = 0; i < 300; ++i) {
+    const Pose pose = random_pose(rng, i % 2 == 0 ? 1.0 : 1e-3, i % 7 == 0 ? 0.0 : -1.0);
+    const double e = std::pow(10.0, decade(rng)) * pose.circle.radius;
+    const RealVector3 np = it::to_real(pose.plane.normal);
+    const Exact stored = exact_quantities(pose);
+    const Real length = it::norm(it::to_real(pose.circle.center) - it::to_real(pose.plane.point)) +
+                        Real(pose.circle.radius) + Real(e);
+    const Real nn = it::dot(it::to_real(pose.circle.normal), it::to_real(pose.circle.normal)) * stored.np2;
+    const Real scale = (length * length + 1) * (nn + 1) * (nn + 1);
+    for (const bool a_priori : {true, false}) {
+      PlaneQuantities q = a_priori ? plane_quantities_a_priori(pose.circle, pose.plane)
+                                   : plane_quantities_running_error(pose.circle, pose.plane);
+      widen_for_point_error(q, e);
+      for (const double fraction : {-1.0, -0.5, 0.5, 1.0}) {
+        // Moved by fraction e along the unit plane normal, exactly (in MPFR): s gains
+        // fraction e |n_p|; w and |n_c|^2 stay.
+        Exact x = stored;
+        x.s = stored.s + Real(fraction * e) * sqrt(stored.np2);
+        x.discriminant = x.s * x.s * x.nc2 - Real(pose.circle.radius) * Real(pose.circle.radius) * x.w2;
+        ASSERT_TRUE(Encloses(q.s, x.s, scale)) << i << " s";
+        ASSERT_TRUE(Encloses(q.discriminant, x.discriminant, scale)) << i << " discriminant";
+      }
+    }
+  }
+}
+
+TEST(RimSideOfPlane, WithAPointErrorLeavesRimsWithinItUndecided) {
+  const Plane3 z0{{0, 0, 0}, {0, 0, 1}};
+  for (const bool a_priori : {true, false}) {
+    for (const double e : {1e-3, 1e-9, 1e-15}) {
+      // A parallel rim at height e/2: positive for the stored points, not for all within e.
+      EXPECT_EQ(rim_side_of_plane({{0, 0, 0.5 * e}, {0, 0, 1}, 1}, z0, a_priori, 0.0), RimSide::strictly_positive);
+      EXPECT_EQ(rim_side_of_plane({{0, 0, 0.5 * e}, {0, 0, 1}, 1}, z0, a_priori, e), RimSide::undecided);
+      EXPECT_EQ(rim_side_of_plane({{0, 0, -2 * e}, {0, 0, 1}, 1}, z0, a_priori, e), RimSide::strictly_negative);
+      // A tilted rim (3-4-5: reach 3 below the centre) at 3 + e/2 and 3 + 2e; the second is
+      // decided only when e is well above the bounds' own rounding (~1e-12 of s^2 |n_c|^2 here).
+      EXPECT_EQ(rim_side_of_plane({{0, 0, 3 + 0.5 * e}, {3, 0, 4}, 5}, z0, a_priori, e), RimSide::undecided);
+      if (e < 1e-12) continue;
+      EXPECT_EQ(rim_side_of_plane({{0, 0, 3 + 2 * e}, {3, 0, 4}, 5}, z0, a_priori, e), RimSide::strictly_positive);
+    }
+  }
+}
+
 TEST(RimSideOfPlane, LeavesExactTouchingAndCrossingUndecidedAndDecidesParallelRims) {
   const Plane3 z0{{0, 0, 0}, {0, 0, 1}};
   // A rim perpendicular to the plane touching it at one point, from either side.

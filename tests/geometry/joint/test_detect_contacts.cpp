@@ -451,6 +451,48 @@ TEST(DetectContacts, BadInputsAreRejectedWithTheirNames) {
   EXPECT_THROW(detect_contacts(kTable2, PartPose{}, PartPose{}, options), InvalidInput);
 }
 
+/// P_j,z for a journal on the bearing's axis whose rim A centre P_j,z + Lj/2 rounds to exactly
+/// `plane` while the exact sum lies beyond it (direction +1) or short of it (-1): found by walking
+/// ulps from plane - Lj/2, with Knuth's two-sum telling the sign of the rounding.
+std::optional<double> journal_centre_rounding_onto(double plane, double half_length, int direction) {
+  double z = plane - half_length;
+  for (int step = 0; step < 4096; ++step) {
+    const double sum = z + half_length;
+    const double z_part = sum - half_length;
+    const double rounding = (z - z_part) + (half_length - (sum - z_part));  // exact sum - sum
+    if (sum == plane && (rounding > 0 ? 1 : rounding < 0 ? -1 : 0) == direction) return z;
+    z = std::nextafter(z, direction > 0 ? 1.0 : -1.0);
+  }
+  return std::nullopt;
+}
+
+TEST(DetectContacts, DecidesAFaceTouchForTheExactRimCentreNotForItsRounding) {
+  // Base plane A at Li/2; the journal's rim A centre rounds onto it. Decided on the rounded
+  // centre the rim would lie in the plane (no face contact); the exact centre is a fraction of
+  // an ulp beyond it (face contact) or short of it (none), and the answer must follow it.
+  const double plane = 0.5 * kTable2.bearing_length;
+  const double half = 0.5 * kTable2.journal_length;
+  for (const int direction : {+1, -1}) {
+    SCOPED_TRACE(direction);
+    const std::optional<double> z = journal_centre_rounding_onto(plane, half, direction);
+    ASSERT_TRUE(z.has_value());
+    const JointContacts answer =
+        detect_contacts(kTable2, bearing_on_z(), PartPose{Vector3(0.0, 0.0, *z), Vector3::UnitZ()});
+    EXPECT_TRUE(answer.aligned);
+    EXPECT_NE(answer.certificate.level, Certainty::uncertain);
+    if (direction > 0) {
+      EXPECT_EQ(answer.scenario, ContactScenario::face);
+      ASSERT_EQ(answer.contact_count, 1);
+      EXPECT_EQ(answer.contacts[0].base, ContactBase::a);
+      // Only the exact tier can tell: the rounded centre lies in the plane.
+      EXPECT_EQ(answer.contacts[0].certificate.level, Certainty::exact);
+    } else {
+      EXPECT_EQ(answer.scenario, ContactScenario::none);
+      EXPECT_EQ(answer.contact_count, 0);
+    }
+  }
+}
+
 // Found by fuzzing `clearjoint detect`: the base and rim centres (eqs. 3-4) were rounded in world
 // coordinates, so 1e13 m from the origin (an ulp of 2 mm, twenty clearances) a centred, slightly
 // tilted journal came back as scenario (d). Detection now works relative to the bearing centre.

@@ -17,14 +17,14 @@
 /// base edge, and a rim against the opposite base, are not candidate contacts (the paper's
 /// small-tilt model).
 ///
-/// What the certificates are about: the rims and base planes whose centres eqs. (3)-(4) give,
-/// evaluated in double precision in a frame centred on the bearing (P +- (L/2) a/|a|, rounded:
-/// each centre is off the exact one by a few ulps of |P_j - P_i| + L). Every decision and bound is
-/// proved for those rounded rims and planes. For the joint exactly as its input numbers describe
-/// it, answers can differ where a rim is within that rounding (about 1e-14 clearances for the
-/// paper's joint in metres) of touching, and near a tangency a crossing point moves by about the
-/// square root of it; bench/detection (docs/benchmarks.md) measures both against an MPFR
-/// reference of the joint as given.
+/// What the certificates are about: the joint exactly as its input numbers define it
+/// (joint_geometry.hpp: base centres P +- (L/2) a_hat, a_hat = unit_axis(pose)). Detection works
+/// in a frame centred on the bearing and rounds the centres there to double, but each rounded
+/// centre carries a rigorous bound on its distance to the exact one (geometry/src/rounded_point.hpp):
+/// the kernel's proofs hold for every centre within that bound, crossing-point errors include it,
+/// and where the floating-point proofs fail (a rim within the rounding of touching) the exact tier
+/// decides on the exact centres, rebuilt in rationals. bench/detection (docs/benchmarks.md)
+/// checks this against an MPFR reference of the joint as given.
 
 #include <array>
 

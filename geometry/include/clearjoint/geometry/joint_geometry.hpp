@@ -25,8 +25,17 @@ struct JointDimensions {
 };
 
 /// Where one part (bearing or journal) is: P, the centre of its axis segment, and a, its axis
-/// direction, both in the world frame W. The axis need not have unit length (only its direction
-/// is used); it must be finite and non-zero.
+/// direction, both in the world frame W. The axis need not have unit length; it must be finite
+/// and non-zero.
+///
+/// The joint these numbers define (what detect_contacts certifies its answers about): the rim,
+/// wall and base-plane normals are the axes as given (any length: only their direction counts);
+/// the base centres are exactly P +- (L/2) a_hat with a_hat = unit_axis(pose), the axis
+/// normalised in double. That normalisation is the one rounding in the definition (a square root
+/// has no exact double); a_hat is bitwise a when a . a evaluates to exactly 1, and otherwise
+/// within a few ulps of a / |a|, which moves a centre by a few ulps of L. Everything after it is
+/// exact: detection rounds the centres for speed but carries the rounding into its bounds and
+/// evaluates the exact centres where a decision needs them.
 struct PartPose {
   Vector3 p_WP = Vector3::Zero();
   Vector3 axis_W = Vector3::UnitZ();
@@ -43,7 +52,7 @@ void validate(const PartPose& pose, std::string_view name = "pose");
 Vector3 unit_axis(const PartPose& pose);
 
 /// The centres of a part's two bases: A = P + (L/2) a_hat (eq. 3), B = P - (L/2) a_hat (eq. 4),
-/// a_hat = a / |a| rounded to double.
+/// a_hat = unit_axis(pose); each coordinate rounded to double (detection keeps the exact ones).
 struct BaseCenters {
   Vector3 p_WA = Vector3::Zero();
   Vector3 p_WB = Vector3::Zero();

@@ -1,0 +1,22 @@
+#pragma once
+// The kernel queries on a rim whose centre (and a plane whose point) detection computed by
+// rounding (rounded_point.hpp): every certified or exact answer holds for the exact points, not
+// only for the rounded ones. The public queries are these with exact points (nullptr).
+
+#include "clearjoint/geometry/intersect_circle_cylinder.hpp"
+#include "clearjoint/geometry/intersect_circle_plane.hpp"
+#include "rounded_point.hpp"
+
+namespace clearjoint::geometry::detail {
+
+/// circle.center must be centre->value. Crossing point errors include centre->error.
+CircleCylinderIntersection intersect_circle_cylinder(const Circle3& circle, const Cylinder3& cylinder,
+                                                     const IntersectionOptions& options,
+                                                     const RoundedPoint* centre);
+/// circle.center must be centre->value and plane.point point->value. Crossing point errors
+/// include centre->error, the depth error both errors.
+CirclePlaneIntersection intersect_circle_plane(const Circle3& circle, const Plane3& plane,
+                                               const IntersectionOptions& options,
+                                               const RoundedPoint* centre, const RoundedPoint* point);
+
+}  // namespace clearjoint::geometry::detail
