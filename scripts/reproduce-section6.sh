@@ -9,9 +9,8 @@
 #   BUILD_DIR=build-mine JOBS=1 bash scripts/reproduce-section6.sh
 #
 # Results (reduced time series, one .npz per run, written atomically) go to results/section6/,
-# the numbers quoted in docs/reproduction.md to results/section6/summary.json. Measured: 1-13 s per
-# run on one core of a 2-core machine; 1 min 42 s for the 37 runs of the figures and 3 min 15 s for
-# the 90 ensemble runs with 2 jobs.
+# the numbers quoted in docs/reproduction.md to results/section6/summary.json. Measured at af1c323:
+# 1.8-7.8 s per run on one core of a 2-core machine, 3 min 42 s for all 127 runs with 2 jobs.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 BUILD_DIR=${BUILD_DIR:-build}
