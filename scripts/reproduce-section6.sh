@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Reproduce Section 6 of Marques et al. (2017): build the clearjoint program, run the slider-crank
 # models (planar and spatial, ideal and with the clearance joint, the 4 x 4 clearance study and
-# ensembles of 9 slightly perturbed runs per point of its three sweeps, in parallel on all cores)
+# ensembles of 9 slightly perturbed runs per point of its three sweeps (and of the radial and axial
+# sweeps at tolerance 1e-8), in parallel on all cores)
 # and draw Figs. 7-11 and 13-19 and the ensemble statistics into docs/figures/section6/.
 #
 #   bash scripts/reproduce-section6.sh            # resumes: finished runs are not redone
@@ -10,7 +11,7 @@
 #
 # Results (reduced time series, one .npz per run, written atomically) go to results/section6/,
 # the numbers quoted in docs/reproduction.md to results/section6/summary.json. Measured at af1c323:
-# 1.8-7.8 s per run on one core of a 2-core machine, 3 min 42 s for all 127 runs with 2 jobs.
+# 1.8-7.8 s per run on one core of a 2-core machine, about 6 min for all 190 runs with 2 jobs.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 BUILD_DIR=${BUILD_DIR:-build}

@@ -8,7 +8,8 @@ Runs (all in models/): the planar slider-crank with ideal joints and with the cl
 aligned and misaligned (Sec. 6.1), the spatial one ideal and with the clearance joint (Sec. 6.2),
 the 16 runs of the clearance study (models/clearance_study/), the same at tolerance 1e-8, and an
 ensemble of 9 runs (initial crank speed x (1 + k 1e-9), k = -4..4) for each point of the radial,
-axial and diagonal sweeps (ensemble_vs_clearance.png, section6_ensemble.py). They run in parallel, one per
+axial and diagonal sweeps (ensemble_vs_clearance.png, section6_ensemble.py), and the radial and
+axial ones again at tolerance 1e-8 (ensemble_vs_clearance_tolerance_1e-8.png). They run in parallel, one per
 core (--jobs), with a progress line on standard error. Each run's result is reduced to the columns
 the figures need and written atomically to RESULTS/<run>.npz (temporary name, then rename),
 together with the SHA-256 of its model file; a later call skips every run whose result exists for
@@ -75,15 +76,22 @@ ENSEMBLE_STEP = 1e-9
 ENSEMBLE_OFFSETS = (-4, -3, -2, -1, 0, 1, 2, 3, 4)
 
 
-def ensemble_points():
+# The single-direction sweeps' ensembles once more at ROBUSTNESS_TOLERANCE: a second kind of
+# perturbation (every step changes), to see whether the verdict on the trend depends on it.
+ENSEMBLE_FINE_PREFIX = "tol1e-8_"
+
+
+def ensemble_points(diagonal=True):
     """(radial, axial) clearances [mm] of the study points that get an ensemble."""
-    points = [(cr, 0.1) for cr in STUDY_MM] + [(0.1, ca) for ca in STUDY_MM] + [(c, c) for c in STUDY_MM]
+    points = [(cr, 0.1) for cr in STUDY_MM] + [(0.1, ca) for ca in STUDY_MM]
+    if diagonal:
+        points += [(c, c) for c in STUDY_MM]
     return list(dict.fromkeys(points))  # (0.1, 0.1) once, order kept
 
 
-def ensemble_run_name(cr, ca, k):
+def ensemble_run_name(cr, ca, k, prefix=""):
     """The run of study point (cr, ca) [mm] with crank speed factor 1 + k ENSEMBLE_STEP."""
-    return "ensemble_cr%g_ca%g_k%+d" % (cr, ca, k)
+    return "ensemble_%scr%g_ca%g_k%+d" % (prefix, cr, ca, k)
 
 
 def runs():
@@ -107,6 +115,12 @@ def runs():
         model = os.path.join("clearance_study", "spatial_cr%g_ca%g.json" % (cr, ca))
         for k in ENSEMBLE_OFFSETS:
             table[ensemble_run_name(cr, ca, k)] = (model, SPATIAL_COLUMNS, False, {}, 1 + k * ENSEMBLE_STEP)
+    fine = {"relative_tolerance": ROBUSTNESS_TOLERANCE, "absolute_tolerance": ROBUSTNESS_TOLERANCE}
+    for cr, ca in ensemble_points(diagonal=False):
+        model = os.path.join("clearance_study", "spatial_cr%g_ca%g.json" % (cr, ca))
+        for k in ENSEMBLE_OFFSETS:
+            table[ensemble_run_name(cr, ca, k, ENSEMBLE_FINE_PREFIX)] = (
+                model, SPATIAL_COLUMNS, False, fine, 1 + k * ENSEMBLE_STEP)
     return table
 
 
@@ -343,9 +357,13 @@ def main():
         import section6_figures  # noqa: E402 (matplotlib only when drawing)
         import section6_ensemble  # noqa: E402
         summary = section6_figures.draw_all(lambda name: load(args.results, name), args.figures, STUDY_MM)
-        summary["ensemble"] = section6_ensemble.draw(lambda name: load(args.results, name), args.figures,
-                                                     STUDY_MM, ensemble_points(), ENSEMBLE_OFFSETS,
-                                                     ensemble_run_name)
+        summary["ensemble"] = section6_ensemble.draw(
+            lambda name: load(args.results, name), args.figures, STUDY_MM, ensemble_points(), ENSEMBLE_OFFSETS,
+            ensemble_run_name, "ensemble_vs_clearance.png", "tolerance 1e-7")
+        summary["ensemble_tolerance_1e-8"] = section6_ensemble.draw(
+            lambda name: load(args.results, name), args.figures, STUDY_MM, ensemble_points(diagonal=False),
+            ENSEMBLE_OFFSETS, lambda cr, ca, k: ensemble_run_name(cr, ca, k, ENSEMBLE_FINE_PREFIX),
+            "ensemble_vs_clearance_tolerance_1e-8.png", "tolerance 1e-8")
         summary["wall_seconds_per_run"] = {
             name: float(load(args.results, name)["wall_seconds"]) for name in runs()}
         summary["sources"] = sorted({str(load(args.results, name).get("source", "unknown")) for name in runs()})

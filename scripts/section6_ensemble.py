@@ -94,7 +94,7 @@ def sweep_summary(members, points, clearances_mm):
     return out
 
 
-def trend_figure(figures, clearances_mm, members, sweep_table):
+def trend_figure(figures, clearances_mm, members, sweep_table, name, settings):
     """Median with min-max bars against clearance, per statistic and sweep; members as dots."""
     fig, axes = plt.subplots(2, 2, figsize=(12, 8.5))
     colours = {"radial": "tab:blue", "axial": "tab:orange", "diagonal": "tab:green"}
@@ -117,17 +117,19 @@ def trend_figure(figures, clearances_mm, members, sweep_table):
     axes.flat[0].legend(fontsize=7)
     n = len(next(iter(members.values())))
     fig.suptitle("Slider acceleration against clearance, spatial slider-crank: ensembles of %d runs per "
-                 "point (initial crank speed x (1 + k 1e-9)), tolerance 1e-7" % n, fontsize=10)
+                 "point (initial crank speed x (1 + k 1e-9)), %s" % (n, settings), fontsize=10)
     fig.tight_layout()
-    save(fig, figures, "ensemble_vs_clearance.png")
+    save(fig, figures, name)
 
 
-def draw(load, figures, clearances_mm, points, offsets, run_name):
-    """Loads every ensemble member, draws ensemble_vs_clearance.png and returns the summary."""
+def draw(load, figures, clearances_mm, points, offsets, run_name, figure_name, settings):
+    """Loads every ensemble member, draws FIGURES/figure_name for the sweeps whose points all have
+    an ensemble (`settings` names the integration settings in its title) and returns the summary."""
     os.makedirs(figures, exist_ok=True)
     members = {p: [member_statistics(load(run_name(p[0], p[1], k))) for k in offsets] for p in points}
-    sweep_table = sweeps(clearances_mm)
-    trend_figure(figures, clearances_mm, members, sweep_table)
+    sweep_table = {name: sweep for name, sweep in sweeps(clearances_mm).items()
+                   if all(p in members for p in sweep[0])}
+    trend_figure(figures, clearances_mm, members, sweep_table, figure_name, settings)
     return {"offsets": list(offsets),
             "post_impact_start_s": POST_IMPACT_START,
             "members": {"cr%g_ca%g" % p: members[p] for p in points},
