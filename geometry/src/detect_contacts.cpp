@@ -10,6 +10,7 @@
 #include "clearjoint/geometry/intersect_circle_cylinder.hpp"
 #include "clearjoint/geometry/intersect_circle_plane.hpp"
 #include "a_priori_bounds.hpp"
+#include "candidate_prefilter.hpp"
 #include "error_bounded.hpp"
 #include "primitives_detail.hpp"
 #include "rim_distance_polynomial.hpp"
@@ -39,8 +40,20 @@ bool products_equal(double a, double b, double c, double d) {
   return CGAL::Gmpq(a) * CGAL::Gmpq(b) == CGAL::Gmpq(c) * CGAL::Gmpq(d);
 }
 
-/// eq. (5): a_i x a_j = 0, decided exactly on the stored doubles.
+/// eq. (5): a_i x a_j = 0, decided exactly on the stored doubles. First a filter: a component
+/// of the cross product computed in double is a difference of two rounded products, within
+/// gamma_64 of its absolute-value twin plus the products' underflow (a_priori_bounds.hpp) of the
+/// exact one; beyond that it is not zero and the axes are not parallel (every misaligned pose
+/// stops here). Otherwise the exact test of each component.
 bool axes_exactly_parallel(const Vector3& a, const Vector3& b) {
+  const Vector3 cross = a.cross(b);
+  const Vector3 twin = detail::abs_cross(a.cwiseAbs(), b.cwiseAbs());
+  constexpr double kProductUnderflow = 4 * detail::kUnderflowError;
+  for (int i = 0; i < 3; ++i) {
+    if (std::fabs(cross[i]) > detail::kGamma64 * twin[i] * detail::kMagnitudeInflation + kProductUnderflow) {
+      return false;
+    }
+  }
   return products_equal(a.y(), b.z(), a.z(), b.y()) && products_equal(a.z(), b.x(), a.x(), b.z()) &&
          products_equal(a.x(), b.y(), a.y(), b.x());
 }
@@ -57,17 +70,24 @@ struct JointSetup {
   double journal_radius = 0.0;
   double radial_clearance = 0.0;  // eq. (1)
   double axial_clearance = 0.0;   // eq. (2)
+  double bearing_length = 0.0;
+  double journal_length = 0.0;
   Vector3 p_WPi = Vector3::Zero();
   Vector3 p_WPj = Vector3::Zero();
   Vector3 bearing_axis_hat_W = Vector3::UnitZ();
   Vector3 journal_axis_hat_W = Vector3::UnitZ();
   Vector3 bearing_axis_W = Vector3::UnitZ();  // as given, for the kernel primitives
   Vector3 journal_axis_W = Vector3::UnitZ();
-  // Rounded, each with its exact recipe and error bound (rounded_point.hpp): the kernel's
-  // certificates then hold for the exact centres. Index 0: base A, 1: base B.
-  std::array<detail::RoundedPoint, 2> bearing_bases;  // eqs. (3)-(4)
-  std::array<detail::RoundedPoint, 2> journal_rims;   // centres of the journal rims facing A and B
-  detail::RoundedPoint journal_centre;                // P_j (the journal's mid-length centre)
+  // The centres rounded to double, each with a bound on its rounding (rounded_point.hpp); their
+  // exact recipes are built only for the kernel queries (rounded_centre). Index 0: base A, 1: B.
+  std::array<Vector3, 2> bearing_bases;  // eqs. (3)-(4)
+  std::array<double, 2> bearing_base_errors{};
+  std::array<Vector3, 2> journal_rims;   // centres of the journal rims facing A and B
+  std::array<double, 2> journal_rim_errors{};
+  double journal_centre_error = 0.0;     // of p_WPj (P_j - P_i, rounded)
+  int toward_a = 1;                      // +1: the journal's base A faces bearing base A
+  Vector3 p_WPi_world = Vector3::Zero();  // the recipes' inputs
+  Vector3 p_WPj_world = Vector3::Zero();
 };
 
 /// Everything is computed in a frame translated to the bearing centre P_i: the rounding of the
@@ -75,49 +95,72 @@ struct JointSetup {
 /// joint sits from the world origin (at 1e13 m from it an ulp is larger than the clearance).
 /// The contact points are translated back at the end. The centres are exactly
 /// P_j - P_i +- (L/2) a_hat (a_hat = unit_axis, the joint's definition in joint_geometry.hpp);
-/// their roundings are carried into the kernel's bounds and exact tiers.
+/// their roundings are carried into the kernel's bounds and exact tiers. The values and bounds
+/// are those of detail::rounded_point (the same operations), without building its recipes: in
+/// free flight no recipe is ever needed.
 JointSetup set_up(const JointDimensions& dimensions, const PartPose& bearing_in_world,
                   const PartPose& journal_in_world) {
-  const PartPose bearing{Vector3::Zero(), bearing_in_world.axis_W};
-  const PartPose journal{journal_in_world.p_WP - bearing_in_world.p_WP, journal_in_world.axis_W};
-  const Vector3 zero = Vector3::Zero();
   JointSetup s;
   s.bearing_radius = dimensions.bearing_radius;
   s.journal_radius = dimensions.journal_radius;
   s.radial_clearance = dimensions.radial_clearance();
   s.axial_clearance = dimensions.axial_clearance();
-  s.p_WPi = bearing.p_WP;
-  s.p_WPj = journal.p_WP;
-  s.bearing_axis_W = bearing.axis_W;
-  s.journal_axis_W = journal.axis_W;
-  s.bearing_axis_hat_W = unit_axis(bearing);
-  s.journal_axis_hat_W = unit_axis(journal);
-  // The same roundings as base_centers (eqs. 3-4), recorded with their recipes.
-  const double Li = dimensions.bearing_length, Lj = dimensions.journal_length;
-  s.bearing_bases = {detail::rounded_point(zero, zero, Li, +1, s.bearing_axis_hat_W),
-                     detail::rounded_point(zero, zero, Li, -1, s.bearing_axis_hat_W)};
-  s.journal_centre = detail::rounded_point(journal_in_world.p_WP, bearing_in_world.p_WP, 0.0, 0, zero);
+  s.bearing_length = dimensions.bearing_length;
+  s.journal_length = dimensions.journal_length;
+  s.p_WPi_world = bearing_in_world.p_WP;
+  s.p_WPj_world = journal_in_world.p_WP;
+  s.p_WPj = journal_in_world.p_WP - bearing_in_world.p_WP;
+  s.bearing_axis_W = bearing_in_world.axis_W;
+  s.journal_axis_W = journal_in_world.axis_W;
+  s.bearing_axis_hat_W = unit_axis(bearing_in_world);
+  s.journal_axis_hat_W = unit_axis(journal_in_world);
   // Labels follow the bearing: when a_j points against a_i, the journal's "B" base faces A.
-  const bool same_direction = bearing.axis_W.dot(journal.axis_W) >= 0.0;
-  const int toward_a = same_direction ? +1 : -1;
-  s.journal_rims = {detail::rounded_point(journal_in_world.p_WP, bearing_in_world.p_WP, Lj, toward_a,
-                                          s.journal_axis_hat_W),
-                    detail::rounded_point(journal_in_world.p_WP, bearing_in_world.p_WP, Lj, -toward_a,
-                                          s.journal_axis_hat_W)};
+  s.toward_a = s.bearing_axis_W.dot(s.journal_axis_W) >= 0.0 ? +1 : -1;
+  const Vector3 h_i = (0.5 * dimensions.bearing_length) * s.bearing_axis_hat_W;
+  const Vector3 h_j = (0.5 * dimensions.journal_length) * s.journal_axis_hat_W;
+  s.bearing_bases = {h_i, -h_i};
+  s.journal_rims = s.toward_a > 0 ? std::array<Vector3, 2>{s.p_WPj + h_j, s.p_WPj - h_j}
+                                  : std::array<Vector3, 2>{s.p_WPj - h_j, s.p_WPj + h_j};
+  // rounded_point's bounds: u (|d|_1 + |h|_1 + |value|_1) (1 + 4u) + 8 * 2^-1074.
+  constexpr double kGrowth = 1 + 4 * detail::kUnitRoundoff;
+  constexpr double kUnderflowAllowance = 8 * detail::kUnderflowError;
+  const double d1 = s.p_WPj.cwiseAbs().sum(), hi1 = h_i.cwiseAbs().sum(), hj1 = h_j.cwiseAbs().sum();
+  s.journal_centre_error = detail::kUnitRoundoff * d1 * kGrowth;
+  const double base_error = detail::kUnitRoundoff * (hi1 + hi1) * kGrowth + kUnderflowAllowance;
+  s.bearing_base_errors = {base_error, base_error};
+  for (int k = 0; k < 2; ++k) {
+    s.journal_rim_errors[k] =
+        detail::kUnitRoundoff * (d1 + hj1 + s.journal_rims[k].cwiseAbs().sum()) * kGrowth + kUnderflowAllowance;
+  }
   return s;
 }
 
-const detail::RoundedPoint& bearing_base_point(const JointSetup& s, ContactBase base) {
+/// The recipes of rounded_point.hpp, for the kernel queries (their exact tiers).
+detail::RoundedPoint rounded_centre(const JointSetup& s, ContactBase base) {
+  const int sign = base == ContactBase::a ? s.toward_a : -s.toward_a;
+  detail::RoundedPoint point{s.journal_rims[base == ContactBase::a ? 0 : 1],
+                             s.journal_rim_errors[base == ContactBase::a ? 0 : 1],
+                             s.p_WPj_world,
+                             s.p_WPi_world,
+                             s.journal_axis_hat_W,
+                             s.journal_length,
+                             sign};
+  return point;
+}
+detail::RoundedPoint rounded_base(const JointSetup& s, ContactBase base) {
+  const int k = base == ContactBase::a ? 0 : 1;
+  return {s.bearing_bases[k], s.bearing_base_errors[k], Vector3::Zero(), Vector3::Zero(),
+          s.bearing_axis_hat_W, s.bearing_length, k == 0 ? +1 : -1};
+}
+detail::RoundedPoint rounded_journal_centre(const JointSetup& s) {
+  return {s.p_WPj, s.journal_centre_error, s.p_WPj_world, s.p_WPi_world, Vector3::Zero(), 0.0, 0};
+}
+
+const Vector3& bearing_base(const JointSetup& s, ContactBase base) {
   return s.bearing_bases[base == ContactBase::a ? 0 : 1];
 }
-const detail::RoundedPoint& journal_rim_point(const JointSetup& s, ContactBase base) {
-  return s.journal_rims[base == ContactBase::a ? 0 : 1];
-}
-const Vector3& bearing_base(const JointSetup& s, ContactBase base) {
-  return bearing_base_point(s, base).value;
-}
 const Vector3& journal_rim_center(const JointSetup& s, ContactBase base) {
-  return journal_rim_point(s, base).value;
+  return s.journal_rims[base == ContactBase::a ? 0 : 1];
 }
 /// Outward normal of the bearing base: +a_i at A, -a_i at B.
 double outward_sign(ContactBase base) { return base == ContactBase::a ? 1.0 : -1.0; }
@@ -209,42 +252,25 @@ Certificate clear_certificate(const DetectionOptions& options) {
                                       : Certificate{Certainty::uncertain, "certificate switched off"};
 }
 
-/// The magnitude guard of the a priori bounds (a_priori_bounds.hpp) for all four prefilter tests
-/// at once: every value that enters a rim against the wall or a base plane (rim centres and
-/// normal, wall axis point and axis, base points, their differences, the radii). One guard
-/// instead of four: in free flight the guards were a third of the detection's instructions.
-bool prefilter_guard(const JointSetup& s) {
-  using detail::magnitude_in_range;
-  using detail::magnitudes_in_range;
-  const Vector3& c_a = s.journal_rims[0].value;
-  const Vector3& c_b = s.journal_rims[1].value;
-  const Vector3& p_a = s.bearing_bases[0].value;
-  const Vector3& p_b = s.bearing_bases[1].value;
-  // set_up works in the bearing-centred frame: P_i is exactly zero, so c - P_i is c itself.
-  return s.p_WPi.isZero() && magnitudes_in_range(s.bearing_axis_W) &&
-         magnitudes_in_range(s.journal_axis_W) && magnitudes_in_range(c_a) &&
-         magnitudes_in_range(c_b) && magnitudes_in_range(p_a) && magnitudes_in_range(p_b) &&
-         magnitudes_in_range(c_a - p_a) && magnitudes_in_range(c_b - p_b) &&
-         magnitude_in_range(s.journal_radius) && magnitude_in_range(s.bearing_radius);
-}
-
 /// The misaligned case: four candidate point contacts.
 void detect_misaligned(const JointSetup& s, const DetectionOptions& options,
                        JointContacts& out, ContactPresence& presence,
                        CertificateAccumulator& certificate) {
   const Cylinder3 wall{s.p_WPi, s.bearing_axis_W, s.bearing_radius};
-  // A rim proved to stay inside the wall or the base plane (the kernel's own first test, here
-  // without the kernel's input checks, rescaling and result assembly) has no contact there: in
-  // free flight this is the whole detection.
+  // A rim proved to stay inside the wall or the base plane (the kernel's own first tests, here
+  // for all four candidates at once and without the kernel's input checks, rescaling and result
+  // assembly) has no contact there: in free flight this is the whole detection.
   const Certificate proved_clear = clear_certificate(options);
-  const bool guard = prefilter_guard(s);
+  const detail::CandidatesClear clear = detail::prove_candidates_clear(
+      {s.journal_rims, s.journal_rim_errors, s.bearing_bases, s.bearing_base_errors, s.bearing_axis_W,
+       s.journal_axis_W, s.bearing_radius, s.journal_radius});
   for (const ContactBase base : {ContactBase::a, ContactBase::b}) {
-    const Circle3 rim = journal_rim(s, base);
-    const detail::RoundedPoint& centre = journal_rim_point(s, base);
-    if (detail::rim_reach(rim, wall, guard, centre.error) == detail::RimReach::strictly_inside) {
+    if (clear.radial[base == ContactBase::a ? 0 : 1]) {
       certificate.add(proved_clear);
       continue;
     }
+    const Circle3 rim = journal_rim(s, base);
+    const detail::RoundedPoint centre = rounded_centre(s, base);
     const CircleCylinderIntersection hit =
         detail::intersect_circle_cylinder(rim, wall, options.intersection, &centre);
     certificate.add(hit.certificate);
@@ -259,15 +285,14 @@ void detect_misaligned(const JointSetup& s, const DetectionOptions& options,
     }
   }
   for (const ContactBase base : {ContactBase::a, ContactBase::b}) {
-    const Circle3 rim = journal_rim(s, base);
-    const detail::RoundedPoint& centre = journal_rim_point(s, base);
-    const detail::RoundedPoint& point = bearing_base_point(s, base);
-    const Plane3 base_plane{point.value, outward_sign(base) * s.bearing_axis_W};
-    if (detail::rim_side_of_plane(rim, base_plane, guard, centre.error + point.error) ==
-        detail::RimSide::strictly_negative) {
+    if (clear.axial[base == ContactBase::a ? 0 : 1]) {
       certificate.add(proved_clear);
       continue;
     }
+    const Circle3 rim = journal_rim(s, base);
+    const detail::RoundedPoint centre = rounded_centre(s, base);
+    const detail::RoundedPoint point = rounded_base(s, base);
+    const Plane3 base_plane{point.value, outward_sign(base) * s.bearing_axis_W};
     const CirclePlaneIntersection hit =
         detail::intersect_circle_plane(rim, base_plane, options.intersection, &centre, &point);
     certificate.add(hit.certificate);
@@ -299,13 +324,14 @@ void detect_aligned(const JointSetup& s, const DetectionOptions& options, bool e
     const Circle3 mid_section{s.p_WPj, s.journal_axis_W, s.journal_radius};
     const Cylinder3 wall{s.p_WPi, s.bearing_axis_W, s.bearing_radius};
     const bool guard = detail::cylinder_a_priori_bounds_apply(mid_section, wall);
-    if (detail::rim_reach(mid_section, wall, guard, s.journal_centre.error) ==
+    if (detail::rim_reach(mid_section, wall, guard, s.journal_centre_error) ==
         detail::RimReach::strictly_inside) {
       line = false;  // the kernel's first test, without its input checks and result assembly
       line_certificate = proved_clear;
     } else {
+      const detail::RoundedPoint centre = rounded_journal_centre(s);
       const CircleCylinderIntersection hit =
-          detail::intersect_circle_cylinder(mid_section, wall, options.intersection, &s.journal_centre);
+          detail::intersect_circle_cylinder(mid_section, wall, options.intersection, &centre);
       line = hit.arc_count > 0;
       line_certificate = hit.certificate;
     }
@@ -335,8 +361,8 @@ void detect_aligned(const JointSetup& s, const DetectionOptions& options, bool e
     bool face = false;
     Certificate face_certificate = tolerance_certificate;
     if (exactly_parallel) {
-      const detail::RoundedPoint& centre = journal_rim_point(s, base);
-      const detail::RoundedPoint& point = bearing_base_point(s, base);
+      const detail::RoundedPoint centre = rounded_centre(s, base);
+      const detail::RoundedPoint point = rounded_base(s, base);
       const Plane3 base_plane{point.value, outward_sign(base) * s.bearing_axis_W};
       const Circle3 rim = journal_rim(s, base);
       const bool guard = detail::plane_a_priori_bounds_apply(rim, base_plane);

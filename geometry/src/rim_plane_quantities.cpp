@@ -94,34 +94,15 @@ RimSide rim_side_of_plane(const Circle3& circle, const Plane3& plane) {
   return rim_side_of_plane(circle, plane, plane_a_priori_bounds_apply(circle, plane));
 }
 
-namespace {
-
-/// The s and discriminant perturbations of widen_for_point_error, from |n_p|^2 and |n_c|^2.
-void widen(Bounded& s, Bounded& discriminant, const Bounded& np2, const Bounded& nc2,
-           double distance_error) {
+void widen_side_quantities(Bounded& s, Bounded& discriminant, const Bounded& np2, const Bounded& nc2,
+                           double distance_error) {
   if (distance_error == 0.0) return;
-  constexpr double kRounding = 1 + 16 * kUnitRoundoff;  // the few operations below, rounded up
-  auto high = [](const Bounded& x) { return std::fabs(x.value) + x.error; };
-  // s moves by delta, |delta| <= shift = |n_p| e (|n_p| <= sqrt(high(np2)), rounded up).
-  const double shift = std::sqrt(high(np2)) * distance_error * kRounding + kUnderflowError;
-  // s^2 moves by 2 s delta + delta^2, in [-2 |s| shift + shift^2, 2 |s| shift + shift^2] when
-  // |s| >= shift (centre shift^2, half-width 2 |s| shift); otherwise in
-  // [-s^2, 2 |s| shift + shift^2], within shift^2 +- (2 |s| + shift) shift. Times |n_c|^2.
-  const double low_s = std::fabs(s.value) - s.error;
-  const double centre_shift = shift * shift;
-  const double half_width = low_s >= shift ? 2 * high(s) * shift : (2 * high(s) + shift) * shift;
-  const double value = discriminant.value + centre_shift * nc2.value;
-  const double added_error =
-      (half_width * high(nc2) + centre_shift * nc2.error) * kRounding + kUnitRoundoff * std::fabs(value) +
-      2 * kUnderflowError;
-  s.error = (s.error + shift) * kRounding;
-  discriminant = Bounded(value, (discriminant.error + added_error) * kRounding);
+  widen_side_quantities_by_shift(s, discriminant, nc2,
+                                 side_shift(plane_normal_length_bound(np2), distance_error));
 }
 
-}  // namespace
-
 void widen_for_point_error(PlaneQuantities& q, double distance_error) {
-  widen(q.s, q.discriminant, q.np2, q.nc2, distance_error);
+  widen_side_quantities(q.s, q.discriminant, q.np2, q.nc2, distance_error);
 }
 
 RimSide rim_side_of_plane(const Circle3& circle, const Plane3& plane, bool a_priori_bounds_apply) {
@@ -137,7 +118,7 @@ RimSide rim_side_of_plane(const Circle3& circle, const Plane3& plane, bool a_pri
     discriminant = a_priori(t.discriminant, t.discriminant_abs);
     if (distance_error != 0.0) {
       const double np2 = plane.normal.squaredNorm();
-      widen(s, discriminant, a_priori(np2, np2), a_priori(t.nc2, t.nc2), distance_error);
+      widen_side_quantities(s, discriminant, a_priori(np2, np2), a_priori(t.nc2, t.nc2), distance_error);
     }
   } else {
     PlaneQuantities q = plane_quantities_running_error(circle, plane);

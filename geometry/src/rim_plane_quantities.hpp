@@ -5,6 +5,8 @@
 // plane is, times |n_p|, s + r |w| / |n_c| cos(theta - theta_m); the rim stays strictly on one
 // side iff s^2 |n_c|^2 - r^2 |w|^2 > 0, the side of s.
 
+#include <cmath>
+
 #include "clearjoint/geometry/primitives.hpp"
 #include "error_bounded.hpp"
 
@@ -28,6 +30,36 @@ PlaneQuantities plane_quantities_running_error(const Circle3& circle, const Plan
 /// with |c' - c| + |p' - p| <= distance_error (rounded_point.hpp): s moves by at most
 /// |n_p| distance_error.
 void widen_for_point_error(PlaneQuantities& q, double distance_error);
+/// The same on s and the discriminant alone, given |n_p|^2 and |n_c|^2.
+void widen_side_quantities(Bounded& s, Bounded& discriminant, const Bounded& np2, const Bounded& nc2,
+                           double distance_error);
+
+/// The pieces of widen_side_quantities, for callers that widen several s with one normal:
+/// |n_p| rounded up from the enclosure of |n_p|^2, the bound on how far s moves, and the widening
+/// of s and the discriminant by that shift.
+inline constexpr double kWideningRounding = 1 + 16 * kUnitRoundoff;  // a few operations, rounded up
+inline double plane_normal_length_bound(const Bounded& np2) {
+  return std::sqrt(std::fabs(np2.value) + np2.error) * kWideningRounding;
+}
+inline double side_shift(double normal_length_bound, double distance_error) {
+  return normal_length_bound * distance_error * kWideningRounding + kUnderflowError;
+}
+inline void widen_side_quantities_by_shift(Bounded& s, Bounded& discriminant, const Bounded& nc2, double shift) {
+  // s moves by delta, |delta| <= shift. s^2 moves by 2 s delta + delta^2: within
+  // [-2 |s| shift + shift^2, 2 |s| shift + shift^2] when |s| >= shift (centre shift^2,
+  // half-width 2 |s| shift); otherwise within [-s^2, 2 |s| shift + shift^2], inside
+  // shift^2 +- (2 |s| + shift) shift. Times |n_c|^2.
+  const double high_s = std::fabs(s.value) + s.error;
+  const double high_nc2 = std::fabs(nc2.value) + nc2.error;
+  const double low_s = std::fabs(s.value) - s.error;
+  const double centre_shift = shift * shift;
+  const double half_width = low_s >= shift ? 2 * high_s * shift : (2 * high_s + shift) * shift;
+  const double value = discriminant.value + centre_shift * nc2.value;
+  const double added_error = (half_width * high_nc2 + centre_shift * nc2.error) * kWideningRounding +
+                             kUnitRoundoff * std::fabs(value) + 2 * kUnderflowError;
+  s.error = (s.error + shift) * kWideningRounding;
+  discriminant = Bounded(value, (discriminant.error + added_error) * kWideningRounding);
+}
 
 /// Components of toward = n_c x (n_p x n_c) (parallel to the plane normal's part in the rim
 /// plane) along the rim frame's u and v: the angle theta_m of the deepest rim point.
