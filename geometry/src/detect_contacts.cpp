@@ -196,12 +196,24 @@ void copy_arc_crossings(const RimCrossing* crossings, int count, const RimArc& a
 /// The journal point of a point contact: the rim point at the middle of the penetration arc
 /// (eqs. 13-14, 18-19). For a full arc (beyond the model) the middle is not meaningful; the rim
 /// point farthest along `deepest_direction` (projected into the rim plane) is taken instead.
-Vector3 journal_contact_point(const Circle3& rim, const RimArc& arc,
+/// The arc's end points are its crossings (the contact's, already copied): the middle lies
+/// along the chord's midpoint seen from the centre (away from it when the arc sweeps more than
+/// half the rim), which costs no sine, cosine or rim frame. Where the chord passes within r/4
+/// of the centre (a sweep near half a turn) that direction is ill-conditioned and the middle
+/// angle is evaluated instead.
+Vector3 journal_contact_point(const Circle3& rim, const RimArc& arc, const Contact& contact,
                               const Vector3& deepest_direction, const Vector3& rim_normal_hat) {
   if (arc.full) {
     const Vector3 in_plane = off_axis(deepest_direction, rim_normal_hat);
     const double length = in_plane.norm();
     if (length > 0.0) return rim.center + (rim.radius / length) * in_plane;
+  } else if (contact.crossing_count == 2) {
+    const Vector3 towards_middle = 0.5 * (contact.crossings[0].point + contact.crossings[1].point) - rim.center;
+    const double length = towards_middle.norm();
+    if (length > 0.25 * rim.radius) {
+      const double side = arc.sweep() < std::numbers::pi ? 1.0 : -1.0;
+      return rim.center + (side * rim.radius / length) * towards_middle;
+    }
   }
   return point_at(rim, frame_of(rim), arc.middle());
 }
@@ -214,7 +226,8 @@ Contact radial_contact(const JointSetup& s, ContactBase base, const Circle3& rim
   contact.base = base;
   contact.certificate = hit.certificate;
   const Vector3 radial_offset_of_center = off_axis(rim.center - s.p_WPi, s.bearing_axis_hat_W);
-  contact.p_WCj = journal_contact_point(rim, arc, radial_offset_of_center, s.journal_axis_hat_W);
+  copy_arc_crossings(hit.crossings.data(), hit.crossing_count, arc, contact);
+  contact.p_WCj = journal_contact_point(rim, arc, contact, radial_offset_of_center, s.journal_axis_hat_W);
   const Vector3 offset = contact.p_WCj - s.p_WPi;
   const Vector3 radial = off_axis(offset, s.bearing_axis_hat_W);
   const double distance_to_axis = radial.norm();
@@ -225,7 +238,6 @@ Contact radial_contact(const JointSetup& s, ContactBase base, const Circle3& rim
   // close to Ri, so the difference is exact (Sterbenz); rounding of C_j may leave it a few
   // ulps below 0 for an arc of vanishing length, hence the clamp.
   contact.depth = std::max(0.0, distance_to_axis - s.bearing_radius);
-  copy_arc_crossings(hit.crossings.data(), hit.crossing_count, arc, contact);
   return contact;
 }
 
@@ -237,11 +249,11 @@ Contact axial_contact(const JointSetup& s, ContactBase base, const Circle3& rim,
   contact.base = base;
   contact.certificate = hit.certificate;
   contact.normal_W = outward_sign(base) * s.bearing_axis_hat_W;
-  contact.p_WCj = journal_contact_point(rim, hit.penetration, contact.normal_W, s.journal_axis_hat_W);
+  copy_arc_crossings(hit.crossings.data(), hit.crossing_count, hit.penetration, contact);
+  contact.p_WCj = journal_contact_point(rim, hit.penetration, contact, contact.normal_W, s.journal_axis_hat_W);
   const double beyond_base = (contact.p_WCj - bearing_base(s, base)).dot(contact.normal_W);
   contact.p_WCi = contact.p_WCj - beyond_base * contact.normal_W;  // eq. (15)
   contact.depth = std::max(0.0, beyond_base);                      // eq. (23)
-  copy_arc_crossings(hit.crossings.data(), hit.crossing_count, hit.penetration, contact);
   return contact;
 }
 

@@ -67,7 +67,7 @@ inline RoundedPoint rounded_point(const Vector3& minuend, const Vector3& subtrah
 /// The bound after an exact scaling by 2^-e (scale_normalisation.hpp), kept a bound where it
 /// would underflow.
 inline double scaled_error(double error, int e) {
-  if (error == 0.0) return 0.0;
+  if (error == 0.0 || e == 0) return error;
   const double scaled = std::ldexp(error, -e);
   return scaled > 0x1p-1022 ? scaled * (1 + 4 * kUnitRoundoff) : 0x1p-1022;
 }
