@@ -25,7 +25,9 @@ bool guard(const CandidatePrefilterInput& in) {
   constexpr double kHalfLargest = 0.5 * kLargestGuardedInput;
   const double base = in.base_points[0].cwiseAbs().sum() + in.base_points[1].cwiseAbs().sum();
   const double rims = in.rim_centres[0].cwiseAbs().sum() + in.rim_centres[1].cwiseAbs().sum();
-  return base <= kHalfLargest && rims <= kHalfLargest && in.bearing_axis.cwiseAbs().sum() <= kLargestGuardedInput &&
+  const double radial = in.radial_centres[0].cwiseAbs().sum() + in.radial_centres[1].cwiseAbs().sum();
+  return base <= kHalfLargest && rims <= kHalfLargest && radial <= kLargestGuardedInput &&
+         in.bearing_axis.cwiseAbs().sum() <= kLargestGuardedInput &&
          in.journal_axis.cwiseAbs().sum() <= kLargestGuardedInput && in.bearing_radius <= kLargestGuardedInput;
 }
 
@@ -34,8 +36,9 @@ CandidatesClear prove_one_by_one(const CandidatePrefilterInput& in) {
   CandidatesClear out;
   const Cylinder3 wall{Vector3::Zero(), in.bearing_axis, in.bearing_radius};
   for (int k = 0; k < 2; ++k) {
+    const Circle3 section{in.radial_centres[k], in.journal_axis, in.journal_radius};
+    out.radial[k] = rim_reach(section, wall, false, in.radial_errors[k]) == RimReach::strictly_inside;
     const Circle3 rim{in.rim_centres[k], in.journal_axis, in.journal_radius};
-    out.radial[k] = rim_reach(rim, wall, false, in.rim_errors[k]) == RimReach::strictly_inside;
     const Plane3 base{in.base_points[k], k == 0 ? in.bearing_axis : Vector3(-in.bearing_axis)};
     out.axial[k] = rim_side_of_plane(rim, base, false, in.rim_errors[k] + in.base_errors[k]) ==
                    RimSide::strictly_negative;
@@ -56,11 +59,11 @@ CandidatesClear prove_candidates_clear(const CandidatePrefilterInput& in) {
 
   // Radial: rim_reach's a priori "strictly inside" test. The axis point is 0, so q = c exactly.
   for (int k = 0; k < 2; ++k) {
-    const double e = in.rim_errors[k];
+    const double e = in.radial_errors[k];
     if (!(R - r > e)) continue;
     const double gap = (R - r) - e, gap_abs = (R - r) + e;
     const double gap2 = gap * gap * axis_norm2;
-    const Vector3& c = in.rim_centres[k];
+    const Vector3& c = in.radial_centres[k];
     const double offset2 = c.cross(a).squaredNorm();
     const double offset2_abs = abs_cross(c.cwiseAbs(), a_abs).squaredNorm();
     out.radial[k] = gap2 - offset2 > kGamma64 * (gap_abs * gap_abs * axis_norm2 + offset2_abs) * kMagnitudeInflation +

@@ -11,11 +11,15 @@
 
 namespace clearjoint::geometry::detail {
 
-/// The misaligned joint in the bearing-centred frame of detect_contacts (the wall's axis passes
-/// through the origin). Index 0: base A, 1: base B.
+/// The joint in the bearing-centred frame of detect_contacts (the wall's axis passes through the
+/// origin). Index 0: base A, 1: base B. The radial tests take the circles centred at
+/// radial_centres (the rims when the axes are misaligned; the journal's mid-length section twice
+/// for the aligned line contact), the axial tests the rims.
 struct CandidatePrefilterInput {
-  std::array<Vector3, 2> rim_centres;  ///< journal rim centres, rounded
-  std::array<double, 2> rim_errors;    ///< bounds on their distance to the exact centres
+  std::array<Vector3, 2> radial_centres;  ///< rounded
+  std::array<double, 2> radial_errors;    ///< bounds on their distance to the exact centres
+  std::array<Vector3, 2> rim_centres;     ///< journal rim centres, rounded
+  std::array<double, 2> rim_errors;
   std::array<Vector3, 2> base_points;  ///< bearing base centres, rounded
   std::array<double, 2> base_errors;
   Vector3 bearing_axis;  ///< a_i as given: the wall's axis; base plane normals +a_i (A), -a_i (B)
@@ -25,8 +29,8 @@ struct CandidatePrefilterInput {
 };
 
 /// true where that candidate is proved absent for every centre and base point within the errors:
-/// radial at X when rim X stays strictly inside the wall, axial at X when rim X stays strictly on
-/// the inner side of base plane X.
+/// radial at X when the circle at radial_centres[X] stays strictly inside the wall, axial at X
+/// when rim X stays strictly on the inner side of base plane X.
 struct CandidatesClear {
   std::array<bool, 2> radial{false, false};
   std::array<bool, 2> axial{false, false};

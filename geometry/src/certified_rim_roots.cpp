@@ -171,9 +171,11 @@ bool first_harmonic_proof(const RimDistancePolynomial& g, RimRoots& result) {
   }
   if (sign_at_zero < 0) return false;  // impossible with A > 0; keep the proof honest
 
-  // Two roots, at psi = +-acos(-k0 / A) to first order; g decreases through the + one.
-  const double phi = std::atan2(g.k[2].value, g.k[1].value);
-  const double beta = std::acos(std::clamp(-k0.value / amplitude.value, -1.0, 1.0));
+  // Two roots, at psi = +-acos(-k0 / A) to first order; g decreases through the + one. These are
+  // Newton's starting guesses, which the second harmonic moves the roots away from by far more
+  // than the approximations' 4e-7 rad (angles.hpp): libm's atan2 and acos would buy nothing.
+  const double phi = approximate_atan2(g.k[2].value, g.k[1].value);
+  const double beta = approximate_acos(-k0.value / amplitude.value);
   const double guesses[2] = {wrap_angle(phi - beta), wrap_angle(phi + beta)};
   const int directions[2] = {+1, -1};
   for (int i = 0; i < 2; ++i) {

@@ -274,8 +274,8 @@ void detect_misaligned(const JointSetup& s, const DetectionOptions& options,
   // assembly) has no contact there: in free flight this is the whole detection.
   const Certificate proved_clear = clear_certificate(options);
   const detail::CandidatesClear clear = detail::prove_candidates_clear(
-      {s.journal_rims, s.journal_rim_errors, s.bearing_bases, s.bearing_base_errors, s.bearing_axis_W,
-       s.journal_axis_W, s.bearing_radius, s.journal_radius});
+      {s.journal_rims, s.journal_rim_errors, s.journal_rims, s.journal_rim_errors, s.bearing_bases,
+       s.bearing_base_errors, s.bearing_axis_W, s.journal_axis_W, s.bearing_radius, s.journal_radius});
   for (const ContactBase base : {ContactBase::a, ContactBase::b}) {
     if (clear.radial[base == ContactBase::a ? 0 : 1]) {
       certificate.add(proved_clear);
@@ -332,12 +332,18 @@ void detect_aligned(const JointSetup& s, const DetectionOptions& options, bool e
   bool line = false;
   Certificate line_certificate = tolerance_certificate;
   const Certificate proved_clear = clear_certificate(options);
+  // The kernel's first tests for the line and both faces at once (candidate_prefilter.hpp): the
+  // mid-length section against the wall, the rims against the base planes (with parallel
+  // normals the side test is the sign of s).
+  detail::CandidatesClear clear;
   if (exactly_parallel) {
+    clear = detail::prove_candidates_clear(
+        {{s.p_WPj, s.p_WPj}, {s.journal_centre_error, s.journal_centre_error}, s.journal_rims,
+         s.journal_rim_errors, s.bearing_bases, s.bearing_base_errors, s.bearing_axis_W, s.journal_axis_W,
+         s.bearing_radius, s.journal_radius});
     const Circle3 mid_section{s.p_WPj, s.journal_axis_W, s.journal_radius};
     const Cylinder3 wall{s.p_WPi, s.bearing_axis_W, s.bearing_radius};
-    const bool guard = detail::cylinder_a_priori_bounds_apply(mid_section, wall);
-    if (detail::rim_reach(mid_section, wall, guard, s.journal_centre_error) ==
-        detail::RimReach::strictly_inside) {
+    if (clear.radial[0]) {
       line = false;  // the kernel's first test, without its input checks and result assembly
       line_certificate = proved_clear;
     } else {
@@ -373,16 +379,14 @@ void detect_aligned(const JointSetup& s, const DetectionOptions& options, bool e
     bool face = false;
     Certificate face_certificate = tolerance_certificate;
     if (exactly_parallel) {
-      const detail::RoundedPoint centre = rounded_centre(s, base);
-      const detail::RoundedPoint point = rounded_base(s, base);
-      const Plane3 base_plane{point.value, outward_sign(base) * s.bearing_axis_W};
-      const Circle3 rim = journal_rim(s, base);
-      const bool guard = detail::plane_a_priori_bounds_apply(rim, base_plane);
-      if (detail::rim_side_of_plane(rim, base_plane, guard, centre.error + point.error) ==
-          detail::RimSide::strictly_negative) {
+      if (clear.axial[base == ContactBase::a ? 0 : 1]) {
         face = false;
         face_certificate = proved_clear;
       } else {
+        const detail::RoundedPoint centre = rounded_centre(s, base);
+        const detail::RoundedPoint point = rounded_base(s, base);
+        const Plane3 base_plane{point.value, outward_sign(base) * s.bearing_axis_W};
+        const Circle3 rim = journal_rim(s, base);
         const CirclePlaneIntersection hit =
             detail::intersect_circle_plane(rim, base_plane, options.intersection, &centre, &point);
         face = hit.topology == CirclePlaneTopology::disjoint && hit.side > 0;

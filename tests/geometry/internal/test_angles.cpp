@@ -6,7 +6,9 @@
 
 #include <boost/multiprecision/gmp.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <random>
 #include <vector>
 
@@ -95,6 +97,38 @@ TEST(Angles, WrapsHugeAnglesIntoRangeCongruentModuloTheDoubleTwoPi) {
     if (residual < 0) residual = -residual;
     EXPECT_LE(residual, Rational(kHalfUlpOfTwoPi)) << a << " -> " << w;
   }
+}
+
+TEST(Angles, ApproximateAtan2StaysWithinItsErrorAllRound) {
+  // Dense angles all round, at several radii, against libm (whose own error, ~1e-16, is far
+  // below the bound), and the exact axes and diagonals.
+  double worst = 0.0;
+  for (int i = 0; i <= 200000; ++i) {
+    const double angle = -std::numbers::pi + 2 * std::numbers::pi * i / 200000.0;
+    for (const double radius : {1e-300, 1.0, 3e5, 1e300}) {
+      const double x = radius * std::cos(angle), y = radius * std::sin(angle);
+      worst = std::max(worst, std::fabs(approximate_atan2(y, x) - std::atan2(y, x)));
+    }
+  }
+  EXPECT_LT(worst, kApproximateAngleError);
+  EXPECT_GT(worst, 1e-8);  // the fit's error is real: the test would see a wrong polynomial
+  for (const double x : {-2.0, 0.0, 2.0}) {
+    for (const double y : {-2.0, 0.0, 2.0}) {
+      EXPECT_NEAR(approximate_atan2(y, x), x == 0.0 && y == 0.0 ? 0.0 : std::atan2(y, x), kApproximateAngleError)
+          << x << " " << y;
+    }
+  }
+}
+
+TEST(Angles, ApproximateAcosStaysWithinItsErrorAndClampsOutOfRangeCosines) {
+  double worst = 0.0;
+  for (int i = 0; i <= 200000; ++i) {
+    const double c = -1.0 + 2.0 * i / 200000.0;
+    worst = std::max(worst, std::fabs(approximate_acos(c) - std::acos(c)));
+  }
+  EXPECT_LT(worst, kApproximateAngleError);
+  EXPECT_NEAR(approximate_acos(1.0 + 1e-12), 0.0, kApproximateAngleError);
+  EXPECT_NEAR(approximate_acos(-1.0 - 1e-12), std::numbers::pi, kApproximateAngleError);
 }
 
 }  // namespace

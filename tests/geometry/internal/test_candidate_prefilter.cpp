@@ -23,13 +23,14 @@ namespace it = internal_testing;
 using it::Real;
 using it::RealVector3;
 
-/// Rim k's farthest distance from the wall's axis (through 0 along a) plus its centre error:
-/// the exact "strictly inside" claim is that this stays below R.
+/// An upper bound on the farthest distance from the wall's axis (through 0 along a) of the
+/// circle at radial_centres[k], plus its centre error: the "strictly inside" claim must keep
+/// this below R.
 Real farthest_reach(const CandidatePrefilterInput& in, int k) {
   const RealVector3 a = it::to_real(in.bearing_axis);
-  const RealVector3 c = it::to_real(in.rim_centres[k]);
+  const RealVector3 c = it::to_real(in.radial_centres[k]);
   const Real distance = it::norm(it::cross(c, a)) / it::norm(a);
-  return distance + Real(in.journal_radius) + Real(in.rim_errors[k]);
+  return distance + Real(in.journal_radius) + Real(in.radial_errors[k]);
 }
 
 /// The largest signed distance of rim k beyond base plane k (outward normal +-a) plus both
@@ -58,7 +59,7 @@ CandidatePrefilterInput random_joint(std::mt19937_64& rng, double scale, double 
   const Vector3 centre = 1.6 * cr * unit(rng) * side + 1.6 * ca * unit(rng) * a;
   const Vector3 h_j = (0.5 * Lj) * n.normalized(), h_i = (0.5 * Li) * a;
   const double e = error_ulps * 1.1e-16 * (centre.norm() + Lj);
-  return {{centre + h_j, centre - h_j}, {e, e}, {h_i, -h_i}, {e, e}, a, n, R, r};
+  return {{centre + h_j, centre - h_j}, {e, e}, {centre + h_j, centre - h_j}, {e, e}, {h_i, -h_i}, {e, e}, a, n, R, r};
 }
 
 void check_claims(const CandidatePrefilterInput& in, const CandidatesClear& clear) {
@@ -109,6 +110,8 @@ TEST(CandidatePrefilter, StaysRightWithAxisComponentsFarBelowTheOldGuard) {
   // underflow allowance keeps every claim true.
   CandidatePrefilterInput in{{Vector3(1e-310, 0.0, 0.0099), Vector3(1e-310, 0.0, -0.0099)},
                              {2e-18, 2e-18},
+                             {Vector3(1e-310, 0.0, 0.0099), Vector3(1e-310, 0.0, -0.0099)},
+                             {2e-18, 2e-18},
                              {Vector3(0.0, 0.0, 0.01), Vector3(0.0, 0.0, -0.01)},
                              {2e-18, 2e-18},
                              Vector3(1e-300, 0.0, 1.0),
@@ -121,6 +124,32 @@ TEST(CandidatePrefilter, StaysRightWithAxisComponentsFarBelowTheOldGuard) {
   // A rim exactly in its base plane (parallel axes) is not clear.
   in.rim_centres[0].z() = 0.01;
   EXPECT_FALSE(prove_candidates_clear(in).axial[0]);
+}
+
+TEST(CandidatePrefilter, TestsTheAlignedLineOnTheMidSectionAndTheFacesOnTheRims) {
+  // Parallel axes (the aligned case): the line test takes the journal's mid-length section,
+  // centred 0.95 cr off the axis (clear); the faces take rims 1e-9 m inside base A (clear) and
+  // beyond base B (not clear).
+  const Vector3 z = Vector3::UnitZ();
+  const double R = 0.01, r = 0.0099, cr = R - r;
+  const Vector3 centre(0.95 * cr, 0.0, 0.0);
+  CandidatePrefilterInput in{{centre, centre},
+                             {1e-18, 1e-18},
+                             {Vector3(0.95 * cr, 0.0, 0.01 - 1e-9), Vector3(0.95 * cr, 0.0, -0.01 - 1e-9)},
+                             {2e-18, 2e-18},
+                             {Vector3(0.0, 0.0, 0.01), Vector3(0.0, 0.0, -0.01)},
+                             {2e-18, 2e-18},
+                             z,
+                             2.0 * z,
+                             R,
+                             r};
+  const CandidatesClear clear = prove_candidates_clear(in);
+  check_claims(in, clear);
+  EXPECT_TRUE(clear.radial[0]);
+  EXPECT_TRUE(clear.axial[0]);
+  EXPECT_FALSE(clear.axial[1]);
+  in.radial_centres = {Vector3(1.01 * cr, 0.0, 0.0), Vector3(1.01 * cr, 0.0, 0.0)};  // beyond
+  EXPECT_FALSE(prove_candidates_clear(in).radial[0]);
 }
 
 TEST(CandidatePrefilter, FallsBackToTheRunningErrorBeyondTheGuard) {
