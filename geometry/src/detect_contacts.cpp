@@ -20,6 +20,10 @@
 namespace clearjoint::geometry {
 namespace {
 
+constexpr const char* kNotRepresentableInWorld =
+    "crossing point or its error bound not representable in double after the translation to the "
+    "world frame (coordinates too large); the contact's existence is still decided";
+
 constexpr const char* kToleranceReason =
     "axes treated as parallel within DetectionOptions::parallel_angle_tolerance (eq. 5 relaxed; "
     "decided in double precision)";
@@ -412,10 +416,12 @@ void detect_aligned(const JointSetup& s, const DetectionOptions& options, bool e
 }
 
 /// Back from the bearing-centred frame of set_up: each translated point is rounded once more,
-/// by at most half an ulp per component (|x| u per component, sqrt(3) u |x| in length).
+/// by at most half an ulp per component, u |x|_1 in length (|x|_1 rather than |x|, whose square
+/// overflows beyond 1e154). A crossing that the translation takes out of the double range, or
+/// whose bound does, is no longer an answer: its contact becomes uncertain.
 void translate_to_world(const Vector3& p_WPi, JointContacts& out) {
   if (p_WPi.isZero()) return;
-  constexpr double kTranslationRounding = 2 * detail::kUnitRoundoff;  // > sqrt(3) u, relative
+  constexpr double kTranslationRounding = 2 * detail::kUnitRoundoff;  // > u, rounded up
   for (int i = 0; i < out.contact_count; ++i) {
     Contact& contact = out.contacts[i];
     contact.p_WCj += p_WPi;
@@ -423,7 +429,12 @@ void translate_to_world(const Vector3& p_WPi, JointContacts& out) {
     for (int k = 0; k < contact.crossing_count; ++k) {
       RimCrossing& crossing = contact.crossings[k];
       crossing.point += p_WPi;
-      crossing.point_error += kTranslationRounding * crossing.point.norm();
+      crossing.point_error += kTranslationRounding * crossing.point.cwiseAbs().sum();
+      if (contact.certificate.level != Certainty::uncertain &&
+          !(crossing.point.allFinite() && std::isfinite(crossing.point_error))) {
+        contact.certificate = {Certainty::uncertain, kNotRepresentableInWorld};
+        out.certificate = {Certainty::uncertain, kNotRepresentableInWorld};
+      }
     }
   }
 }

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <numbers>
 #include <random>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -173,6 +174,38 @@ TEST(RimCylinderExact, AgreesWithDirectSignsOnRandomIntegerPoses) {
     with_roots += result.count > 0;
   }
   EXPECT_GT(with_roots, 20);
+}
+
+TEST(RimCylinderExact, GivesUpOnCoefficientsTooLargeToIsolateQuickly) {
+  // A rim normal whose components lie ~1e500 apart (found by a fuzz of detect_contacts, where
+  // this query ran for 6 s on 27,000-bit coefficients): the tier gives up, saying why.
+  const Circle3 rim{{0x1.d66fc0f858cd8p-1, -0x1.07aa7df2fdfcp-3, -0x1.6dc4a5f61acb8p-1},
+                    {0x1.247a388377ec2p-911, 0x1.2c3beed9ea90fp+879, 0x1.dc00a4e2b230ap-1},
+                    0x1.10988ffa93a53p+133};
+  const Cylinder3 wall{{0x1.1cedadc30fab2p-1, 0x1.f38526804cac4p-985, -0x1.f4e27afb65da6p-2},
+                       {0x1.247a388377ec2p-911, 0x0p+0, 0x1.dc377949cd1p-1},
+                       0x1.135974fd1b99fp+133};
+  const RimRoots roots = exact_rim_roots(rim, wall);
+  EXPECT_FALSE(roots.proved);
+  EXPECT_NE(std::string(roots.failure).find("too large"), std::string::npos) << roots.failure;
+}
+
+TEST(RimCylinderExact, DecidesTheExactCentreOfARecipeNotItsRounding) {
+  // A rim of radius 1 in a wall of radius 2, its centre 1 - 2^-70 off the axis (not a double;
+  // the recipe minuend - subtrahend keeps it exact). Stored, the centre rounds to 1 and the rim
+  // touches the wall (one double root); exactly, it stays strictly inside.
+  const Vector3 minuend(1.0, 0.0, 0.0), subtrahend(0x1p-70, 0.0, 0.0);
+  const RoundedPoint centre = rounded_point(minuend, subtrahend, 0.0, 0, Vector3::Zero());
+  ASSERT_EQ(centre.value.x(), 1.0);
+  const Circle3 rim{centre.value, {0, 0, 1}, 1};
+  const Cylinder3 wall{{0, 0, 0}, {0, 0, 1}, 2};
+  const RimRoots rounded = exact_rim_roots(rim, wall);
+  ASSERT_TRUE(rounded.proved);
+  EXPECT_EQ(rounded.count, 1);  // tangent at the rounded centre
+  const RimRoots exact = exact_rim_roots(rim, wall, &centre, 0);
+  ASSERT_TRUE(exact.proved);
+  EXPECT_EQ(exact.count, 0);
+  EXPECT_EQ(exact.sign_without_roots, -1);  // strictly inside
 }
 
 }  // namespace

@@ -530,6 +530,24 @@ TEST(DetectContacts, ComesBackWithoutCrashingOrHangingWhenMagnitudesLieHundredsO
         {401161.5775188713, 43735964.99146108, 382966.3675463995}},
        {{643800.211523991, 47957.74228088685, 5.246818470893499e-07},
         {-9.245901800796875e-06, 0.0009331053976989397, 0.00787128668568102}}},
+      // Found by a fuzz of the library (magnitudes 1e-300..1e300): the crossings' error bounds
+      // overflowed in the translation back to the world frame (|x|^2 beyond 1e308) under a
+      // `certified` contact; the exact tier ran for 22 s and 6 s on 27,000-bit coefficients.
+      {{0x1.5c52cd97971d7p+303, 0x1.5c52cd97971d7p+304, 0x1.58d71856130b4p+303, 0x1.58d71856130b4p+304},
+       {{-0x1.224963074da6dp+904, 0x1.7f98576aa2a97p-912, 0x1.e4dad6fb932e1p+275},
+        {0x1.2fcfddbb974ccp-2, -0x1.6fa5d6b930ce8p-3, 0x0p+0}},
+       {{-0x1.224963074da6dp+904, -0x1.dda297d2b0f16p+295, -0x1.69cfad7c4f334p+296},
+        {0x1.306f302d919e5p-2, -0x1.706f300130c74p-3, 0x1.5a58b85abf575p-12}}},
+      {{0x1.787a8a5d99cbbp-259, 0x1.787a8a5d99cbbp-258, 0x1.74b6c14d4e049p-259, 0x1.74b6c14d4e049p-258},
+       {{0x1.a13099b2fe71p-3, -0x1.8287f98be9da8p-1, 0x1.7b09c3841caecp+800},
+        {-0x1.9e6c90d0343f6p+862, -0x1.9f807d1a32113p+553, 0x1.cf5606c827a1bp-252}},
+       {{0x1.a13099b2fe71p-3, -0x1.8287f98be9da8p-1, 0x1.7b09c3841caecp+800},
+        {-0x1.9e6c90d0343f6p+862, -0x1.72b051ba1ba0cp+947, 0x1.5763c246ef2fep-11}}},
+      {{0x1.135974fd1b99fp+133, 0x1.135974fd1b99fp+134, 0x1.10988ffa93a53p+133, 0x1.10988ffa93a53p+134},
+       {{0x1.1cedadc30fab2p-1, 0x1.f38526804cac4p-985, -0x1.f4e27afb65da6p-2},
+        {0x1.247a388377ec2p-911, 0x0p+0, 0x1.dc377949cd1p-1}},
+       {{0x1.d66fc0f858cd8p-1, -0x1.07aa7df2fdfcp-3, -0x1.6dc4a5f61acb8p-1},
+        {0x1.247a388377ec2p-911, 0x1.2c3beed9ea90fp+879, 0x1.dc00a4e2b230ap-1}}},
   };
   for (const Joint& joint : joints) {
     const JointContacts result = detect_contacts(joint.dimensions, joint.bearing, joint.journal);
@@ -538,6 +556,10 @@ TEST(DetectContacts, ComesBackWithoutCrashingOrHangingWhenMagnitudesLieHundredsO
       if (contact.certificate.level == Certainty::uncertain) continue;
       EXPECT_TRUE(std::isfinite(contact.depth)) << i;
       EXPECT_TRUE(contact.p_WCj.allFinite()) << i;
+      for (int k = 0; k < contact.crossing_count; ++k) {
+        EXPECT_TRUE(contact.crossings[k].point.allFinite()) << i;
+        EXPECT_TRUE(std::isfinite(contact.crossings[k].point_error)) << i;
+      }
     }
   }
 }
