@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "angles.hpp"
 #include "certified_rim_roots.hpp"
@@ -56,9 +57,10 @@ void fill(const Circle3& circle, const RimRoots& roots, bool bounded, double cen
     }
     crossing.multiplicity = root.multiplicity;
     // A chord is never longer than its arc: |x(t*) - x(t)| <= r |t* - t|.
-    crossing.angle_error = bounded ? root.radius : kNoErrorBound;
+    // Capped at pi: every rim angle is within pi of the reported one.
+    crossing.angle_error = bounded ? std::fmin(root.radius, std::numbers::pi) : kNoErrorBound;
     crossing.point_error =
-        bounded ? (circle.radius * root.radius + rounding + centre_error) * (1 + 4 * detail::kUnitRoundoff)
+        bounded ? (circle.radius * crossing.angle_error + rounding + centre_error) * (1 + 4 * detail::kUnitRoundoff)
                 : kNoErrorBound;
   }
   // The rim is beyond the wall after every root whose sign_after is +1, up to the next root.
@@ -125,10 +127,13 @@ CircleCylinderIntersection detail::intersect_circle_cylinder(const Circle3& circ
   }
   // Inputs whose magnitudes lie hundreds of orders apart can under- or overflow the double
   // steps after the root count: then the points are not answers.
+  // A certified answer must also carry finite bounds (fill's can overflow where points do not).
+  const bool bounded = out.certificate.level != Certainty::uncertain;
   for (int i = 0; i < out.crossing_count; ++i) {
-    if (!std::isfinite(out.crossings[i].angle) || !out.crossings[i].point.allFinite()) {
+    if (!std::isfinite(out.crossings[i].angle) || !out.crossings[i].point.allFinite() ||
+        (bounded && !(std::isfinite(out.crossings[i].angle_error) && std::isfinite(out.crossings[i].point_error)))) {
       out.certificate = {Certainty::uncertain,
-                         "crossing points not representable in double (intermediate under- or "
+                         "crossing points or their error bounds not representable in double (intermediate under- or "
                          "overflow: input magnitudes too far apart); the root count is still decided"};
       for (int k = 0; k < out.crossing_count; ++k) {
         out.crossings[k].angle_error = out.crossings[k].point_error = kNoErrorBound;

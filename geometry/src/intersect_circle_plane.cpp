@@ -28,7 +28,8 @@ using detail::BoundedVector3;
 
 /// Reason given when the topology is decided but a crossing or the depth is not finite.
 constexpr const char* kNotRepresentable =
-    "crossing points or depth not representable in double (intermediate under- or overflow: "
+    "crossing points, depth or their error bounds not representable in double (intermediate "
+    "under- or overflow: "
     "input magnitudes too far apart); the topology is still decided";
 
 /// See intersect_circle_cylinder.cpp: rounding of point_at.
@@ -87,9 +88,15 @@ AngleWithTrig acos_of(const Bounded& c) {
 /// through the plane still gets representable crossing angles.
 Bounded in_plane_normal_length(const detail::PlaneQuantities& q) {
   constexpr double kTinySquare = 0x1p-1000, kUp = 0x1p600, kDown = 0x1p-600;
-  if (!(q.w2.value < kTinySquare)) return sqrt(q.w2 / q.nc2);
+  const Bounded plain = sqrt(q.w2 / q.nc2);
+  const bool w_computed_zero = q.w.x.value == 0.0 && q.w.y.value == 0.0 && q.w.z.value == 0.0;
+  if (!(q.w2.value < kTinySquare) || w_computed_zero) return plain;
   const BoundedVector3 w{q.w.x * kUp, q.w.y * kUp, q.w.z * kUp};
-  return sqrt(squared_norm(w) / q.nc2) * kDown;
+  const Bounded scaled = sqrt(squared_norm(w) / q.nc2) * kDown;
+  // The scaling also scales the error bounds, whose squares can overflow (w computed as exactly
+  // 0, from normals equal up to rounding, still has a bound of 1e-16: the plain enclosure, which
+  // is finite if wide, is taken above); should the scaled one still overflow, the plain one.
+  return scaled.finite() ? scaled : plain;
 }
 
 /// How far the exact rim centre and plane point may lie from the stored ones (already scaled),
@@ -148,9 +155,14 @@ CirclePlaneIntersection detail::intersect_circle_plane(const Circle3& circle_in,
   }
   // Inputs whose magnitudes lie hundreds of orders apart can under- or overflow the double
   // steps after the topology (decided exactly regardless): then the points are not answers.
-  bool finite = std::isfinite(out.max_signed_distance);
+  // A certified answer must also carry finite bounds (their intermediate values can overflow
+  // where the values themselves do not).
+  const bool bounded = out.certificate.level != Certainty::uncertain;
+  bool finite = std::isfinite(out.max_signed_distance) &&
+                (!bounded || std::isfinite(out.max_signed_distance_error));
   for (int i = 0; i < out.crossing_count; ++i) {
-    finite = finite && std::isfinite(out.crossings[i].angle) && out.crossings[i].point.allFinite();
+    finite = finite && std::isfinite(out.crossings[i].angle) && out.crossings[i].point.allFinite() &&
+             (!bounded || (std::isfinite(out.crossings[i].angle_error) && std::isfinite(out.crossings[i].point_error)));
   }
   if (!finite) {
     out.certificate = {Certainty::uncertain, kNotRepresentable};
@@ -267,7 +279,10 @@ CirclePlaneIntersection intersect_scaled(const Circle3& circle, const Plane3& pl
     RimCrossing crossing;
     crossing.angle = detail::wrap_angle(angle);
     // wrapping subtracts a rounded 2 pi: one more ulp of 2 pi.
-    crossing.angle_error = bounded ? error + 4 * detail::kUnitRoundoff * detail::kTwoPi : kNoErrorBound;
+    // Capped at pi: every rim angle is within pi of the reported one (ill-conditioned crossings,
+    // such as those of a rim tipped by a subnormal angle, can have an unbounded derivative bound).
+    crossing.angle_error =
+        bounded ? std::fmin(error + 4 * detail::kUnitRoundoff * detail::kTwoPi, std::numbers::pi) : kNoErrorBound;
     crossing.point = circle.center + circle.radius * (cos_angle * frame.u + sin_angle * frame.v);
     // The exact rim's crossing is also errors.centre farther away (its centre moved that much).
     crossing.point_error =

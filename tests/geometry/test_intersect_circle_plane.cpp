@@ -586,5 +586,22 @@ TEST(CirclePlane, MarksCrossingsUncertainWhenTheyCannotBeRepresentedButKeepsTheT
   }
 }
 
+TEST(CirclePlane, NeverCertifiesADepthOrCrossingWithoutAFiniteBound) {
+  // Found by a fuzz of the kernel (magnitudes 1e-300..1e300): the depth's error bound overflowed
+  // while the depth itself and the topology were fine, and the answer still said `certified`.
+  const Circle3 rim{{-0x1.0495740e538cfp+626, 0x1.4a2f39e4a38cp-6, 0x0p+0},
+                    {-0x1.3438a92ced908p-725, -0x1.89c45064dbe78p+707, 0x1.c6fef57f1c1bap-2},
+                    0x1.b9f43ed44c69fp-758};
+  const Plane3 plane{{0x0p+0, -0x1.b7acf47b43c5p-3, -0x1.677227eca1c42p-2},
+                     {0x0p+0, -0x1.d5f77c7cf55f3p+552, 0x1.e2123c97d48bap+252}};
+  const CirclePlaneIntersection hit = intersect_circle_plane(rim, plane);
+  EXPECT_EQ(hit.topology, CirclePlaneTopology::disjoint);
+  if (hit.certificate.level != Certainty::uncertain) {
+    EXPECT_TRUE(std::isfinite(hit.max_signed_distance_error));
+  } else {
+    EXPECT_NE(std::string(hit.certificate.reason).find("not representable"), std::string::npos);
+  }
+}
+
 }  // namespace
 }  // namespace clearjoint::geometry
