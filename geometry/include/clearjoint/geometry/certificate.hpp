@@ -8,7 +8,8 @@ namespace clearjoint::geometry {
 
 /// Trust level of an answer, from strongest to weakest.
 enum class Certainty {
-  /// Decided with exact rational arithmetic on the stored doubles (CGAL).
+  /// Decided with exact rational arithmetic on the stored doubles (CGAL); for detect_contacts,
+  /// on the joint those doubles define (exact base centres, joint_geometry.hpp).
   exact,
   /// Proved with floating-point arithmetic and rigorous error bounds (interval or
   /// running-error analysis): the true answer lies in the reported enclosures.
