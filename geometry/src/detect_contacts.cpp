@@ -125,16 +125,12 @@ JointSetup set_up(const JointDimensions& dimensions, const PartPose& bearing_in_
   s.bearing_bases = {h_i, -h_i};
   s.journal_rims = s.toward_a > 0 ? std::array<Vector3, 2>{s.p_WPj + h_j, s.p_WPj - h_j}
                                   : std::array<Vector3, 2>{s.p_WPj - h_j, s.p_WPj + h_j};
-  // rounded_point's bounds: u (|d|_1 + |h|_1 + |value|_1) (1 + 4u) + 8 * 2^-1074.
-  constexpr double kGrowth = 1 + 4 * detail::kUnitRoundoff;
-  constexpr double kUnderflowAllowance = 8 * detail::kUnderflowError;
-  const double d1 = s.p_WPj.cwiseAbs().sum(), hi1 = h_i.cwiseAbs().sum(), hj1 = h_j.cwiseAbs().sum();
-  s.journal_centre_error = detail::kUnitRoundoff * d1 * kGrowth;
-  const double base_error = detail::kUnitRoundoff * (hi1 + hi1) * kGrowth + kUnderflowAllowance;
+  // rounded_point's bounds (the base points are 0 - 0 +- h_i).
+  s.journal_centre_error = detail::difference_rounding_bound(s.p_WPj);
+  const double base_error = detail::offset_rounding_bound(Vector3::Zero(), h_i, h_i);
   s.bearing_base_errors = {base_error, base_error};
   for (int k = 0; k < 2; ++k) {
-    s.journal_rim_errors[k] =
-        detail::kUnitRoundoff * (d1 + hj1 + s.journal_rims[k].cwiseAbs().sum()) * kGrowth + kUnderflowAllowance;
+    s.journal_rim_errors[k] = detail::offset_rounding_bound(s.p_WPj, h_j, s.journal_rims[k]);
   }
   return s;
 }

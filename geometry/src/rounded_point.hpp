@@ -27,13 +27,6 @@ struct RoundedPoint {
   int sign = 0;
 };
 
-/// A point with no rounding: value is exact.
-inline RoundedPoint exact_point(const Vector3& value) {
-  RoundedPoint point;
-  point.value = point.minuend = value;
-  return point;
-}
-
 /// Evaluates the recipe as d = minuend - subtrahend, h = (length / 2) direction, value = d +- h,
 /// each operation rounded once: |error of each| <= u |result| componentwise, plus 2^-1074 where a
 /// product underflows (sums and differences that underflow are exact) and 2^-1075 |direction|
@@ -42,6 +35,18 @@ inline RoundedPoint exact_point(const Vector3& value) {
 /// rounding of that sum, plus 8 * 2^-1074 for the underflow terms. Exact subtractions (Sterbenz:
 /// the journal near the bearing far from the origin) still count u |d|; the bound stays relative
 /// to the joint's size, not to the world coordinates.
+/// The two bounds below, for callers that compute d, h and value themselves (detect_contacts,
+/// which needs the recipes only for kernel queries): d = minuend - subtrahend alone, and
+/// value = d +- h with h = (length / 2) direction.
+inline double difference_rounding_bound(const Vector3& d) {
+  return (kUnitRoundoff * d.cwiseAbs().sum()) * (1 + 4 * kUnitRoundoff);
+}
+inline double offset_rounding_bound(const Vector3& d, const Vector3& h, const Vector3& value) {
+  return (kUnitRoundoff * (d.cwiseAbs().sum() + h.cwiseAbs().sum() + value.cwiseAbs().sum())) *
+             (1 + 4 * kUnitRoundoff) +
+         8 * kUnderflowError;
+}
+
 inline RoundedPoint rounded_point(const Vector3& minuend, const Vector3& subtrahend, double length,
                                   int sign, const Vector3& direction) {
   RoundedPoint point;
@@ -53,14 +58,12 @@ inline RoundedPoint rounded_point(const Vector3& minuend, const Vector3& subtrah
   const Vector3 d = minuend - subtrahend;
   if (sign == 0) {
     point.value = d;
-    point.error = (kUnitRoundoff * d.cwiseAbs().sum()) * (1 + 4 * kUnitRoundoff);
+    point.error = difference_rounding_bound(d);
     return point;
   }
   const Vector3 h = (0.5 * length) * direction;
   point.value = sign > 0 ? Vector3(d + h) : Vector3(d - h);
-  point.error = (kUnitRoundoff * (d.cwiseAbs().sum() + h.cwiseAbs().sum() + point.value.cwiseAbs().sum())) *
-                    (1 + 4 * kUnitRoundoff) +
-                8 * kUnderflowError;
+  point.error = offset_rounding_bound(d, h, point.value);
   return point;
 }
 

@@ -61,11 +61,9 @@ TEST(RoundedPoint, StaysRelativeToTheJointWhenTheJointIsFarFromTheOrigin) {
   EXPECT_LT(point.error, 1e-17);
 }
 
-TEST(RoundedPoint, ReportsZeroErrorOnlyForAnExactPoint) {
-  const RoundedPoint exact = exact_point(Vector3(0.1, -0.2, 0.3));
-  EXPECT_EQ(exact.error, 0.0);
-  EXPECT_TRUE(error_holds(exact));
-  // A rounded sum that happens to be exact still gets a positive bound (the bound is a priori).
+TEST(RoundedPoint, GivesAPositiveBoundEvenWhenTheSumHappensToBeExact) {
+  // The bound is a priori: (1, 2, 4) + (2 / 2) (0, 0, 1) is computed exactly, and its bound is
+  // still positive.
   const RoundedPoint rounded = rounded_point(Vector3(1.0, 2.0, 4.0), Vector3::Zero(), 2.0, +1, Vector3::UnitZ());
   EXPECT_EQ(rounded.value, Vector3(1.0, 2.0, 5.0));
   EXPECT_GT(rounded.error, 0.0);
