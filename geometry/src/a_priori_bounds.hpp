@@ -43,4 +43,19 @@ inline Bounded a_priori(double value, double magnitude) {
   return {value, kGamma64 * magnitude * kMagnitudeInflation};
 }
 
+/// Underflow allowance for a priori bounds whose guard checks only the upper limit (every input
+/// at most 2^100 in magnitude, however small). Higham's model with underflow (sec. 2.1): a
+/// rounded product is (x y)(1 + delta) + eta with |eta| <= 2^-1075, and sums and differences that
+/// underflow are exact. In the circle-plane quantities and the candidate prefilters (no
+/// reciprocals; the longest chain s s |n_c|^2) each eta is multiplied afterwards by at most two
+/// factors below 2^202, so their few dozen etas add less than 2^6 * 2^-1075 * 2^404 = 2^-665 to any
+/// quantity: 2^-600 covers them with room, and is negligible beside any bound of inputs above
+/// ~1e-150 in magnitude. Tiny non-zero inputs are then harmless, and the guard need not test a
+/// lower limit per value (26 values, ~9 instructions each, in the prefilters).
+inline constexpr double kUnderflowAllowance = 0x1p-600;
+/// a_priori plus kUnderflowAllowance.
+inline Bounded a_priori_with_underflow(double value, double magnitude) {
+  return {value, kGamma64 * magnitude * kMagnitudeInflation + kUnderflowAllowance};
+}
+
 }  // namespace clearjoint::geometry::detail

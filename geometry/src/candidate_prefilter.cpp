@@ -7,16 +7,8 @@
 namespace clearjoint::geometry::detail {
 namespace {
 
-/// Underflow allowance of these tests, added to each a priori bound in place of the guard's
-/// lower limit. Higham's model with underflow (sec. 2.1): a rounded product is
-/// (x y)(1 + delta) + eta with |eta| <= 2^-1075, and sums and differences that underflow are
-/// exact. With every input at most 2^99 in magnitude (the guard below), each eta here is
-/// multiplied afterwards by at most two factors of magnitude below 2^202 (as in s s |n_c|^2),
-/// so the tests' few dozen etas add less than 2^6 * 2^-1075 * 2^404 = 2^-665 to any quantity:
-/// 2^-600 covers them with room. Tiny non-zero inputs (an axis component of 1e-300, say) are then
-/// harmless, and only the largest magnitudes need checking: a lower limit per value cost a
-/// sixth of free-flight detection (26 values, ~9 instructions each).
-constexpr double kUnderflowAllowance = 0x1p-600;
+// Each a priori bound here carries kUnderflowAllowance (a_priori_bounds.hpp) in place of the
+// guard's lower limit: a lower limit per value cost a sixth of free-flight detection.
 
 /// The upper half of the magnitude guard of a_priori_bounds.hpp: every input, and so every
 /// difference c - p, at most 2^100 in magnitude (componentwise, via the 1-norms: |x|_inf <=
@@ -79,16 +71,16 @@ CandidatesClear prove_candidates_clear(const CandidatePrefilterInput& in) {
   const double w2 = w.squaredNorm(), w2_abs = w_abs.squaredNorm(), nc2 = n.squaredNorm();
   const double r2 = r * r;
   const double r2_w2 = r2 * w2, r2_w2_abs = r2 * w2_abs;
-  const Bounded np2 = a_priori(axis_norm2, axis_norm2), nc2_bounded = a_priori(nc2, nc2);
+  const Bounded np2 = a_priori_with_underflow(axis_norm2, axis_norm2);
+  const Bounded nc2_bounded = a_priori_with_underflow(nc2, nc2);
   const double normal_length = plane_normal_length_bound(np2);  // |n_p| = |a_i|, rounded up
   for (int k = 0; k < 2; ++k) {
     const Vector3 d = in.rim_centres[k] - in.base_points[k];
     const double s_value = k == 0 ? a.dot(d) : -a.dot(d);
     const double s_abs = a_abs.dot(d.cwiseAbs());
-    Bounded s = a_priori(s_value, s_abs);
-    Bounded discriminant = a_priori(s_value * s_value * nc2 - r2_w2, s_abs * s_abs * nc2 + r2_w2_abs);
-    s.error += kUnderflowAllowance;  // rounded: the ulp it may lose is within Bounded::sign's inflation
-    discriminant.error += kUnderflowAllowance;
+    Bounded s = a_priori_with_underflow(s_value, s_abs);
+    Bounded discriminant =
+        a_priori_with_underflow(s_value * s_value * nc2 - r2_w2, s_abs * s_abs * nc2 + r2_w2_abs);
     widen_side_quantities_by_shift(s, discriminant, nc2_bounded,
                                    side_shift(normal_length, in.rim_errors[k] + in.base_errors[k]));
     out.axial[k] = discriminant.sign() > 0 && s.sign() < 0;

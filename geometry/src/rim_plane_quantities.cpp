@@ -46,13 +46,13 @@ APrioriTerms a_priori_terms(const Circle3& circle, const Plane3& plane) {
 PlaneQuantities plane_quantities_a_priori(const Circle3& circle, const Plane3& plane) {
   const APrioriTerms t = a_priori_terms(circle, plane);
   const double np2 = plane.normal.squaredNorm();
-  return {a_priori(t.s, t.s_abs),
-          {a_priori(t.w.x(), t.w_abs.x()), a_priori(t.w.y(), t.w_abs.y()),
-           a_priori(t.w.z(), t.w_abs.z())},
-          a_priori(t.w2, t.w2_abs),
-          a_priori(t.nc2, t.nc2),
-          a_priori(np2, np2),
-          a_priori(t.discriminant, t.discriminant_abs)};
+  return {a_priori_with_underflow(t.s, t.s_abs),
+          {a_priori_with_underflow(t.w.x(), t.w_abs.x()), a_priori_with_underflow(t.w.y(), t.w_abs.y()),
+           a_priori_with_underflow(t.w.z(), t.w_abs.z())},
+          a_priori_with_underflow(t.w2, t.w2_abs),
+          a_priori_with_underflow(t.nc2, t.nc2),
+          a_priori_with_underflow(np2, np2),
+          a_priori_with_underflow(t.discriminant, t.discriminant_abs)};
 }
 
 /// The running error bound of error_bounded.hpp, for inputs outside the a priori guard (it also
@@ -67,9 +67,17 @@ PlaneQuantities plane_quantities_running_error(const Circle3& circle, const Plan
 }
 
 bool plane_a_priori_bounds_apply(const Circle3& circle, const Plane3& plane) {
-  return magnitudes_in_range(circle.center) && magnitudes_in_range(plane.point) &&
-         magnitudes_in_range(circle.center - plane.point) && magnitudes_in_range(circle.normal) &&
-         magnitudes_in_range(plane.normal) && magnitude_in_range(circle.radius);
+  // The upper limit of a_priori_bounds.hpp's guard on every input and on c - p (via 1-norms:
+  // |x|_inf <= |x|_1 and |c - p|_1 <= |c|_1 + |p|_1); the lower limit is replaced by
+  // kUnderflowAllowance in every bound. Normals whose squares lie below 2^-200 (the old limit's
+  // square) still take the running error, as before: the depth divides by |n_p|.
+  constexpr double kSmallestNormalSquare = 0x1p-200;
+  const double lengths = circle.center.cwiseAbs().sum() + plane.point.cwiseAbs().sum();
+  return lengths <= kLargestGuardedInput && circle.radius <= kLargestGuardedInput &&
+         circle.normal.cwiseAbs().sum() <= kLargestGuardedInput &&
+         plane.normal.cwiseAbs().sum() <= kLargestGuardedInput &&
+         circle.normal.squaredNorm() >= kSmallestNormalSquare &&
+         plane.normal.squaredNorm() >= kSmallestNormalSquare;
 }
 
 /// A priori: chains w 2, toward 4, along 7.
@@ -80,8 +88,8 @@ InPlaneNormal in_plane_normal_a_priori(const Circle3& circle, const Plane3& plan
   const Vector3 w = plane.normal.cross(nc);
   const Vector3 w_abs = abs_cross(plane.normal.cwiseAbs(), nc_abs);
   const Vector3 toward = nc.cross(w), toward_abs = abs_cross(nc_abs, w_abs);
-  return {a_priori(toward.dot(frame.u), toward_abs.dot(frame.u.cwiseAbs())),
-          a_priori(toward.dot(frame.v), toward_abs.dot(frame.v.cwiseAbs()))};
+  return {a_priori_with_underflow(toward.dot(frame.u), toward_abs.dot(frame.u.cwiseAbs())),
+          a_priori_with_underflow(toward.dot(frame.v), toward_abs.dot(frame.v.cwiseAbs()))};
 }
 
 InPlaneNormal in_plane_normal_running_error(const Circle3& circle, const PlaneQuantities& q,
@@ -114,11 +122,12 @@ RimSide rim_side_of_plane(const Circle3& circle, const Plane3& plane, bool a_pri
   Bounded s, discriminant;
   if (a_priori_bounds_apply) {  // only the two values the side needs, not all the quantities
     const APrioriTerms t = a_priori_terms(circle, plane);
-    s = a_priori(t.s, t.s_abs);
-    discriminant = a_priori(t.discriminant, t.discriminant_abs);
+    s = a_priori_with_underflow(t.s, t.s_abs);
+    discriminant = a_priori_with_underflow(t.discriminant, t.discriminant_abs);
     if (distance_error != 0.0) {
       const double np2 = plane.normal.squaredNorm();
-      widen_side_quantities(s, discriminant, a_priori(np2, np2), a_priori(t.nc2, t.nc2), distance_error);
+      widen_side_quantities(s, discriminant, a_priori_with_underflow(np2, np2),
+                            a_priori_with_underflow(t.nc2, t.nc2), distance_error);
     }
   } else {
     PlaneQuantities q = plane_quantities_running_error(circle, plane);

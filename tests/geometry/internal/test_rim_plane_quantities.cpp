@@ -116,14 +116,19 @@ TEST(PlaneQuantities, BothVersionsEncloseTheExactValuesOnRandomPoses) {
   EXPECT_EQ(a_priori, 500);  // every pose here is inside the guard
 }
 
-TEST(PlaneQuantities, RunningErrorEnclosesTheExactValuesAtHugeAndTinyScales) {
+TEST(PlaneQuantities, BothVersionsEncloseTheExactValuesAtHugeAndTinyScales) {
   std::mt19937_64 rng(73);
-  // Up to 1e70 nothing overflows (the discriminant is a length^4 times normals^4 <= 1e12).
+  // Up to 1e70 nothing overflows (the discriminant is a length^4 times normals^4 <= 1e12). Huge
+  // lengths exceed the a priori guard's upper limit; tiny ones pass it (its lower limit is an
+  // underflow allowance, a_priori_bounds.hpp), and at 1e-150 the discriminant (~1e-600)
+  // underflows: the allowance must cover it.
   for (const double scale : {1e-150, 1e-60, 1e60, 1e70}) {
     for (int i = 0; i < 50; ++i) {
       const Pose pose = random_pose(rng, scale, -1.0);
-      EXPECT_EQ(plane_a_priori_bounds_apply(pose.circle, pose.plane), false);
       check_quantities(plane_quantities_running_error(pose.circle, pose.plane), pose);
+      const bool a_priori = plane_a_priori_bounds_apply(pose.circle, pose.plane);
+      EXPECT_EQ(a_priori, scale < 1.0);
+      if (a_priori) check_quantities(plane_quantities_a_priori(pose.circle, pose.plane), pose);
     }
   }
 }
