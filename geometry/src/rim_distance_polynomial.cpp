@@ -231,10 +231,6 @@ RimReach rim_reach(const Circle3& circle, const Cylinder3& cylinder) {
   return rim_reach(circle, cylinder, cylinder_a_priori_bounds_apply(circle, cylinder));
 }
 
-RimReach rim_reach(const Circle3& circle, const Cylinder3& cylinder, bool a_priori_bounds_apply) {
-  return rim_reach(circle, cylinder, a_priori_bounds_apply, 0.0);
-}
-
 RimReach rim_reach(const Circle3& circle, const Cylinder3& cylinder, bool a_priori_bounds_apply,
                    double centre_error) {
   // dist(x, axis) lies within dist(c, axis) +- r for every rim point x, and dist(c, axis) moves

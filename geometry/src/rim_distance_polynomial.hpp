@@ -88,9 +88,9 @@ enum class RimReach {
 
 /// Proved with the running error bound of error_bounded.hpp: the answer is never wrong.
 RimReach rim_reach(const Circle3& circle, const Cylinder3& cylinder);
-RimReach rim_reach(const Circle3& circle, const Cylinder3& cylinder, bool a_priori_bounds_apply);
-/// The same, proved for every centre within `centre_error` of circle.center (rounded_point.hpp).
+/// The same with the magnitude guard already evaluated, proved for every centre within
+/// `centre_error` of circle.center (rounded_point.hpp).
 RimReach rim_reach(const Circle3& circle, const Cylinder3& cylinder, bool a_priori_bounds_apply,
-                   double centre_error);
+                   double centre_error = 0.0);
 
 }  // namespace clearjoint::geometry::detail

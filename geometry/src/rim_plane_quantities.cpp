@@ -113,10 +113,6 @@ void widen_for_point_error(PlaneQuantities& q, double distance_error) {
   widen_side_quantities(q.s, q.discriminant, q.np2, q.nc2, distance_error);
 }
 
-RimSide rim_side_of_plane(const Circle3& circle, const Plane3& plane, bool a_priori_bounds_apply) {
-  return rim_side_of_plane(circle, plane, a_priori_bounds_apply, 0.0);
-}
-
 RimSide rim_side_of_plane(const Circle3& circle, const Plane3& plane, bool a_priori_bounds_apply,
                           double distance_error) {
   Bounded s, discriminant;

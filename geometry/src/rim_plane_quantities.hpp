@@ -80,11 +80,9 @@ enum class RimSide {
 };
 RimSide rim_side_of_plane(const Circle3& circle, const Plane3& plane);
 /// The same with the magnitude guard already evaluated (plane_a_priori_bounds_apply, or a
-/// caller's guard over a superset of the same values).
-RimSide rim_side_of_plane(const Circle3& circle, const Plane3& plane, bool a_priori_bounds_apply);
-/// The same, proved for every centre and plane point within distance_error (together) of the
-/// stored ones (widen_for_point_error).
+/// caller's guard over a superset of the same values), proved for every centre and plane point
+/// within distance_error (together) of the stored ones (widen_for_point_error).
 RimSide rim_side_of_plane(const Circle3& circle, const Plane3& plane, bool a_priori_bounds_apply,
-                          double distance_error);
+                          double distance_error = 0.0);
 
 }  // namespace clearjoint::geometry::detail
