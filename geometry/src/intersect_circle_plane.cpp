@@ -41,7 +41,8 @@ constexpr double kLibmAngleError = 4 * 2 * detail::kUnitRoundoff * std::numbers:
 /// only where the squares could under- or overflow.
 double length_2d(double x, double y) {
   constexpr double kSafeLow = 0x1p-500, kSafeHigh = 0x1p500;
-  const double m = std::fmax(std::fabs(x), std::fabs(y));
+  const double ax = std::fabs(x), ay = std::fabs(y);
+  const double m = ax > ay ? ax : ay;  // not std::fmax: a libm call (error_bounded.hpp)
   if (m > kSafeLow && m < kSafeHigh) return std::sqrt(x * x + y * y);
   return std::hypot(x, y);
 }
