@@ -109,7 +109,7 @@ bool refine_and_enclose(const RimDistancePolynomial& g, double guess, int direct
       out.multiplicity = 1;
       out.sign_after = direction;
       // cos and sin of the real base + offset, which lies inside the enclosure.
-      const ValueAndSlope at = g.approximate_near(base, offset);
+      const CosSin at = cos_sin_near(base, offset);
       out.cos = at.cos;
       out.sin = at.sin;
       return true;

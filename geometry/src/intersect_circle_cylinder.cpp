@@ -58,7 +58,10 @@ void fill(const Circle3& circle, const RimRoots& roots, bool bounded, double cen
     crossing.multiplicity = root.multiplicity;
     // A chord is never longer than its arc: |x(t*) - x(t)| <= r |t* - t|.
     // Capped at pi: every rim angle is within pi of the reported one.
-    crossing.angle_error = bounded ? std::fmin(root.radius, std::numbers::pi) : kNoErrorBound;
+    // (A comparison, not std::fmin: that is an out-of-line libm call. A NaN radius gives pi
+    // either way.)
+    crossing.angle_error =
+        bounded ? (root.radius < std::numbers::pi ? root.radius : std::numbers::pi) : kNoErrorBound;
     crossing.point_error =
         bounded ? (circle.radius * crossing.angle_error + rounding + centre_error) * (1 + 4 * detail::kUnitRoundoff)
                 : kNoErrorBound;

@@ -156,69 +156,6 @@ double RimDistancePolynomial::approximate_newton_step(double theta) const {
   return value / slope;
 }
 
-namespace {
-
-/// Taylor polynomials of sin (degree 7) and cos (degree 8) at 0, for |x| <= kMaxAngleOffset.
-/// Error: Lagrange remainders |x|^9/9! and |x|^10/10!, plus Horner rounding: every partial result
-/// is at most 1 in magnitude (at most x^2/2 inside), so the cosine is off by < 2u and the sine by
-/// < 3u |x| (the rounded constants 1/6, 1/120, ... add < u x^2); 4u covers both.
-struct SmallAngleTrig {
-  double sin, cos;
-};
-SmallAngleTrig small_angle_trig(double x) {
-  const double x2 = x * x;
-  return {x * (1 - x2 * (1.0 / 6 - x2 * (1.0 / 120 - x2 / 5040))),
-          1 - x2 * (0.5 - x2 * (1.0 / 24 - x2 * (1.0 / 720 - x2 / 40320)))};
-}
-
-/// Bound on |computed - true| of the sine and cosine that value_near and approximate_near form
-/// by angle addition at base + x (|x| <= 1/16), in units: libm's base sine and cosine (4u each,
-/// error_bounded.hpp), the Taylor polynomials' rounding (4u, small_angle_trig) and the two products
-/// and one sum of the addition (3u each of terms at most 1 + 1/16) add to under 12u; 24u
-/// doubles that, and the slack also holds the cosine's Lagrange remainder (|x|^10 / 10! < 3e-19).
-/// The sine's remainder (|x|^9 / 9! <= (1/16)^9 / 9! < 4.1e-17) is added separately.
-/// (kAngleAdditionUlps, in rim_distance_polynomial.hpp.)
-static_assert(kMaxAngleOffset == 1.0 / 16);
-
-}  // namespace
-
-Bounded RimDistancePolynomial::value_near(const AngleBase& base, double offset) const {
-  // Plain double evaluation with an a priori bound instead of the running error of `value`:
-  // this is the proof step of every tier-1 root, so it should cost what approximate_near does.
-  // With e_t the error of the computed c, s (kAngleAdditionUlps u plus the Taylor remainder),
-  // cos2 = (c - s)(c + s) and sin2 = 2 s c are off by at most 2 (|c| + |s|) e_t + e_t^2 plus 3u
-  // of rounding, under 4 e_t + 4u since |c| + |s| <= 1.5 here; the sum k0 + k1 c + ... is off by
-  // sum |k_i| e_i (each true trig value is at most 1 in magnitude), the coefficients' own
-  // errors, and its rounding, gamma_6 of sum |k_i| |t_i| <= 8u sum |k_i| (|t_i| <= 1 + e_t).
-  // Each operation may also underflow (2^-1074 each, 32 of them cover the 25 here).
-  const SmallAngleTrig small = small_angle_trig(offset);
-  const double bc = base.trig.cos.value, bs = base.trig.sin.value;
-  const double c = bc * small.cos - bs * small.sin;
-  const double s = bs * small.cos + bc * small.sin;
-  const double cos2 = (c - s) * (c + s), sin2 = 2 * s * c;
-  const double value = k[0].value + k[1].value * c + k[2].value * s + k[3].value * cos2 + k[4].value * sin2;
-
-  const double a = std::fabs(offset), a3 = a * a * a;
-  const double trig_error = kAngleAdditionUlps * kUnitRoundoff + a3 * a3 * a3 / 362880;
-  const double double_angle_error = 4 * trig_error + 4 * kUnitRoundoff;
-  const double first = std::fabs(k[1].value) + std::fabs(k[2].value);
-  const double second = std::fabs(k[3].value) + std::fabs(k[4].value);
-  const double error = coefficient_error() + first * trig_error + second * double_angle_error +
-                       8 * kUnitRoundoff * (std::fabs(k[0].value) + first + second) +
-                       32 * kUnderflowError;
-  return {value, error * kErrorInflation};
-}
-
-ValueAndSlope RimDistancePolynomial::approximate_near(const AngleBase& base, double offset) const {
-  const SmallAngleTrig small = small_angle_trig(offset);
-  const double c = base.trig.cos.value * small.cos - base.trig.sin.value * small.sin;
-  const double s = base.trig.sin.value * small.cos + base.trig.cos.value * small.sin;
-  const double cos2 = (c - s) * (c + s), sin2 = 2 * s * c;
-  const double value = k[0].value + k[1].value * c + k[2].value * s + k[3].value * cos2 + k[4].value * sin2;
-  const double slope = k[2].value * c - k[1].value * s + 2 * (k[4].value * cos2 - k[3].value * sin2);
-  return {value, slope, c, s};
-}
-
 double RimDistancePolynomial::second_derivative_bound() const {
   // |g''| <= |first harmonic| + 4 |second harmonic|, each harmonic's amplitude bounded by the
   // hypot of its (enclosed) coefficients.

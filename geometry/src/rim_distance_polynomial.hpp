@@ -3,6 +3,7 @@
 // the rim angle (docs/circle-cylinder.md, section 1). Its roots are the crossings of eqs. (16)-(17).
 
 #include <array>
+#include <cmath>
 
 #include "clearjoint/geometry/primitives.hpp"
 #include "error_bounded.hpp"
@@ -31,7 +32,7 @@ struct ValueAndSlope {
 };
 
 /// Bound on |computed - true| of the cos and sin that approximate_near and value_near form by
-/// angle addition at base + offset (|offset| <= kMaxAngleOffset): see rim_distance_polynomial.cpp.
+/// angle addition at base + offset (|offset| <= kMaxAngleOffset): see cos_sin_near below.
 inline constexpr double kAngleAdditionUlps = 24;
 inline constexpr double kAngleAdditionTrigError =
     kAngleAdditionUlps * kUnitRoundoff + 4.1e-17;  // + the sine's Taylor remainder (1/16)^9 / 9!
@@ -45,9 +46,10 @@ struct RimDistancePolynomial {
   double approximate_newton_step(double theta) const;
   /// g, g' near a base angle whose sine and cosine are known, at the real angle
   /// base + offset (|offset| <= kMaxAngleOffset): one libm call serves a whole Newton run and
-  /// its proof. See AngleBase.
-  Bounded value_near(const struct AngleBase& base, double offset) const;
-  struct ValueAndSlope approximate_near(const struct AngleBase& base, double offset) const;
+  /// its proof. See AngleBase. Inline (below): they are the inner loop of tier 1, called a dozen
+  /// times per crossing rim, and a call cost a third of each.
+  Bounded value_near(const AngleBase& base, double offset) const;
+  ValueAndSlope approximate_near(const AngleBase& base, double offset) const;
   /// Sum of the coefficient error bounds: a bound on the coefficient part of g's error.
   double coefficient_error() const {
     return k[0].error + k[1].error + k[2].error + k[3].error + k[4].error;
@@ -56,6 +58,69 @@ struct RimDistancePolynomial {
   /// Bound on |g''| over all angles: hypot(k1, k2) + 4 hypot(k3, k4) with coefficient errors.
   double second_derivative_bound() const;
 };
+
+/// Taylor polynomials of sin (degree 7) and cos (degree 8) at 0, for |x| <= kMaxAngleOffset.
+/// Error: Lagrange remainders |x|^9/9! and |x|^10/10!, plus Horner rounding: every partial result
+/// is at most 1 in magnitude (at most x^2/2 inside), so the cosine is off by < 2u and the sine by
+/// < 3u |x| (the rounded constants 1/6, 1/120, ... add < u x^2); 4u covers both.
+struct SmallAngleTrig {
+  double sin, cos;
+};
+inline SmallAngleTrig small_angle_trig(double x) {
+  const double x2 = x * x;
+  return {x * (1 - x2 * (1.0 / 6 - x2 * (1.0 / 120 - x2 / 5040))),
+          1 - x2 * (0.5 - x2 * (1.0 / 24 - x2 * (1.0 / 720 - x2 / 40320)))};
+}
+
+/// cos and sin at base + offset by angle addition: the ones approximate_near and value_near use.
+/// Bound on |computed - true| (kAngleAdditionUlps): libm's base sine and cosine (4u each,
+/// error_bounded.hpp), the Taylor polynomials' rounding (4u, small_angle_trig) and the two
+/// products and one sum of the addition (3u each of terms at most 1 + 1/16) add to under 12u; 24u
+/// doubles that, and the slack also holds the cosine's Lagrange remainder (|x|^10 / 10! < 3e-19).
+/// The sine's remainder (|x|^9 / 9! <= (1/16)^9 / 9! < 4.1e-17) is added separately.
+struct CosSin {
+  double cos, sin;
+};
+inline CosSin cos_sin_near(const AngleBase& base, double offset) {
+  static_assert(kMaxAngleOffset == 1.0 / 16);
+  const SmallAngleTrig small = small_angle_trig(offset);
+  const double bc = base.trig.cos.value, bs = base.trig.sin.value;
+  return {bc * small.cos - bs * small.sin, bs * small.cos + bc * small.sin};
+}
+
+inline Bounded RimDistancePolynomial::value_near(const AngleBase& base, double offset) const {
+  // Plain double evaluation with an a priori bound instead of the running error of `value`:
+  // this is the proof step of every tier-1 root, so it should cost what approximate_near does.
+  // With e_t the error of the computed c, s (kAngleAdditionUlps u plus the Taylor remainder),
+  // cos2 = (c - s)(c + s) and sin2 = 2 s c are off by at most 2 (|c| + |s|) e_t + e_t^2 plus 3u
+  // of rounding, under 4 e_t + 4u since |c| + |s| <= 1.5 here; the sum k0 + k1 c + ... is off by
+  // sum |k_i| e_i (each true trig value is at most 1 in magnitude), the coefficients' own
+  // errors, and its rounding, gamma_6 of sum |k_i| |t_i| <= 8u sum |k_i| (|t_i| <= 1 + e_t).
+  // Each operation may also underflow (2^-1074 each, 32 of them cover the 25 here).
+  const CosSin t = cos_sin_near(base, offset);
+  const double c = t.cos, s = t.sin;
+  const double cos2 = (c - s) * (c + s), sin2 = 2 * s * c;
+  const double value = k[0].value + k[1].value * c + k[2].value * s + k[3].value * cos2 + k[4].value * sin2;
+
+  const double a = std::fabs(offset), a3 = a * a * a;
+  const double trig_error = kAngleAdditionUlps * kUnitRoundoff + a3 * a3 * a3 / 362880;
+  const double double_angle_error = 4 * trig_error + 4 * kUnitRoundoff;
+  const double first = std::fabs(k[1].value) + std::fabs(k[2].value);
+  const double second = std::fabs(k[3].value) + std::fabs(k[4].value);
+  const double error = coefficient_error() + first * trig_error + second * double_angle_error +
+                       8 * kUnitRoundoff * (std::fabs(k[0].value) + first + second) +
+                       32 * kUnderflowError;
+  return {value, error * kErrorInflation};
+}
+
+inline ValueAndSlope RimDistancePolynomial::approximate_near(const AngleBase& base, double offset) const {
+  const CosSin t = cos_sin_near(base, offset);
+  const double c = t.cos, s = t.sin;
+  const double cos2 = (c - s) * (c + s), sin2 = 2 * s * c;
+  const double value = k[0].value + k[1].value * c + k[2].value * s + k[3].value * cos2 + k[4].value * sin2;
+  const double slope = k[2].value * c - k[1].value * s + 2 * (k[4].value * cos2 - k[3].value * sin2);
+  return {value, slope, c, s};
+}
 
 /// The coefficients with a priori error bounds (Higham's gamma_k on the absolute-value
 /// expression) in plain double when every input magnitude lies in [2^-100, 2^100]; otherwise
