@@ -72,7 +72,7 @@ bool refine_and_enclose(const RimDistancePolynomial& g, double guess, int direct
   double offset = 0.0;
   double slope = 0.0;
   for (int i = 0; i < kMaxNewtonSteps; ++i) {
-    const ValueAndSlope at = g.approximate_near(base, offset);
+    const ValueAndSlope at = i == 0 ? g.approximate_at_base(base) : g.approximate_near(base, offset);
     slope = std::fabs(at.slope);
     const double step = at.value / at.slope;
     if (!std::isfinite(step)) break;

@@ -155,8 +155,9 @@ CircleCylinderIntersection intersect_scaled(const Circle3& circle, const Cylinde
   CircleCylinderIntersection out;
 
   // Bounding test on the rim's reach: most free-flight rims stop here.
-  const bool a_priori = detail::cylinder_a_priori_bounds_apply(circle, cylinder);
-  const detail::RimReach reach = detail::rim_reach(circle, cylinder, a_priori, centre_error);
+  // The reach test needs only part of the magnitude guard; the rest only if it is undecided.
+  const bool reach_a_priori = detail::reach_a_priori_bounds_apply(circle, cylinder);
+  const detail::RimReach reach = detail::rim_reach(circle, cylinder, reach_a_priori, centre_error);
   if (reach != detail::RimReach::undecided) {
     RimRoots none;
     none.sign_without_roots = reach == detail::RimReach::strictly_outside ? 1 : -1;
@@ -166,6 +167,7 @@ CircleCylinderIntersection intersect_scaled(const Circle3& circle, const Cylinde
     return out;
   }
 
+  const bool a_priori = detail::cylinder_a_priori_bounds_apply(circle, cylinder, reach_a_priori);
   detail::RimDistancePolynomial g = detail::rim_distance_polynomial(circle, cylinder, a_priori);
   if (!options.certify) {
     fill(circle, detail::approximate_rim_roots(g), false, centre_error, out);

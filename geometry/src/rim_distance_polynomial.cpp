@@ -16,12 +16,20 @@ BoundedVector3 exact(const Vector3& v) { return {v.x(), v.y(), v.z()}; }
 
 }  // namespace
 
-bool cylinder_a_priori_bounds_apply(const Circle3& circle, const Cylinder3& cylinder) {
+bool reach_a_priori_bounds_apply(const Circle3& circle, const Cylinder3& cylinder) {
   const Vector3 q = circle.center - cylinder.axis_point;  // rounded, but that is fine for a range test
-  return magnitudes_in_range(circle.center) && magnitudes_in_range(cylinder.axis_point) &&
-         magnitudes_in_range(q) && magnitudes_in_range(circle.normal) &&
-         magnitudes_in_range(cylinder.axis) && magnitude_in_range(circle.radius) &&
-         magnitude_in_range(cylinder.radius);
+  return magnitudes_in_range(q) && magnitudes_in_range(cylinder.axis) &&
+         magnitude_in_range(circle.radius) && magnitude_in_range(cylinder.radius);
+}
+
+bool cylinder_a_priori_bounds_apply(const Circle3& circle, const Cylinder3& cylinder,
+                                    bool reach_guard) {
+  return reach_guard && magnitudes_in_range(circle.center) &&
+         magnitudes_in_range(cylinder.axis_point) && magnitudes_in_range(circle.normal);
+}
+
+bool cylinder_a_priori_bounds_apply(const Circle3& circle, const Cylinder3& cylinder) {
+  return cylinder_a_priori_bounds_apply(circle, cylinder, reach_a_priori_bounds_apply(circle, cylinder));
 }
 
 namespace {
@@ -175,6 +183,8 @@ RimReach rim_reach(const Circle3& circle, const Cylinder3& cylinder, bool a_prio
   // (R + r + e)^2 |d|^2.
   const double R = cylinder.radius, r = circle.radius;
   if (a_priori_bounds_apply) {
+    // Guard (reach_a_priori_bounds_apply): q, d, r and R in range, so no product of up to four
+    // of them under- or overflows.
     // |q x d|^2 (rounding chain 6) against gap^2 D (chain 7: R - r, then - e, then squares);
     // the difference has chain 8: error <= gamma_64 (|q x d|_abs^2 + gap_abs^2 D), see
     // kGamma64, with gap_abs = (R - r) + e the twin of (R - r) - e (each subtraction of the

@@ -25,6 +25,11 @@ struct AngleBase {
   explicit AngleBase(double theta) : angle(theta), trig(sincos_of(theta)) {}
 };
 
+/// cos and sin of one angle (cos_sin_near).
+struct CosSin {
+  double cos, sin;
+};
+
 struct ValueAndSlope {
   double value;
   double slope;
@@ -50,6 +55,11 @@ struct RimDistancePolynomial {
   /// times per crossing rim, and a call cost a third of each.
   Bounded value_near(const AngleBase& base, double offset) const;
   ValueAndSlope approximate_near(const AngleBase& base, double offset) const;
+  /// approximate_near(base, 0.0), bit for bit, without the Taylor polynomials (at +0 they are
+  /// exactly 0 and 1): the first Newton iterate of every root.
+  ValueAndSlope approximate_at_base(const AngleBase& base) const;
+  /// g, g' (plain double) from a cosine and sine of the angle.
+  ValueAndSlope approximate_at(CosSin t) const;
   /// Sum of the coefficient error bounds: a bound on the coefficient part of g's error.
   double coefficient_error() const {
     return k[0].error + k[1].error + k[2].error + k[3].error + k[4].error;
@@ -78,9 +88,6 @@ inline SmallAngleTrig small_angle_trig(double x) {
 /// products and one sum of the addition (3u each of terms at most 1 + 1/16) add to under 12u; 24u
 /// doubles that, and the slack also holds the cosine's Lagrange remainder (|x|^10 / 10! < 3e-19).
 /// The sine's remainder (|x|^9 / 9! <= (1/16)^9 / 9! < 4.1e-17) is added separately.
-struct CosSin {
-  double cos, sin;
-};
 inline CosSin cos_sin_near(const AngleBase& base, double offset) {
   static_assert(kMaxAngleOffset == 1.0 / 16);
   const SmallAngleTrig small = small_angle_trig(offset);
@@ -114,7 +121,17 @@ inline Bounded RimDistancePolynomial::value_near(const AngleBase& base, double o
 }
 
 inline ValueAndSlope RimDistancePolynomial::approximate_near(const AngleBase& base, double offset) const {
-  const CosSin t = cos_sin_near(base, offset);
+  return approximate_at(cos_sin_near(base, offset));
+}
+
+inline ValueAndSlope RimDistancePolynomial::approximate_at_base(const AngleBase& base) const {
+  // cos_sin_near with small_angle_trig(+0) = {+0, 1}; the products by +0 stay, as they decide
+  // the sign of a zero result exactly as there.
+  const double bc = base.trig.cos.value, bs = base.trig.sin.value;
+  return approximate_at({bc - bs * 0.0, bs + bc * 0.0});
+}
+
+inline ValueAndSlope RimDistancePolynomial::approximate_at(CosSin t) const {
   const double c = t.cos, s = t.sin;
   const double cos2 = (c - s) * (c + s), sin2 = 2 * s * c;
   const double value = k[0].value + k[1].value * c + k[2].value * s + k[3].value * cos2 + k[4].value * sin2;
@@ -133,6 +150,14 @@ RimDistancePolynomial rim_distance_polynomial(const Circle3& circle, const Cylin
 /// Whether every input magnitude lies in [2^-100, 2^100] (or is zero): the a priori bounds of
 /// a_priori_bounds.hpp hold.
 bool cylinder_a_priori_bounds_apply(const Circle3& circle, const Cylinder3& cylinder);
+/// The part of that guard rim_reach's a priori bound needs: q = c - p (rounded, as rim_reach
+/// computes it), the axis and both radii in range. Checked first, the rest of the guard
+/// (cylinder_a_priori_bounds_apply with reach_guard) only for the rims the reach test leaves
+/// undecided: most rims stop at the reach test, and the guard was a quarter of their cost.
+bool reach_a_priori_bounds_apply(const Circle3& circle, const Cylinder3& cylinder);
+/// cylinder_a_priori_bounds_apply given reach_a_priori_bounds_apply's answer `reach_guard`.
+bool cylinder_a_priori_bounds_apply(const Circle3& circle, const Cylinder3& cylinder,
+                                    bool reach_guard);
 /// The running-error version alone (the fallback, and a cross-check in the tests).
 RimDistancePolynomial rim_distance_polynomial_running_error(const Circle3& circle,
                                                             const Cylinder3& cylinder);
