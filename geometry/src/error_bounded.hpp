@@ -86,8 +86,21 @@ inline Bounded sqrt(Bounded a) {
   const double v = std::sqrt(nonnegative_part(a.value));
   const double low = a.value - a.error * kErrorInflation;
   double e;
-  if (low > 0.0) {
-    // |sqrt(x) - sqrt(x0)| = |x - x0| / (sqrt(x) + sqrt(x0)) <= error / (sqrt(low) + sqrt(x0)).
+  // Between these, v * v and low stay far from under- and overflow (v^2 >= low > 2^-900, and
+  // v^2 ~ a.value < 2^1000); the product with a tiny error can still underflow, hence the
+  // kUnderflowError.
+  constexpr double kNoUnderflowLow = 0x1p-900, kNoOverflowValue = 0x1p1000;
+  if (low > kNoUnderflowLow && a.value < kNoOverflowValue) {
+    // |sqrt(x) - sqrt(x0)| = |x - x0| / (sqrt(x) + sqrt(x0)), x the true value, x0 = a.value.
+    // With x >= low, low <= x0 and v = sqrt(x0)(1 + delta), |delta| <= u:
+    //   sqrt(x) >= sqrt(low) >= low / sqrt(x0) >= low / (v (1 + 2u)),  sqrt(x0) >= v (1 - u),
+    // so the sum is at least (low + v^2 (1 - u)(1 + 2u)) / (v (1 + 2u)). The factors 1 + 8u and
+    // 1 - 4u cover those and the roundings of this line (six); the error multiplies the ratio
+    // last, so that a huge error cannot overflow where the bound itself does not. One
+    // division instead of a second square root (sqrt(low)), for a bound as tight to first order.
+    e = a.error * (v * (1.0 + 8 * kUnitRoundoff) / (low + v * v * (1.0 - 4 * kUnitRoundoff))) +
+        kUnderflowError;
+  } else if (low > 0.0) {
     e = a.error / ((std::sqrt(low) + v) * (1.0 - 4 * kUnitRoundoff));
   } else {
     e = std::sqrt(nonnegative_part(a.value) + a.error) * (1.0 + 4 * kUnitRoundoff);

@@ -34,7 +34,7 @@ constexpr const char* kNotRepresentable =
 
 /// See intersect_circle_cylinder.cpp: rounding of point_at.
 constexpr double kPointRoundingUlps = 32 * detail::kUnitRoundoff;
-/// acos and atan2 in glibc: at most 1-2 ulps; we allow 4 ulps of pi.
+/// acos and asin in glibc: at most 1-2 ulps; we allow 4 ulps of pi.
 constexpr double kLibmAngleError = 4 * 2 * detail::kUnitRoundoff * std::numbers::pi;
 
 /// sqrt(x^2 + y^2) within 2 ulps; std::hypot (correctly rounded, but several times the cost)
@@ -47,23 +47,43 @@ double length_2d(double x, double y) {
   return std::hypot(x, y);
 }
 
-/// atan2 of an enclosed vector, with the angle error: a displacement delta of a vector of
-/// length L turns it by at most asin(delta / L) <= (pi / 2) delta / L (when delta < L). The
-/// computed length is within 2 ulps: (1 - 4u) makes it a lower bound.
-Bounded angle_of(const Bounded& x, const Bounded& y) {
-  const double angle = std::atan2(y.value, x.value);
-  const double length = length_2d(x.value, y.value) * (1 - 4 * detail::kUnitRoundoff);
-  const double delta = (x.error + y.error) * detail::kErrorInflation;  // >= hypot of the errors
-  if (!(delta < 0.5 * length)) return {angle, std::numbers::pi};
-  return {angle, 0.5 * std::numbers::pi * delta / (length - delta) * detail::kErrorInflation +
-                     kLibmAngleError};
-}
-
 /// An angle enclosure with the cosine and sine of its centre value.
 struct AngleWithTrig {
   Bounded angle;
   double cos, sin;
 };
+
+/// The angle of an enclosed vector (x, y) in (-pi, pi], with its cosine and sine.
+///
+/// Its error has three parts. Moving the vector by delta (at most the sum of the component
+/// errors) turns it by at most asin(delta / L) <= (pi / 2) delta / L when delta < L, L its
+/// length (computed within 2 ulps: (1 - 4u) makes it a lower bound). The angle itself is
+/// acos(x / L) or asin(y / L), whichever argument is at most 1/sqrt(2) in magnitude, where either
+/// has slope below 1.5: the quotient's relative error (2 ulps of L, one rounding) is under 8u of
+/// an argument at most 1, so 12u of angle, and kLibmAngleError covers the call; pi - a adds the
+/// rounding of pi and of the difference. Not std::atan2: glibc's costs 13-15 ns on the benchmark
+/// machine against 4 ns for acos or asin (measured side by side, 2026-11-23), and the cosine
+/// and sine are wanted for the crossing points anyway.
+AngleWithTrig angle_of(const Bounded& x, const Bounded& y) {
+  constexpr double kQuotientAngleError = 12 * detail::kUnitRoundoff;
+  constexpr double kReflectionError = 4 * detail::kUnitRoundoff * std::numbers::pi;
+  const double computed_length = length_2d(x.value, y.value);
+  if (!(computed_length > 0.0)) return {{0.0, std::numbers::pi}, 1.0, 0.0};  // no direction known
+  const double c = x.value / computed_length, s = y.value / computed_length;
+  double angle;
+  if (std::fabs(c) <= std::fabs(s)) {
+    angle = std::copysign(std::acos(c), s);
+  } else {
+    const double a = std::asin(s);  // in [-pi/4, pi/4]
+    angle = c > 0 ? a : (s >= 0 ? std::numbers::pi - a : -std::numbers::pi - a);
+  }
+  const double length = computed_length * (1 - 4 * detail::kUnitRoundoff);
+  const double delta = (x.error + y.error) * detail::kErrorInflation;  // >= hypot of the errors
+  if (!(delta < 0.5 * length)) return {{angle, std::numbers::pi}, c, s};
+  const double turn = 0.5 * std::numbers::pi * delta / (length - delta) * detail::kErrorInflation;
+  return {{angle, (turn + kQuotientAngleError + kLibmAngleError + kReflectionError) * detail::kErrorInflation},
+          c, s};
+}
 
 /// acos of an enclosed cosine. Away from +-1 one acos and the derivative bound
 /// |acos'| = 1 / sqrt(1 - c^2) suffice, and the centre's cosine is c itself; near +-1 the
@@ -191,7 +211,7 @@ CirclePlaneIntersection intersect_scaled(const Circle3& circle, const Plane3& pl
   detail::PlaneQuantities q = a_priori ? detail::plane_quantities_a_priori(circle, plane)
                                        : detail::plane_quantities_running_error(circle, plane);
   // Every bound below then holds for the exact centre and point too (rounded_point.hpp).
-  detail::widen_for_point_error(q, errors.centre + errors.point);
+  if (errors.centre + errors.point != 0.0) detail::widen_for_point_error(q, errors.centre + errors.point);
   const Bounded& s = q.s;
   const BoundedVector3& w = q.w;
   const Bounded &w2 = q.w2, &np2 = q.np2;
@@ -264,23 +284,18 @@ CirclePlaneIntersection intersect_scaled(const Circle3& circle, const Plane3& pl
     return out;
   }
 
-  // theta_m: angle of P n_p in the rim frame; P n_p is parallel to n_c x (n_p x n_c).
-  const CircleFrame frame = frame_of(circle);
-  const detail::InPlaneNormal toward =
-      a_priori ? detail::in_plane_normal_a_priori(circle, plane, frame)
-               : detail::in_plane_normal_running_error(circle, q, frame);
-  const Bounded& along_u = toward.along_u;
-  const Bounded& along_v = toward.along_v;
-  // The stored frame is rounded: its vectors differ from the exact frame by a few ulps, which
-  // turns the angle by at most as much; 8 u covers it.
-  Bounded theta_m = angle_of(along_u, along_v);
-  theta_m.error += 8 * detail::kUnitRoundoff;
+  // theta_m: angle of P n_p in the rim frame, from w and |n_c|^2 (rim_plane_quantities.hpp).
+  const detail::DeepestDirection toward = detail::deepest_direction(circle, q);
+  const AngleWithTrig theta_m_with_trig = angle_of(toward.along_u, toward.along_v);
+  const Bounded& theta_m = theta_m_with_trig.angle;
+  const double cos_m = theta_m_with_trig.cos, sin_m = theta_m_with_trig.sin;
 
-  const double rounding = kPointRoundingUlps * (circle.center.norm() + 2 * circle.radius);
+  // The points on the stored (rounded) frame; `rounding` covers it and the sums.
+  const CircleFrame frame = frame_of(circle);
+  // |c|_1 >= |c|: no square root
+  const double rounding = kPointRoundingUlps * (circle.center.cwiseAbs().sum() + 2 * circle.radius);
   // Crossing points by angle addition from cos/sin of theta_m and beta: no libm sine or cosine.
   // They differ from point_at(angle) by a few ulps of the terms, inside `rounding`.
-  const double toward_length = length_2d(along_u.value, along_v.value);
-  const double cos_m = along_u.value / toward_length, sin_m = along_v.value / toward_length;
   auto crossing_at = [&](double angle, double error, double cos_angle, double sin_angle,
                          int multiplicity) {
     RimCrossing crossing;
@@ -288,8 +303,9 @@ CirclePlaneIntersection intersect_scaled(const Circle3& circle, const Plane3& pl
     // wrapping subtracts a rounded 2 pi: one more ulp of 2 pi.
     // Capped at pi: every rim angle is within pi of the reported one (ill-conditioned crossings,
     // such as those of a rim tipped by a subnormal angle, can have an unbounded derivative bound).
-    crossing.angle_error =
-        bounded ? std::fmin(error + 4 * detail::kUnitRoundoff * detail::kTwoPi, std::numbers::pi) : kNoErrorBound;
+    const double wrapped_error = error + 4 * detail::kUnitRoundoff * detail::kTwoPi;
+    // not std::fmin (an out-of-line libm call); a NaN error becomes pi, as with fmin
+    crossing.angle_error = bounded ? (wrapped_error < std::numbers::pi ? wrapped_error : std::numbers::pi) : kNoErrorBound;
     crossing.point = circle.center + circle.radius * (cos_angle * frame.u + sin_angle * frame.v);
     // The exact rim's crossing is also errors.centre farther away (its centre moved that much).
     crossing.point_error =

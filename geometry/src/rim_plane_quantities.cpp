@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "a_priori_bounds.hpp"
+#include "primitives_detail.hpp"
 
 namespace clearjoint::geometry::detail {
 namespace {
@@ -23,18 +24,25 @@ struct APrioriTerms {
   double discriminant, discriminant_abs;
 };
 APrioriTerms a_priori_terms(const Circle3& circle, const Plane3& plane) {
-  const Vector3 d = circle.center - plane.point;
+  // Component by component: the same operations as Eigen's cwiseAbs/cross/dot, without the
+  // temporaries, which it did not fold away here (this and the guard below were ~240
+  // instructions of a ~1250-instruction query).
+  const Vector3& c = circle.center;
+  const Vector3& p = plane.point;
   const Vector3& np = plane.normal;
   const Vector3& nc = circle.normal;
-  const Vector3 np_abs = np.cwiseAbs(), nc_abs = nc.cwiseAbs();
+  const double dx = c.x() - p.x(), dy = c.y() - p.y(), dz = c.z() - p.z();
+  const double px = std::fabs(np.x()), py = std::fabs(np.y()), pz = std::fabs(np.z());
+  const double cx = std::fabs(nc.x()), cy = std::fabs(nc.y()), cz = std::fabs(nc.z());
   APrioriTerms t;
-  t.s = np.dot(d);
-  t.s_abs = np_abs.dot(d.cwiseAbs());
-  t.w = np.cross(nc);
-  t.w_abs = abs_cross(np_abs, nc_abs);
-  t.w2 = t.w.squaredNorm();
-  t.w2_abs = t.w_abs.squaredNorm();
-  t.nc2 = nc.squaredNorm();
+  t.s = np.x() * dx + np.y() * dy + np.z() * dz;
+  t.s_abs = px * std::fabs(dx) + py * std::fabs(dy) + pz * std::fabs(dz);
+  t.w = Vector3(np.y() * nc.z() - np.z() * nc.y(), np.z() * nc.x() - np.x() * nc.z(),
+                np.x() * nc.y() - np.y() * nc.x());
+  t.w_abs = Vector3(py * cz + pz * cy, pz * cx + px * cz, px * cy + py * cx);
+  t.w2 = t.w.x() * t.w.x() + t.w.y() * t.w.y() + t.w.z() * t.w.z();
+  t.w2_abs = t.w_abs.x() * t.w_abs.x() + t.w_abs.y() * t.w_abs.y() + t.w_abs.z() * t.w_abs.z();
+  t.nc2 = nc.x() * nc.x() + nc.y() * nc.y() + nc.z() * nc.z();
   const double r2 = circle.radius * circle.radius;
   t.discriminant = t.s * t.s * t.nc2 - r2 * t.w2;
   t.discriminant_abs = t.s_abs * t.s_abs * t.nc2 + r2 * t.w2_abs;
@@ -70,32 +78,34 @@ bool plane_a_priori_bounds_apply(const Circle3& circle, const Plane3& plane) {
   // The upper limit of a_priori_bounds.hpp's guard on every input and on c - p (via 1-norms:
   // |x|_inf <= |x|_1 and |c - p|_1 <= |c|_1 + |p|_1); the lower limit is replaced by
   // kUnderflowAllowance in every bound. Normals whose squares lie below 2^-200 (the old limit's
-  // square) still take the running error, as before: the depth divides by |n_p|.
+  // square) still take the running error, as before: the depth divides by |n_p|. Written out
+  // component by component, as a_priori_terms (Eigen's reductions cost ~65 instructions here).
   constexpr double kSmallestNormalSquare = 0x1p-200;
-  const double lengths = circle.center.cwiseAbs().sum() + plane.point.cwiseAbs().sum();
-  return lengths <= kLargestGuardedInput && circle.radius <= kLargestGuardedInput &&
-         circle.normal.cwiseAbs().sum() <= kLargestGuardedInput &&
-         plane.normal.cwiseAbs().sum() <= kLargestGuardedInput &&
-         circle.normal.squaredNorm() >= kSmallestNormalSquare &&
-         plane.normal.squaredNorm() >= kSmallestNormalSquare;
-}
-
-/// A priori: chains w 2, toward 4, along 7.
-InPlaneNormal in_plane_normal_a_priori(const Circle3& circle, const Plane3& plane,
-                                       const CircleFrame& frame) {
+  const Vector3& c = circle.center;
+  const Vector3& p = plane.point;
   const Vector3& nc = circle.normal;
-  const Vector3 nc_abs = nc.cwiseAbs();
-  const Vector3 w = plane.normal.cross(nc);
-  const Vector3 w_abs = abs_cross(plane.normal.cwiseAbs(), nc_abs);
-  const Vector3 toward = nc.cross(w), toward_abs = abs_cross(nc_abs, w_abs);
-  return {a_priori_with_underflow(toward.dot(frame.u), toward_abs.dot(frame.u.cwiseAbs())),
-          a_priori_with_underflow(toward.dot(frame.v), toward_abs.dot(frame.v.cwiseAbs()))};
+  const Vector3& np = plane.normal;
+  const double lengths = (std::fabs(c.x()) + std::fabs(c.y()) + std::fabs(c.z())) +
+                         (std::fabs(p.x()) + std::fabs(p.y()) + std::fabs(p.z()));
+  const double nc_1 = std::fabs(nc.x()) + std::fabs(nc.y()) + std::fabs(nc.z());
+  const double np_1 = std::fabs(np.x()) + std::fabs(np.y()) + std::fabs(np.z());
+  const double nc2 = nc.x() * nc.x() + nc.y() * nc.y() + nc.z() * nc.z();
+  const double np2 = np.x() * np.x() + np.y() * np.y() + np.z() * np.z();
+  return (lengths <= kLargestGuardedInput) & (circle.radius <= kLargestGuardedInput) &
+         (nc_1 <= kLargestGuardedInput) & (np_1 <= kLargestGuardedInput) &
+         (nc2 >= kSmallestNormalSquare) & (np2 >= kSmallestNormalSquare);
 }
 
-InPlaneNormal in_plane_normal_running_error(const Circle3& circle, const PlaneQuantities& q,
-                                            const CircleFrame& frame) {
-  const BoundedVector3 toward = cross(exact(circle.normal), q.w);
-  return {dot(toward, exact(frame.u)), dot(toward, exact(frame.v))};
+DeepestDirection deepest_direction(const Circle3& circle, const PlaneQuantities& q) {
+  const Vector3& nc = circle.normal;
+  const Bounded nc_length = sqrt(q.nc2);
+  // (w x n_c)_k = w_(k+1) n_(k+2) - w_(k+2) n_(k+1), indices mod 3; n_c's components are exact.
+  // Spelled out per k (indexing and % 3 on the components cost a fifth of this function).
+  switch (frame_axis_index(nc)) {
+    case 0: return {nc_length * q.w.x, q.w.y * Bounded(nc.z()) - q.w.z * Bounded(nc.y())};
+    case 1: return {nc_length * q.w.y, q.w.z * Bounded(nc.x()) - q.w.x * Bounded(nc.z())};
+    default: return {nc_length * q.w.z, q.w.x * Bounded(nc.y()) - q.w.y * Bounded(nc.x())};
+  }
 }
 
 RimSide rim_side_of_plane(const Circle3& circle, const Plane3& plane) {

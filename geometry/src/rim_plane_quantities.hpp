@@ -61,15 +61,17 @@ inline void widen_side_quantities_by_shift(Bounded& s, Bounded& discriminant, co
   discriminant = Bounded(value, (discriminant.error + added_error) * kWideningRounding);
 }
 
-/// Components of toward = n_c x (n_p x n_c) (parallel to the plane normal's part in the rim
-/// plane) along the rim frame's u and v: the angle theta_m of the deepest rim point.
-struct InPlaneNormal {
+/// Where the deepest rim point lies in the rim frame (primitives.hpp: u = n_c x e_k / |n_c x e_k|,
+/// v = n_c / |n_c| x u, k = frame_axis_index(n_c)), as a vector (along_u, along_v) whose angle is
+/// theta_m. The plane normal's projections on the exact u and v are
+///   n_p . (n_c x e_k) = w_k   and   n_p . (n_c / |n_c| x u) = (w x n_c)_k / (|n_c| |n_c x e_k|),
+/// so (|n_c| w_k, (w x n_c)_k) is that pair times |n_c| |n_c x e_k| > 0: the same angle, from the
+/// quantities already computed and no frame vectors (whose rounding would turn it). Enclosures
+/// from the bounds on w and |n_c|^2 in q (a priori or running).
+struct DeepestDirection {
   Bounded along_u, along_v;
 };
-InPlaneNormal in_plane_normal_a_priori(const Circle3& circle, const Plane3& plane,
-                                       const CircleFrame& frame);
-InPlaneNormal in_plane_normal_running_error(const Circle3& circle, const PlaneQuantities& q,
-                                            const CircleFrame& frame);
+DeepestDirection deepest_direction(const Circle3& circle, const PlaneQuantities& q);
 
 /// Where the whole rim lies, proved; `undecided` when it crosses or touches the plane or the
 /// bounds cannot tell.

@@ -199,7 +199,8 @@ TEST(ErrorBounded, SquareRootEnclosesTheExactRootIncludingNearZero) {
   const std::vector<std::pair<double, double>> cases = {
       {0.0, 0.0},      {0.0, 1e-300},    {1e-300, 1e-300}, {1e-300, 2e-300},  {-1e-310, 1e-300},
       {4.9e-324, 0.0}, {1e-320, 1e-321}, {4.0, 1.0},       {2.0, 0.0},        {1e300, 1e290},
-      {1e-20, 1e-36},  {1.0, 0x1p-53},   {3.0, 2.999},     {0.25, 0.25},      {1e-200, 5e-201}};
+      {1e-20, 1e-36},  {1.0, 0x1p-53},   {3.0, 2.999},     {0.25, 0.25},      {1e-200, 5e-201},
+      {1.7e308, 1e292}, {0x1p1000, 0x1p960}, {0x1p-899, 0x1p-960}, {1e-250, 1e-320}};
   std::mt19937_64 rng(11);
   for (const auto& [value, error] : cases) {
     const Bounded r = sqrt(Bounded(value, error));

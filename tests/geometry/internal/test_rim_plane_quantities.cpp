@@ -157,23 +157,39 @@ TEST(PlaneQuantities, RunningErrorGivesANonFiniteBoundRatherThanAWrongOneWhenThe
   EXPECT_GT(overflowed, 10);
 }
 
-TEST(PlaneQuantities, InPlaneNormalEnclosesTheExactProjectionOnTheFrame) {
+TEST(PlaneQuantities, DeepestDirectionEnclosesItsExactValueAndPointsWhereThePlaneNormalDoesInTheExactFrame) {
   std::mt19937_64 rng(79);
   for (int i = 0; i < 300; ++i) {
-    const Pose pose = random_pose(rng, 1.0, i % 3 == 0 ? 1e-7 : -1.0);
-    const CircleFrame frame = frame_of(pose.circle);
+    const Pose pose = random_pose(rng, i % 2 == 0 ? 1.0 : 1e-3, i % 3 == 0 ? 1e-7 : -1.0);
     const RealVector3 nc = it::to_real(pose.circle.normal);
-    const RealVector3 toward = it::cross(nc, it::cross(it::to_real(pose.plane.normal), nc));
-    const Real along_u = it::dot(toward, it::to_real(frame.u));
-    const Real along_v = it::dot(toward, it::to_real(frame.v));
+    const RealVector3 w = it::cross(it::to_real(pose.plane.normal), nc);
+    // k as documented in primitives.hpp (smallest |n_c| component, first on ties), found here
+    // independently of frame_axis_index.
+    int k = 0;
+    for (int j = 1; j < 3; ++j)
+      if (std::fabs(pose.circle.normal[j]) < std::fabs(pose.circle.normal[k])) k = j;
+    auto component = [](const RealVector3& a, int j) { return j == 0 ? a.x : j == 1 ? a.y : a.z; };
+    const Real nc_length = it::norm(nc);
+    const Real along_u = nc_length * component(w, k);
+    const Real along_v = component(it::cross(w, nc), k);
     const Real scale = it::dot(nc, nc) * it::norm(it::to_real(pose.plane.normal)) + 1;
-    const InPlaneNormal fast = in_plane_normal_a_priori(pose.circle, pose.plane, frame);
-    const InPlaneNormal running = in_plane_normal_running_error(
-        pose.circle, plane_quantities_running_error(pose.circle, pose.plane), frame);
-    for (const InPlaneNormal& got : {fast, running}) {
+    const DeepestDirection fast =
+        deepest_direction(pose.circle, plane_quantities_a_priori(pose.circle, pose.plane));
+    const DeepestDirection running =
+        deepest_direction(pose.circle, plane_quantities_running_error(pose.circle, pose.plane));
+    for (const DeepestDirection& got : {fast, running}) {
       ASSERT_TRUE(Encloses(got.along_u, along_u, scale)) << i;
       ASSERT_TRUE(Encloses(got.along_v, along_v, scale)) << i;
     }
+    // The exact frame of primitives.hpp and the plane normal's part in the rim plane on it: the
+    // pair above must be a positive multiple of it (same angle).
+    const it::RealFrame frame = it::documented_frame(pose.circle.normal);
+    const RealVector3 toward = it::cross(nc, w);  // n_c x (n_p x n_c)
+    const Real frame_u = it::dot(toward, frame.u), frame_v = it::dot(toward, frame.v);
+    const Real turn = along_u * frame_v - along_v * frame_u;
+    const Real size = (abs(along_u) + abs(along_v)) * (abs(frame_u) + abs(frame_v));
+    EXPECT_LT(abs(turn), Real(1e-60) * size) << i;
+    EXPECT_GT(along_u * frame_u + along_v * frame_v, Real(0)) << i;
   }
 }
 
