@@ -554,6 +554,47 @@ TEST(CirclePlane, ValidatesBothArguments) {
   }
 }
 
+TEST(CirclePlane, RejectsEveryNonFiniteComponentAndEveryNonPositiveRadiusButAcceptsATinyOne) {
+  // The query skips its input checks where the a priori guard holds (its comparisons fail on
+  // NaN and infinity, its normal squares on zero): every bad field must still be caught.
+  const Circle3 rim{Vector3(0, 0, 1), Vector3(0, 1, 1), 2.0};
+  const Plane3 plane{Vector3(0, 0, 0), Vector3(0, 0, 1)};
+  const double inf = std::numeric_limits<double>::infinity();
+  for (const double bad : {std::numeric_limits<double>::quiet_NaN(), inf, -inf}) {
+    for (int i = 0; i < 3; ++i) {
+      Circle3 c = rim;
+      c.center[i] = bad;
+      EXPECT_THROW(intersect_circle_plane(c, plane), InvalidInput) << "center " << i << " " << bad;
+      c = rim;
+      c.normal[i] = bad;
+      EXPECT_THROW(intersect_circle_plane(c, plane), InvalidInput) << "normal " << i << " " << bad;
+      Plane3 p = plane;
+      p.point[i] = bad;
+      EXPECT_THROW(intersect_circle_plane(rim, p), InvalidInput) << "point " << i << " " << bad;
+      p = plane;
+      p.normal[i] = bad;
+      EXPECT_THROW(intersect_circle_plane(rim, p), InvalidInput) << "plane normal " << i << " " << bad;
+    }
+    Circle3 c = rim;
+    c.radius = bad;
+    EXPECT_THROW(intersect_circle_plane(c, plane), InvalidInput) << "radius " << bad;
+  }
+  for (const double radius : {0.0, -0.0, -1.0, -4.9e-324}) {
+    Circle3 c = rim;
+    c.radius = radius;
+    EXPECT_THROW(intersect_circle_plane(c, plane), InvalidInput) << "radius " << radius;
+  }
+  Circle3 zero_normal = rim;
+  zero_normal.normal = Vector3::Zero();
+  EXPECT_THROW(intersect_circle_plane(zero_normal, plane), InvalidInput);
+  // A subnormal radius is valid: the rim is (nearly) its centre, 1 above the plane.
+  Circle3 tiny = rim;
+  tiny.radius = 4.9e-324;
+  const CirclePlaneIntersection r = intersect_circle_plane(tiny, plane);
+  EXPECT_EQ(r.topology, CirclePlaneTopology::disjoint);
+  EXPECT_EQ(r.side, 1);
+}
+
 TEST(CirclePlane, FindsTheTangencyWhenTheRimNormalIsTiny) {
   // A 1e-170 normal once produced a NaN point in an exact answer: the rim (0,0,1), radius 1,
   // upright (normal along x) touches z = 0 at the origin.
