@@ -64,30 +64,49 @@ bool enclose_simple_root(const RimDistancePolynomial& g, double theta, int direc
   return false;
 }
 
-/// Newton from `guess`, then the proof of a simple root with sign change `direction`, all from
-/// one libm sine-cosine: later points are reached by angle addition (value_near, approximate_near).
-bool refine_and_enclose(const RimDistancePolynomial& g, double guess, int direction,
-                        RootEnclosure& out) {
-  AngleBase base(guess);
+/// Newton near a base angle whose sine and cosine come from one libm call; later points are
+/// reached by angle addition (approximate_near). One iteration per call of `step`, so that
+/// tier 1 can run its two roots in lockstep: each run is a chain of dependent divisions and
+/// polynomial evaluations, and two independent chains side by side overlap in the processor
+/// (the arithmetic of each run is exactly what it would be alone).
+struct NewtonRun {
+  AngleBase base;
   double offset = 0.0;
-  double slope = 0.0;
-  for (int i = 0; i < kMaxNewtonSteps; ++i) {
+  double slope = 0.0;  ///< |g'| at the last iterate evaluated
+  bool running = true;
+
+  explicit NewtonRun(double guess) : base(guess) {}
+
+  /// Iteration `i` (0-based), if the run has not stopped.
+  void step(const RimDistancePolynomial& g, int i) {
+    if (!running) return;
     const ValueAndSlope at = i == 0 ? g.approximate_at_base(base) : g.approximate_near(base, offset);
     slope = std::fabs(at.slope);
-    const double step = at.value / at.slope;
-    if (!std::isfinite(step)) break;
-    const double next = offset - step;
+    const double change = at.value / at.slope;
+    if (!std::isfinite(change)) {
+      running = false;
+      return;
+    }
+    const double next = offset - change;
     if (std::fabs(next) > kMaxAngleOffset) {
       base = AngleBase(base.angle + next);  // rare: a poor first-harmonic guess
       offset = 0.0;
-      continue;
+      return;
     }
     offset = next;
     // Quadratic convergence: after a step below kNewtonLastStep the iterate is off by about
     // |g''/(2 g')| times its square, an ulp or less unless g' is small (near a tangency), where
     // the enclosure below grows until its sign checks pass. Either way the proof decides.
-    if (std::fabs(step) < kNewtonLastStep * (1.0 + std::fabs(base.angle))) break;
+    if (std::fabs(change) < kNewtonLastStep * (1.0 + std::fabs(base.angle))) running = false;
   }
+};
+
+/// The proof of a simple root with sign change `direction` near the end of a Newton run, by
+/// angle addition from the run's base (value_near).
+bool enclose_after_newton(const RimDistancePolynomial& g, const NewtonRun& run, int direction,
+                          RootEnclosure& out) {
+  const AngleBase& base = run.base;
+  const double offset = run.offset, slope = run.slope;
   const double angle = base.angle + offset;
   // The reported angle is the rounded sum: it is within u |angle| of base + offset.
   const double rounding = 2 * kUnitRoundoff * std::fabs(angle) + kUnderflowError;
@@ -178,8 +197,13 @@ bool first_harmonic_proof(const RimDistancePolynomial& g, RimRoots& result) {
   const double beta = approximate_acos(-k0.value / amplitude.value);
   const double guesses[2] = {wrap_angle(phi - beta), wrap_angle(phi + beta)};
   const int directions[2] = {+1, -1};
+  NewtonRun runs[2] = {NewtonRun(guesses[0]), NewtonRun(guesses[1])};
+  for (int i = 0; i < kMaxNewtonSteps; ++i) {
+    runs[0].step(g, i);
+    runs[1].step(g, i);
+  }
   for (int i = 0; i < 2; ++i) {
-    if (!refine_and_enclose(g, guesses[i], directions[i], result.roots[i])) return false;
+    if (!enclose_after_newton(g, runs[i], directions[i], result.roots[i])) return false;
   }
   result.count = 2;
   result.proved = true;

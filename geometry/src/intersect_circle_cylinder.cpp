@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 #include "angles.hpp"
 #include "certified_rim_roots.hpp"
@@ -28,8 +29,9 @@ static_assert(2 * detail::kAngleAdditionTrigError < 64 * detail::kUnitRoundoff);
 
 /// `centre_error`: how far the exact rim centre may lie from circle.center (rounded_point.hpp);
 /// a crossing of the exact rim is that much farther from the computed point.
+/// `frame`: frame_of(circle) if the caller has it already.
 void fill(const Circle3& circle, const RimRoots& roots, bool bounded, double centre_error,
-          CircleCylinderIntersection& out) {
+          CircleCylinderIntersection& out, const std::optional<CircleFrame>& frame = std::nullopt) {
   if (roots.count == 0) {
     out.topology = roots.sign_without_roots > 0   ? CircleCylinderTopology::outside
                    : roots.sign_without_roots < 0 ? CircleCylinderTopology::inside
@@ -41,7 +43,7 @@ void fill(const Circle3& circle, const RimRoots& roots, bool bounded, double cen
     return;
   }
   out.topology = CircleCylinderTopology::crossing;
-  const CircleFrame frame = frame_of(circle);
+  const CircleFrame rim_frame = frame ? *frame : frame_of(circle);
   const double size = circle.center.norm() + 2 * circle.radius;
   out.crossing_count = roots.count;
   for (int i = 0; i < roots.count; ++i) {
@@ -50,10 +52,10 @@ void fill(const Circle3& circle, const RimRoots& roots, bool bounded, double cen
     crossing.angle = root.angle;
     double rounding = kPointRoundingUlps * size;
     if (root.has_trig()) {
-      crossing.point = circle.center + circle.radius * (root.cos * frame.u + root.sin * frame.v);
+      crossing.point = circle.center + circle.radius * (root.cos * rim_frame.u + root.sin * rim_frame.v);
       rounding = kPointFromRootTrigUlps * size;
     } else {
-      crossing.point = point_at(circle, frame, root.angle);
+      crossing.point = point_at(circle, rim_frame, root.angle);
     }
     crossing.multiplicity = root.multiplicity;
     // A chord is never longer than its arc: |x(t*) - x(t)| <= r |t* - t|.
@@ -168,16 +170,17 @@ CircleCylinderIntersection intersect_scaled(const Circle3& circle, const Cylinde
   }
 
   const bool a_priori = detail::cylinder_a_priori_bounds_apply(circle, cylinder, reach_a_priori);
-  detail::RimDistancePolynomial g = detail::rim_distance_polynomial(circle, cylinder, a_priori);
+  std::optional<CircleFrame> frame;
+  detail::RimDistancePolynomial g = detail::rim_distance_polynomial(circle, cylinder, a_priori, frame);
   if (!options.certify) {
-    fill(circle, detail::approximate_rim_roots(g), false, centre_error, out);
+    fill(circle, detail::approximate_rim_roots(g), false, centre_error, out, frame);
     out.certificate = {Certainty::uncertain, "certificate switched off"};
     return out;
   }
   detail::widen_for_centre_error(g, circle, cylinder, centre_error);
   const RimRoots roots = detail::certified_rim_roots(g);
   if (roots.proved) {
-    fill(circle, roots, true, centre_error, out);
+    fill(circle, roots, true, centre_error, out, frame);
     out.certificate = {Certainty::certified, ""};
   } else if (options.exact_fallback) {
     const RimRoots exact = detail::exact_rim_roots(circle, cylinder, centre, scale_exponent);
@@ -185,11 +188,11 @@ CircleCylinderIntersection intersect_scaled(const Circle3& circle, const Cylinde
       fill(circle, exact, true, centre_error, out);
       out.certificate = {Certainty::exact, roots.failure};
     } else {  // the exact tier gave up (magnitudes far apart): the best guess, marked so
-      fill(circle, detail::approximate_rim_roots(g), false, centre_error, out);
+      fill(circle, detail::approximate_rim_roots(g), false, centre_error, out, frame);
       out.certificate = {Certainty::uncertain, exact.failure};
     }
   } else {
-    fill(circle, detail::approximate_rim_roots(g), false, centre_error, out);
+    fill(circle, detail::approximate_rim_roots(g), false, centre_error, out, frame);
     out.certificate = {Certainty::uncertain, roots.failure};
   }
   return out;

@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cmath>
+#include <optional>
 
 #include "clearjoint/geometry/primitives.hpp"
 #include "error_bounded.hpp"
@@ -147,6 +148,12 @@ RimDistancePolynomial rim_distance_polynomial(const Circle3& circle, const Cylin
 /// query asks it once for both rim_reach and the polynomial.
 RimDistancePolynomial rim_distance_polynomial(const Circle3& circle, const Cylinder3& cylinder,
                                               bool a_priori_bounds_apply);
+/// The same, also handing back frame_of(circle), bit for bit, when the a priori path ran: it
+/// has the frame's norms at hand, and a crossing rim needs the frame for its points (a square
+/// root, a division and the axis choice saved). `frame` is left empty on the running-error path.
+RimDistancePolynomial rim_distance_polynomial(const Circle3& circle, const Cylinder3& cylinder,
+                                              bool a_priori_bounds_apply,
+                                              std::optional<CircleFrame>& frame);
 /// Whether every input magnitude lies in [2^-100, 2^100] (or is zero): the a priori bounds of
 /// a_priori_bounds.hpp hold.
 bool cylinder_a_priori_bounds_apply(const Circle3& circle, const Cylinder3& cylinder);

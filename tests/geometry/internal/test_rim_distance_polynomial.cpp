@@ -8,6 +8,7 @@
 
 #include <array>
 #include <cmath>
+#include <optional>
 #include <random>
 #include <vector>
 
@@ -193,6 +194,37 @@ TEST(RimDistancePolynomial, MatchesTheAnalyticPolynomialOfATiltedCircleCentredOn
 }
 
 // ---- widen_for_centre_error -------------------------------------------------------------
+
+TEST(RimDistancePolynomial, HandsBackTheRimFrameBitForBitOnTheAPrioriPath) {
+  // The query's crossing points use this frame instead of frame_of: it must be the same doubles,
+  // or the crossing points would change.
+  std::mt19937_64 rng(113);
+  for (int i = 0; i < 200; ++i) {
+    const double scale = i % 3 == 0 ? 1.0 : (i % 3 == 1 ? 1e-20 : 1e20);
+    const Pose pose = random_pose(rng, scale, i % 2 ? -1.0 : 1e-3);
+    std::optional<CircleFrame> frame;
+    const RimDistancePolynomial g = rim_distance_polynomial(pose.circle, pose.cylinder, true, frame);
+    ASSERT_TRUE(frame.has_value());
+    const CircleFrame expected = frame_of(pose.circle);
+    for (int j = 0; j < 3; ++j) {
+      EXPECT_EQ(frame->u[j], expected.u[j]) << "pose " << i;
+      EXPECT_EQ(frame->v[j], expected.v[j]) << "pose " << i;
+    }
+    // And the coefficients are the ones of the overload without the frame.
+    const RimDistancePolynomial plain = rim_distance_polynomial(pose.circle, pose.cylinder, true);
+    for (int j = 0; j < 5; ++j) {
+      EXPECT_EQ(g.k[j].value, plain.k[j].value);
+      EXPECT_EQ(g.k[j].error, plain.k[j].error);
+    }
+  }
+}
+
+TEST(RimDistancePolynomial, LeavesTheFrameEmptyOnTheRunningErrorPath) {
+  const Pose pose{{{1, 2, 3}, {0.1, 0.2, 1}, 1}, {{0, 0, 0}, {0, 0, 1}, 2}};
+  std::optional<CircleFrame> frame = frame_of(pose.circle);
+  rim_distance_polynomial(pose.circle, pose.cylinder, false, frame);
+  EXPECT_FALSE(frame.has_value());
+}
 
 TEST(RimDistancePolynomial, WidenedForACentreErrorEnclosesEveryRimWithinIt) {
   // The widened coefficients must enclose the exact coefficients of the rim at any centre within
