@@ -164,6 +164,17 @@ bool first_harmonic_proof(const RimDistancePolynomial& g, RimRoots& result) {
   const Bounded amplitude =
       sqrt(Bounded(g.k[1].value) * g.k[1].value + Bounded(g.k[2].value) * g.k[2].value);
   const double amplitude_low = amplitude.lower() / kSlack;
+
+  // If there are two roots, they lie at psi = +-acos(-k0 / A) to first order; g decreases through
+  // the + one. These are Newton's starting guesses, which the second harmonic moves the roots
+  // away from by far more than the approximations' 4e-7 rad (angles.hpp): libm's atan2 and acos
+  // would buy nothing. Formed (with their libm sine and cosine) before the proof that there are
+  // two roots, which nearly every rim that gets here has: the chain of square roots, divisions
+  // and the sine-cosine calls then overlaps with the proof's arithmetic instead of following it.
+  const double phi = approximate_atan2(g.k[2].value, g.k[1].value);
+  const double beta = approximate_acos(-k0.value / amplitude.value);
+  NewtonRun runs[2] = {NewtonRun(wrap_angle(phi - beta)), NewtonRun(wrap_angle(phi + beta))};
+
   // sin(alpha) = 2 Hd / A: the factor 2 leaves room for rounding; beyond 1/2 the monotone
   // arcs get too short to be useful and tier 2 is the better tool.
   if (!(amplitude_low > 4 * bound_dh)) return false;
@@ -190,14 +201,7 @@ bool first_harmonic_proof(const RimDistancePolynomial& g, RimRoots& result) {
   }
   if (sign_at_zero < 0) return false;  // impossible with A > 0; keep the proof honest
 
-  // Two roots, at psi = +-acos(-k0 / A) to first order; g decreases through the + one. These are
-  // Newton's starting guesses, which the second harmonic moves the roots away from by far more
-  // than the approximations' 4e-7 rad (angles.hpp): libm's atan2 and acos would buy nothing.
-  const double phi = approximate_atan2(g.k[2].value, g.k[1].value);
-  const double beta = approximate_acos(-k0.value / amplitude.value);
-  const double guesses[2] = {wrap_angle(phi - beta), wrap_angle(phi + beta)};
   const int directions[2] = {+1, -1};
-  NewtonRun runs[2] = {NewtonRun(guesses[0]), NewtonRun(guesses[1])};
   for (int i = 0; i < kMaxNewtonSteps; ++i) {
     runs[0].step(g, i);
     runs[1].step(g, i);
