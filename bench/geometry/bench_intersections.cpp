@@ -287,6 +287,16 @@ void register_base(const std::string& name, std::vector<RimPlaneQuery> inputs,
       });
 }
 
+/// The inputs whose certified answer has `topology` (to split a family's cost by outcome).
+std::vector<RimPlaneQuery> with_topology(const std::vector<RimPlaneQuery>& queries,
+                                         geo::CirclePlaneTopology topology) {
+  std::vector<RimPlaneQuery> kept;
+  for (const RimPlaneQuery& q : queries) {
+    if (geo::intersect_circle_plane(q.rim, q.base, kCertified).topology == topology) kept.push_back(q);
+  }
+  return kept;
+}
+
 void register_all() {
   // Journal offset up to 1.5 cr and tilted up to 2 cr / Lj: the rim centre can sit up to ~2.5 cr
   // off the bearing axis, so a good share of the rims cross the wall.
@@ -306,6 +316,12 @@ void register_all() {
   register_wall("circle_cylinder/well_inside/uncertified", wall_inside, kUncertified);
   register_base("circle_plane/random_pose/certified", base_random, kCertified);
   register_base("circle_plane/random_pose/uncertified", base_random, kUncertified);
+  // The same rims split by outcome: a disjoint rim needs the depth of its deepest point only; a
+  // crossing one also two crossing angles (acos and asin) and points.
+  register_base("circle_plane/random_pose_disjoint/certified",
+                with_topology(base_random, geo::CirclePlaneTopology::disjoint), kCertified);
+  register_base("circle_plane/random_pose_crossing/certified",
+                with_topology(base_random, geo::CirclePlaneTopology::two_crossings), kCertified);
   register_wall("circle_cylinder/aligned_journal/certified", wall_aligned, kCertified);
   register_wall("circle_cylinder/aligned_journal/uncertified", wall_aligned, kUncertified);
   register_base("circle_plane/aligned_journal/certified", base_aligned, kCertified);
