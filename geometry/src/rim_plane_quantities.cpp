@@ -4,6 +4,7 @@
 
 #include "a_priori_bounds.hpp"
 #include "primitives_detail.hpp"
+#include "scale_normalisation.hpp"
 
 namespace clearjoint::geometry::detail {
 namespace {
@@ -74,26 +75,52 @@ PlaneQuantities plane_quantities_running_error(const Circle3& circle, const Plan
   return {s, w, w2, nc2, squared_norm(np), s * s * nc2 - r * r * w2};
 }
 
-bool plane_a_priori_bounds_apply(const Circle3& circle, const Plane3& plane) {
-  // The upper limit of a_priori_bounds.hpp's guard on every input and on c - p (via 1-norms:
-  // |x|_inf <= |x|_1 and |c - p|_1 <= |c|_1 + |p|_1); the lower limit is replaced by
-  // kUnderflowAllowance in every bound. Normals whose squares lie below 2^-200 (the old limit's
-  // square) still take the running error, as before: the depth divides by |n_p|. Written out
-  // component by component, as a_priori_terms (Eigen's reductions cost ~65 instructions here).
-  constexpr double kSmallestNormalSquare = 0x1p-200;
+namespace {
+
+/// The magnitudes the guards below test, written out component by component (Eigen's
+/// reductions cost ~65 instructions here).
+struct GuardMagnitudes {
+  double lengths;     ///< |c|_1 + |p|_1
+  double nc_1, np_1;  ///< 1-norms of the normals
+  double nc2, np2;    ///< their squares
+};
+GuardMagnitudes guard_magnitudes(const Circle3& circle, const Plane3& plane) {
   const Vector3& c = circle.center;
   const Vector3& p = plane.point;
   const Vector3& nc = circle.normal;
   const Vector3& np = plane.normal;
-  const double lengths = (std::fabs(c.x()) + std::fabs(c.y()) + std::fabs(c.z())) +
-                         (std::fabs(p.x()) + std::fabs(p.y()) + std::fabs(p.z()));
-  const double nc_1 = std::fabs(nc.x()) + std::fabs(nc.y()) + std::fabs(nc.z());
-  const double np_1 = std::fabs(np.x()) + std::fabs(np.y()) + std::fabs(np.z());
-  const double nc2 = nc.x() * nc.x() + nc.y() * nc.y() + nc.z() * nc.z();
-  const double np2 = np.x() * np.x() + np.y() * np.y() + np.z() * np.z();
-  return (lengths <= kLargestGuardedInput) & (circle.radius <= kLargestGuardedInput) &
-         (nc_1 <= kLargestGuardedInput) & (np_1 <= kLargestGuardedInput) &
-         (nc2 >= kSmallestNormalSquare) & (np2 >= kSmallestNormalSquare);
+  return {(std::fabs(c.x()) + std::fabs(c.y()) + std::fabs(c.z())) +
+              (std::fabs(p.x()) + std::fabs(p.y()) + std::fabs(p.z())),
+          std::fabs(nc.x()) + std::fabs(nc.y()) + std::fabs(nc.z()),
+          std::fabs(np.x()) + std::fabs(np.y()) + std::fabs(np.z()),
+          nc.x() * nc.x() + nc.y() * nc.y() + nc.z() * nc.z(),
+          np.x() * np.x() + np.y() * np.y() + np.z() * np.z()};
+}
+
+/// Normals whose squares lie below 2^-200 (the old lower limit's square) take the running error:
+/// the depth divides by |n_p|.
+constexpr double kSmallestNormalSquare = 0x1p-200;
+bool normals_in_guard(const GuardMagnitudes& g) {
+  return (g.nc_1 <= kLargestGuardedInput) & (g.np_1 <= kLargestGuardedInput) &
+         (g.nc2 >= kSmallestNormalSquare) & (g.np2 >= kSmallestNormalSquare);
+}
+
+}  // namespace
+
+bool plane_a_priori_bounds_apply(const Circle3& circle, const Plane3& plane) {
+  // The upper limit of a_priori_bounds.hpp's guard on every input and on c - p (via 1-norms:
+  // |x|_inf <= |x|_1 and |c - p|_1 <= |c|_1 + |p|_1); the lower limit is replaced by
+  // kUnderflowAllowance in every bound.
+  const GuardMagnitudes g = guard_magnitudes(circle, plane);
+  return (g.lengths <= kLargestGuardedInput) & (circle.radius <= kLargestGuardedInput) & normals_in_guard(g);
+}
+
+bool plane_inputs_ready(const Circle3& circle, const Plane3& plane) {
+  // The lengths: the largest is at least the radius and at most the 1-norm sum, so both inside
+  // scale_normalisation.hpp's unscaled range put it there.
+  const GuardMagnitudes g = guard_magnitudes(circle, plane);
+  return (g.lengths < kLargestUnscaledLength) & (circle.radius >= kSmallestUnscaledLength) &
+         (circle.radius < kLargestUnscaledLength) & normals_in_guard(g);
 }
 
 DeepestDirection deepest_direction(const Circle3& circle, const PlaneQuantities& q) {
