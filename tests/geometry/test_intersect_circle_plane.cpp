@@ -434,6 +434,38 @@ TEST(CirclePlane, IsInvariantUnderRandomRigidMotions) {
   }
 }
 
+TEST(CirclePlane, GivesBitwiseTheSameAnswerWhenANormalIsScaledByAPowerOfTwo) {
+  // Realistic inputs skip the normals' power-of-two rescaling (plane_inputs_ready); every double
+  // step then scales exactly with the normals, so the values must not move by a single bit.
+  constexpr unsigned kSeed = 1303;
+  RecordProperty("seed", static_cast<int>(kSeed));
+  std::mt19937_64 rng(kSeed);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  int crossing = 0;
+  for (int trial = 0; trial < 400; ++trial) {
+    const Vector3 normal = Vector3(0.3 * unit(rng), 0.3 * unit(rng), 1.0).normalized();
+    const Circle3 rim{Vector3(0.01 * unit(rng), 0.01 * unit(rng), 0.2 * unit(rng)), normal, 1.0 + 0.5 * unit(rng)};
+    const Plane3 plane{Vector3(unit(rng), unit(rng), 0.0), Vector3(0.0, 0.0, 1.0)};
+    const CirclePlaneIntersection a = intersect_circle_plane(rim, plane);
+    for (const auto& [rim_scale, plane_scale] : {std::pair{8.0, 1.0}, {1.0, 0x1p-5}, {0x1p40, 0x1p-40}}) {
+      const CirclePlaneIntersection b = intersect_circle_plane(
+          {rim.center, rim_scale * rim.normal, rim.radius}, {plane.point, plane_scale * plane.normal});
+      ASSERT_EQ(a.topology, b.topology) << trial;
+      EXPECT_EQ(a.side, b.side);
+      EXPECT_EQ(a.certificate.level, b.certificate.level);
+      EXPECT_EQ(a.max_signed_distance, b.max_signed_distance) << trial;
+      ASSERT_EQ(a.crossing_count, b.crossing_count);
+      for (int i = 0; i < a.crossing_count; ++i) {
+        EXPECT_EQ(a.crossings[i].angle, b.crossings[i].angle) << trial;
+        EXPECT_EQ(a.crossings[i].point, b.crossings[i].point) << trial;
+      }
+    }
+    crossing += a.crossing_count == 2;
+  }
+  EXPECT_GT(crossing, 50);  // both outcomes exercised
+  EXPECT_LT(crossing, 350);
+}
+
 TEST(CirclePlane, KeepsEveryDegenerateCaseUnderTheTwentyFourAxisRotations) {
   // Signed permutations of the coordinates are exact on integer data, so the tangencies and the
   // rim in the plane survive and the crossings map to the rotated points.

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <random>
 #include <vector>
 
@@ -191,6 +192,52 @@ TEST(PlaneQuantities, DeepestDirectionEnclosesItsExactValueAndPointsWhereThePlan
     EXPECT_LT(abs(turn), Real(1e-60) * size) << i;
     EXPECT_GT(along_u * frame_u + along_v * frame_v, Real(0)) << i;
   }
+}
+
+TEST(PlaneInputsReady, HoldsForRealisticInputsAndFailsForEveryBadOrOutOfRangeField) {
+  const Circle3 rim{Vector3(0.001, -0.002, 0.01), Vector3(0.01, 0.0, 1.0), 0.0099};
+  const Plane3 base{Vector3(0.0, 0.0, 0.01), Vector3(0.0, 0.0, 1.0)};
+  EXPECT_TRUE(plane_inputs_ready(rim, base));
+  EXPECT_TRUE(plane_a_priori_bounds_apply(rim, base));
+  const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+  for (const double bad : {nan, inf, -inf}) {
+    for (int i = 0; i < 3; ++i) {
+      Circle3 c = rim;
+      c.center[i] = bad;
+      EXPECT_FALSE(plane_inputs_ready(c, base)) << bad;
+      c = rim;
+      c.normal[i] = bad;
+      EXPECT_FALSE(plane_inputs_ready(c, base)) << bad;
+      Plane3 p = base;
+      p.point[i] = bad;
+      EXPECT_FALSE(plane_inputs_ready(rim, p)) << bad;
+      p = base;
+      p.normal[i] = bad;
+      EXPECT_FALSE(plane_inputs_ready(rim, p)) << bad;
+    }
+    Circle3 c = rim;
+    c.radius = bad;
+    EXPECT_FALSE(plane_inputs_ready(c, base)) << bad;
+  }
+  // Non-positive or below-range radius, zero or tiny normals, lengths the query would rescale.
+  for (const double radius : {0.0, -1.0, 0x1p-61, 0x1p61}) {
+    Circle3 c = rim;
+    c.radius = radius;
+    EXPECT_FALSE(plane_inputs_ready(c, base)) << radius;
+  }
+  Circle3 zero_normal = rim;
+  zero_normal.normal = Vector3::Zero();
+  EXPECT_FALSE(plane_inputs_ready(zero_normal, base));
+  Plane3 tiny_normal = base;
+  tiny_normal.normal = Vector3(0.0, 0.0, 0x1p-101);
+  EXPECT_FALSE(plane_inputs_ready(rim, tiny_normal));
+  Plane3 far_point = base;
+  far_point.point = Vector3(0x1p61, 0.0, 0.0);
+  EXPECT_FALSE(plane_inputs_ready(rim, far_point));
+  // Normals of any size between the guard's limits need no rescaling.
+  Circle3 long_normal = rim;
+  long_normal.normal *= 0x1p90;
+  EXPECT_TRUE(plane_inputs_ready(long_normal, base));
 }
 
 TEST(RimSideOfPlane, IsNeverWrongOnRandomPosesAndDecidesMostOfThem) {
