@@ -45,14 +45,6 @@ void validate(const Cylinder3& cylinder, std::string_view name) {
   require_positive(cylinder.radius, name, "radius");
 }
 
-int frame_axis_index(const Vector3& normal) {
-  const Vector3 magnitude = normal.cwiseAbs();
-  int k = 0;
-  if (magnitude.y() < magnitude[k]) k = 1;
-  if (magnitude.z() < magnitude[k]) k = 2;
-  return k;
-}
-
 CircleFrame frame_of(const Circle3& circle) {
   // u' = normal x e_k is exact in double (its components are +-normal_j or 0), see primitives.hpp.
   const Vector3 u_unnormalised = circle.normal.cross(Vector3::Unit(frame_axis_index(circle.normal)));

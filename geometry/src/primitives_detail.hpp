@@ -1,11 +1,23 @@
 #pragma once
+#include <cmath>
 #include "clearjoint/geometry/joint_geometry.hpp"
 #include "clearjoint/geometry/primitives.hpp"
 #include "input_checks.hpp"
 
 namespace clearjoint::geometry {
 /// Index k of the smallest |normal_k| (first on ties): the frame uses u' = normal x e_k.
-int frame_axis_index(const Vector3& normal);
+/// Inline: as an out-of-line call it cost ~40 instructions, a third of frame_of.
+inline int frame_axis_index(const Vector3& normal) {
+  const double x = std::fabs(normal.x()), y = std::fabs(normal.y()), z = std::fabs(normal.z());
+  int k = 0;
+  double smallest = x;
+  if (y < smallest) {
+    k = 1;
+    smallest = y;
+  }
+  if (z < smallest) k = 2;
+  return k;
+}
 
 namespace detail {
 
