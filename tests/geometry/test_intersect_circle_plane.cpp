@@ -594,18 +594,16 @@ TEST(CirclePlane, RejectsEveryNonFiniteComponentAndEveryNonPositiveRadiusButAcce
   const double inf = std::numeric_limits<double>::infinity();
   for (const double bad : {std::numeric_limits<double>::quiet_NaN(), inf, -inf}) {
     for (int i = 0; i < 3; ++i) {
-      Circle3 c = rim;
-      c.center[i] = bad;
-      EXPECT_THROW(intersect_circle_plane(c, plane), InvalidInput) << "center " << i << " " << bad;
-      c = rim;
-      c.normal[i] = bad;
-      EXPECT_THROW(intersect_circle_plane(c, plane), InvalidInput) << "normal " << i << " " << bad;
-      Plane3 p = plane;
-      p.point[i] = bad;
-      EXPECT_THROW(intersect_circle_plane(rim, p), InvalidInput) << "point " << i << " " << bad;
-      p = plane;
-      p.normal[i] = bad;
-      EXPECT_THROW(intersect_circle_plane(rim, p), InvalidInput) << "plane normal " << i << " " << bad;
+      for (Vector3 Circle3::*field : {&Circle3::center, &Circle3::normal}) {
+        Circle3 c = rim;
+        (c.*field)[i] = bad;
+        EXPECT_THROW(intersect_circle_plane(c, plane), InvalidInput) << "circle component " << i << " " << bad;
+      }
+      for (Vector3 Plane3::*field : {&Plane3::point, &Plane3::normal}) {
+        Plane3 p = plane;
+        (p.*field)[i] = bad;
+        EXPECT_THROW(intersect_circle_plane(rim, p), InvalidInput) << "plane component " << i << " " << bad;
+      }
     }
     Circle3 c = rim;
     c.radius = bad;

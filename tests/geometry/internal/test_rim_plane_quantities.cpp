@@ -202,18 +202,16 @@ TEST(PlaneInputsReady, HoldsForRealisticInputsAndFailsForEveryBadOrOutOfRangeFie
   const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
   for (const double bad : {nan, inf, -inf}) {
     for (int i = 0; i < 3; ++i) {
-      Circle3 c = rim;
-      c.center[i] = bad;
-      EXPECT_FALSE(plane_inputs_ready(c, base)) << bad;
-      c = rim;
-      c.normal[i] = bad;
-      EXPECT_FALSE(plane_inputs_ready(c, base)) << bad;
-      Plane3 p = base;
-      p.point[i] = bad;
-      EXPECT_FALSE(plane_inputs_ready(rim, p)) << bad;
-      p = base;
-      p.normal[i] = bad;
-      EXPECT_FALSE(plane_inputs_ready(rim, p)) << bad;
+      for (Vector3 Circle3::*field : {&Circle3::center, &Circle3::normal}) {
+        Circle3 c = rim;
+        (c.*field)[i] = bad;
+        EXPECT_FALSE(plane_inputs_ready(c, base)) << i << " " << bad;
+      }
+      for (Vector3 Plane3::*field : {&Plane3::point, &Plane3::normal}) {
+        Plane3 p = base;
+        (p.*field)[i] = bad;
+        EXPECT_FALSE(plane_inputs_ready(rim, p)) << i << " " << bad;
+      }
     }
     Circle3 c = rim;
     c.radius = bad;
