@@ -450,6 +450,13 @@ void validate(const DetectionOptions& options) {
 
 JointContacts detect_contacts(const JointDimensions& dimensions, const PartPose& bearing,
                               const PartPose& journal, const DetectionOptions& options) {
+  JointContacts out;
+  detect_contacts(dimensions, bearing, journal, out, options);
+  return out;
+}
+
+void detect_contacts(const JointDimensions& dimensions, const PartPose& bearing,
+                     const PartPose& journal, JointContacts& out, const DetectionOptions& options) {
   // The inline tests first: validate() formats its message and is out of line.
   if (!detail::passes_validation(dimensions)) validate(dimensions);
   if (!detail::passes_validation(bearing)) validate(bearing, "bearing");
@@ -457,7 +464,8 @@ JointContacts detect_contacts(const JointDimensions& dimensions, const PartPose&
   validate(options);
   const JointSetup setup = set_up(dimensions, bearing, journal);
 
-  JointContacts out;
+  // Every field the answer consists of is (re)set; contacts past contact_count are left alone.
+  out.contact_count = 0;
   ContactPresence presence;
   CertificateAccumulator certificate;
   const bool exactly_parallel = axes_exactly_parallel(bearing.axis_W, journal.axis_W);
@@ -476,7 +484,6 @@ JointContacts detect_contacts(const JointDimensions& dimensions, const PartPose&
   out.scenario = classify_scenario(presence);
   out.certificate = certificate.result();
   translate_to_world(bearing.p_WP, out);
-  return out;
 }
 
 }  // namespace clearjoint::geometry

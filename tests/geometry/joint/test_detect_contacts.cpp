@@ -5,6 +5,7 @@
 
 #include "clearjoint/geometry/detect_contacts.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -340,6 +341,62 @@ TEST(DetectContacts, InvarianceCasesHaveTheirScenarios) {
     SCOPED_TRACE(c.name);
     EXPECT_EQ(detect_contacts(c.dimensions, bearing_on_z(), c.journal).scenario, c.scenario);
   }
+}
+
+TEST(DetectContacts, WritesIntoAReusedResultExactlyWhatAFreshCallReturns) {
+  // The in-place overload leaves contacts past contact_count as they were: cycle through every
+  // case (many contacts, none, aligned, beyond the model) twice, into one result, so that each
+  // answer is written over a different earlier one.
+  const std::vector<JointCase> cases = all_cases();
+  JointContacts reused;
+  for (int round = 0; round < 2; ++round) {
+    for (std::size_t i = 0; i < cases.size(); ++i) {
+      const JointCase& c = cases[(i * 7 + round) % cases.size()];
+      SCOPED_TRACE(c.name);
+      const JointContacts fresh = detect_contacts(c.dimensions, bearing_on_z(), c.journal);
+      detect_contacts(c.dimensions, bearing_on_z(), c.journal, reused);
+      ASSERT_EQ(reused.scenario, fresh.scenario);
+      EXPECT_EQ(reused.aligned, fresh.aligned);
+      EXPECT_EQ(reused.certificate.level, fresh.certificate.level);
+      EXPECT_STREQ(reused.certificate.reason, fresh.certificate.reason);
+      ASSERT_EQ(reused.contact_count, fresh.contact_count);
+      for (int k = 0; k < fresh.contact_count; ++k) {
+        const Contact& a = reused.contacts[k];
+        const Contact& b = fresh.contacts[k];
+        EXPECT_EQ(a.type, b.type);
+        EXPECT_EQ(a.base, b.base);
+        EXPECT_EQ(a.p_WCj, b.p_WCj);
+        EXPECT_EQ(a.p_WCi, b.p_WCi);
+        EXPECT_EQ(a.normal_W, b.normal_W);
+        EXPECT_EQ(a.depth, b.depth);
+        ASSERT_EQ(a.crossing_count, b.crossing_count);
+        for (int j = 0; j < b.crossing_count; ++j) {
+          EXPECT_EQ(a.crossings[j].angle, b.crossings[j].angle);
+          EXPECT_EQ(a.crossings[j].angle_error, b.crossings[j].angle_error);
+          EXPECT_EQ(a.crossings[j].point, b.crossings[j].point);
+          EXPECT_EQ(a.crossings[j].point_error, b.crossings[j].point_error);
+          EXPECT_EQ(a.crossings[j].multiplicity, b.crossings[j].multiplicity);
+        }
+        EXPECT_EQ(a.certificate.level, b.certificate.level);
+      }
+    }
+  }
+}
+
+TEST(DetectContacts, LeavesAReusedResultUntouchedWhenTheInputIsBad) {
+  const std::vector<JointCase> cases = all_cases();
+  const JointCase& c = *std::find_if(cases.begin(), cases.end(), [](const JointCase& k) {
+    return k.scenario != ContactScenario::none;
+  });
+  JointContacts reused;
+  detect_contacts(c.dimensions, bearing_on_z(), c.journal, reused);
+  const int count = reused.contact_count;
+  ASSERT_GT(count, 0);
+  PartPose bad = c.journal;
+  bad.axis_W = Vector3::Zero();
+  EXPECT_THROW(detect_contacts(c.dimensions, bearing_on_z(), bad, reused), InvalidInput);
+  EXPECT_EQ(reused.contact_count, count);
+  EXPECT_EQ(reused.scenario, c.scenario);
 }
 
 // ---- (rigid motions etc.) ------------------------------------------------------------------------------
