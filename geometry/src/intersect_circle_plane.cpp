@@ -174,40 +174,38 @@ CirclePlaneIntersection detail::intersect_circle_plane(const Circle3& circle_in,
                                                        const IntersectionOptions& options,
                                                        const RoundedPoint* centre,
                                                        const RoundedPoint* point) {
-  // Realistic inputs first: valid, inside the a priori guard, nothing to rescale
-  // (plane_inputs_ready); the checks and the rescaling were a fifth of a disjoint query.
-  if (detail::plane_inputs_ready(circle_in, plane_in)) {
-    PointErrors errors;
-    if (centre != nullptr || point != nullptr) {
-      errors = {centre == nullptr ? 0.0 : centre->error, point == nullptr ? 0.0 : point->error, centre, point, 0};
+  // Realistic inputs are valid, inside the a priori guard and need no rescaling
+  // (plane_inputs_ready): for them the checks and the rescaling, a fifth of a disjoint query, are
+  // skipped.
+  const bool ready = detail::plane_inputs_ready(circle_in, plane_in);
+  Circle3 circle = circle_in;
+  Plane3 plane = plane_in;
+  int e = 0;
+  if (!ready) {
+    // The inline test, then validate(), which formats its message and is out of line.
+    if (!detail::passes_validation(circle_in)) validate(circle_in, "circle");
+    if (!detail::passes_validation(plane_in)) validate(plane_in, "plane");
+    // Exact power-of-two rescaling, as in intersect_circle_cylinder (scale_normalisation.hpp).
+    circle.normal = detail::direction_scaled(circle_in.normal);
+    plane.normal = detail::direction_scaled(plane_in.normal);
+    e = detail::length_exponent(std::max({circle.center.cwiseAbs().maxCoeff(),
+                                          plane.point.cwiseAbs().maxCoeff(), circle.radius}));
+    if (e != 0 && !(detail::scales_exactly(circle.center, e) && detail::scales_exactly(circle.radius, e) &&
+                    detail::scales_exactly(plane.point, e))) {
+      e = 0;
     }
-    CirclePlaneIntersection out = intersect_scaled(circle_in, plane_in, options, errors, true);
-    require_finite_bounds(out);
-    return out;
-  }
-  // The inline test, then validate(), which formats its message and is out of line.
-  if (!detail::passes_validation(circle_in)) validate(circle_in, "circle");
-  if (!detail::passes_validation(plane_in)) validate(plane_in, "plane");
-  // Exact power-of-two rescaling, as in intersect_circle_cylinder (scale_normalisation.hpp).
-  Circle3 circle{circle_in.center, detail::direction_scaled(circle_in.normal), circle_in.radius};
-  Plane3 plane{plane_in.point, detail::direction_scaled(plane_in.normal)};
-  int e = detail::length_exponent(std::max({circle.center.cwiseAbs().maxCoeff(),
-                                            plane.point.cwiseAbs().maxCoeff(), circle.radius}));
-  if (e != 0 && !(detail::scales_exactly(circle.center, e) && detail::scales_exactly(circle.radius, e) &&
-                  detail::scales_exactly(plane.point, e))) {
-    e = 0;
-  }
-  if (e != 0) {
-    circle.center = detail::scaled(circle.center, e);
-    circle.radius = std::ldexp(circle.radius, -e);
-    plane.point = detail::scaled(plane.point, e);
+    if (e != 0) {
+      circle.center = detail::scaled(circle.center, e);
+      circle.radius = std::ldexp(circle.radius, -e);
+      plane.point = detail::scaled(plane.point, e);
+    }
   }
   PointErrors errors;
   if (centre != nullptr || point != nullptr) {
     errors = {centre == nullptr ? 0.0 : detail::scaled_error(centre->error, e),
               point == nullptr ? 0.0 : detail::scaled_error(point->error, e), centre, point, e};
   }
-  const bool a_priori = detail::plane_a_priori_bounds_apply(circle, plane);
+  const bool a_priori = ready || detail::plane_a_priori_bounds_apply(circle, plane);
   CirclePlaneIntersection out = intersect_scaled(circle, plane, options, errors, a_priori);
   if (e != 0) {
     for (int i = 0; i < out.crossing_count; ++i) {
