@@ -257,6 +257,15 @@ Contact axial_contact(const JointSetup& s, ContactBase base, const Circle3& rim,
   return contact;
 }
 
+/// The kernel query of journal rim `base` against bearing base plane `base` (outward normal),
+/// with both centres' rounding bounds and exact recipes (rounded_point.hpp).
+CirclePlaneIntersection rim_against_base(const JointSetup& s, ContactBase base, const DetectionOptions& options) {
+  const detail::RoundedPoint centre = rounded_centre(s, base);
+  const detail::RoundedPoint point = rounded_base(s, base);
+  const Plane3 base_plane{point.value, outward_sign(base) * s.bearing_axis_W};
+  return detail::intersect_circle_plane(journal_rim(s, base), base_plane, options.intersection, &centre, &point);
+}
+
 /// The certificate of a "no contact" proved by a reach prefilter: as the kernel gives for the
 /// same decision (its own first test), so that switching the certificate off reads the same.
 Certificate clear_certificate(const DetectionOptions& options) {
@@ -302,11 +311,7 @@ void detect_misaligned(const JointSetup& s, const DetectionOptions& options,
       continue;
     }
     const Circle3 rim = journal_rim(s, base);
-    const detail::RoundedPoint centre = rounded_centre(s, base);
-    const detail::RoundedPoint point = rounded_base(s, base);
-    const Plane3 base_plane{point.value, outward_sign(base) * s.bearing_axis_W};
-    const CirclePlaneIntersection hit =
-        detail::intersect_circle_plane(rim, base_plane, options.intersection, &centre, &point);
+    const CirclePlaneIntersection hit = rim_against_base(s, base, options);
     certificate.add(hit.certificate);
     if (!hit.has_penetration) continue;
     (base == ContactBase::a ? presence.axial_at_a : presence.axial_at_b) = true;
@@ -383,12 +388,7 @@ void detect_aligned(const JointSetup& s, const DetectionOptions& options, bool e
         face = false;
         face_certificate = proved_clear;
       } else {
-        const detail::RoundedPoint centre = rounded_centre(s, base);
-        const detail::RoundedPoint point = rounded_base(s, base);
-        const Plane3 base_plane{point.value, outward_sign(base) * s.bearing_axis_W};
-        const Circle3 rim = journal_rim(s, base);
-        const CirclePlaneIntersection hit =
-            detail::intersect_circle_plane(rim, base_plane, options.intersection, &centre, &point);
+        const CirclePlaneIntersection hit = rim_against_base(s, base, options);
         face = hit.topology == CirclePlaneTopology::disjoint && hit.side > 0;
         face_certificate = hit.certificate;
       }
