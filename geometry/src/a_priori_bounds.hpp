@@ -24,14 +24,6 @@ inline constexpr double kMagnitudeInflation = 1 + 0x1p-40;
 inline constexpr double kSmallestGuardedInput = 0x1p-100;
 inline constexpr double kLargestGuardedInput = 0x1p100;
 
-inline bool magnitude_in_range(double x) {
-  const double m = std::fabs(x);
-  return m == 0.0 || (m >= kSmallestGuardedInput && m <= kLargestGuardedInput);
-}
-inline bool magnitudes_in_range(const Vector3& v) {
-  return magnitude_in_range(v.x()) && magnitude_in_range(v.y()) && magnitude_in_range(v.z());
-}
-
 /// The absolute-value twin of a x b, for |a| and |b|.
 inline Vector3 abs_cross(const Vector3& a, const Vector3& b) {
   return {a.y() * b.z() + a.z() * b.y(), a.z() * b.x() + a.x() * b.z(),

@@ -28,15 +28,9 @@ constexpr const char* kToleranceReason =
     "axes treated as parallel within DetectionOptions::parallel_angle_tolerance (eq. 5 relaxed; "
     "decided in double precision)";
 
-/// Range in which detail::exactly_equal_products is a decision (its documented validity range).
-bool in_two_product_range(double x) {
-  constexpr double kSafeMagnitude = 0x1p450, kTinyMagnitude = 0x1p-450;
-  const double m = std::fabs(x);
-  return m == 0.0 || (m > kTinyMagnitude && m < kSafeMagnitude);
-}
-
 /// a*b == c*d in real arithmetic: Dekker's two-product in range, CGAL rationals otherwise.
 bool products_equal(double a, double b, double c, double d) {
+  using detail::in_two_product_range;
   if (in_two_product_range(a) && in_two_product_range(b) && in_two_product_range(c) &&
       in_two_product_range(d)) {
     return detail::exactly_equal_products(a, b, c, d);

@@ -146,6 +146,14 @@ inline Bounded squared_norm(const BoundedVector3& a) { return dot(a, a); }
 
 namespace clearjoint::geometry::detail {
 
+/// The factors for which exactly_equal_products is a decision: zero or of magnitude in
+/// (2^-450, 2^450), so that no product under- or overflows and the split cannot overflow.
+inline bool in_two_product_range(double x) {
+  constexpr double kSafeMagnitude = 0x1p450, kTinyMagnitude = 0x1p-450;
+  const double m = std::fabs(x);
+  return m == 0.0 || (m > kTinyMagnitude && m < kSafeMagnitude);
+}
+
 /// a*b == c*d in real arithmetic, decided exactly (Dekker's TwoProduct with Veltkamp's split:
 /// a*b = p + e exactly with |e| <= ulp(p)/2, and that representation is unique, so the real
 /// products are equal iff both parts are). Valid while no product underflows or overflows and
@@ -153,12 +161,10 @@ namespace clearjoint::geometry::detail {
 /// that range.
 inline bool exactly_equal_products(double a, double b, double c, double d) {
   constexpr double kSplitter = 134217729.0;  // 2^27 + 1
-  constexpr double kSafeMagnitude = 0x1p450, kTinyMagnitude = 0x1p-450;
-  auto in_range = [](double x) {
-    const double m = std::fabs(x);
-    return m == 0.0 || (m > kTinyMagnitude && m < kSafeMagnitude);
-  };
-  if (!(in_range(a) && in_range(b) && in_range(c) && in_range(d))) return false;
+  if (!(in_two_product_range(a) && in_two_product_range(b) && in_two_product_range(c) &&
+        in_two_product_range(d))) {
+    return false;
+  }
   auto two_product_error = [](double x, double y, double p) {
     const double xs = kSplitter * x, xh = xs - (xs - x), xl = x - xh;
     const double ys = kSplitter * y, yh = ys - (ys - y), yl = y - yh;

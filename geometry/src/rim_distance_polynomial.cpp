@@ -20,9 +20,10 @@ BoundedVector3 exact(const Vector3& v) { return {v.x(), v.y(), v.z()}; }
 
 namespace {
 
-/// magnitude_in_range (a_priori_bounds.hpp) without a branch: non-negative doubles are ordered
-/// as their bit patterns are, so |x| in [2^-100, 2^100] is one unsigned range test on the bits
-/// with the sign cleared (NaN and infinities lie above 2^100 and fail, as they do there). The
+/// |x| zero or in [kSmallestGuardedInput, kLargestGuardedInput] (a_priori_bounds.hpp) without a
+/// branch: non-negative doubles are ordered as their bit patterns are, so |x| in [2^-100, 2^100]
+/// is one unsigned range test on the bits with the sign cleared (NaN and infinities lie above
+/// 2^100 and fail). The
 /// short-circuit chain was a conditional jump every few bytes, whose cost swung by a factor 2
 /// with code placement (measured on the well-inside rims).
 bool in_range_bits(double x) {
