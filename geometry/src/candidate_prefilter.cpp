@@ -1,6 +1,7 @@
 #include "candidate_prefilter.hpp"
 
 #include "a_priori_bounds.hpp"
+#include "candidate_prefilter_lanes.hpp"
 #include "rim_distance_polynomial.hpp"
 #include "rim_plane_quantities.hpp"
 
@@ -42,50 +43,12 @@ CandidatesClear prove_one_by_one(const CandidatePrefilterInput& in) {
 
 CandidatesClear prove_candidates_clear(const CandidatePrefilterInput& in) {
   if (!guard(in)) return prove_one_by_one(in);
-  CandidatesClear out;
   const Vector3& a = in.bearing_axis;
   const Vector3& n = in.journal_axis;
-  const Vector3 a_abs = a.cwiseAbs();
-  const double axis_norm2 = a.squaredNorm();  // |a_i|^2, its own absolute-value twin
-  const double R = in.bearing_radius, r = in.journal_radius;
-
-  // Radial: rim_reach's a priori "strictly inside" test. The axis point is 0, so q = c exactly.
-  for (int k = 0; k < 2; ++k) {
-    const double e = in.radial_errors[k];
-    if (!(R - r > e)) continue;
-    const double gap = (R - r) - e, gap_abs = (R - r) + e;
-    const double gap2 = gap * gap * axis_norm2;
-    const Vector3& c = in.radial_centres[k];
-    const double offset2 = c.cross(a).squaredNorm();
-    const double offset2_abs = abs_cross(c.cwiseAbs(), a_abs).squaredNorm();
-    out.radial[k] = gap2 - offset2 > kGamma64 * (gap_abs * gap_abs * axis_norm2 + offset2_abs) * kMagnitudeInflation +
-                                         kUnderflowAllowance;
-  }
-
-  // Axial: rim_side_of_plane's a priori "strictly negative" test (a_priori_terms). Base plane X
-  // has normal sigma a_i (sigma = +1 at A, -1 at B): its s is sigma (a_i . (c - p)) and its
-  // w = sigma (a_i x a_j), each rounded exactly as with the normal sigma a_i (negation is exact and
-  // commutes with rounding), so |w|^2 and the twins are shared by both bases.
-  const Vector3 w = a.cross(n);
-  const Vector3 w_abs = abs_cross(a_abs, n.cwiseAbs());
-  const double w2 = w.squaredNorm(), w2_abs = w_abs.squaredNorm(), nc2 = n.squaredNorm();
-  const double r2 = r * r;
-  const double r2_w2 = r2 * w2, r2_w2_abs = r2 * w2_abs;
-  const Bounded np2 = a_priori_with_underflow(axis_norm2, axis_norm2);
-  const Bounded nc2_bounded = a_priori_with_underflow(nc2, nc2);
-  const double normal_length = plane_normal_length_bound(np2);  // |n_p| = |a_i|, rounded up
-  for (int k = 0; k < 2; ++k) {
-    const Vector3 d = in.rim_centres[k] - in.base_points[k];
-    const double s_value = k == 0 ? a.dot(d) : -a.dot(d);
-    const double s_abs = a_abs.dot(d.cwiseAbs());
-    Bounded s = a_priori_with_underflow(s_value, s_abs);
-    Bounded discriminant =
-        a_priori_with_underflow(s_value * s_value * nc2 - r2_w2, s_abs * s_abs * nc2 + r2_w2_abs);
-    widen_side_quantities_by_shift(s, discriminant, nc2_bounded,
-                                   side_shift(normal_length, in.rim_errors[k] + in.base_errors[k]));
-    out.axial[k] = discriminant.sign() > 0 && s.sign() < 0;
-  }
-  return out;
+  return prove_candidates_clear_in_guard({lanes(in.radial_centres), lanes(in.radial_errors), lanes(in.rim_centres),
+                                          lanes(in.rim_errors), lanes(in.base_points), lanes(in.base_errors), a, n,
+                                          a.cross(n), abs_cross(a.cwiseAbs(), n.cwiseAbs()), in.bearing_radius,
+                                          in.journal_radius});
 }
 
 }  // namespace clearjoint::geometry::detail

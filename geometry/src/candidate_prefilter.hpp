@@ -3,7 +3,8 @@
 // bases A and B; paper eqs. 11-21), proved together. They are the tests rim_reach and
 // rim_side_of_plane make (the same formulas and a priori bounds, a_priori_bounds.hpp), with the
 // terms the four share (the wall axis, the rim normal, n_p x n_c, the magnitude guard) computed
-// once. In free flight they are the whole detection.
+// once, and bases A and B side by side in SSE2 lanes (candidate_prefilter_lanes.hpp). In free
+// flight they are the whole detection.
 
 #include <array>
 

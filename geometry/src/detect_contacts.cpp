@@ -11,11 +11,13 @@
 #include "clearjoint/geometry/intersect_circle_plane.hpp"
 #include "a_priori_bounds.hpp"
 #include "candidate_prefilter.hpp"
+#include "candidate_prefilter_lanes.hpp"
 #include "error_bounded.hpp"
 #include "primitives_detail.hpp"
 #include "rim_distance_polynomial.hpp"
 #include "rim_plane_quantities.hpp"
 #include "rounded_point_queries.hpp"
+#include "unit_axis_range.hpp"
 
 namespace clearjoint::geometry {
 namespace {
@@ -38,20 +40,24 @@ bool products_equal(double a, double b, double c, double d) {
   return CGAL::Gmpq(a) * CGAL::Gmpq(b) == CGAL::Gmpq(c) * CGAL::Gmpq(d);
 }
 
-/// eq. (5): a_i x a_j = 0, decided exactly on the stored doubles. First a filter: a component
-/// of the cross product computed in double is a difference of two rounded products, within
-/// gamma_64 of its absolute-value twin plus the products' underflow (a_priori_bounds.hpp) of the
-/// exact one; beyond that it is not zero and the axes are not parallel (every misaligned pose
-/// stops here). Otherwise the exact test of each component.
-bool axes_exactly_parallel(const Vector3& a, const Vector3& b) {
-  const Vector3 cross = a.cross(b);
-  const Vector3 twin = detail::abs_cross(a.cwiseAbs(), b.cwiseAbs());
+/// The floating-point filter of eq. (5): a component of the cross product computed in double is
+/// a difference of two rounded products, within gamma_64 of its absolute-value twin plus the
+/// products' underflow (a_priori_bounds.hpp) of the exact one; beyond that it is not zero. True
+/// when `cross` = a x b (rounded) has such a component, `twin` = abs_cross(|a|, |b|).
+bool cross_proved_nonzero(const Vector3& cross, const Vector3& twin) {
   constexpr double kProductUnderflow = 4 * detail::kUnderflowError;
+  bool nonzero = false;
   for (int i = 0; i < 3; ++i) {
-    if (std::fabs(cross[i]) > detail::kGamma64 * twin[i] * detail::kMagnitudeInflation + kProductUnderflow) {
-      return false;
-    }
+    nonzero |= std::fabs(cross[i]) > detail::kGamma64 * twin[i] * detail::kMagnitudeInflation + kProductUnderflow;
   }
+  return nonzero;
+}
+
+/// eq. (5): a_i x a_j = 0, decided exactly on the stored doubles. First the filter (every
+/// misaligned pose stops there: the axes are not parallel), otherwise the exact test of each
+/// component.
+bool axes_exactly_parallel(const Vector3& a, const Vector3& b) {
+  if (cross_proved_nonzero(a.cross(b), detail::abs_cross(a.cwiseAbs(), b.cwiseAbs()))) return false;
   return products_equal(a.y(), b.z(), a.z(), b.y()) && products_equal(a.z(), b.x(), a.x(), b.z()) &&
          products_equal(a.x(), b.y(), a.y(), b.x());
 }
@@ -267,18 +273,23 @@ Certificate clear_certificate(const DetectionOptions& options) {
                                       : Certificate{Certainty::uncertain, "certificate switched off"};
 }
 
-/// The misaligned case: four candidate point contacts.
+/// The misaligned case: four candidate point contacts. `prefiltered`: the prefilters' answer when
+/// prefilter_if_ready computed it (the same as prove_candidates_clear's on these centres), or null.
 void detect_misaligned(const JointSetup& s, const DetectionOptions& options,
-                       JointContacts& out, ContactPresence& presence,
-                       CertificateAccumulator& certificate) {
+                       const detail::CandidatesClear* prefiltered, JointContacts& out,
+                       ContactPresence& presence, CertificateAccumulator& certificate) {
   const Cylinder3 wall{s.p_WPi, s.bearing_axis_W, s.bearing_radius};
   // A rim proved to stay inside the wall or the base plane (the kernel's own first tests, here
   // for all four candidates at once and without the kernel's input checks, rescaling and result
   // assembly) has no contact there: in free flight this is the whole detection.
   const Certificate proved_clear = clear_certificate(options);
-  const detail::CandidatesClear clear = detail::prove_candidates_clear(
-      {s.journal_rims, s.journal_rim_errors, s.journal_rims, s.journal_rim_errors, s.bearing_bases,
-       s.bearing_base_errors, s.bearing_axis_W, s.journal_axis_W, s.bearing_radius, s.journal_radius});
+  const detail::CandidatesClear clear =
+      prefiltered != nullptr
+          ? *prefiltered
+          : detail::prove_candidates_clear({s.journal_rims, s.journal_rim_errors, s.journal_rims,
+                                            s.journal_rim_errors, s.bearing_bases, s.bearing_base_errors,
+                                            s.bearing_axis_W, s.journal_axis_W, s.bearing_radius,
+                                            s.journal_radius});
   for (const ContactBase base : {ContactBase::a, ContactBase::b}) {
     if (clear.radial[base == ContactBase::a ? 0 : 1]) {
       certificate.add(proved_clear);
@@ -429,6 +440,61 @@ void translate_to_world(const Vector3& p_WPi, JointContacts& out) {
   }
 }
 
+/// The four prefilters of a misaligned joint straight from the inputs, for inputs that need no
+/// validation, rescaling or alignment test: true, with their answer in `clear`, when
+///  - 0 < Rj < Ri and 0 < Lj < Li (their finiteness: below),
+///  - the angle tolerance is +-0 (eq. 5 is then decided exactly, and no sine is needed),
+///  - both axes have |a|^2 in unit_axis' direct range (so each is finite and non-zero, and its
+///    unit axis is a / sqrt(|a|^2), computed here as unit_axis does),
+///  - the prefilters' magnitude guard holds (candidate_prefilter.cpp), which also makes Ri and Li
+///    finite (Ri <= 2^100; an infinite or NaN Li makes |h_i|_1 infinite or NaN) and both poses'
+///    centres (a non-finite component of P_i or P_j makes that component of P_j - P_i, and so
+///    of a rim centre, infinite or NaN),
+///  - and eq. (5)'s floating-point filter proves the axes not parallel.
+/// Then every validate() passes, the joint is misaligned, and set_up would compute the very
+/// centres, errors and guard values computed here (the same operations in the same order; the
+/// rims and bases as P_j - P_i + (+-1) h and (+-1) h_i per lane, where adding -h is subtracting
+/// h, bit for bit; |0|_1 + |h_i|_1 = |h_i|_1 exactly): `clear` is what detect_misaligned's
+/// prove_candidates_clear would answer. False, `clear` untouched, otherwise.
+bool prefilter_if_ready(const JointDimensions& dimensions, const PartPose& bearing, const PartPose& journal,
+                        const DetectionOptions& options, detail::CandidatesClear& clear) {
+  using detail::Lanes;
+  using detail::LaneVector3;
+  const double Ri = dimensions.bearing_radius, Rj = dimensions.journal_radius;
+  const double Li = dimensions.bearing_length, Lj = dimensions.journal_length;
+  const Vector3& a_i = bearing.axis_W;
+  const Vector3& a_j = journal.axis_W;
+  const double squared_i = a_i.squaredNorm(), squared_j = a_j.squaredNorm();
+  if (!((Rj > 0.0) & (Rj < Ri) & (Lj > 0.0) & (Lj < Li) & (options.parallel_angle_tolerance == 0.0) &
+        detail::in_safe_square_range(squared_i) & detail::in_safe_square_range(squared_j))) {
+    return false;
+  }
+  const Vector3 cross = a_i.cross(a_j);
+  const Vector3 twin = detail::abs_cross(a_i.cwiseAbs(), a_j.cwiseAbs());
+  if (!cross_proved_nonzero(cross, twin)) return false;
+  const Vector3 a_i_hat = a_i / std::sqrt(squared_i), a_j_hat = a_j / std::sqrt(squared_j);
+  const Vector3 h_i = (0.5 * Li) * a_i_hat;
+  const Vector3 h_j = (0.5 * Lj) * a_j_hat;
+  const Vector3 p_WPj = journal.p_WP - bearing.p_WP;
+  const double toward_a = a_i.dot(a_j) >= 0.0 ? 1.0 : -1.0;
+  const LaneVector3 rims = detail::both_lanes(p_WPj) + detail::scaled(Lanes(toward_a, -toward_a), h_j);
+  const Lanes rim_norms = detail::one_norm(rims);
+  const double h_i_norm = h_i.cwiseAbs().sum();
+  constexpr double kHalfLargest = 0.5 * detail::kLargestGuardedInput;
+  if (!((h_i_norm + h_i_norm <= kHalfLargest) & (rim_norms[0] + rim_norms[1] <= kHalfLargest) &
+        (a_i.cwiseAbs().sum() <= detail::kLargestGuardedInput) &
+        (a_j.cwiseAbs().sum() <= detail::kLargestGuardedInput) & (Ri <= detail::kLargestGuardedInput))) {
+    return false;
+  }
+  const Lanes rim_errors = detail::offset_rounding_bound_of_norms<Lanes>(
+      Lanes::Constant(p_WPj.cwiseAbs().sum() + h_j.cwiseAbs().sum()), rim_norms);
+  const double base_error = detail::offset_rounding_bound_of_norms(h_i_norm, h_i_norm);
+  const LaneVector3 bases = detail::scaled(Lanes(1.0, -1.0), h_i);
+  clear = detail::prove_candidates_clear_in_guard(
+      {rims, rim_errors, rims, rim_errors, bases, Lanes::Constant(base_error), a_i, a_j, cross, twin, Ri, Rj});
+  return true;
+}
+
 void validate(const DetectionOptions& options) {
   const double tolerance = options.parallel_angle_tolerance;
   if (!(tolerance >= 0.0 && tolerance < 0.5 * std::numbers::pi)) {
@@ -451,18 +517,31 @@ JointContacts detect_contacts(const JointDimensions& dimensions, const PartPose&
 
 void detect_contacts(const JointDimensions& dimensions, const PartPose& bearing,
                      const PartPose& journal, JointContacts& out, const DetectionOptions& options) {
-  // The inline tests first: validate() formats its message and is out of line.
-  if (!detail::passes_validation(dimensions)) validate(dimensions);
-  if (!detail::passes_validation(bearing)) validate(bearing, "bearing");
-  if (!detail::passes_validation(journal)) validate(journal, "journal");
-  validate(options);
+  // Every field the answer consists of is (re)set; contacts past contact_count are left alone.
+  detail::CandidatesClear clear;
+  const bool ready = prefilter_if_ready(dimensions, bearing, journal, options, clear);
+  if (ready && clear.radial[0] && clear.radial[1] && clear.axial[0] && clear.axial[1]) {
+    // Free flight, proved: what the general path below answers when all four are clear (four
+    // equal certificates, no contact, nothing to translate).
+    out.contact_count = 0;
+    out.aligned = false;
+    out.scenario = ContactScenario::none;
+    out.certificate = clear_certificate(options);
+    return;
+  }
+  if (!ready) {
+    // The inline tests first: validate() formats its message and is out of line.
+    if (!detail::passes_validation(dimensions)) validate(dimensions);
+    if (!detail::passes_validation(bearing)) validate(bearing, "bearing");
+    if (!detail::passes_validation(journal)) validate(journal, "journal");
+    validate(options);
+  }
   const JointSetup setup = set_up(dimensions, bearing, journal);
 
-  // Every field the answer consists of is (re)set; contacts past contact_count are left alone.
   out.contact_count = 0;
   ContactPresence presence;
   CertificateAccumulator certificate;
-  const bool exactly_parallel = axes_exactly_parallel(bearing.axis_W, journal.axis_W);
+  const bool exactly_parallel = !ready && axes_exactly_parallel(bearing.axis_W, journal.axis_W);
   bool aligned = exactly_parallel;
   if (!aligned && options.parallel_angle_tolerance > 0.0) {
     // |a_i_hat x a_j_hat| = sin(angle between the lines), compared in double.
@@ -473,7 +552,7 @@ void detect_contacts(const JointDimensions& dimensions, const PartPose& bearing,
   if (aligned) {
     detect_aligned(setup, options, exactly_parallel, out, presence, certificate);
   } else {
-    detect_misaligned(setup, options, out, presence, certificate);
+    detect_misaligned(setup, options, ready ? &clear : nullptr, out, presence, certificate);
   }
   out.scenario = classify_scenario(presence);
   out.certificate = certificate.result();

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "input_checks.hpp"
+#include "unit_axis_range.hpp"
 
 namespace clearjoint::geometry {
 namespace {
@@ -37,10 +38,8 @@ void validate(const PartPose& pose, std::string_view name) {
 }
 
 Vector3 unit_axis(const PartPose& pose) {
-  // |a|^2 outside these bounds would lose precision to underflow or overflow.
-  constexpr double kSmallestSafeSquare = 0x1p-1000, kLargestSafeSquare = 0x1p1000;
   const double squared = pose.axis_W.squaredNorm();
-  if (squared > kSmallestSafeSquare && squared < kLargestSafeSquare) {
+  if (detail::in_safe_square_range(squared)) {
     return pose.axis_W / std::sqrt(squared);
   }
   return pose.axis_W.stableNormalized();

@@ -41,10 +41,14 @@ struct RoundedPoint {
 inline double difference_rounding_bound(const Vector3& d) {
   return (kUnitRoundoff * d.cwiseAbs().sum()) * (1 + 4 * kUnitRoundoff);
 }
+/// The same from the 1-norms |d|_1 + |h|_1 (summed in that order) and |value|_1: a double, or
+/// Eigen lanes for the two rims at once (candidate_prefilter_lanes.hpp).
+template <typename Norms>
+Norms offset_rounding_bound_of_norms(const Norms& offset_norms, const Norms& value_norm) {
+  return (kUnitRoundoff * (offset_norms + value_norm)) * (1 + 4 * kUnitRoundoff) + 8 * kUnderflowError;
+}
 inline double offset_rounding_bound(const Vector3& d, const Vector3& h, const Vector3& value) {
-  return (kUnitRoundoff * (d.cwiseAbs().sum() + h.cwiseAbs().sum() + value.cwiseAbs().sum())) *
-             (1 + 4 * kUnitRoundoff) +
-         8 * kUnderflowError;
+  return offset_rounding_bound_of_norms(d.cwiseAbs().sum() + h.cwiseAbs().sum(), value.cwiseAbs().sum());
 }
 
 inline RoundedPoint rounded_point(const Vector3& minuend, const Vector3& subtrahend, double length,

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <optional>
 #include <random>
 #include <vector>
@@ -417,6 +418,70 @@ TEST(DetectContacts, WritesIntoAReusedResultExactlyWhatAFreshCallReturns) {
   }
 }
 
+
+/// Every field of the answer, bit for bit (contacts up to contact_count).
+void expect_identical(const JointContacts& a, const JointContacts& b) {
+  ASSERT_EQ(a.scenario, b.scenario);
+  ASSERT_EQ(a.contact_count, b.contact_count);
+  EXPECT_EQ(a.aligned, b.aligned);
+  EXPECT_EQ(a.certificate.level, b.certificate.level);
+  EXPECT_STREQ(a.certificate.reason, b.certificate.reason);
+  for (int k = 0; k < a.contact_count; ++k) {
+    const Contact& x = a.contacts[k];
+    const Contact& y = b.contacts[k];
+    EXPECT_EQ(x.type, y.type);
+    EXPECT_EQ(x.base, y.base);
+    EXPECT_EQ(x.p_WCj, y.p_WCj);
+    EXPECT_EQ(x.p_WCi, y.p_WCi);
+    EXPECT_EQ(x.normal_W, y.normal_W);
+    EXPECT_EQ(x.depth, y.depth);
+    EXPECT_EQ(x.certificate.level, y.certificate.level);
+    EXPECT_STREQ(x.certificate.reason, y.certificate.reason);
+    ASSERT_EQ(x.crossing_count, y.crossing_count);
+    for (int j = 0; j < x.crossing_count; ++j) {
+      EXPECT_EQ(x.crossings[j].angle, y.crossings[j].angle);
+      EXPECT_EQ(x.crossings[j].angle_error, y.crossings[j].angle_error);
+      EXPECT_EQ(x.crossings[j].point, y.crossings[j].point);
+      EXPECT_EQ(x.crossings[j].point_error, y.crossings[j].point_error);
+      EXPECT_EQ(x.crossings[j].multiplicity, y.crossings[j].multiplicity);
+    }
+  }
+}
+
+TEST(DetectContacts, ProvesFreeFlightStraightFromThePosesWithTheGeneralPathsAnswer) {
+  // With the angle tolerance 0 a misaligned joint goes through the free-flight proof of
+  // detect_contacts.cpp (prefilter_if_ready); any positive tolerance skips it, and 1e-300 rad
+  // aligns nothing here. The two answers must agree bit for bit, in free flight and in contact,
+  // for bearings in any pose, journals either way round and axes of any length.
+  std::mt19937_64 rng(20261124);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const double cr = kTable2.radial_clearance(), ca = kTable2.axial_clearance();
+  const double max_tilt = 2.0 * cr / kTable2.journal_length;
+  DetectionOptions general_path;
+  general_path.parallel_angle_tolerance = 1e-300;
+  int free_flight = 0, in_contact = 0;
+  for (int i = 0; i < 3000; ++i) {
+    const RigidMotion motion = random_motion(rng, i % 2 == 0 ? 0.0 : 1e3);
+    const double offset = 1.5 * cr * unit(rng), offset_azimuth = 2 * std::numbers::pi * unit(rng);
+    const double shift = 1.5 * ca * (2 * unit(rng) - 1);
+    const double tilt = max_tilt * (0.001 + unit(rng)), tilt_azimuth = 2 * std::numbers::pi * unit(rng);
+    const double flip = i % 3 == 0 ? -1.0 : 1.0, axis_length = std::pow(2.0, 8 * unit(rng) - 4);
+    const PartPose bearing = moved(motion, bearing_on_z());
+    const PartPose journal =
+        moved(motion, {{offset * std::cos(offset_azimuth), offset * std::sin(offset_azimuth), shift},
+                       flip * axis_length *
+                           Vector3(std::sin(tilt) * std::cos(tilt_azimuth),
+                                   std::sin(tilt) * std::sin(tilt_azimuth), std::cos(tilt))});
+    const JointContacts shortcut = detect_contacts(kTable2, bearing, journal);
+    const JointContacts general = detect_contacts(kTable2, bearing, journal, general_path);
+    SCOPED_TRACE(i);
+    expect_identical(shortcut, general);
+    (shortcut.contact_count == 0 ? free_flight : in_contact) += 1;
+  }
+  // Not vacuous: both outcomes are common in this family.
+  EXPECT_GT(free_flight, 300);
+  EXPECT_GT(in_contact, 300);
+}
 
 TEST(DetectContacts, EveryScenarioIsInvariantUnderRigidMotionsOfTheWholeJoint) {
   std::mt19937_64 rng(20170401);

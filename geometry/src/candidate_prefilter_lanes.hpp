@@ -1,0 +1,150 @@
+#pragma once
+// The four reach prefilters of candidate_prefilter.hpp inside their magnitude guard, computed for
+// bases A and B side by side: lane 0 holds base A's value, lane 1 base B's. Inline, so that
+// detect_contacts' free-flight proof (which builds these lanes from the poses directly) and
+// prove_candidates_clear share one copy of the arithmetic.
+//
+// Bit for bit: SSE2 packed operations round each lane exactly as the scalar operation would (IEEE
+// binary64, round to nearest; the target has no FMA to contract into), and every expression below
+// keeps the operation order of the scalar tests it mirrors (Eigen's: dot and squaredNorm sum
+// (x + y) + z, cross is (y z' - z y', z x' - x z', x y' - y x')). So each lane decides what
+// rim_reach and rim_side_of_plane decide for that base (test: DecidesAsTheOneByOneTestsDo), at
+// about half the instructions of two scalar passes.
+
+#include <array>
+
+#include <Eigen/Core>
+
+#include "a_priori_bounds.hpp"
+#include "candidate_prefilter.hpp"
+#include "error_bounded.hpp"
+#include "rim_plane_quantities.hpp"
+
+namespace clearjoint::geometry::detail {
+
+using Lanes = Eigen::Array2d;
+using LaneFlags = Eigen::Array<bool, 2, 1>;
+struct LaneVector3 {
+  Lanes x, y, z;
+};
+
+inline Lanes lanes(const std::array<double, 2>& v) { return {v[0], v[1]}; }
+inline LaneVector3 lanes(const std::array<Vector3, 2>& v) {
+  return {{v[0].x(), v[1].x()}, {v[0].y(), v[1].y()}, {v[0].z(), v[1].z()}};
+}
+/// The same vector in both lanes.
+inline LaneVector3 both_lanes(const Vector3& v) {
+  return {Lanes::Constant(v.x()), Lanes::Constant(v.y()), Lanes::Constant(v.z())};
+}
+inline LaneVector3 operator+(const LaneVector3& p, const LaneVector3& q) { return {p.x + q.x, p.y + q.y, p.z + q.z}; }
+inline LaneVector3 operator-(const LaneVector3& p, const LaneVector3& q) { return {p.x - q.x, p.y - q.y, p.z - q.z}; }
+/// v scaled per lane (by +-1 in the callers: exact).
+inline LaneVector3 scaled(const Lanes& s, const Vector3& v) { return {s * v.x(), s * v.y(), s * v.z()}; }
+inline LaneVector3 abs(const LaneVector3& v) { return {v.x.abs(), v.y.abs(), v.z.abs()}; }
+/// |v|_1 per lane, as Eigen's v.cwiseAbs().sum().
+inline Lanes one_norm(const LaneVector3& v) { return v.x.abs() + v.y.abs() + v.z.abs(); }
+inline Lanes dot(const Vector3& a, const LaneVector3& v) { return a.x() * v.x + a.y() * v.y + a.z() * v.z; }
+inline Lanes squared_norm(const LaneVector3& v) { return v.x * v.x + v.y * v.y + v.z * v.z; }
+/// c x a per lane.
+inline LaneVector3 cross(const LaneVector3& c, const Vector3& a) {
+  return {c.y * a.z() - c.z * a.y(), c.z * a.x() - c.x * a.z(), c.x * a.y() - c.y * a.x()};
+}
+/// abs_cross (a_priori_bounds.hpp) per lane, for |c| and |a|.
+inline LaneVector3 abs_cross(const LaneVector3& c, const Vector3& a) {
+  return {c.y * a.z() + c.z * a.y(), c.z * a.x() + c.x * a.z(), c.x * a.y() + c.y * a.x()};
+}
+/// a_priori_with_underflow's bound, per lane.
+inline Lanes a_priori_error(const Lanes& magnitude) {
+  return kGamma64 * magnitude * kMagnitudeInflation + kUnderflowAllowance;
+}
+
+/// Bounded (error_bounded.hpp) per lane, with its sign tests: sign() > 0 and sign() < 0.
+struct LaneBounded {
+  Lanes value, error;
+  LaneFlags positive() const { return value > error * kErrorInflation + kUnderflowError; }
+  LaneFlags negative() const { return value < -(error * kErrorInflation + kUnderflowError); }
+};
+
+/// widen_side_quantities_by_shift (rim_plane_quantities.hpp, where the derivation is), per lane,
+/// operation for operation.
+inline void widen_side_quantities_by_shift(LaneBounded& s, LaneBounded& discriminant, const Bounded& nc2,
+                                           const Lanes& shift) {
+  const Lanes high_s = s.value.abs() + s.error;
+  const double high_nc2 = std::fabs(nc2.value) + nc2.error;
+  const Lanes low_s = s.value.abs() - s.error;
+  const Lanes centre_shift = shift * shift;
+  const Lanes half_width = (low_s >= shift).select(2.0 * high_s * shift, (2.0 * high_s + shift) * shift);
+  const Lanes value = discriminant.value + centre_shift * nc2.value;
+  const Lanes added_error = (half_width * high_nc2 + centre_shift * nc2.error) * kWideningRounding +
+                            kUnitRoundoff * value.abs() + 2 * kUnderflowError;
+  s.error = (s.error + shift) * kWideningRounding;
+  discriminant = {value, (discriminant.error + added_error) * kWideningRounding};
+}
+
+/// CandidatePrefilterInput in lanes, with a_i x a_j and its absolute-value twin
+/// abs_cross(|a_i|, |a_j|) (which detect_contacts' parallelism filter computes too).
+struct CandidateLanes {
+  LaneVector3 radial_centres;
+  Lanes radial_errors;
+  LaneVector3 rim_centres;
+  Lanes rim_errors;
+  LaneVector3 base_points;
+  Lanes base_errors;
+  Vector3 bearing_axis;
+  Vector3 journal_axis;
+  Vector3 axes_cross;
+  Vector3 axes_cross_abs;
+  double bearing_radius = 0.0;
+  double journal_radius = 0.0;
+};
+
+/// prove_candidates_clear for inputs inside its magnitude guard (candidate_prefilter.cpp).
+inline CandidatesClear prove_candidates_clear_in_guard(const CandidateLanes& in) {
+  const Vector3& a = in.bearing_axis;
+  const Vector3& n = in.journal_axis;
+  const Vector3 a_abs = a.cwiseAbs();
+  const double axis_norm2 = a.squaredNorm();  // |a_i|^2, its own absolute-value twin
+  const double R = in.bearing_radius, r = in.journal_radius;
+
+  // Radial: rim_reach's a priori "strictly inside" test. The axis point is 0, so q = c exactly.
+  const Lanes& e = in.radial_errors;
+  const Lanes gap = Lanes::Constant(R - r) - e, gap_abs = Lanes::Constant(R - r) + e;
+  const Lanes gap2 = gap * gap * axis_norm2;
+  const LaneVector3& c = in.radial_centres;
+  const Lanes offset2 = squared_norm(cross(c, a));
+  const Lanes offset2_abs = squared_norm(abs_cross(abs(c), a_abs));
+  const LaneFlags radial =
+      (Lanes::Constant(R - r) > e) &&
+      (gap2 - offset2 > kGamma64 * (gap_abs * gap_abs * axis_norm2 + offset2_abs) * kMagnitudeInflation +
+                            kUnderflowAllowance);
+
+  // Axial: rim_side_of_plane's a priori "strictly negative" test (a_priori_terms). Base plane X
+  // has normal sigma a_i (sigma = +1 at A, -1 at B): its s is sigma (a_i . (c - p)) and its
+  // w = sigma (a_i x a_j), each rounded exactly as with the normal sigma a_i (negation is exact and
+  // commutes with rounding), so |w|^2 and the twins are shared by both bases.
+  const double w2 = in.axes_cross.squaredNorm(), w2_abs = in.axes_cross_abs.squaredNorm();
+  const double nc2 = n.squaredNorm();
+  const double r2 = r * r;
+  const double r2_w2 = r2 * w2, r2_w2_abs = r2 * w2_abs;
+  const Bounded np2 = a_priori_with_underflow(axis_norm2, axis_norm2);
+  const Bounded nc2_bounded = a_priori_with_underflow(nc2, nc2);
+  const double normal_length = plane_normal_length_bound(np2);  // |n_p| = |a_i|, rounded up
+  const LaneVector3 d = in.rim_centres - in.base_points;
+  const Lanes s_value = dot(a, d) * Lanes(1.0, -1.0);  // times -1: exact, as the negation
+  const Lanes s_abs = dot(a_abs, abs(d));
+  LaneBounded s{s_value, a_priori_error(s_abs)};
+  LaneBounded discriminant{s_value * s_value * nc2 - r2_w2, a_priori_error(s_abs * s_abs * nc2 + r2_w2_abs)};
+  // side_shift(normal_length, rim error + base error), per lane.
+  const Lanes shift = normal_length * (in.rim_errors + in.base_errors) * kWideningRounding + kUnderflowError;
+  widen_side_quantities_by_shift(s, discriminant, nc2_bounded, shift);
+  const LaneFlags axial = discriminant.positive() && s.negative();
+
+  CandidatesClear out;
+  for (int k = 0; k < 2; ++k) {
+    out.radial[k] = radial[k];
+    out.axial[k] = axial[k];
+  }
+  return out;
+}
+
+}  // namespace clearjoint::geometry::detail
