@@ -30,16 +30,23 @@ static_assert(2 * detail::kAngleAdditionTrigError < 64 * detail::kUnitRoundoff);
 /// `centre_error`: how far the exact rim centre may lie from circle.center (rounded_point.hpp);
 /// a crossing of the exact rim is that much farther from the computed point.
 /// `frame`: frame_of(circle) if the caller has it already.
+/// The answer without crossings: `sign` as RimRoots::sign_without_roots. Its own function so
+/// that the reach test's answers need no RimRoots (four default-constructed enclosures, ~30
+/// instructions, on the path most free-flight rims take).
+void fill_without_roots(int sign, CircleCylinderIntersection& out) {
+  out.topology = sign > 0   ? CircleCylinderTopology::outside
+                 : sign < 0 ? CircleCylinderTopology::inside
+                            : CircleCylinderTopology::on_surface;
+  if (out.topology == CircleCylinderTopology::outside) {
+    out.penetration_arcs[0] = {0.0, detail::kTwoPi, true};
+    out.arc_count = 1;
+  }
+}
+
 void fill(const Circle3& circle, const RimRoots& roots, bool bounded, double centre_error,
           CircleCylinderIntersection& out, const std::optional<CircleFrame>& frame = std::nullopt) {
   if (roots.count == 0) {
-    out.topology = roots.sign_without_roots > 0   ? CircleCylinderTopology::outside
-                   : roots.sign_without_roots < 0 ? CircleCylinderTopology::inside
-                                                  : CircleCylinderTopology::on_surface;
-    if (out.topology == CircleCylinderTopology::outside) {
-      out.penetration_arcs[0] = {0.0, detail::kTwoPi, true};
-      out.arc_count = 1;
-    }
+    fill_without_roots(roots.sign_without_roots, out);
     return;
   }
   out.topology = CircleCylinderTopology::crossing;
@@ -161,9 +168,7 @@ CircleCylinderIntersection intersect_scaled(const Circle3& circle, const Cylinde
   const bool reach_a_priori = detail::reach_a_priori_bounds_apply(circle, cylinder);
   const detail::RimReach reach = detail::rim_reach(circle, cylinder, reach_a_priori, centre_error);
   if (reach != detail::RimReach::undecided) {
-    RimRoots none;
-    none.sign_without_roots = reach == detail::RimReach::strictly_outside ? 1 : -1;
-    fill(circle, none, options.certify, centre_error, out);
+    fill_without_roots(reach == detail::RimReach::strictly_outside ? 1 : -1, out);
     out.certificate = options.certify ? Certificate{Certainty::certified, ""}
                                       : Certificate{Certainty::uncertain, "certificate switched off"};
     return out;

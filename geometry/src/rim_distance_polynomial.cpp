@@ -1,8 +1,6 @@
 #include "rim_distance_polynomial.hpp"
 
-#include <bit>
 #include <cmath>
-#include <cstdint>
 #include <limits>
 
 #include "a_priori_bounds.hpp"
@@ -20,35 +18,41 @@ BoundedVector3 exact(const Vector3& v) { return {v.x(), v.y(), v.z()}; }
 
 namespace {
 
-/// |x| zero or in [kSmallestGuardedInput, kLargestGuardedInput] (a_priori_bounds.hpp) without a
-/// branch: non-negative doubles are ordered as their bit patterns are, so |x| in [2^-100, 2^100]
-/// is one unsigned range test on the bits with the sign cleared (NaN and infinities lie above
-/// 2^100 and fail). The
-/// short-circuit chain was a conditional jump every few bytes, whose cost swung by a factor 2
-/// with code placement (measured on the well-inside rims).
-bool in_range_bits(double x) {
-  constexpr std::uint64_t kMagnitudeMask = 0x7fff'ffff'ffff'ffff;
-  constexpr std::uint64_t kLow = std::bit_cast<std::uint64_t>(kSmallestGuardedInput);
-  constexpr std::uint64_t kHigh = std::bit_cast<std::uint64_t>(kLargestGuardedInput);
-  const std::uint64_t m = std::bit_cast<std::uint64_t>(x) & kMagnitudeMask;
-  return (m - kLow <= kHigh - kLow) | (m == 0);
+/// |a| and |b| each zero or in [kSmallestGuardedInput, kLargestGuardedInput] (a_priori_bounds.hpp),
+/// two values at once (GCC/Clang vector extensions, SSE2 on x86-64) and without a branch:
+/// |x| <= 2^100 and (|x| >= 2^-100 or x == 0) as double comparisons, which NaN and infinities
+/// fail. Lanes are -1 where in range, 0 where not. The guards test 8 and 9 values; the scalar
+/// form (an unsigned range test on the bits per value) took ~90 instructions per guard, twice
+/// this. A short-circuit chain was worse: a conditional jump every few bytes, whose cost swung
+/// by a factor 2 with code placement (measured on the well-inside rims).
+using Pair = double __attribute__((vector_size(16)));
+using PairMask = long long __attribute__((vector_size(16)));
+PairMask in_range_pair(double a, double b) {
+  const PairMask kMagnitude = {0x7fff'ffff'ffff'ffff, 0x7fff'ffff'ffff'ffff};
+  const Pair kLow = {kSmallestGuardedInput, kSmallestGuardedInput};
+  const Pair kHigh = {kLargestGuardedInput, kLargestGuardedInput};
+  const Pair zero = {0.0, 0.0};
+  const Pair x = {a, b};
+  const Pair magnitude = reinterpret_cast<Pair>(reinterpret_cast<PairMask>(x) & kMagnitude);
+  return (magnitude <= kHigh) & ((magnitude >= kLow) | (magnitude == zero));
 }
-bool in_range_bits(const Vector3& v) {
-  return in_range_bits(v.x()) & in_range_bits(v.y()) & in_range_bits(v.z());
-}
+bool all_lanes(PairMask m) { return (m[0] & m[1]) != 0; }
 
 }  // namespace
 
 bool reach_a_priori_bounds_apply(const Circle3& circle, const Cylinder3& cylinder) {
   const Vector3 q = circle.center - cylinder.axis_point;  // rounded, but that is fine for a range test
-  return in_range_bits(q) & in_range_bits(cylinder.axis) & in_range_bits(circle.radius) &
-         in_range_bits(cylinder.radius);
+  const Vector3& d = cylinder.axis;
+  return all_lanes(in_range_pair(q.x(), q.y()) & in_range_pair(q.z(), d.x()) &
+                   in_range_pair(d.y(), d.z()) & in_range_pair(circle.radius, cylinder.radius));
 }
 
 bool cylinder_a_priori_bounds_apply(const Circle3& circle, const Cylinder3& cylinder,
                                     bool reach_guard) {
-  return reach_guard & in_range_bits(circle.center) & in_range_bits(cylinder.axis_point) &
-         in_range_bits(circle.normal);
+  const Vector3 &c = circle.center, &p = cylinder.axis_point, &n = circle.normal;
+  return reach_guard & all_lanes(in_range_pair(c.x(), c.y()) & in_range_pair(c.z(), p.x()) &
+                                 in_range_pair(p.y(), p.z()) & in_range_pair(n.x(), n.y()) &
+                                 in_range_pair(n.z(), n.z()));
 }
 
 bool cylinder_a_priori_bounds_apply(const Circle3& circle, const Cylinder3& cylinder) {

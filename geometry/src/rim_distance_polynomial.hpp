@@ -19,11 +19,13 @@ namespace clearjoint::geometry::detail {
 /// error is below (1/16)^9 / 9! ~ 4e-17 for the sine, smaller for the cosine.
 inline constexpr double kMaxAngleOffset = 1.0 / 16;
 
-/// An angle with its sine and cosine from libm (2 ulps each, see error_bounded.hpp).
+/// An angle with its sine and cosine from libm (2 ulps each, see error_bounded.hpp; the bound
+/// is kAngleAdditionTrigError's first term, not stored). Plain doubles, not sincos_of's Bounded:
+/// no reader needs their error fields, and forming them cost ~20 instructions per Newton run.
 struct AngleBase {
   double angle;
-  BoundedSinCos trig;
-  explicit AngleBase(double theta) : angle(theta), trig(sincos_of(theta)) {}
+  double cos, sin;
+  explicit AngleBase(double theta) : angle(theta), cos(std::cos(theta)), sin(std::sin(theta)) {}
 };
 
 /// cos and sin of one angle (cos_sin_near).
@@ -92,7 +94,7 @@ inline SmallAngleTrig small_angle_trig(double x) {
 inline CosSin cos_sin_near(const AngleBase& base, double offset) {
   static_assert(kMaxAngleOffset == 1.0 / 16);
   const SmallAngleTrig small = small_angle_trig(offset);
-  const double bc = base.trig.cos.value, bs = base.trig.sin.value;
+  const double bc = base.cos, bs = base.sin;
   return {bc * small.cos - bs * small.sin, bs * small.cos + bc * small.sin};
 }
 
@@ -128,7 +130,7 @@ inline ValueAndSlope RimDistancePolynomial::approximate_near(const AngleBase& ba
 inline ValueAndSlope RimDistancePolynomial::approximate_at_base(const AngleBase& base) const {
   // cos_sin_near with small_angle_trig(+0) = {+0, 1}; the products by +0 stay, as they decide
   // the sign of a zero result exactly as there.
-  const double bc = base.trig.cos.value, bs = base.trig.sin.value;
+  const double bc = base.cos, bs = base.sin;
   return approximate_at({bc - bs * 0.0, bs + bc * 0.0});
 }
 

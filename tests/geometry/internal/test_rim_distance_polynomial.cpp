@@ -12,6 +12,7 @@
 #include <random>
 #include <vector>
 
+#include "a_priori_bounds.hpp"
 #include "enclosure_checks.hpp"
 #include "mpfr_reference.hpp"
 
@@ -368,6 +369,50 @@ TEST(RimReach, IsNeverWrongOneUlpAwayFromTouching) {
           if (which == 2) pose.circle.center.x() = std::nextafter(pose.circle.center.x(), direction);
           check_reach_is_never_wrong(pose);
         }
+      }
+    }
+  }
+}
+
+TEST(APrioriGuard, AcceptsExactlyMagnitudesInItsRangeOrZeroInEveryInputPosition) {
+  // The guard of the a priori bounds (cylinder_a_priori_bounds_apply, reach_a_priori_bounds_apply):
+  // every guarded value zero or of magnitude in [2^-100, 2^100]. Each of its nine positions is
+  // set in turn to values just inside and just outside the range, both signs, and to NaN and
+  // infinity, in an otherwise accepted pose (the axis point at the origin, so that q = c - p is
+  // the centre itself and the reach guard's q sees the same value).
+  const double low = kSmallestGuardedInput, high = kLargestGuardedInput;
+  struct Case {
+    double value;
+    bool in_range;
+  };
+  const std::vector<Case> cases = {
+      {0.0, true}, {-0.0, true}, {low, true}, {high, true}, {1.0, true},
+      {std::nextafter(low, 0.0), false}, {std::nextafter(high, HUGE_VAL), false},
+      {0x1p-1074, false}, {HUGE_VAL, false}, {std::nan(""), false}};
+  const Pose accepted{{{0.5, -0.25, 1.0}, {0.0, 0.6, 0.8}, 1.0}, {{0.0, 0.0, 0.0}, {0.0, 0.0, 1.0}, 2.0}};
+  ASSERT_TRUE(cylinder_a_priori_bounds_apply(accepted.circle, accepted.cylinder));
+  for (int position = 0; position < 12; ++position) {
+    for (const Case& c : cases) {
+      for (const double sign : {1.0, -1.0}) {
+        Pose pose = accepted;
+        const double x = sign * c.value;
+        // Radii are positive in every valid input, but the guard does not rely on that.
+        if (position < 3) pose.circle.center[position] = x;
+        else if (position < 6) pose.circle.normal[position - 3] = x;
+        else if (position < 9) pose.cylinder.axis[position - 6] = x;
+        else if (position == 9) pose.circle.radius = x;
+        else if (position == 10) pose.cylinder.radius = x;
+        else pose.cylinder.axis_point.x() = x, pose.circle.center.x() = x;  // q.x = 0 stays in range
+        const bool reach = reach_a_priori_bounds_apply(pose.circle, pose.cylinder);
+        const bool full = cylinder_a_priori_bounds_apply(pose.circle, pose.cylinder);
+        // The normal is the only position the reach guard leaves to the full guard; the axis
+        // point (position 11) reaches the reach guard only through q = x - x, which is 0 for a
+        // finite x and NaN otherwise.
+        const bool reach_expected = position < 3 || (position >= 6 && position <= 10) ? c.in_range
+                                    : position == 11                                   ? std::isfinite(x)
+                                                                                       : true;
+        EXPECT_EQ(reach, reach_expected) << position << " " << x;
+        EXPECT_EQ(full, c.in_range) << position << " " << x;
       }
     }
   }
