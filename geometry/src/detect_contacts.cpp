@@ -56,10 +56,13 @@ bool cross_proved_nonzero(const Vector3& cross, const Vector3& twin) {
 /// eq. (5): a_i x a_j = 0, decided exactly on the stored doubles. First the filter (every
 /// misaligned pose stops there: the axes are not parallel), otherwise the exact test of each
 /// component.
-bool axes_exactly_parallel(const Vector3& a, const Vector3& b) {
-  if (cross_proved_nonzero(a.cross(b), detail::abs_cross(a.cwiseAbs(), b.cwiseAbs()))) return false;
+bool cross_exactly_zero(const Vector3& a, const Vector3& b) {
   return products_equal(a.y(), b.z(), a.z(), b.y()) && products_equal(a.z(), b.x(), a.x(), b.z()) &&
          products_equal(a.x(), b.y(), a.y(), b.x());
+}
+bool axes_exactly_parallel(const Vector3& a, const Vector3& b) {
+  if (cross_proved_nonzero(a.cross(b), detail::abs_cross(a.cwiseAbs(), b.cwiseAbs()))) return false;
+  return cross_exactly_zero(a, b);
 }
 
 /// The component of `offset` perpendicular to the unit axis `axis_hat`, written as
@@ -329,10 +332,11 @@ void detect_misaligned(const JointSetup& s, const DetectionOptions& options,
 
 /// The aligned case, eqs. (6)-(10). `exactly_parallel`: eq. (5) holds exactly, and the
 /// existence of each contact is decided by the certified kernel; otherwise (angle tolerance)
-/// in double precision, and the contacts are uncertain.
+/// in double precision, and the contacts are uncertain. `prefiltered`: as for detect_misaligned,
+/// with the line's test on the mid-length section in its first lane.
 void detect_aligned(const JointSetup& s, const DetectionOptions& options, bool exactly_parallel,
-                    JointContacts& out, ContactPresence& presence,
-                    CertificateAccumulator& certificate) {
+                    const detail::CandidatesClear* prefiltered, JointContacts& out,
+                    ContactPresence& presence, CertificateAccumulator& certificate) {
   const Certificate tolerance_certificate{Certainty::uncertain, kToleranceReason};
   const Vector3 offset = s.p_WPj - s.p_WPi;
   const Vector3 radial = off_axis(offset, s.bearing_axis_hat_W);
@@ -347,10 +351,13 @@ void detect_aligned(const JointSetup& s, const DetectionOptions& options, bool e
   // normals the side test is the sign of s).
   detail::CandidatesClear clear;
   if (exactly_parallel) {
-    clear = detail::prove_candidates_clear(
-        {{s.p_WPj, s.p_WPj}, {s.journal_centre_error, s.journal_centre_error}, s.journal_rims,
-         s.journal_rim_errors, s.bearing_bases, s.bearing_base_errors, s.bearing_axis_W, s.journal_axis_W,
-         s.bearing_radius, s.journal_radius});
+    clear = prefiltered != nullptr
+                ? *prefiltered
+                : detail::prove_candidates_clear({{s.p_WPj, s.p_WPj},
+                                                  {s.journal_centre_error, s.journal_centre_error},
+                                                  s.journal_rims, s.journal_rim_errors, s.bearing_bases,
+                                                  s.bearing_base_errors, s.bearing_axis_W, s.journal_axis_W,
+                                                  s.bearing_radius, s.journal_radius});
     const Circle3 mid_section{s.p_WPj, s.journal_axis_W, s.journal_radius};
     const Cylinder3 wall{s.p_WPi, s.bearing_axis_W, s.bearing_radius};
     if (clear.radial[0]) {
@@ -440,26 +447,35 @@ void translate_to_world(const Vector3& p_WPi, JointContacts& out) {
   }
 }
 
-/// The four prefilters of a misaligned joint straight from the inputs, for inputs that need no
-/// validation, rescaling or alignment test: true, with their answer in `clear`, when
+/// What prefilter_if_ready found: when `ready`, whether eq. (5) holds exactly and the
+/// prefilters' answer, as detect_aligned or detect_misaligned would compute them.
+struct Prefilter {
+  bool ready = false;
+  bool exactly_parallel = false;
+  detail::CandidatesClear clear;
+};
+
+/// The prefilters of the four candidates (misaligned) or of the line and the two faces (aligned)
+/// straight from the inputs, for inputs that need no validation, rescaling or angle test. Ready
+/// when
 ///  - 0 < Rj < Ri and 0 < Lj < Li (their finiteness: below),
 ///  - the angle tolerance is +-0 (eq. 5 is then decided exactly, and no sine is needed),
 ///  - both axes have |a|^2 in unit_axis' direct range (so each is finite and non-zero, and its
 ///    unit axis is a / sqrt(|a|^2), computed here as unit_axis does),
-///  - the prefilters' magnitude guard holds (candidate_prefilter.cpp), which also makes Ri and Li
-///    finite (Ri <= 2^100; an infinite or NaN Li makes |h_i|_1 infinite or NaN) and both poses'
-///    centres (a non-finite component of P_i or P_j makes that component of P_j - P_i, and so
-///    of a rim centre, infinite or NaN),
-///  - and eq. (5)'s floating-point filter proves the axes not parallel.
-/// Then every validate() passes, the joint is misaligned, and set_up would compute the very
-/// centres, errors and guard values computed here (the same operations in the same order; the
-/// rims and bases as P_j - P_i + (+-1) h and (+-1) h_i per lane, where adding -h is subtracting
-/// h, bit for bit; |0|_1 + |h_i|_1 = |h_i|_1 exactly): `clear` is what detect_misaligned's
-/// prove_candidates_clear would answer. False, `clear` untouched, otherwise.
-bool prefilter_if_ready(const JointDimensions& dimensions, const PartPose& bearing, const PartPose& journal,
-                        const DetectionOptions& options, detail::CandidatesClear& clear) {
+///  - and the prefilters' magnitude guard holds (candidate_prefilter.cpp), which also makes Ri and
+///    Li finite (Ri <= 2^100; an infinite or NaN Li makes |h_i|_1 infinite or NaN) and both
+///    poses' centres (a non-finite component of P_i or P_j makes that component of P_j - P_i,
+///    and so of a rim centre, infinite or NaN).
+/// Then every validate() passes, and set_up would compute the very centres, errors and guard
+/// values computed here (the same operations in the same order; the rims and bases as
+/// P_j - P_i + (+-1) h and (+-1) h_i per lane, where adding -h is subtracting h, bit for bit;
+/// |0|_1 + |h_i|_1 = |h_i|_1 exactly): `clear` is what detect_aligned's or detect_misaligned's
+/// prove_candidates_clear would answer.
+Prefilter prefilter_if_ready(const JointDimensions& dimensions, const PartPose& bearing, const PartPose& journal,
+                             const DetectionOptions& options) {
   using detail::Lanes;
   using detail::LaneVector3;
+  Prefilter found;
   const double Ri = dimensions.bearing_radius, Rj = dimensions.journal_radius;
   const double Li = dimensions.bearing_length, Lj = dimensions.journal_length;
   const Vector3& a_i = bearing.axis_W;
@@ -467,11 +483,13 @@ bool prefilter_if_ready(const JointDimensions& dimensions, const PartPose& beari
   const double squared_i = a_i.squaredNorm(), squared_j = a_j.squaredNorm();
   if (!((Rj > 0.0) & (Rj < Ri) & (Lj > 0.0) & (Lj < Li) & (options.parallel_angle_tolerance == 0.0) &
         detail::in_safe_square_range(squared_i) & detail::in_safe_square_range(squared_j))) {
-    return false;
+    return found;
   }
+  // eq. (5), as axes_exactly_parallel decides it; the cross product and its twin serve the axial
+  // prefilters too.
   const Vector3 cross = a_i.cross(a_j);
   const Vector3 twin = detail::abs_cross(a_i.cwiseAbs(), a_j.cwiseAbs());
-  if (!cross_proved_nonzero(cross, twin)) return false;
+  found.exactly_parallel = !cross_proved_nonzero(cross, twin) && cross_exactly_zero(a_i, a_j);
   const Vector3 a_i_hat = a_i / std::sqrt(squared_i), a_j_hat = a_j / std::sqrt(squared_j);
   const Vector3 h_i = (0.5 * Li) * a_i_hat;
   const Vector3 h_j = (0.5 * Lj) * a_j_hat;
@@ -480,19 +498,26 @@ bool prefilter_if_ready(const JointDimensions& dimensions, const PartPose& beari
   const LaneVector3 rims = detail::both_lanes(p_WPj) + detail::scaled(Lanes(toward_a, -toward_a), h_j);
   const Lanes rim_norms = detail::one_norm(rims);
   const double h_i_norm = h_i.cwiseAbs().sum();
+  const double p_WPj_norm = p_WPj.cwiseAbs().sum();
   constexpr double kHalfLargest = 0.5 * detail::kLargestGuardedInput;
-  if (!((h_i_norm + h_i_norm <= kHalfLargest) & (rim_norms[0] + rim_norms[1] <= kHalfLargest) &
-        (a_i.cwiseAbs().sum() <= detail::kLargestGuardedInput) &
-        (a_j.cwiseAbs().sum() <= detail::kLargestGuardedInput) & (Ri <= detail::kLargestGuardedInput))) {
-    return false;
-  }
-  const Lanes rim_errors = detail::offset_rounding_bound_of_norms<Lanes>(
-      Lanes::Constant(p_WPj.cwiseAbs().sum() + h_j.cwiseAbs().sum()), rim_norms);
+  // The guard's radial term: the rims when misaligned (already within the rims' half), the
+  // journal centre twice when aligned.
+  found.ready = (h_i_norm + h_i_norm <= kHalfLargest) & (rim_norms[0] + rim_norms[1] <= kHalfLargest) &
+                (!found.exactly_parallel | (p_WPj_norm + p_WPj_norm <= detail::kLargestGuardedInput)) &
+                (a_i.cwiseAbs().sum() <= detail::kLargestGuardedInput) &
+                (a_j.cwiseAbs().sum() <= detail::kLargestGuardedInput) & (Ri <= detail::kLargestGuardedInput);
+  if (!found.ready) return found;
+  const Lanes rim_errors =
+      detail::offset_rounding_bound_of_norms<Lanes>(Lanes::Constant(p_WPj_norm + h_j.cwiseAbs().sum()), rim_norms);
   const double base_error = detail::offset_rounding_bound_of_norms(h_i_norm, h_i_norm);
   const LaneVector3 bases = detail::scaled(Lanes(1.0, -1.0), h_i);
-  clear = detail::prove_candidates_clear_in_guard(
-      {rims, rim_errors, rims, rim_errors, bases, Lanes::Constant(base_error), a_i, a_j, cross, twin, Ri, Rj});
-  return true;
+  // Aligned, the line's test takes the journal's mid-length section (detect_aligned).
+  const LaneVector3 radial_centres = found.exactly_parallel ? detail::both_lanes(p_WPj) : rims;
+  const Lanes radial_errors =
+      found.exactly_parallel ? Lanes::Constant(detail::difference_rounding_bound(p_WPj)) : rim_errors;
+  found.clear = detail::prove_candidates_clear_in_guard({radial_centres, radial_errors, rims, rim_errors, bases,
+                                                         Lanes::Constant(base_error), a_i, a_j, cross, twin, Ri, Rj});
+  return found;
 }
 
 void validate(const DetectionOptions& options) {
@@ -518,18 +543,20 @@ JointContacts detect_contacts(const JointDimensions& dimensions, const PartPose&
 void detect_contacts(const JointDimensions& dimensions, const PartPose& bearing,
                      const PartPose& journal, JointContacts& out, const DetectionOptions& options) {
   // Every field the answer consists of is (re)set; contacts past contact_count are left alone.
-  detail::CandidatesClear clear;
-  const bool ready = prefilter_if_ready(dimensions, bearing, journal, options, clear);
-  if (ready && clear.radial[0] && clear.radial[1] && clear.axial[0] && clear.axial[1]) {
-    // Free flight, proved: what the general path below answers when all four are clear (four
-    // equal certificates, no contact, nothing to translate).
-    out.contact_count = 0;
-    out.aligned = false;
-    out.scenario = ContactScenario::none;
-    out.certificate = clear_certificate(options);
-    return;
-  }
-  if (!ready) {
+  const Prefilter prefilter = prefilter_if_ready(dimensions, bearing, journal, options);
+  if (prefilter.ready) {
+    // No contact, proved by the prefilters alone: what the general path below answers then (its
+    // certificates all clear_certificate, no contact, nothing to translate). Aligned, the line
+    // is tested on the first lane (detect_aligned).
+    const detail::CandidatesClear& c = prefilter.clear;
+    if (c.radial[0] && (prefilter.exactly_parallel || c.radial[1]) && c.axial[0] && c.axial[1]) {
+      out.contact_count = 0;
+      out.aligned = prefilter.exactly_parallel;
+      out.scenario = ContactScenario::none;
+      out.certificate = clear_certificate(options);
+      return;
+    }
+  } else {
     // The inline tests first: validate() formats its message and is out of line.
     if (!detail::passes_validation(dimensions)) validate(dimensions);
     if (!detail::passes_validation(bearing)) validate(bearing, "bearing");
@@ -541,7 +568,8 @@ void detect_contacts(const JointDimensions& dimensions, const PartPose& bearing,
   out.contact_count = 0;
   ContactPresence presence;
   CertificateAccumulator certificate;
-  const bool exactly_parallel = !ready && axes_exactly_parallel(bearing.axis_W, journal.axis_W);
+  const bool exactly_parallel =
+      prefilter.ready ? prefilter.exactly_parallel : axes_exactly_parallel(bearing.axis_W, journal.axis_W);
   bool aligned = exactly_parallel;
   if (!aligned && options.parallel_angle_tolerance > 0.0) {
     // |a_i_hat x a_j_hat| = sin(angle between the lines), compared in double.
@@ -549,10 +577,11 @@ void detect_contacts(const JointDimensions& dimensions, const PartPose& bearing,
     aligned = sine <= std::sin(options.parallel_angle_tolerance);
   }
   out.aligned = presence.aligned = aligned;
+  const detail::CandidatesClear* prefiltered = prefilter.ready ? &prefilter.clear : nullptr;
   if (aligned) {
-    detect_aligned(setup, options, exactly_parallel, out, presence, certificate);
+    detect_aligned(setup, options, exactly_parallel, prefiltered, out, presence, certificate);
   } else {
-    detect_misaligned(setup, options, ready ? &clear : nullptr, out, presence, certificate);
+    detect_misaligned(setup, options, prefiltered, out, presence, certificate);
   }
   out.scenario = classify_scenario(presence);
   out.certificate = certificate.result();

@@ -6,6 +6,7 @@
 #include "clearjoint/geometry/detect_contacts.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -449,23 +450,29 @@ void expect_identical(const JointContacts& a, const JointContacts& b) {
 }
 
 TEST(DetectContacts, ProvesFreeFlightStraightFromThePosesWithTheGeneralPathsAnswer) {
-  // With the angle tolerance 0 a misaligned joint goes through the free-flight proof of
-  // detect_contacts.cpp (prefilter_if_ready); any positive tolerance skips it, and 1e-300 rad
-  // aligns nothing here. The two answers must agree bit for bit, in free flight and in contact,
-  // for bearings in any pose, journals either way round and axes of any length.
+  // With the angle tolerance 0 the prefilters run straight from the poses (prefilter_if_ready in
+  // detect_contacts.cpp); any positive tolerance skips that, and 1e-300 rad aligns nothing that
+  // is not exactly parallel. The two answers must agree bit for bit, in free flight and in
+  // contact, misaligned and exactly aligned (a quarter of the poses: no tilt, and axis lengths
+  // that are powers of two, so that the rotation keeps the axes exactly parallel), for bearings
+  // in any pose, journals either way round and axes of any length.
   std::mt19937_64 rng(20261124);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   const double cr = kTable2.radial_clearance(), ca = kTable2.axial_clearance();
   const double max_tilt = 2.0 * cr / kTable2.journal_length;
   DetectionOptions general_path;
   general_path.parallel_angle_tolerance = 1e-300;
-  int free_flight = 0, in_contact = 0;
+  std::array<int, 2> free_flight{}, in_contact{};  // [aligned]
   for (int i = 0; i < 3000; ++i) {
     const RigidMotion motion = random_motion(rng, i % 2 == 0 ? 0.0 : 1e3);
     const double offset = 1.5 * cr * unit(rng), offset_azimuth = 2 * std::numbers::pi * unit(rng);
     const double shift = 1.5 * ca * (2 * unit(rng) - 1);
-    const double tilt = max_tilt * (0.001 + unit(rng)), tilt_azimuth = 2 * std::numbers::pi * unit(rng);
-    const double flip = i % 3 == 0 ? -1.0 : 1.0, axis_length = std::pow(2.0, 8 * unit(rng) - 4);
+    const bool aligned = i % 4 == 0;
+    const double tilt = aligned ? 0.0 : max_tilt * (0.001 + unit(rng));
+    const double tilt_azimuth = 2 * std::numbers::pi * unit(rng);
+    const double exponent = 8 * unit(rng) - 4;
+    const double flip = i % 3 == 0 ? -1.0 : 1.0;
+    const double axis_length = std::pow(2.0, aligned ? std::floor(exponent) : exponent);
     const PartPose bearing = moved(motion, bearing_on_z());
     const PartPose journal =
         moved(motion, {{offset * std::cos(offset_azimuth), offset * std::sin(offset_azimuth), shift},
@@ -476,11 +483,14 @@ TEST(DetectContacts, ProvesFreeFlightStraightFromThePosesWithTheGeneralPathsAnsw
     const JointContacts general = detect_contacts(kTable2, bearing, journal, general_path);
     SCOPED_TRACE(i);
     expect_identical(shortcut, general);
-    (shortcut.contact_count == 0 ? free_flight : in_contact) += 1;
+    EXPECT_EQ(shortcut.aligned, aligned);
+    (shortcut.contact_count == 0 ? free_flight : in_contact)[aligned] += 1;
   }
-  // Not vacuous: both outcomes are common in this family.
-  EXPECT_GT(free_flight, 300);
-  EXPECT_GT(in_contact, 300);
+  // Not vacuous: both outcomes are common in this family, aligned or not.
+  for (const bool aligned : {false, true}) {
+    EXPECT_GT(free_flight[aligned], 100) << aligned;
+    EXPECT_GT(in_contact[aligned], 100) << aligned;
+  }
 }
 
 TEST(DetectContacts, EveryScenarioIsInvariantUnderRigidMotionsOfTheWholeJoint) {
