@@ -14,6 +14,7 @@
 
 #include <benchmark/benchmark.h>
 
+#include "plain_circle_plane.hpp"
 #include "uniform_source.hpp"
 
 #include <cmath>
@@ -287,6 +288,15 @@ void register_base(const std::string& name, std::vector<RimPlaneQuery> inputs,
       });
 }
 
+/// The plain-double measuring stick of plain_circle_plane.hpp on the same inputs (no counters:
+/// its answers are not certified and are not counted).
+template <class Plain>
+void register_plain_base(const std::string& name, std::vector<RimPlaneQuery> inputs, Plain plain) {
+  benchmark::RegisterBenchmark(name.c_str(), [inputs = std::move(inputs), plain](benchmark::State& state) {
+    time_queries(state, inputs, {}, [&plain](const RimPlaneQuery& q) { return plain(q.rim, q.base); });
+  });
+}
+
 /// The inputs whose certified answer has `topology` (to split a family's cost by outcome).
 std::vector<RimPlaneQuery> with_topology(const std::vector<RimPlaneQuery>& queries,
                                          geo::CirclePlaneTopology topology) {
@@ -322,6 +332,17 @@ void register_all() {
                 with_topology(base_random, geo::CirclePlaneTopology::disjoint), kCertified);
   register_base("circle_plane/random_pose_crossing/certified",
                 with_topology(base_random, geo::CirclePlaneTopology::two_crossings), kCertified);
+  // The arithmetic the contract needs, without proof (plain_circle_plane.hpp): the whole answer,
+  // and the topology with the depth alone.
+  register_plain_base("circle_plane/random_pose/plain_double_floor", base_random, clearjoint::bench::plain_circle_plane);
+  register_plain_base("circle_plane/random_pose/plain_double_topology_and_depth", base_random,
+                      clearjoint::bench::plain_circle_plane_depth);
+  register_plain_base("circle_plane/random_pose_disjoint/plain_double_floor",
+                      with_topology(base_random, geo::CirclePlaneTopology::disjoint), clearjoint::bench::plain_circle_plane);
+  register_plain_base("circle_plane/random_pose_crossing/plain_double_floor",
+                      with_topology(base_random, geo::CirclePlaneTopology::two_crossings),
+                      clearjoint::bench::plain_circle_plane);
+  register_plain_base("circle_plane/aligned_journal/plain_double_floor", base_aligned, clearjoint::bench::plain_circle_plane);
   register_wall("circle_cylinder/aligned_journal/certified", wall_aligned, kCertified);
   register_wall("circle_cylinder/aligned_journal/uncertified", wall_aligned, kUncertified);
   register_base("circle_plane/aligned_journal/certified", base_aligned, kCertified);

@@ -158,9 +158,16 @@ inline bool in_two_product_range(double x) {
 /// a*b = p + e exactly with |e| <= ulp(p)/2, and that representation is unique, so the real
 /// products are equal iff both parts are). Valid while no product underflows or overflows and
 /// no factor exceeds 2^996 (the split's own overflow); returns false, "not proved equal", out of
-/// that range.
+/// that range. Two cheaper exits come first, valid for any factors: rounding is monotone, so
+/// real products that are equal round to the same double (p1 != p2 proves them different); and a
+/// real product is zero exactly when a factor is, which decides the components of a cross
+/// product of axis-aligned vectors (the aligned joints of the paper's planar examples) without
+/// the split.
 inline bool exactly_equal_products(double a, double b, double c, double d) {
   constexpr double kSplitter = 134217729.0;  // 2^27 + 1
+  const double p1 = a * b, p2 = c * d;
+  if (p1 != p2) return false;
+  if ((a == 0.0 || b == 0.0) && (c == 0.0 || d == 0.0)) return true;
   if (!(in_two_product_range(a) && in_two_product_range(b) && in_two_product_range(c) &&
         in_two_product_range(d))) {
     return false;
@@ -170,8 +177,6 @@ inline bool exactly_equal_products(double a, double b, double c, double d) {
     const double ys = kSplitter * y, yh = ys - (ys - y), yl = y - yh;
     return ((xh * yh - p) + xh * yl + xl * yh) + xl * yl;
   };
-  const double p1 = a * b, p2 = c * d;
-  if (p1 != p2) return false;
   return two_product_error(a, b, p1) == two_product_error(c, d, p2);
 }
 

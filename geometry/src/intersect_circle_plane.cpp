@@ -135,10 +135,18 @@ struct PointErrors {
   int scale_exponent = 0;
 };
 
-/// `a_priori`: plane_a_priori_bounds_apply(circle, plane), evaluated by the caller.
+/// `q`: the quantities of circle and plane, a priori or with running error bounds.
 CirclePlaneIntersection intersect_scaled(const Circle3& circle, const Plane3& plane,
                                          const IntersectionOptions& options, const PointErrors& errors,
-                                         bool a_priori);
+                                         detail::PlaneQuantities& q);
+/// Inputs that plane_quantities_if_ready turns away, validated (InvalidInput otherwise) and
+/// rescaled by powers of two where that is exact: lengths by 2^-exponent, each normal on its own.
+struct Rescaled {
+  Circle3 circle;
+  Plane3 plane;
+  int exponent = 0;
+};
+Rescaled rescale(const Circle3& circle, const Plane3& plane);
 
 /// Leaves `out` alone when every value and (for a proved answer) every bound is finite; otherwise
 /// marks it uncertain with kNotRepresentable and removes its bounds.
@@ -175,38 +183,26 @@ CirclePlaneIntersection detail::intersect_circle_plane(const Circle3& circle_in,
                                                        const RoundedPoint* centre,
                                                        const RoundedPoint* point) {
   // Realistic inputs are valid, inside the a priori guard and need no rescaling
-  // (plane_inputs_ready): for them the checks and the rescaling, a fifth of a disjoint query, are
-  // skipped.
-  const bool ready = detail::plane_inputs_ready(circle_in, plane_in);
-  Circle3 circle = circle_in;
-  Plane3 plane = plane_in;
-  int e = 0;
+  // (plane_quantities_if_ready): for them the checks, the rescaling and the copies, a fifth of a
+  // disjoint query, are skipped.
+  auto [ready, q] = detail::plane_quantities_if_ready(circle_in, plane_in);
+  Rescaled rescaled;
+  const Circle3* circle = &circle_in;
+  const Plane3* plane = &plane_in;
   if (!ready) {
-    // The inline test, then validate(), which formats its message and is out of line.
-    if (!detail::passes_validation(circle_in)) validate(circle_in, "circle");
-    if (!detail::passes_validation(plane_in)) validate(plane_in, "plane");
-    // Exact power-of-two rescaling, as in intersect_circle_cylinder (scale_normalisation.hpp).
-    circle.normal = detail::direction_scaled(circle_in.normal);
-    plane.normal = detail::direction_scaled(plane_in.normal);
-    e = detail::length_exponent(std::max({circle.center.cwiseAbs().maxCoeff(),
-                                          plane.point.cwiseAbs().maxCoeff(), circle.radius}));
-    if (e != 0 && !(detail::scales_exactly(circle.center, e) && detail::scales_exactly(circle.radius, e) &&
-                    detail::scales_exactly(plane.point, e))) {
-      e = 0;
-    }
-    if (e != 0) {
-      circle.center = detail::scaled(circle.center, e);
-      circle.radius = std::ldexp(circle.radius, -e);
-      plane.point = detail::scaled(plane.point, e);
-    }
+    rescaled = rescale(circle_in, plane_in);
+    circle = &rescaled.circle;
+    plane = &rescaled.plane;
+    q = detail::plane_a_priori_bounds_apply(*circle, *plane) ? detail::plane_quantities_a_priori(*circle, *plane)
+                                                             : detail::plane_quantities_running_error(*circle, *plane);
   }
+  const int e = rescaled.exponent;
   PointErrors errors;
   if (centre != nullptr || point != nullptr) {
     errors = {centre == nullptr ? 0.0 : detail::scaled_error(centre->error, e),
               point == nullptr ? 0.0 : detail::scaled_error(point->error, e), centre, point, e};
   }
-  const bool a_priori = ready || detail::plane_a_priori_bounds_apply(circle, plane);
-  CirclePlaneIntersection out = intersect_scaled(circle, plane, options, errors, a_priori);
+  CirclePlaneIntersection out = intersect_scaled(*circle, *plane, options, errors, q);
   if (e != 0) {
     for (int i = 0; i < out.crossing_count; ++i) {
       out.crossings[i].point = detail::scaled(out.crossings[i].point, -e);
@@ -221,13 +217,35 @@ CirclePlaneIntersection detail::intersect_circle_plane(const Circle3& circle_in,
 
 namespace {
 
+Rescaled rescale(const Circle3& circle_in, const Plane3& plane_in) {
+  // The inline test, then validate(), which formats its message and is out of line.
+  if (!detail::passes_validation(circle_in)) validate(circle_in, "circle");
+  if (!detail::passes_validation(plane_in)) validate(plane_in, "plane");
+  // Exact power-of-two rescaling, as in intersect_circle_cylinder (scale_normalisation.hpp).
+  Rescaled r{circle_in, plane_in, 0};
+  r.circle.normal = detail::direction_scaled(circle_in.normal);
+  r.plane.normal = detail::direction_scaled(plane_in.normal);
+  int e = detail::length_exponent(std::max({r.circle.center.cwiseAbs().maxCoeff(),
+                                            r.plane.point.cwiseAbs().maxCoeff(), r.circle.radius}));
+  if (e != 0 && !(detail::scales_exactly(r.circle.center, e) && detail::scales_exactly(r.circle.radius, e) &&
+                  detail::scales_exactly(r.plane.point, e))) {
+    e = 0;
+  }
+  if (e != 0) {
+    r.circle.center = detail::scaled(r.circle.center, e);
+    r.circle.radius = std::ldexp(r.circle.radius, -e);
+    r.plane.point = detail::scaled(r.plane.point, e);
+  }
+  r.exponent = e;
+  return r;
+}
+
+
 CirclePlaneIntersection intersect_scaled(const Circle3& circle, const Plane3& plane,
                                          const IntersectionOptions& options, const PointErrors& errors,
-                                         bool a_priori) {
+                                         detail::PlaneQuantities& q) {
   CirclePlaneIntersection out;
 
-  detail::PlaneQuantities q = a_priori ? detail::plane_quantities_a_priori(circle, plane)
-                                       : detail::plane_quantities_running_error(circle, plane);
   // Every bound below then holds for the exact centre and point too (rounded_point.hpp).
   if (errors.centre + errors.point != 0.0) detail::widen_for_point_error(q, errors.centre + errors.point);
   const Bounded& s = q.s;

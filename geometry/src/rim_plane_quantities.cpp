@@ -23,6 +23,7 @@ struct APrioriTerms {
   Vector3 w, w_abs;
   double w2, w2_abs, nc2;
   double discriminant, discriminant_abs;
+  double nc_1, np_1;  ///< 1-norms of the normals, for the guard (plane_quantities_if_ready)
 };
 APrioriTerms a_priori_terms(const Circle3& circle, const Plane3& plane) {
   // Component by component: the same operations as Eigen's cwiseAbs/cross/dot, without the
@@ -47,14 +48,15 @@ APrioriTerms a_priori_terms(const Circle3& circle, const Plane3& plane) {
   const double r2 = circle.radius * circle.radius;
   t.discriminant = t.s * t.s * t.nc2 - r2 * t.w2;
   t.discriminant_abs = t.s_abs * t.s_abs * t.nc2 + r2 * t.w2_abs;
+  t.nc_1 = cx + cy + cz;
+  t.np_1 = px + py + pz;
   return t;
 }
 
 }  // namespace
 
-PlaneQuantities plane_quantities_a_priori(const Circle3& circle, const Plane3& plane) {
-  const APrioriTerms t = a_priori_terms(circle, plane);
-  const double np2 = plane.normal.squaredNorm();
+namespace {
+PlaneQuantities plane_quantities_from_terms(const APrioriTerms& t, double np2) {
   return {a_priori_with_underflow(t.s, t.s_abs),
           {a_priori_with_underflow(t.w.x(), t.w_abs.x()), a_priori_with_underflow(t.w.y(), t.w_abs.y()),
            a_priori_with_underflow(t.w.z(), t.w_abs.z())},
@@ -62,6 +64,12 @@ PlaneQuantities plane_quantities_a_priori(const Circle3& circle, const Plane3& p
           a_priori_with_underflow(t.nc2, t.nc2),
           a_priori_with_underflow(np2, np2),
           a_priori_with_underflow(t.discriminant, t.discriminant_abs)};
+}
+
+}  // namespace
+
+PlaneQuantities plane_quantities_a_priori(const Circle3& circle, const Plane3& plane) {
+  return plane_quantities_from_terms(a_priori_terms(circle, plane), plane.normal.squaredNorm());
 }
 
 /// The running error bound of error_bounded.hpp, for inputs outside the a priori guard (it also
@@ -105,6 +113,13 @@ bool normals_in_guard(const GuardMagnitudes& g) {
          (g.nc2 >= kSmallestNormalSquare) & (g.np2 >= kSmallestNormalSquare);
 }
 
+bool inputs_ready(const GuardMagnitudes& g, double radius) {
+  // The lengths: the largest is at least the radius and at most the 1-norm sum, so both inside
+  // scale_normalisation.hpp's unscaled range put it there.
+  return (g.lengths < kLargestUnscaledLength) & (radius >= kSmallestUnscaledLength) &
+         (radius < kLargestUnscaledLength) & normals_in_guard(g);
+}
+
 }  // namespace
 
 bool plane_a_priori_bounds_apply(const Circle3& circle, const Plane3& plane) {
@@ -115,12 +130,17 @@ bool plane_a_priori_bounds_apply(const Circle3& circle, const Plane3& plane) {
   return (g.lengths <= kLargestGuardedInput) & (circle.radius <= kLargestGuardedInput) & normals_in_guard(g);
 }
 
-bool plane_inputs_ready(const Circle3& circle, const Plane3& plane) {
-  // The lengths: the largest is at least the radius and at most the 1-norm sum, so both inside
-  // scale_normalisation.hpp's unscaled range put it there.
-  const GuardMagnitudes g = guard_magnitudes(circle, plane);
-  return (g.lengths < kLargestUnscaledLength) & (circle.radius >= kSmallestUnscaledLength) &
-         (circle.radius < kLargestUnscaledLength) & normals_in_guard(g);
+ReadyPlaneQuantities plane_quantities_if_ready(const Circle3& circle, const Plane3& plane) {
+  const APrioriTerms t = a_priori_terms(circle, plane);
+  const Vector3& c = circle.center;
+  const Vector3& p = plane.point;
+  const Vector3& np = plane.normal;
+  const double np2 = np.x() * np.x() + np.y() * np.y() + np.z() * np.z();
+  const GuardMagnitudes g{(std::fabs(c.x()) + std::fabs(c.y()) + std::fabs(c.z())) +
+                              (std::fabs(p.x()) + std::fabs(p.y()) + std::fabs(p.z())),
+                          t.nc_1, t.np_1, t.nc2, np2};
+  if (!inputs_ready(g, circle.radius)) return {};
+  return {true, plane_quantities_from_terms(t, np2)};
 }
 
 DeepestDirection deepest_direction(const Circle3& circle, const PlaneQuantities& q) {

@@ -21,15 +21,21 @@ struct PlaneQuantities {
 
 /// Whether the a priori bounds of a_priori_bounds.hpp hold for these inputs (magnitudes).
 bool plane_a_priori_bounds_apply(const Circle3& circle, const Plane3& plane);
-/// Inputs that need neither validation nor rescaling (scale_normalisation.hpp) and satisfy
-/// plane_a_priori_bounds_apply: finite (NaN and infinity fail every comparison here), normals
-/// with squares >= 2^-200 (so non-zero), radius and the largest length within the unscaled range
-/// [2^-60, 2^61). Without the normals' power-of-two rescaling every double step of the query
-/// scales exactly with them inside these limits, so the answers are those of the rescaled inputs
-/// up to the bounds' underflow allowance.
-bool plane_inputs_ready(const Circle3& circle, const Plane3& plane);
 /// Plain double with a priori bounds; only when plane_a_priori_bounds_apply.
 PlaneQuantities plane_quantities_a_priori(const Circle3& circle, const Plane3& plane);
+/// For inputs that need neither validation nor rescaling (scale_normalisation.hpp) and satisfy
+/// plane_a_priori_bounds_apply, {true, plane_quantities_a_priori}; {false, zero} otherwise. Ready means: finite (NaN and infinity fail every comparison here),
+/// normals with squares >= 2^-200 (so non-zero), radius and the largest length within the
+/// unscaled range [2^-60, 2^61). Without the normals' power-of-two rescaling every double step of
+/// the query scales exactly with them inside these limits, so the answers are those of the
+/// rescaled inputs up to the bounds' underflow allowance. One pass: the guard's absolute values
+/// and squares of the normals are the a priori terms' too (as two out-of-line calls they were
+/// computed twice).
+struct ReadyPlaneQuantities {
+  bool ready = false;
+  PlaneQuantities q;  ///< zero when not ready
+};
+ReadyPlaneQuantities plane_quantities_if_ready(const Circle3& circle, const Plane3& plane);
 /// Running error bounds (error_bounded.hpp): any finite input; overflow gives non-finite bounds.
 PlaneQuantities plane_quantities_running_error(const Circle3& circle, const Plane3& plane);
 

@@ -435,7 +435,7 @@ TEST(CirclePlane, IsInvariantUnderRandomRigidMotions) {
 }
 
 TEST(CirclePlane, GivesBitwiseTheSameAnswerWhenANormalIsScaledByAPowerOfTwo) {
-  // Realistic inputs skip the normals' power-of-two rescaling (plane_inputs_ready); every double
+  // Realistic inputs skip the normals' power-of-two rescaling (plane_quantities_if_ready); every double
   // step then scales exactly with the normals, so the values must not move by a single bit.
   constexpr unsigned kSeed = 1303;
   RecordProperty("seed", static_cast<int>(kSeed));

@@ -362,5 +362,67 @@ TEST(ErrorBounded, SinCosOfADoubleAngleEnclosesTheExactValues) {
   }
 }
 
+/// exactly_equal_products must never claim equal products that differ; inside its range it must
+/// also recognise every equal pair (256-bit MPFR holds a product of two doubles exactly).
+::testing::AssertionResult DecidesProductEqualityCorrectly(double a, double b, double c, double d) {
+  const bool claimed = exactly_equal_products(a, b, c, d);
+  const bool equal = Real(a) * Real(b) == Real(c) * Real(d);
+  const bool decidable = in_two_product_range(a) && in_two_product_range(b) &&
+                         in_two_product_range(c) && in_two_product_range(d);
+  if (claimed && !equal) {
+    return ::testing::AssertionFailure() << "claimed equal: " << std::hexfloat << a << " * " << b
+                                         << " and " << c << " * " << d;
+  }
+  if (!claimed && equal && decidable) {
+    return ::testing::AssertionFailure() << "missed equal products in range: " << std::hexfloat
+                                         << a << " * " << b << " and " << c << " * " << d;
+  }
+  return ::testing::AssertionSuccess();
+}
+
+TEST(ExactlyEqualProducts, RecognisesEqualProductsAndRejectsProductsDifferingBelowRounding) {
+  std::mt19937_64 rng(20261123);
+  std::uniform_real_distribution<double> mantissa(1.0, 2.0);
+  std::uniform_int_distribution<int> exponent(-60, 60);
+  for (int i = 0; i < 2000; ++i) {
+    const double a = std::ldexp(mantissa(rng), exponent(rng));
+    const double b = std::ldexp(mantissa(rng), exponent(rng));
+    // Equal: a power of two moved between the factors.
+    ASSERT_TRUE(DecidesProductEqualityCorrectly(a, b, 2 * a, 0.5 * b));
+    ASSERT_TRUE(exactly_equal_products(a, b, 2 * a, 0.5 * b));
+    // Different by one ulp of a factor: the rounded products are often equal, the real ones
+    // never are (the low parts of the two-products differ).
+    const double a_next = std::nextafter(a, 2 * a);
+    ASSERT_TRUE(DecidesProductEqualityCorrectly(a, b, a_next, b));
+    ASSERT_FALSE(exactly_equal_products(a, b, a_next, b));
+    ASSERT_TRUE(DecidesProductEqualityCorrectly(a, b, -a, -b));
+    ASSERT_TRUE(DecidesProductEqualityCorrectly(a, -b, -a, b));
+  }
+}
+
+TEST(ExactlyEqualProducts, ProductsWithAZeroFactorAreEqualAtAnyMagnitude) {
+  // The cross products of exactly parallel axis-aligned normals: every component is 0 * x - 0 * y.
+  for (const double x : {1.0, -0.0, 0x1p-1074, 1e-300, 1e300, 0x1p1000, -3.5}) {
+    EXPECT_TRUE(exactly_equal_products(0.0, x, -0.0, 1.0)) << x;
+    EXPECT_TRUE(exactly_equal_products(x, 0.0, 0.0, x)) << x;
+    EXPECT_TRUE(DecidesProductEqualityCorrectly(x, 0.0, 0.0, x)) << x;
+  }
+  // A product that underflows to zero is not zero: not proved equal to one with a zero factor.
+  EXPECT_FALSE(exactly_equal_products(1e-200, 1e-200, 0.0, 1.0));
+  EXPECT_TRUE(DecidesProductEqualityCorrectly(1e-200, 1e-200, 0.0, 1.0));
+}
+
+TEST(ExactlyEqualProducts, OutOfRangeOrNonFiniteFactorsAreNeverClaimedEqual) {
+  const double inf = std::numeric_limits<double>::infinity();
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_FALSE(exactly_equal_products(nan, 1.0, nan, 1.0));
+  EXPECT_FALSE(exactly_equal_products(inf, 1.0, inf, 1.0));
+  // Both products overflow to the same infinity; their real values differ.
+  EXPECT_FALSE(exactly_equal_products(1e300, 1e300, 1e300, 2e300));
+  EXPECT_TRUE(DecidesProductEqualityCorrectly(1e300, 1e300, 1e300, 2e300));
+  // Equal real products outside the split's range: "not proved equal" is the allowed answer.
+  EXPECT_TRUE(DecidesProductEqualityCorrectly(0x1p-460, 0x1p10, 0x1p-450, 1.0));
+}
+
 }  // namespace
 }  // namespace clearjoint::geometry::detail

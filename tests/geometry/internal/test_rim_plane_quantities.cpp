@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <random>
 #include <vector>
@@ -194,7 +195,35 @@ TEST(PlaneQuantities, DeepestDirectionEnclosesItsExactValueAndPointsWhereThePlan
   }
 }
 
-TEST(PlaneInputsReady, HoldsForRealisticInputsAndFailsForEveryBadOrOutOfRangeField) {
+bool plane_inputs_ready(const Circle3& circle, const Plane3& plane) {
+  return plane_quantities_if_ready(circle, plane).ready;
+}
+
+bool same_bits(const Bounded& a, const Bounded& b) {
+  return std::memcmp(&a.value, &b.value, sizeof(double)) == 0 &&
+         std::memcmp(&a.error, &b.error, sizeof(double)) == 0;
+}
+
+TEST(PlaneQuantitiesIfReady, GivesTheAPrioriQuantitiesBitForBitWhenTheInputsAreReady) {
+  std::mt19937_64 rng(20261123);
+  int ready = 0;
+  for (int i = 0; i < 3000; ++i) {
+    const double scale = i % 3 == 0 ? 1e-12 : (i % 3 == 1 ? 1.0 : 1e12);
+    const Pose pose = random_pose(rng, scale, -1.0);
+    const auto [is_ready, q] = plane_quantities_if_ready(pose.circle, pose.plane);
+    if (!is_ready) continue;
+    ++ready;
+    ASSERT_TRUE(plane_a_priori_bounds_apply(pose.circle, pose.plane)) << i;
+    const PlaneQuantities a = plane_quantities_a_priori(pose.circle, pose.plane);
+    EXPECT_TRUE(same_bits(q.s, a.s) && same_bits(q.w.x, a.w.x) && same_bits(q.w.y, a.w.y) &&
+                same_bits(q.w.z, a.w.z) && same_bits(q.w2, a.w2) && same_bits(q.nc2, a.nc2) &&
+                same_bits(q.np2, a.np2) && same_bits(q.discriminant, a.discriminant))
+        << i;
+  }
+  EXPECT_GT(ready, 2000);  // every scale above lies inside the unscaled range
+}
+
+TEST(PlaneQuantitiesIfReady, HoldsForRealisticInputsAndFailsForEveryBadOrOutOfRangeField) {
   const Circle3 rim{Vector3(0.001, -0.002, 0.01), Vector3(0.01, 0.0, 1.0), 0.0099};
   const Plane3 base{Vector3(0.0, 0.0, 0.01), Vector3(0.0, 0.0, 1.0)};
   EXPECT_TRUE(plane_inputs_ready(rim, base));
