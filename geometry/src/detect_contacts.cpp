@@ -46,11 +46,12 @@ bool products_equal(double a, double b, double c, double d) {
 /// when `cross` = a x b (rounded) has such a component, `twin` = abs_cross(|a|, |b|).
 bool cross_proved_nonzero(const Vector3& cross, const Vector3& twin) {
   constexpr double kProductUnderflow = 4 * detail::kUnderflowError;
-  bool nonzero = false;
   for (int i = 0; i < 3; ++i) {
-    nonzero |= std::fabs(cross[i]) > detail::kGamma64 * twin[i] * detail::kMagnitudeInflation + kProductUnderflow;
+    if (std::fabs(cross[i]) > detail::kGamma64 * twin[i] * detail::kMagnitudeInflation + kProductUnderflow) {
+      return true;
+    }
   }
-  return nonzero;
+  return false;
 }
 
 /// eq. (5): a_i x a_j = 0, decided exactly on the stored doubles. First the filter (every
