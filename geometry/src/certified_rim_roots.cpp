@@ -64,9 +64,9 @@ bool enclose_simple_root(const RimDistancePolynomial& g, double theta, int direc
   return false;
 }
 
-/// Newton near a base angle whose sine and cosine come from one libm call; later points are
-/// reached by angle addition (approximate_near). One iteration per call of `step`, so that
-/// tier 1 can run its two roots in lockstep: each run is a chain of dependent divisions and
+/// Newton near a grid angle whose sine and cosine come from a table (angle_grid.hpp); every
+/// iterate is reached by angle addition (approximate_near). One iteration per call of `step`, so
+/// that tier 1 can run its two roots in lockstep: each run is a chain of dependent divisions and
 /// polynomial evaluations, and two independent chains side by side overlap in the processor
 /// (the arithmetic of each run is exactly what it would be alone).
 struct NewtonRun {
@@ -75,12 +75,17 @@ struct NewtonRun {
   double slope = 0.0;  ///< |g'| at the last iterate evaluated
   bool running = true;
 
-  explicit NewtonRun(double guess) : base(guess) {}
+  /// Starts at `guess` exactly: the grid angle nearest to it plus the (exact) offset.
+  explicit NewtonRun(double guess) {
+    const GridAngle start = grid_angle(guess);
+    base = start.base;
+    offset = start.offset;
+  }
 
-  /// Iteration `i` (0-based), if the run has not stopped.
-  void step(const RimDistancePolynomial& g, int i) {
+  /// One iteration, if the run has not stopped.
+  void step(const RimDistancePolynomial& g) {
     if (!running) return;
-    const ValueAndSlope at = i == 0 ? g.approximate_at_base(base) : g.approximate_near(base, offset);
+    const ValueAndSlope at = g.approximate_near(base, offset);
     slope = std::fabs(at.slope);
     const double change = at.value / at.slope;
     if (!std::isfinite(change)) {
@@ -89,8 +94,11 @@ struct NewtonRun {
     }
     const double next = offset - change;
     if (std::fabs(next) > kMaxAngleOffset) {
-      base = AngleBase(base.angle + next);  // rare: a poor first-harmonic guess
-      offset = 0.0;
+      // The next iterate lies beyond the angle addition's range from the grid angle (a poor
+      // first-harmonic guess): move to the grid angle nearest to it, a table look-up.
+      const GridAngle moved = grid_angle(base.angle + next);
+      base = moved.base;
+      offset = moved.offset;
       return;
     }
     offset = next;
@@ -108,8 +116,11 @@ bool enclose_after_newton(const RimDistancePolynomial& g, const NewtonRun& run, 
   const AngleBase& base = run.base;
   const double offset = run.offset, slope = run.slope;
   const double angle = base.angle + offset;
-  // The reported angle is the rounded sum: it is within u |angle| of base + offset.
-  const double rounding = 2 * kUnitRoundoff * std::fabs(angle) + kUnderflowError;
+  // The reported angle is the rounded sum, within u |angle| of base + offset; the proof's
+  // sign checks are at base + (offset -+ eps), whose sums offset -+ eps are each within
+  // u (|offset| + eps) of the exact ones (the (1 + 4u) on eps below covers the u eps).
+  const double rounding =
+      2 * kUnitRoundoff * (std::fabs(angle) + std::fabs(offset)) + kUnderflowError;
   // First trial: twice the root's uncertainty, |g error| / |g'|, with g's error budget being the
   // coefficient errors plus a few ulps of the terms; later trials grow by kEnclosureGrowth. The
   // slope is the last Newton iterate's: a heuristic for the first trial only.
@@ -168,12 +179,12 @@ bool first_harmonic_proof(const RimDistancePolynomial& g, RimRoots& result) {
   // If there are two roots, they lie at psi = +-acos(-k0 / A) to first order; g decreases through
   // the + one. These are Newton's starting guesses, which the second harmonic moves the roots
   // away from by far more than the approximations' 4e-7 rad (angles.hpp): libm's atan2 and acos
-  // would buy nothing. Formed (with their libm sine and cosine) before the proof that there are
-  // two roots, which nearly every rim that gets here has: the chain of square roots, divisions
-  // and the sine-cosine calls then overlaps with the proof's arithmetic instead of following it.
+  // would buy nothing. Formed (with their grid angles, angle_grid.hpp) before the proof that
+  // there are two roots, which nearly every rim that gets here has: the chain of square roots
+  // and divisions then overlaps with the proof's arithmetic instead of following it.
   const double phi = approximate_atan2(g.k[2].value, g.k[1].value);
   const double beta = approximate_acos(-k0.value / amplitude.value);
-  NewtonRun runs[2] = {NewtonRun(wrap_angle(phi - beta)), NewtonRun(wrap_angle(phi + beta))};
+  NewtonRun runs[2] = {NewtonRun(phi - beta), NewtonRun(phi + beta)};
 
   // sin(alpha) = 2 Hd / A: the factor 2 leaves room for rounding; beyond 1/2 the monotone
   // arcs get too short to be useful and tier 2 is the better tool.
@@ -203,8 +214,8 @@ bool first_harmonic_proof(const RimDistancePolynomial& g, RimRoots& result) {
 
   const int directions[2] = {+1, -1};
   for (int i = 0; i < kMaxNewtonSteps; ++i) {
-    runs[0].step(g, i);
-    runs[1].step(g, i);
+    runs[0].step(g);
+    runs[1].step(g);
   }
   for (int i = 0; i < 2; ++i) {
     if (!enclose_after_newton(g, runs[i], directions[i], result.roots[i])) return false;

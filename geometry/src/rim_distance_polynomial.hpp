@@ -6,6 +6,7 @@
 #include <cmath>
 #include <optional>
 
+#include "angle_grid.hpp"
 #include "clearjoint/geometry/primitives.hpp"
 #include "error_bounded.hpp"
 
@@ -15,18 +16,10 @@ namespace clearjoint::geometry::detail {
 ///          = dist(x(theta), axis)^2 - R^2   [m^2],
 /// x(theta) the rim point of CircleFrame angle theta. g > 0: beyond the wall. Each coefficient
 /// carries a rigorous bound on its distance to the exact coefficient of the stored primitives.
-/// Largest offset for which the Taylor sine and cosine of AngleBase are used: their truncation
-/// error is below (1/16)^9 / 9! ~ 4e-17 for the sine, smaller for the cosine.
+/// Largest offset from an AngleBase (angle_grid.hpp) for which the Taylor sine and cosine are
+/// used: their truncation error is below (1/16)^9 / 9! ~ 4e-17 for the sine, smaller for the
+/// cosine.
 inline constexpr double kMaxAngleOffset = 1.0 / 16;
-
-/// An angle with its sine and cosine from libm (2 ulps each, see error_bounded.hpp; the bound
-/// is kAngleAdditionTrigError's first term, not stored). Plain doubles, not sincos_of's Bounded:
-/// no reader needs their error fields, and forming them cost ~20 instructions per Newton run.
-struct AngleBase {
-  double angle;
-  double cos, sin;
-  explicit AngleBase(double theta) : angle(theta), cos(std::cos(theta)), sin(std::sin(theta)) {}
-};
 
 /// cos and sin of one angle (cos_sin_near).
 struct CosSin {
@@ -53,14 +46,11 @@ struct RimDistancePolynomial {
   /// g / g' at theta from one sine-cosine evaluation (the Newton step).
   double approximate_newton_step(double theta) const;
   /// g, g' near a base angle whose sine and cosine are known, at the real angle
-  /// base + offset (|offset| <= kMaxAngleOffset): one libm call serves a whole Newton run and
-  /// its proof. See AngleBase. Inline (below): they are the inner loop of tier 1, called a dozen
-  /// times per crossing rim, and a call cost a third of each.
+  /// base + offset (|offset| <= kMaxAngleOffset): one table look-up (angle_grid.hpp) serves a
+  /// whole Newton run and its proof. Inline (below): they are the inner loop of tier 1, called a
+  /// dozen times per crossing rim, and a call cost a third of each.
   Bounded value_near(const AngleBase& base, double offset) const;
   ValueAndSlope approximate_near(const AngleBase& base, double offset) const;
-  /// approximate_near(base, 0.0), bit for bit, without the Taylor polynomials (at +0 they are
-  /// exactly 0 and 1): the first Newton iterate of every root.
-  ValueAndSlope approximate_at_base(const AngleBase& base) const;
   /// g, g' (plain double) from a cosine and sine of the angle.
   ValueAndSlope approximate_at(CosSin t) const;
   /// Sum of the coefficient error bounds: a bound on the coefficient part of g's error.
@@ -75,18 +65,22 @@ struct RimDistancePolynomial {
 /// Taylor polynomials of sin (degree 7) and cos (degree 8) at 0, for |x| <= kMaxAngleOffset.
 /// Error: Lagrange remainders |x|^9/9! and |x|^10/10!, plus Horner rounding: every partial result
 /// is at most 1 in magnitude (at most x^2/2 inside), so the cosine is off by < 2u and the sine by
-/// < 3u |x| (the rounded constants 1/6, 1/120, ... add < u x^2); 4u covers both.
+/// < 3u |x| (the rounded constants 1/6, 1/120, ..., 1/5040, 1/40320 add < u x^2); 4u covers
+/// both. The innermost terms multiply by the rounded reciprocals instead of dividing by 5040
+/// and 40320: one rounding more (the constant's), of a term below x^6 / 5040 < 2^-36, so far
+/// below the 4u; and the divisions were the longest latencies on the Newton step's chain.
 struct SmallAngleTrig {
   double sin, cos;
 };
 inline SmallAngleTrig small_angle_trig(double x) {
   const double x2 = x * x;
-  return {x * (1 - x2 * (1.0 / 6 - x2 * (1.0 / 120 - x2 / 5040))),
-          1 - x2 * (0.5 - x2 * (1.0 / 24 - x2 * (1.0 / 720 - x2 / 40320)))};
+  return {x * (1 - x2 * (1.0 / 6 - x2 * (1.0 / 120 - x2 * (1.0 / 5040)))),
+          1 - x2 * (0.5 - x2 * (1.0 / 24 - x2 * (1.0 / 720 - x2 * (1.0 / 40320))))};
 }
 
 /// cos and sin at base + offset by angle addition: the ones approximate_near and value_near use.
-/// Bound on |computed - true| (kAngleAdditionUlps): libm's base sine and cosine (4u each,
+/// Bound on |computed - true| (kAngleAdditionUlps): the base's sine and cosine (kAngleGrid's
+/// correctly rounded values, within u each; the budget still allows libm's 4u each,
 /// error_bounded.hpp), the Taylor polynomials' rounding (4u, small_angle_trig) and the two
 /// products and one sum of the addition (3u each of terms at most 1 + 1/16) add to under 12u; 24u
 /// doubles that, and the slack also holds the cosine's Lagrange remainder (|x|^10 / 10! < 3e-19).
@@ -113,7 +107,9 @@ inline Bounded RimDistancePolynomial::value_near(const AngleBase& base, double o
   const double value = k[0].value + k[1].value * c + k[2].value * s + k[3].value * cos2 + k[4].value * sin2;
 
   const double a = std::fabs(offset), a3 = a * a * a;
-  const double trig_error = kAngleAdditionUlps * kUnitRoundoff + a3 * a3 * a3 / 362880;
+  // The sine's Taylor remainder a^9 / 9!, rounded to nearest (a few u of a term below 0.4 u:
+  // inside the factor-2 slack of kAngleAdditionUlps).
+  const double trig_error = kAngleAdditionUlps * kUnitRoundoff + a3 * a3 * a3 * (1.0 / 362880);
   const double double_angle_error = 4 * trig_error + 4 * kUnitRoundoff;
   const double first = std::fabs(k[1].value) + std::fabs(k[2].value);
   const double second = std::fabs(k[3].value) + std::fabs(k[4].value);
@@ -125,13 +121,6 @@ inline Bounded RimDistancePolynomial::value_near(const AngleBase& base, double o
 
 inline ValueAndSlope RimDistancePolynomial::approximate_near(const AngleBase& base, double offset) const {
   return approximate_at(cos_sin_near(base, offset));
-}
-
-inline ValueAndSlope RimDistancePolynomial::approximate_at_base(const AngleBase& base) const {
-  // cos_sin_near with small_angle_trig(+0) = {+0, 1}; the products by +0 stay, as they decide
-  // the sign of a zero result exactly as there.
-  const double bc = base.cos, bs = base.sin;
-  return approximate_at({bc - bs * 0.0, bs + bc * 0.0});
 }
 
 inline ValueAndSlope RimDistancePolynomial::approximate_at(CosSin t) const {

@@ -117,18 +117,27 @@ void check_pose(const Pose& pose, std::mt19937_64& rng, bool tight) {
     if (tight) {
       ASSERT_LE(Real(value.error), kUsefulRelativeError * scale);
     }
-    // The angle-addition evaluation of the tier-1 proof (AngleBase, value_near) at the real
-    // angle theta + offset, for offsets across its whole range |offset| <= kMaxAngleOffset.
-    const AngleBase base(theta);
-    for (const double offset : {0.0, 1e-12, -3e-9, 1e-4, -0.01, kMaxAngleOffset, -kMaxAngleOffset,
+    // The angle-addition evaluation of the tier-1 proof (value_near) at the real angle
+    // base + offset, base the grid angle nearest to theta (angle_grid.hpp), for offsets across
+    // its whole range |offset| <= kMaxAngleOffset, theta's own among them.
+    const GridAngle split = grid_angle(theta);
+    const AngleBase& base = split.base;
+    for (const double offset : {split.offset, 0.0, 1e-12, -3e-9, 1e-4, -0.01, kMaxAngleOffset,
+                                -kMaxAngleOffset,
                                 std::uniform_real_distribution<double>(-kMaxAngleOffset,
                                                                        kMaxAngleOffset)(rng)}) {
-      const Real shifted = t + Real(offset);
+      const Real shifted = Real(base.angle) + Real(offset);
+      // The cosine and sine tier 1 hands to the crossing points (RootEnclosure::cos, sin).
+      const CosSin trig = cos_sin_near(base, offset);
+      ASSERT_LE(abs(Real(trig.cos) - cos(shifted)), Real(kAngleAdditionTrigError))
+          << base.angle << " + " << offset;
+      ASSERT_LE(abs(Real(trig.sin) - sin(shifted)), Real(kAngleAdditionTrigError))
+          << base.angle << " + " << offset;
       const Bounded near = g.value_near(base, offset);
       ASSERT_TRUE(Encloses(near, it::rim_distance_excess(pose.circle, pose.cylinder, shifted), scale))
-          << "g(" << theta << " + " << offset << ")";
+          << "g(" << base.angle << " + " << offset << ")";
       ASSERT_TRUE(Encloses(near, it::trig_polynomial(k, shifted), scale))
-          << "g(" << theta << " + " << offset << ")";
+          << "g(" << base.angle << " + " << offset << ")";
       if (tight) {
         ASSERT_LE(Real(near.error), kUsefulRelativeError * scale);
       }
