@@ -454,6 +454,18 @@ struct Prefilter {
   bool ready = false;
   bool exactly_parallel = false;
   detail::CandidatesClear clear;
+  bool no_contact = false;  ///< every candidate clear: the whole answer
+  // Ready and not no_contact: set_up's values (the same operations), the unit axes, h_i,
+  // P_j - P_i, the rims in lanes with their errors, the bases' error. Left unset otherwise (no
+  // initialisers: writing them cost ~17 instructions per free flight).
+  Vector3 bearing_axis_hat;
+  Vector3 journal_axis_hat;
+  Vector3 h_i;
+  Vector3 p_WPj;
+  detail::LaneVector3 rims;
+  detail::Lanes rim_errors;
+  double base_error;
+  int toward_a;
 };
 
 /// The prefilters of the four candidates (misaligned) or of the line and the two faces (aligned)
@@ -472,11 +484,10 @@ struct Prefilter {
 /// P_j - P_i + (+-1) h and (+-1) h_i per lane, where adding -h is subtracting h, bit for bit;
 /// |0|_1 + |h_i|_1 = |h_i|_1 exactly): `clear` is what detect_aligned's or detect_misaligned's
 /// prove_candidates_clear would answer.
-Prefilter prefilter_if_ready(const JointDimensions& dimensions, const PartPose& bearing, const PartPose& journal,
-                             const DetectionOptions& options) {
+void prefilter_if_ready(const JointDimensions& dimensions, const PartPose& bearing, const PartPose& journal,
+                        const DetectionOptions& options, Prefilter& found) {
   using detail::Lanes;
   using detail::LaneVector3;
-  Prefilter found;
   const double Ri = dimensions.bearing_radius, Rj = dimensions.journal_radius;
   const double Li = dimensions.bearing_length, Lj = dimensions.journal_length;
   const Vector3& a_i = bearing.axis_W;
@@ -484,7 +495,7 @@ Prefilter prefilter_if_ready(const JointDimensions& dimensions, const PartPose& 
   const double squared_i = a_i.squaredNorm(), squared_j = a_j.squaredNorm();
   if (!((Rj > 0.0) & (Rj < Ri) & (Lj > 0.0) & (Lj < Li) & (options.parallel_angle_tolerance == 0.0) &
         detail::in_safe_square_range(squared_i) & detail::in_safe_square_range(squared_j))) {
-    return found;
+    return;
   }
   // eq. (5), as axes_exactly_parallel decides it; the cross product and its twin serve the axial
   // prefilters too.
@@ -507,7 +518,7 @@ Prefilter prefilter_if_ready(const JointDimensions& dimensions, const PartPose& 
                 (!found.exactly_parallel | (p_WPj_norm + p_WPj_norm <= detail::kLargestGuardedInput)) &
                 (a_i.cwiseAbs().sum() <= detail::kLargestGuardedInput) &
                 (a_j.cwiseAbs().sum() <= detail::kLargestGuardedInput) & (Ri <= detail::kLargestGuardedInput);
-  if (!found.ready) return found;
+  if (!found.ready) return;
   const Lanes rim_errors =
       detail::offset_rounding_bound_of_norms<Lanes>(Lanes::Constant(p_WPj_norm + h_j.cwiseAbs().sum()), rim_norms);
   const double base_error = detail::offset_rounding_bound_of_norms(h_i_norm, h_i_norm);
@@ -518,7 +529,48 @@ Prefilter prefilter_if_ready(const JointDimensions& dimensions, const PartPose& 
       found.exactly_parallel ? Lanes::Constant(detail::difference_rounding_bound(p_WPj)) : rim_errors;
   found.clear = detail::prove_candidates_clear_in_guard({radial_centres, radial_errors, rims, rim_errors, bases,
                                                          Lanes::Constant(base_error), a_i, a_j, cross, twin, Ri, Rj});
-  return found;
+  const detail::CandidatesClear& c = found.clear;
+  // Aligned, the line is tested on the first lane (detect_aligned).
+  found.no_contact = c.radial[0] && (found.exactly_parallel || c.radial[1]) && c.axial[0] && c.axial[1];
+  if (found.no_contact) return;  // set_up's values are not needed
+  found.bearing_axis_hat = a_i_hat;
+  found.journal_axis_hat = a_j_hat;
+  found.h_i = h_i;
+  found.p_WPj = p_WPj;
+  found.rims = rims;
+  found.rim_errors = rim_errors;
+  found.base_error = base_error;
+  found.toward_a = toward_a > 0.0 ? +1 : -1;
+  return;
+}
+
+/// set_up from the values prefilter_if_ready computed when `ready` is ready and found a
+/// candidate not clear (the same values bit for bit: see there; the rims' lanes are (+-1) h_j
+/// from P_j - P_i in set_up's order, lane 0 facing A).
+JointSetup set_up(const JointDimensions& dimensions, const PartPose& bearing_in_world,
+                  const PartPose& journal_in_world, const Prefilter& ready) {
+  JointSetup s;
+  s.bearing_radius = dimensions.bearing_radius;
+  s.journal_radius = dimensions.journal_radius;
+  s.radial_clearance = dimensions.radial_clearance();
+  s.axial_clearance = dimensions.axial_clearance();
+  s.bearing_length = dimensions.bearing_length;
+  s.journal_length = dimensions.journal_length;
+  s.p_WPi_world = bearing_in_world.p_WP;
+  s.p_WPj_world = journal_in_world.p_WP;
+  s.p_WPj = ready.p_WPj;
+  s.bearing_axis_W = bearing_in_world.axis_W;
+  s.journal_axis_W = journal_in_world.axis_W;
+  s.bearing_axis_hat_W = ready.bearing_axis_hat;
+  s.journal_axis_hat_W = ready.journal_axis_hat;
+  s.toward_a = ready.toward_a;
+  s.bearing_bases = {ready.h_i, -ready.h_i};
+  const detail::LaneVector3& r = ready.rims;
+  s.journal_rims = {Vector3(r.x[0], r.y[0], r.z[0]), Vector3(r.x[1], r.y[1], r.z[1])};
+  s.journal_centre_error = detail::difference_rounding_bound(s.p_WPj);
+  s.bearing_base_errors = {ready.base_error, ready.base_error};
+  s.journal_rim_errors = {ready.rim_errors[0], ready.rim_errors[1]};
+  return s;
 }
 
 void validate(const DetectionOptions& options) {
@@ -544,13 +596,12 @@ JointContacts detect_contacts(const JointDimensions& dimensions, const PartPose&
 void detect_contacts(const JointDimensions& dimensions, const PartPose& bearing,
                      const PartPose& journal, JointContacts& out, const DetectionOptions& options) {
   // Every field the answer consists of is (re)set; contacts past contact_count are left alone.
-  const Prefilter prefilter = prefilter_if_ready(dimensions, bearing, journal, options);
+  Prefilter prefilter;
+  prefilter_if_ready(dimensions, bearing, journal, options, prefilter);
   if (prefilter.ready) {
-    // No contact, proved by the prefilters alone: what the general path below answers then (its
-    // certificates all clear_certificate, no contact, nothing to translate). Aligned, the line
-    // is tested on the first lane (detect_aligned).
-    const detail::CandidatesClear& c = prefilter.clear;
-    if (c.radial[0] && (prefilter.exactly_parallel || c.radial[1]) && c.axial[0] && c.axial[1]) {
+    if (prefilter.no_contact) {
+      // Proved by the prefilters alone: what the general path below answers then (its
+      // certificates all clear_certificate, no contact, nothing to translate).
       out.contact_count = 0;
       out.aligned = prefilter.exactly_parallel;
       out.scenario = ContactScenario::none;
@@ -564,7 +615,8 @@ void detect_contacts(const JointDimensions& dimensions, const PartPose& bearing,
     if (!detail::passes_validation(journal)) validate(journal, "journal");
     validate(options);
   }
-  const JointSetup setup = set_up(dimensions, bearing, journal);
+  const JointSetup setup =
+      prefilter.ready ? set_up(dimensions, bearing, journal, prefilter) : set_up(dimensions, bearing, journal);
 
   out.contact_count = 0;
   ContactPresence presence;
