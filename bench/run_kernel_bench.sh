@@ -48,7 +48,7 @@ for name, r in median.items():
 print("\nratios of median CPU times, same run:")
 for name, r in median.items():
     stem, _, variant = name.rpartition("/")
-    for other in ("uncertified", "no_exact_fallback"):
+    for other in ("uncertified", "no_exact_fallback", "plain_double_floor"):
         base = f"{stem}/{other}"
         if variant == "certified" and base in median:
             print(f"  {stem:40s} certified / {other:18s} {r['cpu_time'] / median[base]['cpu_time']:7.2f}")
