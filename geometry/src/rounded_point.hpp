@@ -41,8 +41,8 @@ struct RoundedPoint {
 inline double difference_rounding_bound(const Vector3& d) {
   return (kUnitRoundoff * d.cwiseAbs().sum()) * (1 + 4 * kUnitRoundoff);
 }
-/// The same from the 1-norms |d|_1 + |h|_1 (summed in that order) and |value|_1: a double, or
-/// Eigen lanes for the two rims at once (candidate_prefilter_lanes.hpp).
+/// offset_rounding_bound (below) from the 1-norms |d|_1 + |h|_1 (summed in that order) and
+/// |value|_1: doubles, or Eigen lanes for the two rims at once (candidate_prefilter_lanes.hpp).
 template <typename Norms>
 Norms offset_rounding_bound_of_norms(const Norms& offset_norms, const Norms& value_norm) {
   return (kUnitRoundoff * (offset_norms + value_norm)) * (1 + 4 * kUnitRoundoff) + 8 * kUnderflowError;
