@@ -13,6 +13,7 @@
 
 #include <benchmark/benchmark.h>
 
+#include "paper_baseline.hpp"
 #include "uniform_source.hpp"
 
 #include <cmath>
@@ -78,6 +79,21 @@ std::vector<geo::PartPose> journals(std::uint64_t stream, double max_tilt, Outco
   return kept;
 }
 
+/// The paper's own method on the same poses (bench/detection/paper_baseline.hpp: plain double,
+/// Newton from the paper's guesses, no proof), as the measuring stick of what the contract costs
+/// without a certificate.
+void register_paper_baseline(const std::string& name, const std::vector<geo::PartPose>& inputs) {
+  benchmark::RegisterBenchmark(name.c_str(), [=](benchmark::State& state) {
+    std::size_t next = 0;
+    for (auto _ : state) {
+      geo::JointContacts found = clearjoint::bench::detect_contacts_paper_baseline(kTable2, kBearing, inputs[next]);
+      benchmark::DoNotOptimize(found);
+      if (++next == inputs.size()) next = 0;
+    }
+    state.counters["inputs"] = static_cast<double>(inputs.size());
+  });
+}
+
 /// `reuse_result`: time the in-place overload, writing every answer into one JointContacts (a
 /// simulation loop's use), instead of returning a fresh 1.4 KB result per call.
 void register_set(const std::string& name, const std::vector<geo::PartPose>& inputs,
@@ -130,6 +146,8 @@ void register_all() {
   register_set("detect/aligned_free_flight/certified", aligned_free, kCertified);
   register_set("detect/in_contact/certified_reused_result", in_contact, kCertified, true);
   register_set("detect/free_flight/certified_reused_result", free_flight, kCertified, true);
+  register_paper_baseline("detect/in_contact/paper_baseline", in_contact);
+  register_paper_baseline("detect/free_flight/paper_baseline", free_flight);
 }
 
 }  // namespace
