@@ -98,6 +98,23 @@ struct JointSetup {
   Vector3 p_WPj_world = Vector3::Zero();
 };
 
+/// The fields of JointSetup that both set_up overloads take from the inputs unchanged.
+JointSetup inputs_as_given(const JointDimensions& dimensions, const PartPose& bearing_in_world,
+                           const PartPose& journal_in_world) {
+  JointSetup s;
+  s.bearing_radius = dimensions.bearing_radius;
+  s.journal_radius = dimensions.journal_radius;
+  s.radial_clearance = dimensions.radial_clearance();
+  s.axial_clearance = dimensions.axial_clearance();
+  s.bearing_length = dimensions.bearing_length;
+  s.journal_length = dimensions.journal_length;
+  s.p_WPi_world = bearing_in_world.p_WP;
+  s.p_WPj_world = journal_in_world.p_WP;
+  s.bearing_axis_W = bearing_in_world.axis_W;
+  s.journal_axis_W = journal_in_world.axis_W;
+  return s;
+}
+
 /// Everything is computed in a frame translated to the bearing centre P_i: the rounding of the
 /// base and rim centres (eqs. 3-4) is then relative to the joint's size, not to how far the
 /// joint sits from the world origin (at 1e13 m from it an ulp is larger than the clearance).
@@ -108,18 +125,8 @@ struct JointSetup {
 /// free flight no recipe is ever needed.
 JointSetup set_up(const JointDimensions& dimensions, const PartPose& bearing_in_world,
                   const PartPose& journal_in_world) {
-  JointSetup s;
-  s.bearing_radius = dimensions.bearing_radius;
-  s.journal_radius = dimensions.journal_radius;
-  s.radial_clearance = dimensions.radial_clearance();
-  s.axial_clearance = dimensions.axial_clearance();
-  s.bearing_length = dimensions.bearing_length;
-  s.journal_length = dimensions.journal_length;
-  s.p_WPi_world = bearing_in_world.p_WP;
-  s.p_WPj_world = journal_in_world.p_WP;
+  JointSetup s = inputs_as_given(dimensions, bearing_in_world, journal_in_world);
   s.p_WPj = journal_in_world.p_WP - bearing_in_world.p_WP;
-  s.bearing_axis_W = bearing_in_world.axis_W;
-  s.journal_axis_W = journal_in_world.axis_W;
   s.bearing_axis_hat_W = unit_axis(bearing_in_world);
   s.journal_axis_hat_W = unit_axis(journal_in_world);
   // Labels follow the bearing: when a_j points against a_i, the journal's "B" base faces A.
@@ -549,18 +556,8 @@ void prefilter_if_ready(const JointDimensions& dimensions, const PartPose& beari
 /// from P_j - P_i in set_up's order, lane 0 facing A).
 JointSetup set_up(const JointDimensions& dimensions, const PartPose& bearing_in_world,
                   const PartPose& journal_in_world, const Prefilter& ready) {
-  JointSetup s;
-  s.bearing_radius = dimensions.bearing_radius;
-  s.journal_radius = dimensions.journal_radius;
-  s.radial_clearance = dimensions.radial_clearance();
-  s.axial_clearance = dimensions.axial_clearance();
-  s.bearing_length = dimensions.bearing_length;
-  s.journal_length = dimensions.journal_length;
-  s.p_WPi_world = bearing_in_world.p_WP;
-  s.p_WPj_world = journal_in_world.p_WP;
+  JointSetup s = inputs_as_given(dimensions, bearing_in_world, journal_in_world);
   s.p_WPj = ready.p_WPj;
-  s.bearing_axis_W = bearing_in_world.axis_W;
-  s.journal_axis_W = journal_in_world.axis_W;
   s.bearing_axis_hat_W = ready.bearing_axis_hat;
   s.journal_axis_hat_W = ready.journal_axis_hat;
   s.toward_a = ready.toward_a;
