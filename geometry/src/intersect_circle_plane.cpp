@@ -240,7 +240,6 @@ Rescaled rescale(const Circle3& circle_in, const Plane3& plane_in) {
   return r;
 }
 
-
 CirclePlaneIntersection intersect_scaled(const Circle3& circle, const Plane3& plane,
                                          const IntersectionOptions& options, const PointErrors& errors,
                                          detail::PlaneQuantities& q) {

@@ -92,13 +92,17 @@ struct GuardMagnitudes {
   double nc_1, np_1;  ///< 1-norms of the normals
   double nc2, np2;    ///< their squares
 };
-GuardMagnitudes guard_magnitudes(const Circle3& circle, const Plane3& plane) {
+/// |c|_1 + |p|_1.
+double lengths_one_norm(const Circle3& circle, const Plane3& plane) {
   const Vector3& c = circle.center;
   const Vector3& p = plane.point;
+  return (std::fabs(c.x()) + std::fabs(c.y()) + std::fabs(c.z())) +
+         (std::fabs(p.x()) + std::fabs(p.y()) + std::fabs(p.z()));
+}
+GuardMagnitudes guard_magnitudes(const Circle3& circle, const Plane3& plane) {
   const Vector3& nc = circle.normal;
   const Vector3& np = plane.normal;
-  return {(std::fabs(c.x()) + std::fabs(c.y()) + std::fabs(c.z())) +
-              (std::fabs(p.x()) + std::fabs(p.y()) + std::fabs(p.z())),
+  return {lengths_one_norm(circle, plane),
           std::fabs(nc.x()) + std::fabs(nc.y()) + std::fabs(nc.z()),
           std::fabs(np.x()) + std::fabs(np.y()) + std::fabs(np.z()),
           nc.x() * nc.x() + nc.y() * nc.y() + nc.z() * nc.z(),
@@ -132,13 +136,9 @@ bool plane_a_priori_bounds_apply(const Circle3& circle, const Plane3& plane) {
 
 ReadyPlaneQuantities plane_quantities_if_ready(const Circle3& circle, const Plane3& plane) {
   const APrioriTerms t = a_priori_terms(circle, plane);
-  const Vector3& c = circle.center;
-  const Vector3& p = plane.point;
   const Vector3& np = plane.normal;
   const double np2 = np.x() * np.x() + np.y() * np.y() + np.z() * np.z();
-  const GuardMagnitudes g{(std::fabs(c.x()) + std::fabs(c.y()) + std::fabs(c.z())) +
-                              (std::fabs(p.x()) + std::fabs(p.y()) + std::fabs(p.z())),
-                          t.nc_1, t.np_1, t.nc2, np2};
+  const GuardMagnitudes g{lengths_one_norm(circle, plane), t.nc_1, t.np_1, t.nc2, np2};
   if (!inputs_ready(g, circle.radius)) return {};
   return {true, plane_quantities_from_terms(t, np2)};
 }
