@@ -27,9 +27,6 @@ constexpr double kPointRoundingUlps = 32 * detail::kUnitRoundoff;
 constexpr double kPointFromRootTrigUlps = 64 * detail::kUnitRoundoff;
 static_assert(2 * detail::kAngleAdditionTrigError < 64 * detail::kUnitRoundoff);
 
-/// `centre_error`: how far the exact rim centre may lie from circle.center (rounded_point.hpp);
-/// a crossing of the exact rim is that much farther from the computed point.
-/// `frame`: frame_of(circle) if the caller has it already.
 /// The answer without crossings: `sign` as RimRoots::sign_without_roots. Its own function so
 /// that the reach test's answers need no RimRoots (four default-constructed enclosures, ~30
 /// instructions, on the path most free-flight rims take).
@@ -43,6 +40,9 @@ void fill_without_roots(int sign, CircleCylinderIntersection& out) {
   }
 }
 
+/// `centre_error`: how far the exact rim centre may lie from circle.center (rounded_point.hpp);
+/// a crossing of the exact rim is that much farther from the computed point.
+/// `frame`: frame_of(circle) if the caller has it already.
 void fill(const Circle3& circle, const RimRoots& roots, bool bounded, double centre_error,
           CircleCylinderIntersection& out, const std::optional<CircleFrame>& frame = std::nullopt) {
   if (roots.count == 0) {

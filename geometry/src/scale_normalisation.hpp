@@ -55,11 +55,12 @@ inline Vector3 direction_scaled(const Vector3& v) {
   return exact ? scaled : v;
 }
 
-/// The power of two 2^-e to multiply every length by (0 when none is needed or it would not be
-/// exact), from the largest length given.
 /// Largest lengths in [kSmallestUnscaledLength, kLargestUnscaledLength) are left alone.
 inline constexpr double kSmallestUnscaledLength = 0x1p-60, kLargestUnscaledLength = 0x1p61;
 static_assert(kLengthExponentSlack == 60);  // the two limits above are 2^-60 and 2^(60 + 1)
+
+/// The power of two 2^-e to multiply every length by (0 when none is needed or it would not be
+/// exact), from the largest length given.
 inline int length_exponent(double largest_length) {
   if (largest_length >= kSmallestUnscaledLength && largest_length < kLargestUnscaledLength) return 0;
   if (largest_length == 0.0 || !std::isfinite(largest_length)) return 0;
