@@ -17,6 +17,7 @@
 #include "rim_distance_polynomial.hpp"
 #include "rim_plane_quantities.hpp"
 #include "rounded_point_queries.hpp"
+#include "scale_normalisation.hpp"
 #include "unit_axis_range.hpp"
 
 namespace clearjoint::geometry {
@@ -86,6 +87,13 @@ struct JointSetup {
   Vector3 journal_axis_hat_W = Vector3::UnitZ();
   Vector3 bearing_axis_W = Vector3::UnitZ();  // as given, for the kernel primitives
   Vector3 journal_axis_W = Vector3::UnitZ();
+  // The same scaled by powers of two as each circle-cylinder query scales them
+  // (scale_normalisation.hpp), once per joint instead of once per query.
+  Vector3 bearing_axis_scaled_W = Vector3::UnitZ();
+  Vector3 journal_axis_scaled_W = Vector3::UnitZ();
+  // Every input passed prefilter_if_ready's tests (valid, inside the magnitude guard, so every
+  // centre is finite): the kernel queries need not check their primitives again.
+  bool inputs_in_guard = false;
   // The centres rounded to double, each with a bound on its rounding (rounded_point.hpp); their
   // exact recipes are built only for the kernel queries (rounded_centre). Index 0: base A, 1: B.
   std::array<Vector3, 2> bearing_bases;  // eqs. (3)-(4)
@@ -112,6 +120,8 @@ JointSetup inputs_as_given(const JointDimensions& dimensions, const PartPose& be
   s.p_WPj_world = journal_in_world.p_WP;
   s.bearing_axis_W = bearing_in_world.axis_W;
   s.journal_axis_W = journal_in_world.axis_W;
+  s.bearing_axis_scaled_W = detail::direction_scaled(s.bearing_axis_W);
+  s.journal_axis_scaled_W = detail::direction_scaled(s.journal_axis_W);
   return s;
 }
 
@@ -178,6 +188,17 @@ double outward_sign(ContactBase base) { return base == ContactBase::a ? 1.0 : -1
 
 Circle3 journal_rim(const JointSetup& s, ContactBase base) {
   return {journal_rim_center(s, base), s.journal_axis_W, s.journal_radius};
+}
+
+/// The circle-cylinder query of a journal circle (a rim, or the mid-length section) centred at
+/// `centre` against the bearing wall, with the axes scaled once in set_up; inputs that
+/// prefilter_if_ready found inside its guard skip the query's input checks.
+CircleCylinderIntersection against_wall(const JointSetup& s, const detail::RoundedPoint& centre,
+                                        const DetectionOptions& options) {
+  const Circle3 circle{centre.value, s.journal_axis_scaled_W, s.journal_radius};
+  const Cylinder3 wall{s.p_WPi, s.bearing_axis_scaled_W, s.bearing_radius};
+  return s.inputs_in_guard ? detail::intersect_valid_circle_cylinder(circle, wall, options.intersection, &centre)
+                           : detail::intersect_circle_cylinder(circle, wall, options.intersection, &centre);
 }
 
 /// Accumulates the weakest certificate over every decision.
@@ -289,7 +310,6 @@ Certificate clear_certificate(const DetectionOptions& options) {
 void detect_misaligned(const JointSetup& s, const DetectionOptions& options,
                        const detail::CandidatesClear* prefiltered, JointContacts& out,
                        ContactPresence& presence, CertificateAccumulator& certificate) {
-  const Cylinder3 wall{s.p_WPi, s.bearing_axis_W, s.bearing_radius};
   // A rim proved to stay inside the wall or the base plane (the kernel's own first tests, here
   // for all four candidates at once and without the kernel's input checks, rescaling and result
   // assembly) has no contact there: in free flight this is the whole detection.
@@ -307,9 +327,7 @@ void detect_misaligned(const JointSetup& s, const DetectionOptions& options,
       continue;
     }
     const Circle3 rim = journal_rim(s, base);
-    const detail::RoundedPoint centre = rounded_centre(s, base);
-    const CircleCylinderIntersection hit =
-        detail::intersect_circle_cylinder(rim, wall, options.intersection, &centre);
+    const CircleCylinderIntersection hit = against_wall(s, rounded_centre(s, base), options);
     certificate.add(hit.certificate);
     if (hit.arc_count == 0) continue;
     (base == ContactBase::a ? presence.radial_at_a : presence.radial_at_b) = true;
@@ -366,15 +384,11 @@ void detect_aligned(const JointSetup& s, const DetectionOptions& options, bool e
                                                   s.journal_rims, s.journal_rim_errors, s.bearing_bases,
                                                   s.bearing_base_errors, s.bearing_axis_W, s.journal_axis_W,
                                                   s.bearing_radius, s.journal_radius});
-    const Circle3 mid_section{s.p_WPj, s.journal_axis_W, s.journal_radius};
-    const Cylinder3 wall{s.p_WPi, s.bearing_axis_W, s.bearing_radius};
     if (clear.radial[0]) {
       line = false;  // the kernel's first test, without its input checks and result assembly
       line_certificate = proved_clear;
     } else {
-      const detail::RoundedPoint centre = rounded_journal_centre(s);
-      const CircleCylinderIntersection hit =
-          detail::intersect_circle_cylinder(mid_section, wall, options.intersection, &centre);
+      const CircleCylinderIntersection hit = against_wall(s, rounded_journal_centre(s), options);
       line = hit.arc_count > 0;
       line_certificate = hit.certificate;
     }
@@ -567,6 +581,7 @@ JointSetup set_up(const JointDimensions& dimensions, const PartPose& bearing_in_
   s.journal_centre_error = detail::difference_rounding_bound(s.p_WPj);
   s.bearing_base_errors = {ready.base_error, ready.base_error};
   s.journal_rim_errors = {ready.rim_errors[0], ready.rim_errors[1]};
+  s.inputs_in_guard = true;
   return s;
 }
 

@@ -113,11 +113,20 @@ CircleCylinderIntersection detail::intersect_circle_cylinder(const Circle3& circ
   // The inline test first: validate() formats its message and is out of line.
   if (!detail::passes_validation(circle_in)) validate(circle_in, "circle");
   if (!detail::passes_validation(cylinder_in)) validate(cylinder_in, "cylinder");
-  // Exact power-of-two rescaling (scale_normalisation.hpp): directions to [1, 2), extreme
-  // lengths to near 1; crossing points and their errors are scaled back at the end.
-  Circle3 circle{circle_in.center, detail::direction_scaled(circle_in.normal), circle_in.radius};
-  Cylinder3 cylinder{cylinder_in.axis_point, detail::direction_scaled(cylinder_in.axis),
-                     cylinder_in.radius};
+  // Exact power-of-two rescaling (scale_normalisation.hpp), first of the directions to [1, 2).
+  return intersect_valid_circle_cylinder(
+      {circle_in.center, detail::direction_scaled(circle_in.normal), circle_in.radius},
+      {cylinder_in.axis_point, detail::direction_scaled(cylinder_in.axis), cylinder_in.radius}, options, centre);
+}
+
+CircleCylinderIntersection detail::intersect_valid_circle_cylinder(const Circle3& circle_in,
+                                                                   const Cylinder3& cylinder_in,
+                                                                   const IntersectionOptions& options,
+                                                                   const RoundedPoint* centre) {
+  // Extreme lengths to near 1 (scale_normalisation.hpp); crossing points and their errors are
+  // scaled back at the end.
+  Circle3 circle = circle_in;
+  Cylinder3 cylinder = cylinder_in;
   int e = detail::length_exponent(std::max({circle.center.cwiseAbs().maxCoeff(),
                                             cylinder.axis_point.cwiseAbs().maxCoeff(),
                                             circle.radius, cylinder.radius}));

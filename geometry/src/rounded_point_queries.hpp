@@ -13,6 +13,14 @@ namespace clearjoint::geometry::detail {
 CircleCylinderIntersection intersect_circle_cylinder(const Circle3& circle, const Cylinder3& cylinder,
                                                      const IntersectionOptions& options,
                                                      const RoundedPoint* centre);
+/// The same for inputs that pass validation (input_checks.hpp) and whose circle normal and
+/// cylinder axis are already direction_scaled (scale_normalisation.hpp): the query above minus
+/// those steps, with the same answer bit for bit (direction_scaled leaves a scaled direction as
+/// it is). For detect_contacts, which checks its inputs and scales both axes once per joint
+/// instead of once per candidate query.
+CircleCylinderIntersection intersect_valid_circle_cylinder(const Circle3& circle, const Cylinder3& cylinder,
+                                                           const IntersectionOptions& options,
+                                                           const RoundedPoint* centre);
 /// circle.center must be centre->value and plane.point point->value. Crossing point errors
 /// include centre->error, the depth error both errors.
 CirclePlaneIntersection intersect_circle_plane(const Circle3& circle, const Plane3& plane,

@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <numbers>
 #include <random>
@@ -22,6 +23,8 @@
 
 #include "geometry_test_support.hpp"
 #include "multiprecision_reference.hpp"
+#include "rounded_point_queries.hpp"
+#include "scale_normalisation.hpp"
 
 namespace clearjoint::geometry {
 namespace {
@@ -723,6 +726,56 @@ TEST(CircleCylinder, AnswersWithoutCrashingWhenMagnitudesLieHundredsOfOrdersApar
   for (int i = 0; i < hit.crossing_count; ++i) {
     if (hit.certificate.level != Certainty::uncertain) {
       EXPECT_TRUE(std::isfinite(hit.crossings[i].angle));
+    }
+  }
+}
+
+// detail::intersect_valid_circle_cylinder is the query minus its input checks and direction
+// scaling, for callers (detect_contacts) that did both already: with directions scaled by
+// direction_scaled, every field of its answer must be the validating entry's, bit for bit.
+void expect_identical(const CircleCylinderIntersection& a, const CircleCylinderIntersection& b) {
+  auto same = [](double x, double y) { return std::memcmp(&x, &y, sizeof x) == 0; };
+  EXPECT_EQ(a.topology, b.topology);
+  EXPECT_EQ(a.certificate.level, b.certificate.level);
+  EXPECT_STREQ(a.certificate.reason, b.certificate.reason);
+  ASSERT_EQ(a.crossing_count, b.crossing_count);
+  for (int i = 0; i < a.crossing_count; ++i) {
+    const RimCrossing &x = a.crossings[i], &y = b.crossings[i];
+    EXPECT_TRUE(same(x.angle, y.angle) && same(x.angle_error, y.angle_error) && same(x.point_error, y.point_error))
+        << i;
+    for (int k = 0; k < 3; ++k) EXPECT_TRUE(same(x.point[k], y.point[k])) << i << " " << k;
+    EXPECT_EQ(x.multiplicity, y.multiplicity);
+  }
+  ASSERT_EQ(a.arc_count, b.arc_count);
+  for (int i = 0; i < a.arc_count; ++i) {
+    EXPECT_TRUE(same(a.penetration_arcs[i].begin, b.penetration_arcs[i].begin));
+    EXPECT_TRUE(same(a.penetration_arcs[i].end, b.penetration_arcs[i].end));
+    EXPECT_EQ(a.penetration_arcs[i].full, b.penetration_arcs[i].full);
+  }
+}
+
+TEST(CircleCylinder, ValidEntryGivesTheValidatingEntrysAnswerBitForBitOnScaledDirections) {
+  std::vector<Case> cases = representative_cases();
+  for (const Perturbed& p : degenerate_cases_and_their_ulp_neighbours()) cases.push_back({p.rim, p.wall});
+  std::mt19937_64 random(20261124);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  for (int i = 0; i < 2000; ++i) {
+    // Lengths from 2^-80 to 2^80 (both sides of the unscaled range); axes from 2^-6 to 2^6 and
+    // of 2^-600 and 2^600, whose squares under- and overflow unless the direction is scaled.
+    const int axis_exponent = i % 15 == 13 ? -600 : i % 15 == 14 ? 600 : (i % 15) - 6;
+    const double length = std::ldexp(1.0, 8 * (i % 21) - 80), axis_length = std::ldexp(1.0, axis_exponent);
+    const Vector3 centre(unit(random), unit(random), unit(random));
+    const Vector3 normal(unit(random), unit(random), unit(random));
+    cases.push_back({{length * centre, axis_length * normal, length * (0.2 + std::fabs(unit(random)))},
+                     {length * 0.1 * centre.reverse(), Vector3(0.1 * unit(random), 0.1 * unit(random), axis_length),
+                      length * (0.5 + std::fabs(unit(random)))}});
+  }
+  for (const Case& c : cases) {
+    for (const IntersectionOptions options : {IntersectionOptions{}, IntersectionOptions{.certify = false}}) {
+      const Circle3 rim{c.rim.center, detail::direction_scaled(c.rim.normal), c.rim.radius};
+      const Cylinder3 wall{c.wall.axis_point, detail::direction_scaled(c.wall.axis), c.wall.radius};
+      expect_identical(detail::intersect_valid_circle_cylinder(rim, wall, options, nullptr),
+                       intersect_circle_cylinder(c.rim, c.wall, options));
     }
   }
 }
