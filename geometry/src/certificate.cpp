@@ -11,9 +11,4 @@ std::string_view to_string(Certainty level) noexcept {
   return "unknown";
 }
 
-Certificate weakest(const Certificate& a, const Certificate& b) noexcept {
-  // The enum lists levels from strongest to weakest, so the larger value is the weaker one.
-  return static_cast<int>(b.level) > static_cast<int>(a.level) ? b : a;
-}
-
 }  // namespace clearjoint::geometry
