@@ -228,11 +228,14 @@ void copy_arc_crossings(const RimCrossing* crossings, int count, const RimArc& a
 /// The journal point of a point contact: the rim point at the middle of the penetration arc
 /// (eqs. 13-14, 18-19). For a full arc (beyond the model) the middle is not meaningful; the rim
 /// point farthest along `deepest_direction` (projected into the rim plane) is taken instead.
-/// The arc's end points are its crossings (the contact's, already copied): the middle lies
-/// along the chord's midpoint seen from the centre (away from it when the arc sweeps more than
-/// half the rim), which costs no sine, cosine or rim frame. Where the chord passes within r/4
-/// of the centre (a sweep near half a turn) that direction is ill-conditioned and the middle
-/// angle is evaluated instead.
+/// The arc's end points are its crossings (the contact's, already copied), so the middle
+/// costs no sine, cosine or rim frame: it lies along the chord's midpoint seen from the centre
+/// (away from it when the arc sweeps more than half the rim). Where the chord passes within r/4
+/// of the centre (a sweep near half a turn) that direction is ill-conditioned, but the chord is
+/// then nearly a diameter (longer than 1.9 r) and the middle lies along its perpendicular in the
+/// rim plane, (end - begin) x n_hat, for every sweep: with begin angle a and sweep s in the rim
+/// frame (whose normal is n_hat), end - begin = 2 r sin(s/2) (-sin m, cos m), m = a + s/2 the
+/// middle angle, and sin(s/2) > 0. The middle angle is evaluated only where neither applies.
 Vector3 journal_contact_point(const Circle3& rim, const RimArc& arc, const Contact& contact,
                               const Vector3& deepest_direction, const Vector3& rim_normal_hat) {
   if (arc.full) {
@@ -240,20 +243,27 @@ Vector3 journal_contact_point(const Circle3& rim, const RimArc& arc, const Conta
     const double length = in_plane.norm();
     if (length > 0.0) return rim.center + (rim.radius / length) * in_plane;
   } else if (contact.crossing_count == 2) {
-    const Vector3 towards_middle = 0.5 * (contact.crossings[0].point + contact.crossings[1].point) - rim.center;
+    const Vector3 &p0 = contact.crossings[0].point, &p1 = contact.crossings[1].point;
+    const Vector3 towards_middle = 0.5 * (p0 + p1) - rim.center;
     const double length = towards_middle.norm();
     if (length > 0.25 * rim.radius) {
       const double side = arc.sweep() < std::numbers::pi ? 1.0 : -1.0;
       return rim.center + (side * rim.radius / length) * towards_middle;
     }
+    const Vector3 begin_to_end = contact.crossings[0].angle == arc.begin ? Vector3(p1 - p0) : Vector3(p0 - p1);
+    const Vector3 across = begin_to_end.cross(rim_normal_hat);
+    const double across_length = across.norm();
+    if (across_length > 0.0) return rim.center + (rim.radius / across_length) * across;  // NaN fails
   }
   return point_at(rim, frame_of(rim), arc.middle());
 }
 
-/// Radial point contact from one penetration arc of rim `base` against the wall, eqs. (18)-(23).
-Contact radial_contact(const JointSetup& s, ContactBase base, const Circle3& rim,
-                       const CircleCylinderIntersection& hit, const RimArc& arc) {
-  Contact contact;
+/// Radial point contact from one penetration arc of rim `base` against the wall, eqs. (18)-(23),
+/// written in place (every field set as in a fresh Contact: building one and copying it into the
+/// result cost ~30 instructions per contact).
+void radial_contact(const JointSetup& s, ContactBase base, const Circle3& rim, const CircleCylinderIntersection& hit,
+                    const RimArc& arc, Contact& contact) {
+  contact = Contact{};
   contact.type = ContactType::radial;
   contact.base = base;
   contact.certificate = hit.certificate;
@@ -270,13 +280,13 @@ Contact radial_contact(const JointSetup& s, ContactBase base, const Circle3& rim
   // close to Ri, so the difference is exact (Sterbenz); rounding of C_j may leave it a few
   // ulps below 0 for an arc of vanishing length, hence the clamp.
   contact.depth = std::max(0.0, distance_to_axis - s.bearing_radius);
-  return contact;
 }
 
-/// Axial point contact of rim `base` against base plane `base`, eqs. (13)-(15), (22)-(23).
-Contact axial_contact(const JointSetup& s, ContactBase base, const Circle3& rim,
-                      const CirclePlaneIntersection& hit) {
-  Contact contact;
+/// Axial point contact of rim `base` against base plane `base`, eqs. (13)-(15), (22)-(23), written
+/// in place as radial_contact.
+void axial_contact(const JointSetup& s, ContactBase base, const Circle3& rim, const CirclePlaneIntersection& hit,
+                   Contact& contact) {
+  contact = Contact{};
   contact.type = ContactType::axial;
   contact.base = base;
   contact.certificate = hit.certificate;
@@ -286,7 +296,6 @@ Contact axial_contact(const JointSetup& s, ContactBase base, const Circle3& rim,
   const double beyond_base = (contact.p_WCj - bearing_base(s, base)).dot(contact.normal_W);
   contact.p_WCi = contact.p_WCj - beyond_base * contact.normal_W;  // eq. (15)
   contact.depth = std::max(0.0, beyond_base);                      // eq. (23)
-  return contact;
 }
 
 /// The kernel query of journal rim `base` against bearing base plane `base` (outward normal),
@@ -334,9 +343,9 @@ void detect_misaligned(const JointSetup& s, const DetectionOptions& options,
     // Two arcs: four crossings; a full arc: the rim is beyond the wall all round.
     if (hit.arc_count > 1 || hit.penetration_arcs[0].full) presence.beyond_model = true;
     for (int k = 0; k < hit.arc_count; ++k) {
-      const Contact contact = radial_contact(s, base, rim, hit, hit.penetration_arcs[k]);
+      Contact& contact = out.contacts[out.contact_count++];
+      radial_contact(s, base, rim, hit, hit.penetration_arcs[k], contact);
       if (contact.depth > s.radial_clearance) presence.beyond_model = true;
-      out.contacts[out.contact_count++] = contact;
     }
   }
   for (const ContactBase base : {ContactBase::a, ContactBase::b}) {
@@ -350,9 +359,9 @@ void detect_misaligned(const JointSetup& s, const DetectionOptions& options,
     if (!hit.has_penetration) continue;
     (base == ContactBase::a ? presence.axial_at_a : presence.axial_at_b) = true;
     if (hit.penetration.full) presence.beyond_model = true;  // the rim is beyond the base
-    const Contact contact = axial_contact(s, base, rim, hit);
+    Contact& contact = out.contacts[out.contact_count++];
+    axial_contact(s, base, rim, hit, contact);
     if (contact.depth > s.axial_clearance) presence.beyond_model = true;
-    out.contacts[out.contact_count++] = contact;
   }
 }
 

@@ -262,6 +262,28 @@ TEST(DetectContacts, PenetrationDeeperThanTheClearanceIsBeyondTheModel) {
   EXPECT_NEAR(radial->depth, analytic_contacts(kTable2, deep)[0].depth, kLengthTolerance);
 }
 
+TEST(DetectContacts, PutsTheJournalPointAtTheArcMiddleWhenTheArcSweepsAboutHalfTheRim) {
+  // Rims far beyond the wall (beyond the model), offset so that their radial arcs sweep from
+  // about 0.7 to 1.3 half turns: the middle is found along the chord's midpoint where the chord
+  // passes farther than r/4 from the rim centre (sweeps below ~0.84 or above ~1.16 half turns),
+  // along the chord's perpendicular nearer to it (journal_contact_point). The closed forms
+  // (analytic_contacts) put the middle on the tilt plane for every offset.
+  int near_half_turn = 0;
+  for (double y0 = 1.0; y0 <= 1.8; y0 += 0.01) {
+    const TiltedJournal t{y0, 0.0, 0.001};
+    const JointContacts result = detect_contacts(kTable2, bearing_on_z(), t.pose());
+    SCOPED_TRACE(y0);
+    EXPECT_EQ(result.scenario, ContactScenario::beyond_model);
+    expect_analytic(result, kTable2, t);
+    for (int k = 0; k < result.contact_count; ++k) {
+      const Contact& c = result.contacts[k];
+      const Vector3 chord_middle = 0.5 * (c.crossings[0].point + c.crossings[1].point);
+      near_half_turn += (chord_middle - Vector3(0.0, y0, chord_middle.z())).head<2>().norm() < 0.25 * kTable2.journal_radius;
+    }
+  }
+  EXPECT_GT(near_half_turn, 10);  // both branches ran
+}
+
 TEST(DetectContacts, RimCrossingTheWallFourTimesIsBeyondTheModel) {
   // A short journal (Lj = 2) tilted 0.5 rad, rim A centre at c_y = 1: by the closed form of
   // TiltedJournal, |c_y| cos(tilt) = 0.88 < Rj sin^2(tilt) = 2.27, so f peaks inside
