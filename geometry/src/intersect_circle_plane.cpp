@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 #include "angles.hpp"
 #include "circle_plane_exact.hpp"
@@ -126,19 +127,22 @@ Bounded in_plane_normal_length(const detail::PlaneQuantities& q) {
   return scaled.finite() ? scaled : plain;
 }
 
-/// How far the exact rim centre and plane point may lie from the stored ones (already scaled),
-/// and their recipes (unscaled) with the scale, for the exact tier (rounded_point.hpp).
-struct PointErrors {
-  double centre = 0.0, point = 0.0;
-  const detail::RoundedPoint* centre_recipe = nullptr;
-  const detail::RoundedPoint* point_recipe = nullptr;
-  int scale_exponent = 0;
+/// The topology, with the certificate that covers the whole answer.
+struct Decision {
+  detail::CirclePlaneTopologyAndSide topology;
+  Certificate certificate;
 };
-
-/// `q`: the quantities of circle and plane, a priori or with running error bounds.
-CirclePlaneIntersection intersect_scaled(const Circle3& circle, const Plane3& plane,
-                                         const IntersectionOptions& options, const PointErrors& errors,
-                                         detail::PlaneQuantities& q);
+/// The topology from the floating-point filter on q (widened), or read off the double values
+/// when the certificate or the exact fallback is off; nullopt when only the exact tier
+/// (exact_circle_plane_topology) can decide.
+std::optional<Decision> decide_without_exact_tier(const Circle3& circle, const Plane3& plane,
+                                                  const IntersectionOptions& options,
+                                                  const detail::PlaneQuantities& q);
+/// Fills `out` (default-constructed) for a decided topology: the certificate, the depth and the
+/// crossings, on q (widened) and the stored rim; each crossing point's bound also covers
+/// centre_error (the exact rim is that much farther).
+void describe(const Circle3& circle, const IntersectionOptions& options, double centre_error,
+              const detail::PlaneQuantities& q, const Decision& decision, CirclePlaneIntersection& out);
 /// Inputs that plane_quantities_if_ready turns away, validated (InvalidInput otherwise) and
 /// rescaled by powers of two where that is exact: lengths by 2^-exponent, each normal on its own.
 struct Rescaled {
@@ -147,6 +151,24 @@ struct Rescaled {
   int exponent = 0;
 };
 Rescaled rescale(const Circle3& circle, const Plane3& plane);
+
+/// How far the exact rim centre and plane point may lie from the stored ones (the bounds of
+/// rounded_point.hpp, before any rescaling), and their recipes for the exact tier; zero and null
+/// for exact inputs (kExactPoints).
+struct PointErrors {
+  double centre = 0.0, point = 0.0;
+  const detail::RoundedPoint* centre_recipe = nullptr;
+  const detail::RoundedPoint* point_recipe = nullptr;
+};
+constexpr PointErrors kExactPoints{};
+
+/// Every entry below: the query on the stored inputs, into `out` (default-constructed).
+/// `complete`: rescale and run the exact tier where needed; otherwise return false there instead
+/// (the detection's entry, whose caller builds the recipes only then). The public query calls it
+/// directly: one more call level, or the errors and recipes as four arguments, cost it ~10-20 of
+/// its ~780 instructions.
+bool answer(const Circle3& circle, const Plane3& plane, const IntersectionOptions& options,
+            const PointErrors& errors, bool complete, CirclePlaneIntersection& out);
 
 /// Leaves `out` alone when every value and (for a proved answer) every bound is finite; otherwise
 /// marks it uncertain with kNotRepresentable and removes its bounds.
@@ -175,44 +197,26 @@ void require_finite_bounds(CirclePlaneIntersection& out) {
 
 CirclePlaneIntersection intersect_circle_plane(const Circle3& circle, const Plane3& plane,
                                                const IntersectionOptions& options) {
-  return detail::intersect_circle_plane(circle, plane, options, nullptr, nullptr);
+  CirclePlaneIntersection out;
+  answer(circle, plane, options, kExactPoints, true, out);
+  return out;
 }
 
-CirclePlaneIntersection detail::intersect_circle_plane(const Circle3& circle_in, const Plane3& plane_in,
+CirclePlaneIntersection detail::intersect_circle_plane(const Circle3& circle, const Plane3& plane,
                                                        const IntersectionOptions& options,
                                                        const RoundedPoint* centre,
                                                        const RoundedPoint* point) {
-  // Realistic inputs are valid, inside the a priori guard and need no rescaling
-  // (plane_quantities_if_ready): for them the checks, the rescaling and the copies, a fifth of a
-  // disjoint query, are skipped.
-  auto [ready, q] = detail::plane_quantities_if_ready(circle_in, plane_in);
-  Rescaled rescaled;
-  const Circle3* circle = &circle_in;
-  const Plane3* plane = &plane_in;
-  if (!ready) {
-    rescaled = rescale(circle_in, plane_in);
-    circle = &rescaled.circle;
-    plane = &rescaled.plane;
-    q = detail::plane_a_priori_bounds_apply(*circle, *plane) ? detail::plane_quantities_a_priori(*circle, *plane)
-                                                             : detail::plane_quantities_running_error(*circle, *plane);
-  }
-  const int e = rescaled.exponent;
-  PointErrors errors;
-  if (centre != nullptr || point != nullptr) {
-    errors = {centre == nullptr ? 0.0 : detail::scaled_error(centre->error, e),
-              point == nullptr ? 0.0 : detail::scaled_error(point->error, e), centre, point, e};
-  }
-  CirclePlaneIntersection out = intersect_scaled(*circle, *plane, options, errors, q);
-  if (e != 0) {
-    for (int i = 0; i < out.crossing_count; ++i) {
-      out.crossings[i].point = detail::scaled(out.crossings[i].point, -e);
-      out.crossings[i].point_error = std::ldexp(out.crossings[i].point_error, e);
-    }
-    out.max_signed_distance = std::ldexp(out.max_signed_distance, e);
-    out.max_signed_distance_error = std::ldexp(out.max_signed_distance_error, e);
-  }
-  require_finite_bounds(out);
+  CirclePlaneIntersection out;
+  const PointErrors errors{centre == nullptr ? 0.0 : centre->error, point == nullptr ? 0.0 : point->error, centre,
+                           point};
+  answer(circle, plane, options, errors, true, out);
   return out;
+}
+
+bool detail::intersect_circle_plane_if_filtered(const Circle3& circle, const Plane3& plane,
+                                                const IntersectionOptions& options, double centre_error,
+                                                double point_error, CirclePlaneIntersection& out) {
+  return answer(circle, plane, options, {centre_error, point_error, nullptr, nullptr}, false, out);
 }
 
 namespace {
@@ -240,17 +244,56 @@ Rescaled rescale(const Circle3& circle_in, const Plane3& plane_in) {
   return r;
 }
 
-CirclePlaneIntersection intersect_scaled(const Circle3& circle, const Plane3& plane,
-                                         const IntersectionOptions& options, const PointErrors& errors,
-                                         detail::PlaneQuantities& q) {
-  CirclePlaneIntersection out;
-
+bool answer(const Circle3& circle_in, const Plane3& plane_in, const IntersectionOptions& options,
+            const PointErrors& errors, bool complete, CirclePlaneIntersection& out) {
+  // Realistic inputs are valid, inside the a priori guard and need no rescaling
+  // (plane_quantities_if_ready): for them the checks, the rescaling and the copies, a fifth of a
+  // disjoint query, are skipped.
+  auto [ready, q] = detail::plane_quantities_if_ready(circle_in, plane_in);
+  Rescaled rescaled;
+  const Circle3* circle = &circle_in;
+  const Plane3* plane = &plane_in;
+  if (!ready) {
+    if (!complete) return false;
+    rescaled = rescale(circle_in, plane_in);
+    circle = &rescaled.circle;
+    plane = &rescaled.plane;
+    q = detail::plane_a_priori_bounds_apply(*circle, *plane) ? detail::plane_quantities_a_priori(*circle, *plane)
+                                                             : detail::plane_quantities_running_error(*circle, *plane);
+  }
+  const int e = rescaled.exponent;
   // Every bound below then holds for the exact centre and point too (rounded_point.hpp).
-  if (errors.centre + errors.point != 0.0) detail::widen_for_point_error(q, errors.centre + errors.point);
+  const double scaled_centre_error = detail::scaled_error(errors.centre, e);
+  const double scaled_point_error = detail::scaled_error(errors.point, e);
+  if (scaled_centre_error + scaled_point_error != 0.0) {
+    detail::widen_for_point_error(q, scaled_centre_error + scaled_point_error);
+  }
+  std::optional<Decision> decision = decide_without_exact_tier(*circle, *plane, options, q);
+  if (!decision) {
+    if (!complete) return false;
+    decision = Decision{detail::exact_circle_plane_topology(*circle, *plane, errors.centre_recipe,
+                                                            errors.point_recipe, e),
+                        {Certainty::exact, "floating-point filter could not decide (tangent or parallel)"}};
+  }
+  describe(*circle, options, scaled_centre_error, q, *decision, out);
+  if (e != 0) {
+    for (int i = 0; i < out.crossing_count; ++i) {
+      out.crossings[i].point = detail::scaled(out.crossings[i].point, -e);
+      out.crossings[i].point_error = std::ldexp(out.crossings[i].point_error, e);
+    }
+    out.max_signed_distance = std::ldexp(out.max_signed_distance, e);
+    out.max_signed_distance_error = std::ldexp(out.max_signed_distance_error, e);
+  }
+  require_finite_bounds(out);
+  return true;
+}
+
+std::optional<Decision> decide_without_exact_tier(const Circle3& circle, const Plane3& plane,
+                                                  const IntersectionOptions& options,
+                                                  const detail::PlaneQuantities& q) {
   const Bounded& s = q.s;
   const BoundedVector3& w = q.w;
-  const Bounded &w2 = q.w2, &np2 = q.np2;
-  const Bounded r = circle.radius;
+  const Bounded& w2 = q.w2;
 
   // Filter: every sign the topology needs, proved from the error bounds (a priori or running).
   const bool parallel_proved_false = w.x.sign() != 0 || w.y.sign() != 0 || w.z.sign() != 0;
@@ -276,9 +319,8 @@ CirclePlaneIntersection intersect_scaled(const Circle3& circle, const Plane3& pl
     decided = {CirclePlaneTopology::two_crossings, 0};
     filtered = true;
   }
-  if (filtered && options.certify) {
-    out.certificate = {Certainty::certified, ""};
-  } else if (!options.certify) {
+  if (filtered && options.certify) return Decision{decided, {Certainty::certified, ""}};
+  if (!options.certify) {
     // Plain double pipeline: read the signs off the computed values.
     const bool parallel = w2.value == 0.0;
     const int side = s.value > 0 ? 1 : (s.value < 0 ? -1 : 0);
@@ -286,17 +328,23 @@ CirclePlaneIntersection intersect_scaled(const Circle3& circle, const Plane3& pl
     else if (discriminant.value > 0) decided = {CirclePlaneTopology::disjoint, side};
     else if (discriminant.value == 0) decided = {CirclePlaneTopology::tangent, side};
     else decided = {CirclePlaneTopology::two_crossings, 0};
-    out.certificate = {Certainty::uncertain, "certificate switched off"};
-  } else if (options.exact_fallback) {
-    decided = detail::exact_circle_plane_topology(circle, plane, errors.centre_recipe,
-                                                  errors.point_recipe, errors.scale_exponent);
-    out.certificate = {Certainty::exact, "floating-point filter could not decide (tangent or parallel)"};
-  } else {
-    const int side = s.value > 0 ? 1 : (s.value < 0 ? -1 : 0);
-    decided = {discriminant.value > 0 ? CirclePlaneTopology::disjoint : CirclePlaneTopology::two_crossings,
-               discriminant.value > 0 ? side : 0};
-    out.certificate = {Certainty::uncertain, "floating-point filter could not decide and the exact fallback is off"};
+    return Decision{decided, {Certainty::uncertain, "certificate switched off"}};
   }
+  if (options.exact_fallback) return std::nullopt;
+  const int side = s.value > 0 ? 1 : (s.value < 0 ? -1 : 0);
+  decided = {discriminant.value > 0 ? CirclePlaneTopology::disjoint : CirclePlaneTopology::two_crossings,
+             discriminant.value > 0 ? side : 0};
+  return Decision{decided,
+                  {Certainty::uncertain, "floating-point filter could not decide and the exact fallback is off"}};
+}
+
+void describe(const Circle3& circle, const IntersectionOptions& options, double centre_error,
+              const detail::PlaneQuantities& q, const Decision& decision, CirclePlaneIntersection& out) {
+  const Bounded& s = q.s;
+  const Bounded& np2 = q.np2;
+  const Bounded r = circle.radius;
+  const detail::CirclePlaneTopologyAndSide& decided = decision.topology;
+  out.certificate = decision.certificate;
   out.topology = decided.topology;
   out.side = decided.side;
   const bool bounded = options.certify && out.certificate.level != Certainty::uncertain;
@@ -316,7 +364,7 @@ CirclePlaneIntersection intersect_scaled(const Circle3& circle, const Plane3& pl
       out.max_signed_distance = 0.0;  // exactly: every rim point lies in the plane
       out.max_signed_distance_error = bounded ? 0.0 : kNoErrorBound;
     }
-    return out;
+    return;
   }
 
   // theta_m: angle of P n_p in the rim frame, from w and |n_c|^2 (rim_plane_quantities.hpp).
@@ -342,9 +390,9 @@ CirclePlaneIntersection intersect_scaled(const Circle3& circle, const Plane3& pl
     // not std::fmin (an out-of-line libm call); a NaN error becomes pi, as with fmin
     crossing.angle_error = bounded ? (wrapped_error < std::numbers::pi ? wrapped_error : std::numbers::pi) : kNoErrorBound;
     crossing.point = circle.center + circle.radius * (cos_angle * frame.u + sin_angle * frame.v);
-    // The exact rim's crossing is also errors.centre farther away (its centre moved that much).
+    // The exact rim's crossing is also centre_error farther away (its centre moved that much).
     crossing.point_error =
-        bounded ? (circle.radius * crossing.angle_error + rounding + errors.centre) * (1 + 4 * detail::kUnitRoundoff)
+        bounded ? (circle.radius * crossing.angle_error + rounding + centre_error) * (1 + 4 * detail::kUnitRoundoff)
                 : kNoErrorBound;
     crossing.multiplicity = multiplicity;
     return crossing;
@@ -356,7 +404,7 @@ CirclePlaneIntersection intersect_scaled(const Circle3& circle, const Plane3& pl
     const double sign = out.side > 0 ? -1.0 : 1.0;
     out.crossings[0] = crossing_at(angle, theta_m.error, sign * cos_m, sign * sin_m, 2);
     out.crossing_count = 1;
-    return out;
+    return;
   }
 
   // Two crossings at theta_m -+ beta, cos(beta) = -s / (r |P n_p|); beyond the plane between them.
@@ -372,7 +420,6 @@ CirclePlaneIntersection intersect_scaled(const Circle3& circle, const Plane3& pl
   out.penetration = {out.crossings[0].angle, out.crossings[1].angle, false};
   out.has_penetration = true;
   if (out.crossings[1].angle < out.crossings[0].angle) std::swap(out.crossings[0], out.crossings[1]);
-  return out;
 }
 
 }  // namespace

@@ -7,7 +7,9 @@
 
 #include "clearjoint/geometry/intersect_circle_plane.hpp"
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <numbers>
 #include <random>
@@ -18,6 +20,7 @@
 
 #include "geometry_test_support.hpp"
 #include "multiprecision_reference.hpp"
+#include "rounded_point_queries.hpp"
 
 namespace clearjoint::geometry {
 namespace {
@@ -672,6 +675,115 @@ TEST(CirclePlane, NeverCertifiesADepthOrCrossingWithoutAFiniteBound) {
   } else {
     EXPECT_NE(std::string(hit.certificate.reason).find("not representable"), std::string::npos);
   }
+}
+
+
+// ---- the detection's entry (rounded_point_queries.hpp) -------------------------------------------
+
+bool same_bits(double a, double b) { return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b); }
+
+/// Every field of two answers, bit for bit.
+void expect_identical(const CirclePlaneIntersection& a, const CirclePlaneIntersection& b) {
+  EXPECT_EQ(a.topology, b.topology);
+  EXPECT_EQ(a.side, b.side);
+  EXPECT_EQ(a.certificate.level, b.certificate.level);
+  EXPECT_STREQ(a.certificate.reason, b.certificate.reason);
+  EXPECT_TRUE(same_bits(a.max_signed_distance, b.max_signed_distance));
+  EXPECT_TRUE(same_bits(a.max_signed_distance_error, b.max_signed_distance_error));
+  EXPECT_EQ(a.has_penetration, b.has_penetration);
+  EXPECT_TRUE(same_bits(a.penetration.begin, b.penetration.begin));
+  EXPECT_TRUE(same_bits(a.penetration.end, b.penetration.end));
+  EXPECT_EQ(a.penetration.full, b.penetration.full);
+  ASSERT_EQ(a.crossing_count, b.crossing_count);
+  for (std::size_t i = 0; i < a.crossings.size(); ++i) {
+    const RimCrossing &x = a.crossings[i], &y = b.crossings[i];
+    EXPECT_TRUE(same_bits(x.angle, y.angle) && same_bits(x.angle_error, y.angle_error) &&
+                same_bits(x.point.x(), y.point.x()) && same_bits(x.point.y(), y.point.y()) &&
+                same_bits(x.point.z(), y.point.z()) && same_bits(x.point_error, y.point_error) &&
+                x.multiplicity == y.multiplicity)
+        << "crossing " << i;
+  }
+}
+
+/// The filtered entry against the entry with recipes: the same answer bit for bit, or it declines.
+/// Returns whether it answered.
+bool expect_filtered_answer_identical(const Circle3& rim, const detail::RoundedPoint& centre, const Plane3& base,
+                                      const detail::RoundedPoint& point, const IntersectionOptions& options) {
+  CirclePlaneIntersection filtered;
+  if (!detail::intersect_circle_plane_if_filtered(rim, base, options, centre.error, point.error, filtered)) {
+    return false;
+  }
+  expect_identical(filtered, detail::intersect_circle_plane(rim, base, options, &centre, &point));
+  return true;
+}
+
+TEST(CirclePlaneIfFiltered, GivesTheRecipeEntrysAnswerBitForBitOnRandomJointsOrDeclines) {
+  // A journal rim and a bearing base as detect_contacts builds them (the paper's joint, base B at
+  // +Li/2, rim centre P_j + Lj/2 a_j): positions up to 1.5 clearances off, tilts up to twice the
+  // angle the clearance allows, so that both outcomes occur; then the same joint 2^+-70 times
+  // larger, beyond the unscaled range, which the filtered entry must decline.
+  constexpr unsigned kSeed = 2017;
+  RecordProperty("seed", static_cast<int>(kSeed));
+  std::mt19937_64 rng(kSeed);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  const double Li = 20e-3, Lj = 19.8e-3, Rj = 9.9e-3, clearance = 0.1e-3;
+  IntersectionOptions uncertified;
+  uncertified.certify = false;
+  IntersectionOptions no_fallback;
+  no_fallback.exact_fallback = false;
+  int answered = 0, crossing = 0;
+  for (int trial = 0; trial < 600; ++trial) {
+    SCOPED_TRACE(trial);
+    const Vector3 a_i = Vector3(0.0, 0.0, 1.0);
+    const Vector3 a_j = Vector3(0.02 * unit(rng), 0.02 * unit(rng), 1.0);
+    const Vector3 p_i = Vector3(unit(rng), unit(rng), unit(rng));
+    const Vector3 p_j = p_i + 1.5 * clearance * Vector3(unit(rng), unit(rng), unit(rng));
+    for (double scale : {1.0, 0x1p70, 0x1p-70}) {
+      const detail::RoundedPoint centre =
+          detail::rounded_point(scale * p_j, scale * p_i, scale * Lj, +1, a_j / a_j.norm());
+      const detail::RoundedPoint point = detail::rounded_point(Vector3::Zero(), Vector3::Zero(), scale * Li, +1, a_i);
+      const Circle3 rim{centre.value, a_j, scale * Rj};
+      const Plane3 base{point.value, a_i};
+      bool any = false;
+      for (const IntersectionOptions& options : {IntersectionOptions{}, uncertified, no_fallback}) {
+        any = expect_filtered_answer_identical(rim, centre, base, point, options) || any;
+      }
+      if (scale != 1.0) {
+        EXPECT_FALSE(any) << "beyond the unscaled range the rescaling is needed";
+        continue;
+      }
+      answered += any;
+      crossing += detail::intersect_circle_plane(rim, base, {}, &centre, &point).crossing_count == 2;
+    }
+  }
+  EXPECT_EQ(answered, 600);  // the filter decides every random pose
+  EXPECT_GT(crossing, 100);  // both outcomes exercised
+  EXPECT_LT(crossing, 500);
+}
+
+TEST(CirclePlaneIfFiltered, GivesThePublicAnswerBitForBitNearTangencyAndDeclinesWhereOnlyTheExactTierDecides) {
+  // With no point errors the recipe entry is the public query. The exact tangency and the rim in
+  // its plane need the exact tier (with the fallback on); every other case here is one ulp away.
+  IntersectionOptions no_fallback;
+  no_fallback.exact_fallback = false;
+  int answered = 0, declined = 0;
+  for (const Perturbed& c : perturbations_of_the_tangency()) {
+    SCOPED_TRACE(c.what);
+    for (const IntersectionOptions& options : {IntersectionOptions{}, no_fallback}) {
+      CirclePlaneIntersection filtered;
+      if (detail::intersect_circle_plane_if_filtered(c.rim, c.plane, options, 0.0, 0.0, filtered)) {
+        ++answered;
+        expect_identical(filtered, intersect_circle_plane(c.rim, c.plane, options));
+      } else {
+        ++declined;
+        EXPECT_TRUE(options.exact_fallback) << "without the exact tier it always answers";
+        EXPECT_NE(intersect_circle_plane(c.rim, c.plane, options).certificate.level, Certainty::certified)
+            << "the filter, which it shares, decided";
+      }
+    }
+  }
+  EXPECT_GE(declined, 2);  // at least the exact tangency and the rim in its plane
+  EXPECT_GE(answered, 15);
 }
 
 }  // namespace
