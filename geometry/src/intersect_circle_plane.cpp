@@ -138,11 +138,12 @@ struct Decision {
 std::optional<Decision> decide_without_exact_tier(const Circle3& circle, const Plane3& plane,
                                                   const IntersectionOptions& options,
                                                   const detail::PlaneQuantities& q);
-/// Fills `out` (default-constructed) for a decided topology: the certificate, the depth and the
-/// crossings, on q (widened) and the stored rim; each crossing point's bound also covers
-/// centre_error (the exact rim is that much farther).
+/// Fills `out` (default-constructed) for a decided topology: the certificate, the depth (if
+/// with_depth) and the crossings, on q (widened) and the stored rim; each crossing point's bound
+/// also covers centre_error (the exact rim is that much farther).
 void describe(const Circle3& circle, const IntersectionOptions& options, double centre_error,
-              const detail::PlaneQuantities& q, const Decision& decision, CirclePlaneIntersection& out);
+              const detail::PlaneQuantities& q, const Decision& decision, bool with_depth,
+              CirclePlaneIntersection& out);
 /// Inputs that plane_quantities_if_ready turns away, validated (InvalidInput otherwise) and
 /// rescaled by powers of two where that is exact: lengths by 2^-exponent, each normal on its own.
 struct Rescaled {
@@ -162,24 +163,35 @@ struct PointErrors {
 };
 constexpr PointErrors kExactPoints{};
 
-/// Every entry below: the query on the stored inputs, into `out` (default-constructed).
-/// `complete`: rescale and run the exact tier where needed; otherwise return false there instead
-/// (the detection's entry, whose caller builds the recipes only then). The public query calls it
-/// directly: one more call level, or the errors and recipes as four arguments, cost it ~10-20 of
-/// its ~780 instructions.
+/// What an entry asks of answer(): the whole query, or the part detect_contacts uses. That part
+/// declines (answer returns false) inputs that need rescaling or the exact tier, whose recipes
+/// the detection builds only then, and leaves the depth (max_signed_distance and its bound) as
+/// default-constructed: the detection measures depth at its contact point (eq. 23), and this
+/// one's Bounded square root and division were ~110 of the ~1,360 instructions of a detection's
+/// query (callgrind). Leaving it out does not change require_finite_bounds' verdict: for inputs
+/// that need no rescaling (|n_p|^2 >= 2^-200, lengths below 2^61, normals' 1-norms at most
+/// 2^100) the depth is below 2^263 in magnitude, and its bound is finite whenever the filter
+/// proves the answer (a proved sign of s or of the discriminant needs a finite bound on s, and
+/// |P n_p| and |n_p| then have finite bounds, small relative to them).
+enum class Scope { whole_query, detection };
+
+/// Every entry below: the query on the stored inputs, into `out` (default-constructed); true
+/// unless `scope` declines. The public query calls it directly: one more call level, or the
+/// errors and recipes as four arguments, cost it ~10-20 of its ~780 instructions.
 bool answer(const Circle3& circle, const Plane3& plane, const IntersectionOptions& options,
-            const PointErrors& errors, bool complete, CirclePlaneIntersection& out);
+            const PointErrors& errors, Scope scope, CirclePlaneIntersection& out);
 
 /// Leaves `out` alone when every value and (for a proved answer) every bound is finite; otherwise
-/// marks it uncertain with kNotRepresentable and removes its bounds.
-void require_finite_bounds(CirclePlaneIntersection& out) {
+/// marks it uncertain with kNotRepresentable and removes its bounds. `with_depth`: the depth was
+/// computed (Scope).
+void require_finite_bounds(CirclePlaneIntersection& out, bool with_depth) {
   // Inputs whose magnitudes lie hundreds of orders apart can under- or overflow the double
   // steps after the topology (decided exactly regardless): then the points are not answers.
   // A certified answer must also carry finite bounds (their intermediate values can overflow
   // where the values themselves do not).
   const bool bounded = out.certificate.level != Certainty::uncertain;
-  bool finite = std::isfinite(out.max_signed_distance) &&
-                (!bounded || std::isfinite(out.max_signed_distance_error));
+  bool finite = !with_depth || (std::isfinite(out.max_signed_distance) &&
+                                 (!bounded || std::isfinite(out.max_signed_distance_error)));
   for (int i = 0; i < out.crossing_count; ++i) {
     finite = finite && std::isfinite(out.crossings[i].angle) && out.crossings[i].point.allFinite() &&
              (!bounded || (std::isfinite(out.crossings[i].angle_error) && std::isfinite(out.crossings[i].point_error)));
@@ -198,7 +210,7 @@ void require_finite_bounds(CirclePlaneIntersection& out) {
 CirclePlaneIntersection intersect_circle_plane(const Circle3& circle, const Plane3& plane,
                                                const IntersectionOptions& options) {
   CirclePlaneIntersection out;
-  answer(circle, plane, options, kExactPoints, true, out);
+  answer(circle, plane, options, kExactPoints, Scope::whole_query, out);
   return out;
 }
 
@@ -209,14 +221,14 @@ CirclePlaneIntersection detail::intersect_circle_plane(const Circle3& circle, co
   CirclePlaneIntersection out;
   const PointErrors errors{centre == nullptr ? 0.0 : centre->error, point == nullptr ? 0.0 : point->error, centre,
                            point};
-  answer(circle, plane, options, errors, true, out);
+  answer(circle, plane, options, errors, Scope::whole_query, out);
   return out;
 }
 
 bool detail::intersect_circle_plane_if_filtered(const Circle3& circle, const Plane3& plane,
                                                 const IntersectionOptions& options, double centre_error,
                                                 double point_error, CirclePlaneIntersection& out) {
-  return answer(circle, plane, options, {centre_error, point_error, nullptr, nullptr}, false, out);
+  return answer(circle, plane, options, {centre_error, point_error, nullptr, nullptr}, Scope::detection, out);
 }
 
 namespace {
@@ -245,7 +257,7 @@ Rescaled rescale(const Circle3& circle_in, const Plane3& plane_in) {
 }
 
 bool answer(const Circle3& circle_in, const Plane3& plane_in, const IntersectionOptions& options,
-            const PointErrors& errors, bool complete, CirclePlaneIntersection& out) {
+            const PointErrors& errors, Scope scope, CirclePlaneIntersection& out) {
   // Realistic inputs are valid, inside the a priori guard and need no rescaling
   // (plane_quantities_if_ready): for them the checks, the rescaling and the copies, a fifth of a
   // disjoint query, are skipped.
@@ -254,7 +266,7 @@ bool answer(const Circle3& circle_in, const Plane3& plane_in, const Intersection
   const Circle3* circle = &circle_in;
   const Plane3* plane = &plane_in;
   if (!ready) {
-    if (!complete) return false;
+    if (scope == Scope::detection) return false;
     rescaled = rescale(circle_in, plane_in);
     circle = &rescaled.circle;
     plane = &rescaled.plane;
@@ -270,12 +282,13 @@ bool answer(const Circle3& circle_in, const Plane3& plane_in, const Intersection
   }
   std::optional<Decision> decision = decide_without_exact_tier(*circle, *plane, options, q);
   if (!decision) {
-    if (!complete) return false;
+    if (scope == Scope::detection) return false;
     decision = Decision{detail::exact_circle_plane_topology(*circle, *plane, errors.centre_recipe,
                                                             errors.point_recipe, e),
                         {Certainty::exact, "floating-point filter could not decide (tangent or parallel)"}};
   }
-  describe(*circle, options, scaled_centre_error, q, *decision, out);
+  const bool with_depth = scope == Scope::whole_query;
+  describe(*circle, options, scaled_centre_error, q, *decision, with_depth, out);
   if (e != 0) {
     for (int i = 0; i < out.crossing_count; ++i) {
       out.crossings[i].point = detail::scaled(out.crossings[i].point, -e);
@@ -284,7 +297,7 @@ bool answer(const Circle3& circle_in, const Plane3& plane_in, const Intersection
     out.max_signed_distance = std::ldexp(out.max_signed_distance, e);
     out.max_signed_distance_error = std::ldexp(out.max_signed_distance_error, e);
   }
-  require_finite_bounds(out);
+  require_finite_bounds(out, with_depth);
   return true;
 }
 
@@ -339,7 +352,8 @@ std::optional<Decision> decide_without_exact_tier(const Circle3& circle, const P
 }
 
 void describe(const Circle3& circle, const IntersectionOptions& options, double centre_error,
-              const detail::PlaneQuantities& q, const Decision& decision, CirclePlaneIntersection& out) {
+              const detail::PlaneQuantities& q, const Decision& decision, bool with_depth,
+              CirclePlaneIntersection& out) {
   const Bounded& s = q.s;
   const Bounded& np2 = q.np2;
   const Bounded r = circle.radius;
@@ -351,16 +365,18 @@ void describe(const Circle3& circle, const IntersectionOptions& options, double 
 
   // Deepest reach beyond the plane, in metres: (s + r |P n_p|) / |n_p|.
   const Bounded in_plane_normal = in_plane_normal_length(q);  // |P n_p|
-  const Bounded deepest = (s + r * in_plane_normal) / sqrt(np2);
-  out.max_signed_distance = deepest.value;
-  out.max_signed_distance_error = bounded && deepest.finite() ? deepest.error : kNoErrorBound;
+  if (with_depth) {
+    const Bounded deepest = (s + r * in_plane_normal) / sqrt(np2);
+    out.max_signed_distance = deepest.value;
+    out.max_signed_distance_error = bounded && deepest.finite() ? deepest.error : kNoErrorBound;
+  }
 
   if (out.topology == CirclePlaneTopology::disjoint || out.topology == CirclePlaneTopology::circle_in_plane) {
     if (out.topology == CirclePlaneTopology::disjoint && out.side > 0) {
       out.penetration = {0.0, detail::kTwoPi, true};
       out.has_penetration = true;
     }
-    if (out.topology == CirclePlaneTopology::circle_in_plane) {
+    if (out.topology == CirclePlaneTopology::circle_in_plane && with_depth) {
       out.max_signed_distance = 0.0;  // exactly: every rim point lies in the plane
       out.max_signed_distance_error = bounded ? 0.0 : kNoErrorBound;
     }

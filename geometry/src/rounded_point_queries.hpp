@@ -27,10 +27,11 @@ CirclePlaneIntersection intersect_circle_plane(const Circle3& circle, const Plan
                                                const IntersectionOptions& options,
                                                const RoundedPoint* centre, const RoundedPoint* point);
 /// For detect_contacts, which has the two errors at hand but builds the recipes only for the
-/// exact tier: true, with `out` (default-constructed) filled with the answer the entry above
-/// gives for recipes with these errors, bit for bit, when the inputs need no rescaling
-/// (plane_quantities_if_ready) and no exact tier; false otherwise, `out` then unspecified: ask
-/// the entry above.
+/// exact tier, and measures depth at its contact point (eq. 23): true, with `out`
+/// (default-constructed) filled with the answer the entry above gives for recipes with these
+/// errors, bit for bit, except the depth (max_signed_distance and its error stay as
+/// default-constructed), when the inputs need no rescaling (plane_quantities_if_ready) and no
+/// exact tier; false otherwise, `out` then unspecified: ask the entry above.
 bool intersect_circle_plane_if_filtered(const Circle3& circle, const Plane3& plane,
                                         const IntersectionOptions& options, double centre_error,
                                         double point_error, CirclePlaneIntersection& out);
