@@ -167,7 +167,7 @@ constexpr PointErrors kExactPoints{};
 /// declines (answer returns false) inputs that need rescaling or the exact tier, whose recipes
 /// the detection builds only then, and leaves the depth (max_signed_distance and its bound) as
 /// default-constructed: the detection measures depth at its contact point (eq. 23), and this
-/// one's Bounded square root and division were ~110 of the ~1,360 instructions of a detection's
+/// one's Bounded square root and division were ~100 of the ~1,360 instructions of a detection's
 /// query (callgrind). Leaving it out does not change require_finite_bounds' verdict: for inputs
 /// that need no rescaling (|n_p|^2 >= 2^-200, lengths below 2^61, normals' 1-norms at most
 /// 2^100) the depth is below 2^263 in magnitude, and its bound is finite whenever the filter
@@ -176,7 +176,7 @@ constexpr PointErrors kExactPoints{};
 enum class Scope { whole_query, detection };
 
 /// Every entry below: the query on the stored inputs, into `out` (default-constructed); true
-/// unless `scope` declines. The public query calls it directly: one more call level, or the
+/// unless `scope` declines, before touching `out`. The public query calls it directly: one more call level, or the
 /// errors and recipes as four arguments, cost it ~10-20 of its ~780 instructions.
 bool answer(const Circle3& circle, const Plane3& plane, const IntersectionOptions& options,
             const PointErrors& errors, Scope scope, CirclePlaneIntersection& out);

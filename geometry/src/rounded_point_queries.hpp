@@ -31,7 +31,7 @@ CirclePlaneIntersection intersect_circle_plane(const Circle3& circle, const Plan
 /// (default-constructed) filled with the answer the entry above gives for recipes with these
 /// errors, bit for bit, except the depth (max_signed_distance and its error stay as
 /// default-constructed), when the inputs need no rescaling (plane_quantities_if_ready) and no
-/// exact tier; false otherwise, `out` then unspecified: ask the entry above.
+/// exact tier; false otherwise, `out` then untouched: ask the entry above.
 bool intersect_circle_plane_if_filtered(const Circle3& circle, const Plane3& plane,
                                         const IntersectionOptions& options, double centre_error,
                                         double point_error, CirclePlaneIntersection& out);
