@@ -174,8 +174,11 @@ CircleCylinderIntersection intersect_scaled(const Circle3& circle, const Cylinde
 
   // Bounding test on the rim's reach: most free-flight rims stop here.
   // The reach test needs only part of the magnitude guard; the rest only if it is undecided.
-  const bool reach_a_priori = detail::reach_a_priori_bounds_apply(circle, cylinder);
-  const detail::RimReach reach = detail::rim_reach(circle, cylinder, reach_a_priori, centre_error);
+  // The centre's offset from the axis serves the guard, the reach test, the polynomial and the
+  // widening.
+  const detail::AxisOffset offset = detail::axis_offset(circle, cylinder);
+  const bool reach_a_priori = detail::reach_a_priori_bounds_apply(offset, circle, cylinder);
+  const detail::RimReach reach = detail::rim_reach(circle, cylinder, offset, reach_a_priori, centre_error);
   if (reach != detail::RimReach::undecided) {
     fill_without_roots(reach == detail::RimReach::strictly_outside ? 1 : -1, out);
     out.certificate = options.certify ? Certificate{Certainty::certified, ""}
@@ -185,13 +188,13 @@ CircleCylinderIntersection intersect_scaled(const Circle3& circle, const Cylinde
 
   const bool a_priori = detail::cylinder_a_priori_bounds_apply(circle, cylinder, reach_a_priori);
   std::optional<CircleFrame> frame;
-  detail::RimDistancePolynomial g = detail::rim_distance_polynomial(circle, cylinder, a_priori, frame);
+  detail::RimDistancePolynomial g = detail::rim_distance_polynomial(circle, cylinder, offset, a_priori, frame);
   if (!options.certify) {
     fill(circle, detail::approximate_rim_roots(g), false, centre_error, out, frame);
     out.certificate = {Certainty::uncertain, "certificate switched off"};
     return out;
   }
-  detail::widen_for_centre_error(g, circle, cylinder, centre_error);
+  detail::widen_for_centre_error(g, circle, offset, centre_error);
   const RimRoots roots = detail::certified_rim_roots(g);
   if (roots.proved) {
     fill(circle, roots, true, centre_error, out, frame);

@@ -40,8 +40,20 @@ bool all_lanes(PairMask m) { return (m[0] & m[1]) != 0; }
 
 }  // namespace
 
+AxisOffset axis_offset(const Circle3& circle, const Cylinder3& cylinder) {
+  const Vector3 q = circle.center - cylinder.axis_point;
+  const Vector3& d = cylinder.axis;
+  const Vector3 perp = q.cross(d), perp_abs = abs_cross(q.cwiseAbs(), d.cwiseAbs());
+  return {q, perp, perp_abs, perp.squaredNorm(), perp_abs.squaredNorm(), d.squaredNorm()};
+}
+
 bool reach_a_priori_bounds_apply(const Circle3& circle, const Cylinder3& cylinder) {
-  const Vector3 q = circle.center - cylinder.axis_point;  // rounded, but that is fine for a range test
+  return reach_a_priori_bounds_apply(axis_offset(circle, cylinder), circle, cylinder);
+}
+
+bool reach_a_priori_bounds_apply(const AxisOffset& offset, const Circle3& circle,
+                                 const Cylinder3& cylinder) {
+  const Vector3& q = offset.q;  // rounded, but that is fine for a range test
   const Vector3& d = cylinder.axis;
   return all_lanes(in_range_pair(q.x(), q.y()) & in_range_pair(q.z(), d.x()) &
                    in_range_pair(d.y(), d.z()) & in_range_pair(circle.radius, cylinder.radius));
@@ -63,26 +75,26 @@ namespace {
 
 RimDistancePolynomial rim_distance_polynomial_a_priori(const Circle3& circle,
                                                        const Cylinder3& cylinder,
+                                                       const AxisOffset& offset,
                                                        std::optional<CircleFrame>& frame) {
   // The same formulas as the running-error version, in plain double, each beside its
-  // absolute-value twin (suffix _abs) which bounds its error.
-  const Vector3 q = circle.center - cylinder.axis_point;  // q(1 + delta): |q| is its own bound
+  // absolute-value twin (suffix _abs) which bounds its error. q = c - p is rounded,
+  // q(1 + delta): |q| is its own bound (offset.perp_abs is abs_cross(|q|, |d|)).
   const Vector3& d = cylinder.axis;
   const Vector3& n = circle.normal;
   const Vector3 u = n.cross(Vector3::Unit(frame_axis_index(n)));  // exact
   const Vector3 v = n.cross(u);
-  const Vector3 qa = q.cwiseAbs(), da = d.cwiseAbs(), na = n.cwiseAbs(), ua = u.cwiseAbs();
+  const Vector3 da = d.cwiseAbs(), na = n.cwiseAbs(), ua = u.cwiseAbs();
   const Vector3 v_abs = abs_cross(na, ua);
 
-  const double axis_norm2 = d.squaredNorm();
-  const double inverse_axis_norm2 = 1.0 / axis_norm2;
+  const double inverse_axis_norm2 = 1.0 / offset.axis_norm2;
   const double inverse_u_norm = 1.0 / std::sqrt(u.squaredNorm());
   const double inverse_v_norm = 1.0 / std::sqrt(v.squaredNorm());
   const double r = circle.radius, R = cylinder.radius;
   const double r2 = r * r;
 
-  const Vector3 offset_perp = q.cross(d);
-  const Vector3 offset_perp_abs = abs_cross(qa, da);
+  const Vector3& offset_perp = offset.perp;
+  const Vector3& offset_perp_abs = offset.perp_abs;
   const double first_cos = offset_perp.dot(u.cross(d)) * inverse_u_norm;
   const double first_cos_abs = offset_perp_abs.dot(abs_cross(ua, da)) * inverse_u_norm;
   const double first_sin = offset_perp.dot(v.cross(d)) * inverse_v_norm;
@@ -96,13 +108,13 @@ RimDistancePolynomial rim_distance_polynomial_a_priori(const Circle3& circle,
 
   RimDistancePolynomial g;
   const double values[5] = {
-      (offset_perp.squaredNorm() - 0.5 * r2 * tilt_term) * inverse_axis_norm2 + radii_term,
+      (offset.perp2 - 0.5 * r2 * tilt_term) * inverse_axis_norm2 + radii_term,
       2.0 * r * first_cos * inverse_axis_norm2,
       2.0 * r * first_sin * inverse_axis_norm2,
       0.5 * r2 * (along_v * along_v - along_u * along_u) * inverse_axis_norm2,
       -(r2 * along_u * along_v) * inverse_axis_norm2};
   const double magnitudes[5] = {
-      (offset_perp_abs.squaredNorm() + 0.5 * r2 * tilt_term_abs) * inverse_axis_norm2 +
+      (offset.perp2_abs + 0.5 * r2 * tilt_term_abs) * inverse_axis_norm2 +
           std::fabs(r - R) * (r + R),
       2.0 * r * first_cos_abs * inverse_axis_norm2,
       2.0 * r * first_sin_abs * inverse_axis_norm2,
@@ -133,8 +145,14 @@ RimDistancePolynomial rim_distance_polynomial(const Circle3& circle, const Cylin
 RimDistancePolynomial rim_distance_polynomial(const Circle3& circle, const Cylinder3& cylinder,
                                               bool a_priori_bounds_apply,
                                               std::optional<CircleFrame>& frame) {
+  return rim_distance_polynomial(circle, cylinder, axis_offset(circle, cylinder), a_priori_bounds_apply, frame);
+}
+
+RimDistancePolynomial rim_distance_polynomial(const Circle3& circle, const Cylinder3& cylinder,
+                                              const AxisOffset& offset, bool a_priori_bounds_apply,
+                                              std::optional<CircleFrame>& frame) {
   if (a_priori_bounds_apply) {
-    return rim_distance_polynomial_a_priori(circle, cylinder, frame);
+    return rim_distance_polynomial_a_priori(circle, cylinder, offset, frame);
   }
   frame.reset();
   return rim_distance_polynomial_running_error(circle, cylinder);
@@ -216,35 +234,14 @@ RimReach rim_reach(const Circle3& circle, const Cylinder3& cylinder) {
   return rim_reach(circle, cylinder, cylinder_a_priori_bounds_apply(circle, cylinder));
 }
 
-RimReach rim_reach(const Circle3& circle, const Cylinder3& cylinder, bool a_priori_bounds_apply,
-                   double centre_error) {
-  // dist(x, axis) lies within dist(c, axis) +- r for every rim point x, and dist(c, axis) moves
-  // by at most centre_error with the centre: compare |q x d|^2 against (R - r - e)^2 |d|^2 and
-  // (R + r + e)^2 |d|^2.
+namespace {
+
+// dist(x, axis) lies within dist(c, axis) +- r for every rim point x, and dist(c, axis) moves by
+// at most centre_error with the centre: both versions compare |q x d|^2 against
+// (R - r - e)^2 |d|^2 and (R + r + e)^2 |d|^2.
+
+RimReach rim_reach_running_error(const Circle3& circle, const Cylinder3& cylinder, double centre_error) {
   const double R = cylinder.radius, r = circle.radius;
-  if (a_priori_bounds_apply) {
-    // Guard (reach_a_priori_bounds_apply): q, d, r and R in range, so no product of up to four
-    // of them under- or overflows.
-    // |q x d|^2 (rounding chain 6) against gap^2 D (chain 7: R - r, then - e, then squares);
-    // the difference has chain 8: error <= gamma_64 (|q x d|_abs^2 + gap_abs^2 D), see
-    // kGamma64, with gap_abs = (R - r) + e the twin of (R - r) - e (each subtraction of the
-    // gap is rounded relative to its result, which is at most gap_abs).
-    const Vector3 q = circle.center - cylinder.axis_point;
-    const double offset2 = q.cross(cylinder.axis).squaredNorm();
-    const double offset2_abs = abs_cross(q.cwiseAbs(), cylinder.axis.cwiseAbs()).squaredNorm();
-    const double axis_norm2 = cylinder.axis.squaredNorm();
-    if (R - r > centre_error) {
-      const double gap = (R - r) - centre_error, gap_abs = (R - r) + centre_error;
-      const double gap2 = gap * gap * axis_norm2;
-      if (gap2 - offset2 > kGamma64 * (gap_abs * gap_abs * axis_norm2 + offset2_abs) * kMagnitudeInflation)
-        return RimReach::strictly_inside;
-    }
-    const double reach = (R + r) + centre_error;
-    const double reach2 = reach * reach * axis_norm2;
-    if (offset2 - reach2 > kGamma64 * (reach2 + offset2_abs) * kMagnitudeInflation)
-      return RimReach::strictly_outside;
-    return RimReach::undecided;
-  }
   const BoundedVector3 q = exact(circle.center) - exact(cylinder.axis_point);
   const BoundedVector3 d = exact(cylinder.axis);
   const Bounded offset2 = squared_norm(cross(q, d));
@@ -258,8 +255,47 @@ RimReach rim_reach(const Circle3& circle, const Cylinder3& cylinder, bool a_prio
   return RimReach::undecided;
 }
 
+}  // namespace
+
+RimReach rim_reach(const Circle3& circle, const Cylinder3& cylinder, bool a_priori_bounds_apply,
+                   double centre_error) {
+  return a_priori_bounds_apply ? rim_reach(circle, cylinder, axis_offset(circle, cylinder), true, centre_error)
+                               : rim_reach_running_error(circle, cylinder, centre_error);
+}
+
+RimReach rim_reach(const Circle3& circle, const Cylinder3& cylinder, const AxisOffset& offset,
+                   bool a_priori_bounds_apply, double centre_error) {
+  if (!a_priori_bounds_apply) return rim_reach_running_error(circle, cylinder, centre_error);
+  // Guard (reach_a_priori_bounds_apply): q, d, r and R in range, so no product of up to four
+  // of them under- or overflows.
+  // |q x d|^2 (rounding chain 6) against gap^2 D (chain 7: R - r, then - e, then squares);
+  // the difference has chain 8: error <= gamma_64 (|q x d|_abs^2 + gap_abs^2 D), see
+  // kGamma64, with gap_abs = (R - r) + e the twin of (R - r) - e (each subtraction of the
+  // gap is rounded relative to its result, which is at most gap_abs).
+  const double R = cylinder.radius, r = circle.radius;
+  const double offset2 = offset.perp2, offset2_abs = offset.perp2_abs;
+  const double axis_norm2 = offset.axis_norm2;
+  if (R - r > centre_error) {
+    const double gap = (R - r) - centre_error, gap_abs = (R - r) + centre_error;
+    const double gap2 = gap * gap * axis_norm2;
+    if (gap2 - offset2 > kGamma64 * (gap_abs * gap_abs * axis_norm2 + offset2_abs) * kMagnitudeInflation)
+      return RimReach::strictly_inside;
+  }
+  const double reach = (R + r) + centre_error;
+  const double reach2 = reach * reach * axis_norm2;
+  if (offset2 - reach2 > kGamma64 * (reach2 + offset2_abs) * kMagnitudeInflation)
+    return RimReach::strictly_outside;
+  return RimReach::undecided;
+}
+
 void widen_for_centre_error(RimDistancePolynomial& g, const Circle3& circle,
                             const Cylinder3& cylinder, double centre_error) {
+  if (centre_error == 0.0) return;
+  widen_for_centre_error(g, circle, axis_offset(circle, cylinder), centre_error);
+}
+
+void widen_for_centre_error(RimDistancePolynomial& g, const Circle3& circle, const AxisOffset& offset,
+                            double centre_error) {
   if (centre_error == 0.0) return;
   // With P the projection off the axis, k0 = |P q|^2 + (terms free of the centre) and
   // (k1, k2) = 2 r (P q . P u_hat, P q . P v_hat) (rim_distance_polynomial_running_error: (q x d)
@@ -268,9 +304,7 @@ void widen_for_centre_error(RimDistancePolynomial& g, const Circle3& circle,
   // |P q| = |q x d| / |d| is bounded above by the absolute-value twin of q x d (componentwise
   // a bound of the exact cross product of the exact q = c - p, rounded once), its roundings
   // covered by 2^-40 (they are a few tens of u), and an underflow allowance.
-  const Vector3 q = circle.center - cylinder.axis_point;
-  const double offset2_abs = abs_cross(q.cwiseAbs(), cylinder.axis.cwiseAbs()).squaredNorm();
-  double distance = std::sqrt(offset2_abs / cylinder.axis.squaredNorm()) * (1 + 0x1p-40) +
+  double distance = std::sqrt(offset.perp2_abs / offset.axis_norm2) * (1 + 0x1p-40) +
                     0x1p-1000;
   if (!std::isfinite(distance)) distance = std::numeric_limits<double>::infinity();
   constexpr double kRounding = 1 + 16 * kUnitRoundoff;  // the few products below, rounded up

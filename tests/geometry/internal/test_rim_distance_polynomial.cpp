@@ -272,6 +272,73 @@ TEST(RimDistancePolynomial, WideningByZeroChangesNothing) {
   for (int c = 0; c < 5; ++c) EXPECT_EQ(widened.k[c].error, g.k[c].error);
 }
 
+// ---- axis_offset, shared by the reach test, the polynomial and the widening ---------------
+
+/// Poses for the bit-for-bit comparisons: random ones at several scales, and ones whose inputs
+/// sit at the edges of the a priori guard (2^-100 and 2^100), where the shared quantities are
+/// formed from the extreme magnitudes the a priori path accepts.
+std::vector<Pose> shared_offset_poses() {
+  std::mt19937_64 rng(20261124);
+  std::vector<Pose> poses;
+  for (int i = 0; i < 300; ++i) {
+    const double scale = i % 4 == 0 ? 1.0 : (i % 4 == 1 ? 0x1p-60 : (i % 4 == 2 ? 0x1p60 : 1e-3));
+    poses.push_back(random_pose(rng, scale, i % 2 ? -1.0 : 1e-9));
+  }
+  for (int i = 0; i < 40; ++i) {
+    Pose pose = random_pose(rng, 1.0, -1.0);
+    const double edge = i % 2 ? kSmallestGuardedInput : kLargestGuardedInput;
+    pose.circle.normal[i % 3] = std::copysign(edge, pose.circle.normal[i % 3]);
+    pose.cylinder.axis[(i / 2) % 3] = std::copysign(edge, pose.cylinder.axis[(i / 2) % 3]);
+    poses.push_back(pose);
+  }
+  return poses;
+}
+
+TEST(AxisOffset, HoldsTheQuantitiesTheKernelFormedSeparatelyBitForBit) {
+  // rim_reach, the a priori polynomial and the widening each used to form these themselves, with
+  // these Eigen expressions; their answers stay the same only if the shared ones are these doubles.
+  for (const Pose& pose : shared_offset_poses()) {
+    const AxisOffset offset = axis_offset(pose.circle, pose.cylinder);
+    const Vector3 q = pose.circle.center - pose.cylinder.axis_point;
+    const Vector3& d = pose.cylinder.axis;
+    const Vector3 perp = q.cross(d), perp_abs = abs_cross(q.cwiseAbs(), d.cwiseAbs());
+    for (int j = 0; j < 3; ++j) {
+      ASSERT_EQ(offset.q[j], q[j]);
+      ASSERT_EQ(offset.perp[j], perp[j]);
+      ASSERT_EQ(offset.perp_abs[j], perp_abs[j]);
+    }
+    ASSERT_EQ(offset.perp2, q.cross(d).squaredNorm());
+    ASSERT_EQ(offset.perp2_abs, perp_abs.squaredNorm());
+    ASSERT_EQ(offset.axis_norm2, d.squaredNorm());
+  }
+}
+
+TEST(AxisOffset, GivesTheReachTestPolynomialAndWideningTheirOwnAnswersBitForBit) {
+  // The query's sequence (intersect_circle_cylinder.cpp) with one offset against each function
+  // called on its own, on both paths, with and without a centre error.
+  for (const Pose& pose : shared_offset_poses()) {
+    const AxisOffset offset = axis_offset(pose.circle, pose.cylinder);
+    ASSERT_EQ(reach_a_priori_bounds_apply(offset, pose.circle, pose.cylinder),
+              reach_a_priori_bounds_apply(pose.circle, pose.cylinder));
+    for (const bool a_priori : {true, false}) {
+      for (const double centre_error : {0.0, 1e-9 * pose.cylinder.radius}) {
+        ASSERT_EQ(rim_reach(pose.circle, pose.cylinder, offset, a_priori, centre_error),
+                  rim_reach(pose.circle, pose.cylinder, a_priori, centre_error));
+        std::optional<CircleFrame> frame, own_frame;
+        RimDistancePolynomial g = rim_distance_polynomial(pose.circle, pose.cylinder, offset, a_priori, frame);
+        RimDistancePolynomial own = rim_distance_polynomial(pose.circle, pose.cylinder, a_priori, own_frame);
+        widen_for_centre_error(g, pose.circle, offset, centre_error);
+        widen_for_centre_error(own, pose.circle, pose.cylinder, centre_error);
+        for (int j = 0; j < 5; ++j) {
+          ASSERT_EQ(g.k[j].value, own.k[j].value) << "k" << j;
+          ASSERT_EQ(g.k[j].error, own.k[j].error) << "k" << j;
+        }
+        ASSERT_EQ(frame.has_value(), own_frame.has_value());
+      }
+    }
+  }
+}
+
 // ---- rim_reach --------------------------------------------------------------------------
 
 /// Sampled max and min of dist(x(t), axis) - R over the rim, in MPFR.
