@@ -14,6 +14,7 @@
 
 #include "a_priori_bounds.hpp"
 #include "enclosure_checks.hpp"
+#include "primitives_detail.hpp"
 #include "mpfr_reference.hpp"
 
 namespace clearjoint::geometry::detail {
@@ -335,6 +336,50 @@ TEST(AxisOffset, GivesTheReachTestPolynomialAndWideningTheirOwnAnswersBitForBit)
         }
         ASSERT_EQ(frame.has_value(), own_frame.has_value());
       }
+    }
+  }
+}
+
+/// The a priori coefficients (value, bound) as scalar Eigen expressions, one double at a time:
+/// the formulas rim_distance_polynomial_a_priori evaluates two lanes at a time.
+std::array<Bounded, 5> scalar_a_priori_coefficients(const Circle3& circle, const Cylinder3& cylinder) {
+  const Vector3 q = circle.center - cylinder.axis_point;
+  const Vector3 &d = cylinder.axis, &n = circle.normal;
+  const Vector3 u = n.cross(Vector3::Unit(frame_axis_index(n)));
+  const Vector3 v = n.cross(u);
+  const Vector3 qa = q.cwiseAbs(), da = d.cwiseAbs(), na = n.cwiseAbs(), ua = u.cwiseAbs();
+  const Vector3 va = abs_cross(na, ua);
+  const double inverse_d2 = 1.0 / d.squaredNorm();
+  const double iu = 1.0 / std::sqrt(u.squaredNorm()), iv = 1.0 / std::sqrt(v.squaredNorm());
+  const double r = circle.radius, R = cylinder.radius, r2 = r * r;
+  const Vector3 a = q.cross(d), a_abs = abs_cross(qa, da);
+  const double fc = a.dot(u.cross(d)) * iu, fc_abs = a_abs.dot(abs_cross(ua, da)) * iu;
+  const double fs = a.dot(v.cross(d)) * iv, fs_abs = a_abs.dot(abs_cross(va, da)) * iv;
+  const double au = u.dot(d) * iu, au_abs = ua.dot(da) * iu;
+  const double av = v.dot(d) * iv, av_abs = va.dot(da) * iv;
+  const double in2 = 1.0 / n.squaredNorm();
+  const double tilt = n.cross(d).squaredNorm() * in2, tilt_abs = abs_cross(na, da).squaredNorm() * in2;
+  const double values[5] = {(a.squaredNorm() - 0.5 * r2 * tilt) * inverse_d2 + (r - R) * (r + R),
+                            2.0 * r * fc * inverse_d2, 2.0 * r * fs * inverse_d2,
+                            0.5 * r2 * (av * av - au * au) * inverse_d2, -(r2 * au * av) * inverse_d2};
+  const double twins[5] = {(a_abs.squaredNorm() + 0.5 * r2 * tilt_abs) * inverse_d2 + std::fabs(r - R) * (r + R),
+                           2.0 * r * fc_abs * inverse_d2, 2.0 * r * fs_abs * inverse_d2,
+                           0.5 * r2 * (av_abs * av_abs + au_abs * au_abs) * inverse_d2,
+                           r2 * au_abs * av_abs * inverse_d2};
+  std::array<Bounded, 5> k;
+  for (int i = 0; i < 5; ++i) k[i] = {values[i], kGamma64 * twins[i] * kMagnitudeInflation};
+  return k;
+}
+
+TEST(RimDistancePolynomial, APrioriCoefficientsInLanesAreTheScalarFormulasBitForBit) {
+  // Each lane must round exactly as the scalar expression (no reordering, no contraction): the
+  // query's answers, proved from these bounds, are otherwise not the documented ones.
+  for (const Pose& pose : shared_offset_poses()) {
+    const RimDistancePolynomial g = rim_distance_polynomial(pose.circle, pose.cylinder, true);
+    const std::array<Bounded, 5> expected = scalar_a_priori_coefficients(pose.circle, pose.cylinder);
+    for (int j = 0; j < 5; ++j) {
+      ASSERT_EQ(g.k[j].value, expected[j].value) << "k" << j;
+      ASSERT_EQ(g.k[j].error, expected[j].error) << "k" << j;
     }
   }
 }
