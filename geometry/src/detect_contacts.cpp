@@ -107,7 +107,9 @@ struct JointSetup {
 };
 
 /// The fields of JointSetup that both set_up overloads take from the inputs unchanged.
-JointSetup inputs_as_given(const JointDimensions& dimensions, const PartPose& bearing_in_world,
+/// Inlined into both, so that the default values of the fields they set next are not stored
+/// first (GCC kept it out of line).
+[[gnu::always_inline]] inline JointSetup inputs_as_given(const JointDimensions& dimensions, const PartPose& bearing_in_world,
                            const PartPose& journal_in_world) {
   JointSetup s;
   s.bearing_radius = dimensions.bearing_radius;
