@@ -138,11 +138,14 @@ inline constexpr std::array<GridCosSin, 102> kAngleGrid = {{
     {0x1.ffc7af82f103ap-1, 0x1.e0391fb79d87dp-6},  // 101/16
 }};
 
-/// An exact double angle with its cosine and sine, each within 0.5 ulp (kAngleGrid).
-struct AngleBase {
-  double angle;
-  double cos, sin;
+/// An exact double angle with its cosine and sine, each within 0.5 ulp (kAngleGrid); two of them
+/// in lanes for T = Pair (pair_lanes.hpp).
+template <class T>
+struct AngleBaseOf {
+  T angle;
+  T cos, sin;
 };
+using AngleBase = AngleBaseOf<double>;
 
 /// theta as a grid angle plus an offset, theta = base.angle + offset exactly.
 struct GridAngle {

@@ -64,84 +64,82 @@ bool enclose_simple_root(const RimDistancePolynomial& g, double theta, int direc
   return false;
 }
 
-/// Newton near a grid angle whose sine and cosine come from a table (angle_grid.hpp); every
-/// iterate is reached by angle addition (approximate_near). One iteration per call of `step`, so
-/// that tier 1 can run its two roots in lockstep: each run is a chain of dependent divisions and
-/// polynomial evaluations, and two independent chains side by side overlap in the processor
-/// (the arithmetic of each run is exactly what it would be alone).
-struct NewtonRun {
-  AngleBase base;
-  double offset = 0.0;
-  double slope = 0.0;  ///< |g'| at the last iterate evaluated
-  bool running = true;
+/// Newton near grid angles whose sine and cosine come from a table (angle_grid.hpp); every
+/// iterate is reached by angle addition (approximate_near). Tier 1's two runs side by side, run i
+/// in lane i (pair_lanes.hpp): each run is a chain of dependent divisions and polynomial
+/// evaluations, and one chain of packed operations does the work of both. Each lane's arithmetic
+/// is exactly what its run would do alone: a run that has stopped keeps its state (the masks in
+/// `step`) while the other still iterates, and a move to another grid angle is a table look-up
+/// for that lane alone.
+struct NewtonRuns {
+  AngleBaseOf<Pair> base;
+  Pair offset;
+  Pair slope = {0.0, 0.0};      ///< |g'| at each run's last iterate evaluated
+  PairMask running = {-1, -1};  ///< -1 while the run iterates, 0 once it has stopped
 
-  /// Starts at `guess` exactly: the grid angle nearest to it plus the (exact) offset.
-  explicit NewtonRun(double guess) {
-    const GridAngle start = grid_angle(guess);
-    base = start.base;
-    offset = start.offset;
+  /// Run i starts at guesses[i] exactly: the grid angle nearest to it plus the (exact) offset.
+  explicit NewtonRuns(const double (&guesses)[2]) {
+    for (int i = 0; i < 2; ++i) start_at(i, grid_angle(guesses[i]));
   }
 
-  /// One iteration, if the run has not stopped.
+  void start_at(int i, const GridAngle& at) {
+    base.angle[i] = at.base.angle;
+    base.cos[i] = at.base.cos;
+    base.sin[i] = at.base.sin;
+    offset[i] = at.offset;
+  }
+  AngleBase base_of(int i) const { return {base.angle[i], base.cos[i], base.sin[i]}; }
+
+  /// One iteration of each run that has not stopped.
   void step(const RimDistancePolynomial& g) {
-    if (!running) return;
-    const ValueAndSlope at = g.approximate_near(base, offset);
-    slope = std::fabs(at.slope);
-    const double change = at.value / at.slope;
-    if (!std::isfinite(change)) {
-      running = false;
-      return;
-    }
-    const double next = offset - change;
-    if (std::fabs(next) > kMaxAngleOffset) {
-      // The next iterate lies beyond the angle addition's range from the grid angle (a poor
-      // first-harmonic guess): move to the grid angle nearest to it, a table look-up.
-      const GridAngle moved = grid_angle(base.angle + next);
-      base = moved.base;
-      offset = moved.offset;
-      return;
-    }
-    offset = next;
+    const ValueAndSlopeOf<Pair> at = g.approximate_near(base, offset);
+    const Pair change = at.value / at.slope;
+    const Pair next = offset - change;
+    const PairMask finite = change - change == 0.0;  // std::isfinite(change)
+    // The next iterate lies beyond the angle addition's range from the grid angle (a poor
+    // first-harmonic guess): move to the grid angle nearest to it, a table look-up.
+    const PairMask moves = running & finite & (magnitude(next) > kMaxAngleOffset);
+    const PairMask advances = running & finite & ~moves;
     // Quadratic convergence: after a step below kNewtonLastStep the iterate is off by about
     // |g''/(2 g')| times its square, an ulp or less unless g' is small (near a tangency), where
     // the enclosure below grows until its sign checks pass. Either way the proof decides.
-    if (std::fabs(change) < kNewtonLastStep * (1.0 + std::fabs(base.angle))) running = false;
+    const PairMask settles =
+        advances & (magnitude(change) < kNewtonLastStep * (1.0 + magnitude(base.angle)));
+    slope = select(running, magnitude(at.slope), slope);
+    offset = select(advances, next, offset);
+    running &= finite & ~settles;  // a non-finite step stops the run where it is
+    if (!any_lane(moves)) return;
+    for (int i = 0; i < 2; ++i) {
+      if (moves[i]) start_at(i, grid_angle(base.angle[i] + next[i]));
+    }
   }
 };
 
-/// The proof of a simple root with sign change `direction` near the end of a Newton run, by
-/// angle addition from the run's base (value_near).
-bool enclose_after_newton(const RimDistancePolynomial& g, const NewtonRun& run, int direction,
-                          RootEnclosure& out) {
-  const AngleBase& base = run.base;
-  const double offset = run.offset, slope = run.slope;
+/// The proof of a simple root with sign change `direction` near the end of a Newton run that
+/// stopped at base + offset with |g'| = slope there, by angle addition from the run's base
+/// (value_near, at both ends of a trial enclosure in the two lanes). `budget` bounds g's error:
+/// the coefficient errors plus a few ulps of the terms.
+bool enclose_after_newton(const RimDistancePolynomial& g, const AngleBase& base, double offset,
+                          double slope, double budget, int direction, RootEnclosure& out) {
   const double angle = base.angle + offset;
   // The reported angle is the rounded sum, within u |angle| of base + offset; the proof's
   // sign checks are at base + (offset -+ eps), whose sums offset -+ eps are each within
   // u (|offset| + eps) of the exact ones (the (1 + 4u) on eps below covers the u eps).
   const double rounding =
       2 * kUnitRoundoff * (std::fabs(angle) + std::fabs(offset)) + kUnderflowError;
-  // First trial: twice the root's uncertainty, |g error| / |g'|, with g's error budget being the
-  // coefficient errors plus a few ulps of the terms; later trials grow by kEnclosureGrowth. The
-  // slope is the last Newton iterate's: a heuristic for the first trial only.
-  const double term_size = std::fabs(g.k[0].value) + std::fabs(g.k[1].value) +
-                           std::fabs(g.k[2].value) + std::fabs(g.k[3].value) + std::fabs(g.k[4].value);
-  const double budget = g.coefficient_error() + 16 * kUnitRoundoff * term_size;
+  // First trial: twice the root's uncertainty, |g error| / |g'|; later trials grow by
+  // kEnclosureGrowth. The slope is the last Newton iterate's: a heuristic for the first trial only.
   double eps = 16 * kUnitRoundoff * (1.0 + std::fabs(angle));
   if (slope > 0) eps = std::max(eps, 2 * budget / slope);
   for (int trial = 0; trial < kMaxEnclosureTrials; ++trial, eps *= kEnclosureGrowth) {
     if (std::fabs(offset) + eps > kMaxAngleOffset) return false;
-    if (g.value_near(base, offset - eps).sign() == -direction &&
-        g.value_near(base, offset + eps).sign() == direction) {
+    const PairBounded ends = g.value_near(base, Pair{offset - eps, offset + eps});
+    if (ends.lane(0).sign() == -direction && ends.lane(1).sign() == direction) {
       out.angle = angle;
       // offset -+ eps are rounded too: (1 + 4u) covers it.
       out.radius = (eps * (1 + 4 * kUnitRoundoff) + rounding) * kSlack;
       out.multiplicity = 1;
       out.sign_after = direction;
-      // cos and sin of the real base + offset, which lies inside the enclosure.
-      const CosSin at = cos_sin_near(base, offset);
-      out.cos = at.cos;
-      out.sin = at.sin;
       return true;
     }
   }
@@ -184,7 +182,7 @@ bool first_harmonic_proof(const RimDistancePolynomial& g, RimRoots& result) {
   // and divisions then overlaps with the proof's arithmetic instead of following it.
   const double phi = approximate_atan2(g.k[2].value, g.k[1].value);
   const double beta = approximate_acos(-k0.value / amplitude.value);
-  NewtonRun runs[2] = {NewtonRun(phi - beta), NewtonRun(phi + beta)};
+  NewtonRuns runs({phi - beta, phi + beta});
 
   // sin(alpha) = 2 Hd / A: the factor 2 leaves room for rounding; beyond 1/2 the monotone
   // arcs get too short to be useful and tier 2 is the better tool.
@@ -212,13 +210,22 @@ bool first_harmonic_proof(const RimDistancePolynomial& g, RimRoots& result) {
   }
   if (sign_at_zero < 0) return false;  // impossible with A > 0; keep the proof honest
 
+  for (int i = 0; i < kMaxNewtonSteps && any_lane(runs.running); ++i) runs.step(g);
+  // g's error budget for the enclosures: the coefficient errors plus a few ulps of the terms.
+  const double term_size = std::fabs(g.k[0].value) + std::fabs(g.k[1].value) +
+                           std::fabs(g.k[2].value) + std::fabs(g.k[3].value) + std::fabs(g.k[4].value);
+  const double budget = g.coefficient_error() + 16 * kUnitRoundoff * term_size;
   const int directions[2] = {+1, -1};
-  for (int i = 0; i < kMaxNewtonSteps; ++i) {
-    runs[0].step(g);
-    runs[1].step(g);
-  }
   for (int i = 0; i < 2; ++i) {
-    if (!enclose_after_newton(g, runs[i], directions[i], result.roots[i])) return false;
+    if (!enclose_after_newton(g, runs.base_of(i), runs.offset[i], runs.slope[i], budget,
+                              directions[i], result.roots[i]))
+      return false;
+  }
+  // cos and sin of the real base + offset of each root, which lies inside its enclosure.
+  const CosSinOf<Pair> at = cos_sin_near(runs.base, runs.offset);
+  for (int i = 0; i < 2; ++i) {
+    result.roots[i].cos = at.cos[i];
+    result.roots[i].sin = at.sin[i];
   }
   result.count = 2;
   result.proved = true;

@@ -21,24 +21,19 @@ BoundedVector3 exact(const Vector3& v) { return {v.x(), v.y(), v.z()}; }
 namespace {
 
 /// |a| and |b| each zero or in [kSmallestGuardedInput, kLargestGuardedInput] (a_priori_bounds.hpp),
-/// two values at once (GCC/Clang vector extensions, SSE2 on x86-64) and without a branch:
+/// two values at once (pair_lanes.hpp) and without a branch:
 /// |x| <= 2^100 and (|x| >= 2^-100 or x == 0) as double comparisons, which NaN and infinities
 /// fail. Lanes are -1 where in range, 0 where not. The guards test 8 and 9 values; the scalar
 /// form (an unsigned range test on the bits per value) took ~90 instructions per guard, twice
 /// this. A short-circuit chain was worse: a conditional jump every few bytes, whose cost swung
 /// by a factor 2 with code placement (measured on the well-inside rims).
-using Pair = double __attribute__((vector_size(16)));
-using PairMask = long long __attribute__((vector_size(16)));
 PairMask in_range_pair(double a, double b) {
-  const PairMask kMagnitude = {0x7fff'ffff'ffff'ffff, 0x7fff'ffff'ffff'ffff};
   const Pair kLow = {kSmallestGuardedInput, kSmallestGuardedInput};
   const Pair kHigh = {kLargestGuardedInput, kLargestGuardedInput};
   const Pair zero = {0.0, 0.0};
-  const Pair x = {a, b};
-  const Pair magnitude = reinterpret_cast<Pair>(reinterpret_cast<PairMask>(x) & kMagnitude);
-  return (magnitude <= kHigh) & ((magnitude >= kLow) | (magnitude == zero));
+  const Pair x = magnitude(Pair{a, b});
+  return (x <= kHigh) & ((x >= kLow) | (x == zero));
 }
-bool all_lanes(PairMask m) { return (m[0] & m[1]) != 0; }
 
 }  // namespace
 

@@ -5,10 +5,12 @@
 #include <array>
 #include <cmath>
 #include <optional>
+#include <type_traits>
 
 #include "angle_grid.hpp"
 #include "clearjoint/geometry/primitives.hpp"
 #include "error_bounded.hpp"
+#include "pair_lanes.hpp"
 
 namespace clearjoint::geometry::detail {
 
@@ -21,16 +23,29 @@ namespace clearjoint::geometry::detail {
 /// cosine.
 inline constexpr double kMaxAngleOffset = 1.0 / 16;
 
-/// cos and sin of one angle (cos_sin_near).
-struct CosSin {
-  double cos, sin;
+/// cos and sin of one angle (cos_sin_near), or of two in lanes for T = Pair.
+template <class T>
+struct CosSinOf {
+  T cos, sin;
 };
+using CosSin = CosSinOf<double>;
 
-struct ValueAndSlope {
-  double value;
-  double slope;
-  double cos, sin;  ///< of the angle evaluated at (approximate_near), see kAngleAdditionTrigError
+template <class T>
+struct ValueAndSlopeOf {
+  T value;
+  T slope;
+  T cos, sin;  ///< of the angle evaluated at (approximate_near), see kAngleAdditionTrigError
 };
+using ValueAndSlope = ValueAndSlopeOf<double>;
+
+/// value_near at two offsets, in lanes; lane(i) is what value_near gives at offset i.
+struct PairBounded {
+  Pair value, error;
+  Bounded lane(int i) const { return {value[i], error[i]}; }
+};
+/// value_near's result: Bounded for one offset, PairBounded for two.
+template <class T>
+using BoundedOf = std::conditional_t<std::is_same_v<T, Pair>, PairBounded, Bounded>;
 
 /// Bound on |computed - true| of the cos and sin that approximate_near and value_near form by
 /// angle addition at base + offset (|offset| <= kMaxAngleOffset): see cos_sin_near below.
@@ -48,11 +63,16 @@ struct RimDistancePolynomial {
   /// g, g' near a base angle whose sine and cosine are known, at the real angle
   /// base + offset (|offset| <= kMaxAngleOffset): one table look-up (angle_grid.hpp) serves a
   /// whole Newton run and its proof. Inline (below): they are the inner loop of tier 1, called a
-  /// dozen times per crossing rim, and a call cost a third of each.
-  Bounded value_near(const AngleBase& base, double offset) const;
-  ValueAndSlope approximate_near(const AngleBase& base, double offset) const;
+  /// dozen times per crossing rim, and a call cost a third of each. Templates: T = double, or
+  /// Pair for two offsets at once (Base = AngleBase for one base, AngleBaseOf<Pair> for one per
+  /// lane), each lane bit for bit the double call (pair_lanes.hpp).
+  template <class Base, class T>
+  BoundedOf<T> value_near(const Base& base, T offset) const;
+  template <class Base, class T>
+  ValueAndSlopeOf<T> approximate_near(const Base& base, T offset) const;
   /// g, g' (plain double) from a cosine and sine of the angle.
-  ValueAndSlope approximate_at(CosSin t) const;
+  template <class T>
+  ValueAndSlopeOf<T> approximate_at(CosSinOf<T> t) const;
   /// Sum of the coefficient error bounds: a bound on the coefficient part of g's error.
   double coefficient_error() const {
     return k[0].error + k[1].error + k[2].error + k[3].error + k[4].error;
@@ -69,13 +89,22 @@ struct RimDistancePolynomial {
 /// both. The innermost terms multiply by the rounded reciprocals instead of dividing by 5040
 /// and 40320: one rounding more (the constant's), of a term below x^6 / 5040 < 2^-36, so far
 /// below the 4u; and the divisions were the longest latencies on the Newton step's chain.
+/// The reciprocals are constant expressions, folded at compile time: the library is built with
+/// -frounding-math (CGAL's requirement), under which GCC leaves an inexact 1.0 / 6 in ordinary
+/// code as a run-time division. Either way each is 1/n rounded to nearest, the mode the kernel
+/// runs in (error_bounded.hpp); folded, they no longer cost six divisions per call.
+inline constexpr double kInverse6 = 1.0 / 6, kInverse24 = 1.0 / 24, kInverse120 = 1.0 / 120,
+                        kInverse720 = 1.0 / 720, kInverse5040 = 1.0 / 5040,
+                        kInverse40320 = 1.0 / 40320, kInverse362880 = 1.0 / 362880;
+template <class T>
 struct SmallAngleTrig {
-  double sin, cos;
+  T sin, cos;
 };
-inline SmallAngleTrig small_angle_trig(double x) {
-  const double x2 = x * x;
-  return {x * (1 - x2 * (1.0 / 6 - x2 * (1.0 / 120 - x2 * (1.0 / 5040)))),
-          1 - x2 * (0.5 - x2 * (1.0 / 24 - x2 * (1.0 / 720 - x2 * (1.0 / 40320))))};
+template <class T>
+SmallAngleTrig<T> small_angle_trig(T x) {
+  const T x2 = x * x;
+  return {x * (1 - x2 * (kInverse6 - x2 * (kInverse120 - x2 * kInverse5040))),
+          1 - x2 * (0.5 - x2 * (kInverse24 - x2 * (kInverse720 - x2 * kInverse40320)))};
 }
 
 /// cos and sin at base + offset by angle addition: the ones approximate_near and value_near use.
@@ -85,14 +114,16 @@ inline SmallAngleTrig small_angle_trig(double x) {
 /// products and one sum of the addition (3u each of terms at most 1 + 1/16) add to under 12u; 24u
 /// doubles that, and the slack also holds the cosine's Lagrange remainder (|x|^10 / 10! < 3e-19).
 /// The sine's remainder (|x|^9 / 9! <= (1/16)^9 / 9! < 4.1e-17) is added separately.
-inline CosSin cos_sin_near(const AngleBase& base, double offset) {
+template <class Base, class T>
+CosSinOf<T> cos_sin_near(const Base& base, T offset) {
   static_assert(kMaxAngleOffset == 1.0 / 16);
-  const SmallAngleTrig small = small_angle_trig(offset);
-  const double bc = base.cos, bs = base.sin;
+  const SmallAngleTrig<T> small = small_angle_trig(offset);
+  const auto bc = base.cos, bs = base.sin;
   return {bc * small.cos - bs * small.sin, bs * small.cos + bc * small.sin};
 }
 
-inline Bounded RimDistancePolynomial::value_near(const AngleBase& base, double offset) const {
+template <class Base, class T>
+BoundedOf<T> RimDistancePolynomial::value_near(const Base& base, T offset) const {
   // Plain double evaluation with an a priori bound instead of the running error of `value`:
   // this is the proof step of every tier-1 root, so it should cost what approximate_near does.
   // With e_t the error of the computed c, s (kAngleAdditionUlps u plus the Taylor remainder),
@@ -101,33 +132,35 @@ inline Bounded RimDistancePolynomial::value_near(const AngleBase& base, double o
   // sum |k_i| e_i (each true trig value is at most 1 in magnitude), the coefficients' own
   // errors, and its rounding, gamma_6 of sum |k_i| |t_i| <= 8u sum |k_i| (|t_i| <= 1 + e_t).
   // Each operation may also underflow (2^-1074 each, 32 of them cover the 25 here).
-  const CosSin t = cos_sin_near(base, offset);
-  const double c = t.cos, s = t.sin;
-  const double cos2 = (c - s) * (c + s), sin2 = 2 * s * c;
-  const double value = k[0].value + k[1].value * c + k[2].value * s + k[3].value * cos2 + k[4].value * sin2;
+  const CosSinOf<T> t = cos_sin_near(base, offset);
+  const T c = t.cos, s = t.sin;
+  const T cos2 = (c - s) * (c + s), sin2 = 2 * s * c;
+  const T value = k[0].value + k[1].value * c + k[2].value * s + k[3].value * cos2 + k[4].value * sin2;
 
-  const double a = std::fabs(offset), a3 = a * a * a;
+  const T a = magnitude(offset), a3 = a * a * a;
   // The sine's Taylor remainder a^9 / 9!, rounded to nearest (a few u of a term below 0.4 u:
   // inside the factor-2 slack of kAngleAdditionUlps).
-  const double trig_error = kAngleAdditionUlps * kUnitRoundoff + a3 * a3 * a3 * (1.0 / 362880);
-  const double double_angle_error = 4 * trig_error + 4 * kUnitRoundoff;
+  const T trig_error = kAngleAdditionUlps * kUnitRoundoff + a3 * a3 * a3 * kInverse362880;
+  const T double_angle_error = 4 * trig_error + 4 * kUnitRoundoff;
   const double first = std::fabs(k[1].value) + std::fabs(k[2].value);
   const double second = std::fabs(k[3].value) + std::fabs(k[4].value);
-  const double error = coefficient_error() + first * trig_error + second * double_angle_error +
+  const T error = coefficient_error() + first * trig_error + second * double_angle_error +
                        8 * kUnitRoundoff * (std::fabs(k[0].value) + first + second) +
                        32 * kUnderflowError;
   return {value, error * kErrorInflation};
 }
 
-inline ValueAndSlope RimDistancePolynomial::approximate_near(const AngleBase& base, double offset) const {
+template <class Base, class T>
+ValueAndSlopeOf<T> RimDistancePolynomial::approximate_near(const Base& base, T offset) const {
   return approximate_at(cos_sin_near(base, offset));
 }
 
-inline ValueAndSlope RimDistancePolynomial::approximate_at(CosSin t) const {
-  const double c = t.cos, s = t.sin;
-  const double cos2 = (c - s) * (c + s), sin2 = 2 * s * c;
-  const double value = k[0].value + k[1].value * c + k[2].value * s + k[3].value * cos2 + k[4].value * sin2;
-  const double slope = k[2].value * c - k[1].value * s + 2 * (k[4].value * cos2 - k[3].value * sin2);
+template <class T>
+ValueAndSlopeOf<T> RimDistancePolynomial::approximate_at(CosSinOf<T> t) const {
+  const T c = t.cos, s = t.sin;
+  const T cos2 = (c - s) * (c + s), sin2 = 2 * s * c;
+  const T value = k[0].value + k[1].value * c + k[2].value * s + k[3].value * cos2 + k[4].value * sin2;
+  const T slope = k[2].value * c - k[1].value * s + 2 * (k[4].value * cos2 - k[3].value * sin2);
   return {value, slope, c, s};
 }
 
