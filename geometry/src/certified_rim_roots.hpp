@@ -39,6 +39,62 @@ struct RimRoots {
   int sign_without_roots = 0;
 };
 
+/// Newton stops after a step this small (relative to 1 + |angle|): the next step would be of
+/// the order of its square, 2^-52, below the enclosure's first trial width.
+inline constexpr double kNewtonLastStep = 0x1p-26;
+
+/// Newton near grid angles whose sine and cosine come from a table (angle_grid.hpp); every
+/// iterate is reached by angle addition (approximate_near). Tier 1's two runs (first_harmonic_proof
+/// in certified_rim_roots.cpp; declared here for its test) side by side, run i in lane i
+/// (pair_lanes.hpp): each run is a chain of dependent divisions and polynomial
+/// evaluations, and one chain of packed operations does the work of both. Each lane's arithmetic
+/// is exactly what its run would do alone: a run that has stopped keeps its state (the masks in
+/// `step`) while the other still iterates, and a move to another grid angle is a table look-up
+/// for that lane alone.
+struct NewtonRuns {
+  AngleBaseOf<Pair> base;
+  Pair offset;
+  Pair slope = {0.0, 0.0};      ///< |g'| at each run's last iterate evaluated
+  PairMask running = {-1, -1};  ///< -1 while the run iterates, 0 once it has stopped
+
+  /// Run i starts at guesses[i] exactly: the grid angle nearest to it plus the (exact) offset.
+  explicit NewtonRuns(const std::array<double, 2>& guesses) {
+    for (int i = 0; i < 2; ++i) start_at(i, grid_angle(guesses[i]));
+  }
+
+  void start_at(int i, const GridAngle& at) {
+    base.angle[i] = at.base.angle;
+    base.cos[i] = at.base.cos;
+    base.sin[i] = at.base.sin;
+    offset[i] = at.offset;
+  }
+  AngleBase base_of(int i) const { return {base.angle[i], base.cos[i], base.sin[i]}; }
+
+  /// One iteration of each run that has not stopped.
+  void step(const RimDistancePolynomial& g) {
+    const ValueAndSlopeOf<Pair> at = g.approximate_near(base, offset);
+    const Pair change = at.value / at.slope;
+    const Pair next = offset - change;
+    const PairMask finite = change - change == 0.0;  // std::isfinite(change)
+    // The next iterate lies beyond the angle addition's range from the grid angle (a poor
+    // first-harmonic guess): move to the grid angle nearest to it, a table look-up.
+    const PairMask moves = running & finite & (magnitude(next) > kMaxAngleOffset);
+    const PairMask advances = running & finite & ~moves;
+    // Quadratic convergence: after a step below kNewtonLastStep the iterate is off by about
+    // |g''/(2 g')| times its square, an ulp or less unless g' is small (near a tangency), where
+    // the proof's enclosure grows until its sign checks pass. Either way the proof decides.
+    const PairMask settles =
+        advances & (magnitude(change) < kNewtonLastStep * (1.0 + magnitude(base.angle)));
+    slope = select(running, magnitude(at.slope), slope);
+    offset = select(advances, next, offset);
+    running &= finite & ~settles;  // a non-finite step stops the run where it is
+    if (!any_lane(moves)) return;
+    for (int i = 0; i < 2; ++i) {
+      if (moves[i]) start_at(i, grid_angle(base.angle[i] + next[i]));
+    }
+  }
+};
+
 /// Sorts the first `count` roots by angle (insertion sort: at most four elements, and
 /// std::sort on a 4-element array trips gcc 12's -Warray-bounds).
 void sort_by_angle(RimRoots& roots);

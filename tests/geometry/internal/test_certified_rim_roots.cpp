@@ -7,7 +7,10 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <bit>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <numbers>
 #include <optional>
 #include <random>
@@ -308,5 +311,111 @@ TEST(SortByAngle, SortsFourRootsInReverseOrderAndLeavesShortListsAlone) {
   EXPECT_EQ(none.roots[0].angle, 5.0);
 }
 
+
+/// One Newton run alone, as tier 1 stepped each run before they shared lanes: the reference
+/// that each lane of NewtonRuns must reproduce bit for bit.
+struct NewtonRunAlone {
+  AngleBase base;
+  double offset = 0.0;
+  double slope = 0.0;
+  bool running = true;
+
+  explicit NewtonRunAlone(double guess) {
+    const GridAngle start = grid_angle(guess);
+    base = start.base;
+    offset = start.offset;
+  }
+  void step(const RimDistancePolynomial& g) {
+    if (!running) return;
+    const ValueAndSlope at = g.approximate_near(base, offset);
+    slope = std::fabs(at.slope);
+    const double change = at.value / at.slope;
+    if (!std::isfinite(change)) {
+      running = false;
+      return;
+    }
+    const double next = offset - change;
+    if (std::fabs(next) > kMaxAngleOffset) {
+      const GridAngle moved = grid_angle(base.angle + next);
+      base = moved.base;
+      offset = moved.offset;
+      return;
+    }
+    offset = next;
+    if (std::fabs(change) < kNewtonLastStep * (1.0 + std::fabs(base.angle))) running = false;
+  }
+};
+
+std::uint64_t bits(double x) { return std::bit_cast<std::uint64_t>(x); }
+
+/// Steps both for tier 1's six iterations, comparing lane i with run i after every step;
+/// counts the steps on which a lane moved to another grid angle and on which one lane had
+/// stopped while the other still ran.
+void expect_lanes_step_as_the_runs_alone(const RimDistancePolynomial& g, std::array<double, 2> guesses,
+                                         int& moves, int& one_stopped) {
+  NewtonRuns lanes(guesses);
+  NewtonRunAlone alone[2] = {NewtonRunAlone(guesses[0]), NewtonRunAlone(guesses[1])};
+  for (int step = 0; step < 6; ++step) {
+    const double bases_before[2] = {alone[0].base.angle, alone[1].base.angle};
+    lanes.step(g);
+    for (int i = 0; i < 2; ++i) {
+      alone[i].step(g);
+      if (bits(alone[i].base.angle) != bits(bases_before[i]) && bases_before[i] == bases_before[i]) ++moves;
+      ASSERT_EQ(bits(lanes.base.angle[i]), bits(alone[i].base.angle)) << "lane " << i << " step " << step;
+      ASSERT_EQ(bits(lanes.base.cos[i]), bits(alone[i].base.cos)) << "lane " << i << " step " << step;
+      ASSERT_EQ(bits(lanes.base.sin[i]), bits(alone[i].base.sin)) << "lane " << i << " step " << step;
+      ASSERT_EQ(bits(lanes.offset[i]), bits(alone[i].offset)) << "lane " << i << " step " << step;
+      ASSERT_EQ(bits(lanes.slope[i]), bits(alone[i].slope)) << "lane " << i << " step " << step;
+      ASSERT_EQ(lanes.running[i] != 0, alone[i].running) << "lane " << i << " step " << step;
+    }
+    if (alone[0].running != alone[1].running) ++one_stopped;
+  }
+}
+
+TEST(NewtonRuns, EachLaneStepsBitForBitAsItsRunAlone) {
+  // First-harmonic-dominated polynomials (tier 1's), started near their roots, from anywhere on
+  // the circle (moves to other grid angles) and with one run on a root already (it stops at its
+  // first step while the other runs on).
+  std::mt19937_64 rng(2024);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0), angle(-kTwoPi, 2 * kTwoPi);
+  int moves = 0, one_stopped = 0;
+  for (int i = 0; i < 3000; ++i) {
+    const double scale = std::ldexp(1.0, static_cast<int>(unit(rng) * 40));
+    const RimDistancePolynomial g =
+        polynomial(0.8 * unit(rng) * scale, scale, unit(rng) * scale, 0.05 * unit(rng) * scale,
+                   0.05 * unit(rng) * scale);
+    const double phi = std::atan2(g.k[2].value, g.k[1].value);
+    const double beta = std::acos(-g.k[0].value / std::hypot(g.k[1].value, g.k[2].value));
+    switch (i % 3) {
+      case 0:
+        expect_lanes_step_as_the_runs_alone(g, {phi - beta + 0.01 * unit(rng), phi + beta + 0.01 * unit(rng)},
+                                            moves, one_stopped);
+        break;
+      case 1:
+        expect_lanes_step_as_the_runs_alone(g, {angle(rng), angle(rng)}, moves, one_stopped);
+        break;
+      default: {
+        // Lane 0 starts where a first run settled: its next step is below kNewtonLastStep.
+        NewtonRunAlone settled(phi - beta);
+        for (int step = 0; step < 6; ++step) settled.step(g);
+        expect_lanes_step_as_the_runs_alone(g, {settled.base.angle + settled.offset, angle(rng)},
+                                            moves, one_stopped);
+      }
+    }
+    if (HasFatalFailure()) return;
+  }
+  EXPECT_GT(moves, 300);
+  EXPECT_GT(one_stopped, 300);
+}
+
+TEST(NewtonRuns, FreezesARunWithANonFiniteStepWhileTheOtherRuns) {
+  // A NaN start (grid_angle gives NaN everywhere) and a zero slope each stop their lane at once.
+  int moves = 0, one_stopped = 0;
+  expect_lanes_step_as_the_runs_alone(polynomial(0.1, 1.0, 0.2, 0.01, 0.02),
+                                      {std::numeric_limits<double>::quiet_NaN(), 1.0}, moves, one_stopped);
+  expect_lanes_step_as_the_runs_alone(polynomial(0.0, 0.0, 0.0, 0.0, 0.0), {0.5, 2.0}, moves, one_stopped);
+  expect_lanes_step_as_the_runs_alone(polynomial(1.0, 1.0, 0.0, 0.0, 0.0), {0.0, 3.0}, moves, one_stopped);
+  EXPECT_GT(one_stopped, 0);
+}
 }  // namespace
 }  // namespace clearjoint::geometry::detail

@@ -7,7 +7,9 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <optional>
 #include <random>
 #include <vector>
@@ -152,6 +154,33 @@ void check_pose(const Pose& pose, std::mt19937_64& rng, bool tight) {
 TEST(RimDistancePolynomial, EnclosesTheExactDistanceExcessForRandomPoses) {
   std::mt19937_64 rng(101);
   for (int i = 0; i < 60; ++i) check_pose(random_pose(rng, 1.0, -1.0), rng, true);
+}
+
+TEST(RimDistancePolynomial, EvaluatesTwoOffsetsInLanesBitForBitAsOneAtATime) {
+  // value_near and approximate_near over Pair (tier 1's proof points and Newton runs): lane i
+  // must be the double call at offset i, field for field, at scales from 1e-50 to 1e50.
+  std::mt19937_64 rng(107);
+  std::uniform_real_distribution<double> offsets(-kMaxAngleOffset, kMaxAngleOffset), angles(0.0, kTwoPi);
+  auto bits = [](double x) { return std::bit_cast<std::uint64_t>(x); };
+  for (int i = 0; i < 300; ++i) {
+    const Pose pose = random_pose(rng, i % 3 == 0 ? 1e-50 : (i % 3 == 1 ? 1.0 : 1e50), -1.0);
+    const RimDistancePolynomial g = rim_distance_polynomial(pose.circle, pose.cylinder);
+    const AngleBase base = grid_angle(angles(rng)).base, other = grid_angle(angles(rng)).base;
+    const double offset[2] = {offsets(rng), i % 4 == 0 ? 0.0 : offsets(rng)};
+    const PairBounded near = g.value_near(base, Pair{offset[0], offset[1]});
+    const AngleBaseOf<Pair> bases = {{base.angle, other.angle}, {base.cos, other.cos}, {base.sin, other.sin}};
+    const ValueAndSlopeOf<Pair> at = g.approximate_near(bases, Pair{offset[0], offset[1]});
+    for (int lane = 0; lane < 2; ++lane) {
+      const Bounded one = g.value_near(base, offset[lane]);
+      EXPECT_EQ(bits(near.lane(lane).value), bits(one.value)) << i << " lane " << lane;
+      EXPECT_EQ(bits(near.lane(lane).error), bits(one.error)) << i << " lane " << lane;
+      const ValueAndSlope alone = g.approximate_near(lane == 0 ? base : other, offset[lane]);
+      EXPECT_EQ(bits(at.value[lane]), bits(alone.value)) << i << " lane " << lane;
+      EXPECT_EQ(bits(at.slope[lane]), bits(alone.slope)) << i << " lane " << lane;
+      EXPECT_EQ(bits(at.cos[lane]), bits(alone.cos)) << i << " lane " << lane;
+      EXPECT_EQ(bits(at.sin[lane]), bits(alone.sin)) << i << " lane " << lane;
+    }
+  }
 }
 
 TEST(RimDistancePolynomial, EnclosesTheExactDistanceExcessAtTinyTilts) {
