@@ -9,6 +9,7 @@
 
 #include <array>
 #include <limits>
+#include <utility>
 
 #include "rim_distance_polynomial.hpp"
 
@@ -96,8 +97,14 @@ struct NewtonRuns {
 };
 
 /// Sorts the first `count` roots by angle (insertion sort: at most four elements, and
-/// std::sort on a 4-element array trips gcc 12's -Warray-bounds).
-void sort_by_angle(RimRoots& roots);
+/// std::sort on a 4-element array trips gcc 12's -Warray-bounds). Inline: see sort_and_wrap
+/// (certified_rim_roots.cpp).
+inline void sort_by_angle(RimRoots& roots) {
+  for (int i = 1; i < roots.count && i < 4; ++i) {
+    for (int j = i; j > 0 && roots.roots[j].angle < roots.roots[j - 1].angle; --j)
+      std::swap(roots.roots[j], roots.roots[j - 1]);
+  }
+}
 
 /// Tier 1 then tier 2. Never returns a wrong `proved` answer (under the arithmetic model of
 /// error_bounded.hpp).

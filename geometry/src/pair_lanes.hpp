@@ -15,7 +15,7 @@ namespace clearjoint::geometry::detail {
 
 using Pair = double __attribute__((vector_size(16)));
 /// Lane masks, as comparisons of Pairs give them: -1 (all bits set) where true, 0 where false.
-using PairMask = long long __attribute__((vector_size(16)));
+using PairMask = decltype(Pair{} < Pair{});
 
 inline bool all_lanes(PairMask m) { return (m[0] & m[1]) != 0; }
 inline bool any_lane(PairMask m) { return (m[0] | m[1]) != 0; }
