@@ -130,7 +130,7 @@ bool first_harmonic_proof(const RimDistancePolynomial& g, RimRoots& result) {
   // and divisions then overlaps with the proof's arithmetic instead of following it.
   const double phi = approximate_atan2(g.k[2].value, g.k[1].value);
   const double beta = approximate_acos(-k0.value / amplitude.value);
-  NewtonRuns runs({phi - beta, phi + beta});
+  NewtonRuns runs(g, {phi - beta, phi + beta});
 
   // sin(alpha) = 2 Hd / A: the factor 2 leaves room for rounding; beyond 1/2 the monotone
   // arcs get too short to be useful and tier 2 is the better tool.
@@ -158,7 +158,7 @@ bool first_harmonic_proof(const RimDistancePolynomial& g, RimRoots& result) {
   }
   if (sign_at_zero < 0) return false;  // impossible with A > 0; keep the proof honest
 
-  for (int i = 0; i < kMaxNewtonSteps && any_lane(runs.running); ++i) runs.step(g);
+  for (int i = 0; i < kMaxNewtonSteps && any_lane(runs.running); ++i) runs.step();
   // g's error budget for the enclosures: the coefficient errors plus a few ulps of the terms.
   const double term_size = std::fabs(g.k[0].value) + std::fabs(g.k[1].value) +
                            std::fabs(g.k[2].value) + std::fabs(g.k[3].value) + std::fabs(g.k[4].value);

@@ -53,13 +53,16 @@ inline constexpr double kNewtonLastStep = 0x1p-26;
 /// `step`) while the other still iterates, and a move to another grid angle is a table look-up
 /// for that lane alone.
 struct NewtonRuns {
+  std::array<Pair, 5> k;  ///< g's coefficient values, each in both lanes
   AngleBaseOf<Pair> base;
   Pair offset;
   Pair slope = {0.0, 0.0};      ///< |g'| at each run's last iterate evaluated
   PairMask running = {-1, -1};  ///< -1 while the run iterates, 0 once it has stopped
 
-  /// Run i starts at guesses[i] exactly: the grid angle nearest to it plus the (exact) offset.
-  explicit NewtonRuns(const std::array<double, 2>& guesses) {
+  /// Newton on g; run i starts at guesses[i] exactly: the grid angle nearest to it plus the
+  /// (exact) offset.
+  NewtonRuns(const RimDistancePolynomial& g, const std::array<double, 2>& guesses) {
+    for (int i = 0; i < 5; ++i) k[i] = Pair{g.k[i].value, g.k[i].value};
     for (int i = 0; i < 2; ++i) start_at(i, grid_angle(guesses[i]));
   }
 
@@ -72,8 +75,8 @@ struct NewtonRuns {
   AngleBase base_of(int i) const { return {base.angle[i], base.cos[i], base.sin[i]}; }
 
   /// One iteration of each run that has not stopped.
-  void step(const RimDistancePolynomial& g) {
-    const ValueAndSlopeOf<Pair> at = g.approximate_near(base, offset);
+  void step() {
+    const ValueAndSlopeOf<Pair> at = approximate_at(k, cos_sin_near(base, offset));
     const Pair change = at.value / at.slope;
     const Pair next = offset - change;
     const PairMask finite = change - change == 0.0;  // std::isfinite(change)

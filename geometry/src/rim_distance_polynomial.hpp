@@ -73,6 +73,8 @@ struct RimDistancePolynomial {
   /// g, g' (plain double) from a cosine and sine of the angle.
   template <class T>
   ValueAndSlopeOf<T> approximate_at(CosSinOf<T> t) const;
+  /// The coefficients' values, without their error bounds.
+  std::array<double, 5> values() const { return {k[0].value, k[1].value, k[2].value, k[3].value, k[4].value}; }
   /// Sum of the coefficient error bounds: a bound on the coefficient part of g's error.
   double coefficient_error() const {
     return k[0].error + k[1].error + k[2].error + k[3].error + k[4].error;
@@ -155,13 +157,21 @@ ValueAndSlopeOf<T> RimDistancePolynomial::approximate_near(const Base& base, T o
   return approximate_at(cos_sin_near(base, offset));
 }
 
-template <class T>
-ValueAndSlopeOf<T> RimDistancePolynomial::approximate_at(CosSinOf<T> t) const {
+/// g, g' (plain double) from coefficient values k (RimDistancePolynomial::values(), or each
+/// broadcast to both lanes of a Pair, as tier 1's Newton lanes hold them: once per rim instead
+/// of at every use) and a cosine and sine of the angle.
+template <class C, class T>
+ValueAndSlopeOf<T> approximate_at(const std::array<C, 5>& k, CosSinOf<T> t) {
   const T c = t.cos, s = t.sin;
   const T cos2 = (c - s) * (c + s), sin2 = 2 * s * c;
-  const T value = k[0].value + k[1].value * c + k[2].value * s + k[3].value * cos2 + k[4].value * sin2;
-  const T slope = k[2].value * c - k[1].value * s + 2 * (k[4].value * cos2 - k[3].value * sin2);
+  const T value = k[0] + k[1] * c + k[2] * s + k[3] * cos2 + k[4] * sin2;
+  const T slope = k[2] * c - k[1] * s + 2 * (k[4] * cos2 - k[3] * sin2);
   return {value, slope, c, s};
+}
+
+template <class T>
+ValueAndSlopeOf<T> RimDistancePolynomial::approximate_at(CosSinOf<T> t) const {
+  return detail::approximate_at(values(), t);
 }
 
 /// The rim centre's offset from the axis in plain double, with the operations the reach test,

@@ -353,11 +353,11 @@ std::uint64_t bits(double x) { return std::bit_cast<std::uint64_t>(x); }
 /// stopped while the other still ran.
 void expect_lanes_step_as_the_runs_alone(const RimDistancePolynomial& g, std::array<double, 2> guesses,
                                          int& moves, int& one_stopped) {
-  NewtonRuns lanes(guesses);
+  NewtonRuns lanes(g, guesses);
   NewtonRunAlone alone[2] = {NewtonRunAlone(guesses[0]), NewtonRunAlone(guesses[1])};
   for (int step = 0; step < 6; ++step) {
     const double bases_before[2] = {alone[0].base.angle, alone[1].base.angle};
-    lanes.step(g);
+    lanes.step();
     for (int i = 0; i < 2; ++i) {
       alone[i].step(g);
       if (bits(alone[i].base.angle) != bits(bases_before[i]) && bases_before[i] == bases_before[i]) ++moves;
