@@ -61,35 +61,59 @@ bool enclose_simple_root(const RimDistancePolynomial& g, double theta, int direc
   return false;
 }
 
-/// The proof of a simple root with sign change `direction` near the end of a Newton run that
-/// stopped at base + offset with |g'| = slope there, by angle addition from the run's base
-/// (value_near, at both ends of a trial enclosure in the two lanes). `budget` bounds g's error:
-/// the coefficient errors plus a few ulps of the terms.
-bool enclose_after_newton(const RimDistancePolynomial& g, const AngleBase& base, double offset,
-                          double slope, double budget, int direction, RootEnclosure& out) {
-  const double angle = base.angle + offset;
-  // The reported angle is the rounded sum, within u |angle| of base + offset; the proof's
-  // sign checks are at base + (offset -+ eps), whose sums offset -+ eps are each within
-  // u (|offset| + eps) of the exact ones (the (1 + 4u) on eps below covers the u eps).
-  const double rounding =
-      2 * kUnitRoundoff * (std::fabs(angle) + std::fabs(offset)) + kUnderflowError;
-  // First trial: twice the root's uncertainty, |g error| / |g'|; later trials grow by
-  // kEnclosureGrowth. The slope is the last Newton iterate's: a heuristic for the first trial only.
-  double eps = 16 * kUnitRoundoff * (1.0 + std::fabs(angle));
-  if (slope > 0) eps = std::max(eps, 2 * budget / slope);
+/// Widens eps (by kEnclosureGrowth, at most kMaxEnclosureTrials times) until the signs of g at
+/// base + (offset -+ eps), by angle addition (value_near, both ends in the two lanes), prove a
+/// sign change `direction` (+1: - to +) between them; false if none does within the angle
+/// addition's range.
+bool prove_sign_change(const RimDistancePolynomial& g, const AngleBase& base, double offset,
+                       int direction, double& eps) {
   for (int trial = 0; trial < kMaxEnclosureTrials; ++trial, eps *= kEnclosureGrowth) {
     if (std::fabs(offset) + eps > kMaxAngleOffset) return false;
     const PairBounded ends = g.value_near(base, Pair{offset - eps, offset + eps});
-    if (ends.lane(0).sign() == -direction && ends.lane(1).sign() == direction) {
-      out.angle = angle;
-      // offset -+ eps are rounded too: (1 + 4u) covers it.
-      out.radius = (eps * (1 + 4 * kUnitRoundoff) + rounding) * kSlack;
-      out.multiplicity = 1;
-      out.sign_after = direction;
-      return true;
-    }
+    if (ends.lane(0).sign() == -direction && ends.lane(1).sign() == direction) return true;
   }
   return false;
+}
+
+/// The proofs of tier 1's two simple roots where the Newton runs stopped, root i in lane i (g
+/// changes sign as directions[i] there), into result.roots[0, 1].
+bool enclose_after_newton(const RimDistancePolynomial& g, const NewtonRuns& runs, RimRoots& result) {
+  const int directions[2] = {+1, -1};
+  const Pair offset = runs.offset;
+  const Pair angle = runs.base.angle + offset;
+  // The reported angle is the rounded sum, within u |angle| of base + offset; the proof's
+  // sign checks are at base + (offset -+ eps), whose sums offset -+ eps are each within
+  // u (|offset| + eps) of the exact ones (the (1 + 4u) on eps below covers the u eps).
+  const Pair rounding = 2 * kUnitRoundoff * (magnitude(angle) + magnitude(offset)) + kUnderflowError;
+  // First trial: twice the root's uncertainty, |g error| / |g'|, with g's error budget being the
+  // coefficient errors plus a few ulps of the terms, if wider than a few ulps of the angle; later
+  // trials grow by kEnclosureGrowth. The slope is the last Newton iterate's: a heuristic for the
+  // first trial only.
+  const double term_size = std::fabs(g.k[0].value) + std::fabs(g.k[1].value) +
+                           std::fabs(g.k[2].value) + std::fabs(g.k[3].value) + std::fabs(g.k[4].value);
+  const double budget = g.coefficient_error() + 16 * kUnitRoundoff * term_size;
+  Pair eps = 16 * kUnitRoundoff * (1.0 + magnitude(angle));
+  const Pair from_slope = 2 * budget / runs.slope;
+  eps = select((runs.slope > 0.0) & (eps < from_slope), from_slope, eps);
+  for (int i = 0; i < 2; ++i) {
+    double width = eps[i];
+    if (!prove_sign_change(g, runs.base_of(i), offset[i], directions[i], width)) return false;
+    eps[i] = width;
+  }
+  // offset -+ eps are rounded too: (1 + 4u) covers it.
+  const Pair radius = (eps * (1 + 4 * kUnitRoundoff) + rounding) * kSlack;
+  // cos and sin of each real base + offset, which lies inside its enclosure.
+  const CosSinOf<Pair> at = cos_sin_near(runs.base, offset);
+  for (int i = 0; i < 2; ++i) {
+    RootEnclosure& root = result.roots[i];
+    root.angle = angle[i];
+    root.radius = radius[i];
+    root.multiplicity = 1;
+    root.sign_after = directions[i];
+    root.cos = at.cos[i];
+    root.sin = at.sin[i];
+  }
+  return true;
 }
 
 /// Always inlined, with sort_by_angle: tier 1 calls it with count == 2 just set, and the loops
@@ -159,22 +183,7 @@ bool first_harmonic_proof(const RimDistancePolynomial& g, RimRoots& result) {
   if (sign_at_zero < 0) return false;  // impossible with A > 0; keep the proof honest
 
   for (int i = 0; i < kMaxNewtonSteps && any_lane(runs.running); ++i) runs.step();
-  // g's error budget for the enclosures: the coefficient errors plus a few ulps of the terms.
-  const double term_size = std::fabs(g.k[0].value) + std::fabs(g.k[1].value) +
-                           std::fabs(g.k[2].value) + std::fabs(g.k[3].value) + std::fabs(g.k[4].value);
-  const double budget = g.coefficient_error() + 16 * kUnitRoundoff * term_size;
-  const int directions[2] = {+1, -1};
-  for (int i = 0; i < 2; ++i) {
-    if (!enclose_after_newton(g, runs.base_of(i), runs.offset[i], runs.slope[i], budget,
-                              directions[i], result.roots[i]))
-      return false;
-  }
-  // cos and sin of the real base + offset of each root, which lies inside its enclosure.
-  const CosSinOf<Pair> at = cos_sin_near(runs.base, runs.offset);
-  for (int i = 0; i < 2; ++i) {
-    result.roots[i].cos = at.cos[i];
-    result.roots[i].sin = at.sin[i];
-  }
+  if (!enclose_after_newton(g, runs, result)) return false;
   result.count = 2;
   result.proved = true;
   sort_and_wrap(result);
