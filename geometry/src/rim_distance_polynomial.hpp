@@ -134,10 +134,7 @@ BoundedOf<T> RimDistancePolynomial::value_near(const Base& base, T offset) const
   // sum |k_i| e_i (each true trig value is at most 1 in magnitude), the coefficients' own
   // errors, and its rounding, gamma_6 of sum |k_i| |t_i| <= 8u sum |k_i| (|t_i| <= 1 + e_t).
   // Each operation may also underflow (2^-1074 each, 32 of them cover the 25 here).
-  const CosSinOf<T> t = cos_sin_near(base, offset);
-  const T c = t.cos, s = t.sin;
-  const T cos2 = (c - s) * (c + s), sin2 = 2 * s * c;
-  const T value = k[0].value + k[1].value * c + k[2].value * s + k[3].value * cos2 + k[4].value * sin2;
+  const T value = approximate_near(base, offset).value;  // its slope is never formed (inline)
 
   const T a = magnitude(offset), a3 = a * a * a;
   // The sine's Taylor remainder a^9 / 9!, rounded to nearest (a few u of a term below 0.4 u:
