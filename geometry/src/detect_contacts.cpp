@@ -217,9 +217,16 @@ class CertificateAccumulator {
   bool any_ = false;
 };
 
-/// Crossings bounding `arc` (its ends are crossing angles, as the kernel builds them).
+/// Crossings bounding `arc` (its ends are crossing angles, as the kernel builds them). Two
+/// crossings bound every arc but the full rim (both kernels build an arc between consecutive
+/// crossings): that common case without the search, in the search's order.
 void copy_arc_crossings(const RimCrossing* crossings, int count, const RimArc& arc,
                         Contact& contact) {
+  if (count == 2 && !arc.full) {
+    contact.crossings = {crossings[0], crossings[1]};
+    contact.crossing_count = 2;
+    return;
+  }
   for (int k = 0; k < count && contact.crossing_count < 2; ++k) {
     if (crossings[k].angle == arc.begin || crossings[k].angle == arc.end) {
       contact.crossings[contact.crossing_count++] = crossings[k];
