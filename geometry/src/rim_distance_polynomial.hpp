@@ -91,10 +91,11 @@ struct RimDistancePolynomial {
 /// both. The innermost terms multiply by the rounded reciprocals instead of dividing by 5040
 /// and 40320: one rounding more (the constant's), of a term below x^6 / 5040 < 2^-36, so far
 /// below the 4u; and the divisions were the longest latencies on the Newton step's chain.
-/// The reciprocals are constant expressions, folded at compile time: the library is built with
-/// -frounding-math (CGAL's requirement), under which GCC leaves an inexact 1.0 / 6 in ordinary
-/// code as a run-time division. Either way each is 1/n rounded to nearest, the mode the kernel
-/// runs in (error_bounded.hpp); folded, they no longer cost six divisions per call.
+/// The reciprocals are constant expressions, folded at compile time whatever the flags of the
+/// file that includes this header: under -frounding-math (which CGAL::CGAL asks for, and which
+/// geometry/CMakeLists.txt now keeps for the exact tiers only) GCC leaves an inexact 1.0 / 6 in
+/// ordinary code as a run-time division. Either way each is 1/n rounded to nearest, the mode the
+/// kernel runs in (error_bounded.hpp); folded, they no longer cost six divisions per call.
 inline constexpr double kInverse6 = 1.0 / 6, kInverse24 = 1.0 / 24, kInverse120 = 1.0 / 120,
                         kInverse720 = 1.0 / 720, kInverse5040 = 1.0 / 5040,
                         kInverse40320 = 1.0 / 40320, kInverse362880 = 1.0 / 362880;
