@@ -109,8 +109,9 @@ struct JointSetup {
 /// The fields of JointSetup that both set_up overloads take from the inputs unchanged.
 /// Inlined into both, so that the default values of the fields they set next are not stored
 /// first (GCC kept it out of line).
-[[gnu::always_inline]] inline JointSetup inputs_as_given(const JointDimensions& dimensions, const PartPose& bearing_in_world,
-                           const PartPose& journal_in_world) {
+[[gnu::always_inline]] inline JointSetup inputs_as_given(const JointDimensions& dimensions,
+                                                         const PartPose& bearing_in_world,
+                                                         const PartPose& journal_in_world) {
   JointSetup s;
   s.bearing_radius = dimensions.bearing_radius;
   s.journal_radius = dimensions.journal_radius;
@@ -535,8 +536,9 @@ struct Prefilter {
 /// prove_candidates_clear would answer.
 /// Always inlined into its one caller: GCC kept it out of line once detect_contacts grew, and
 /// handing `found` back through memory cost ~20 instructions per free flight (callgrind).
-[[gnu::always_inline]] inline void prefilter_if_ready(const JointDimensions& dimensions, const PartPose& bearing, const PartPose& journal,
-                        const DetectionOptions& options, Prefilter& found) {
+[[gnu::always_inline]] inline void prefilter_if_ready(const JointDimensions& dimensions, const PartPose& bearing,
+                                                      const PartPose& journal, const DetectionOptions& options,
+                                                      Prefilter& found) {
   using detail::Lanes;
   using detail::LaneVector3;
   const double Ri = dimensions.bearing_radius, Rj = dimensions.journal_radius;
