@@ -277,7 +277,9 @@ void radial_contact(const JointSetup& s, ContactBase base, const Circle3& rim, c
   contact.type = ContactType::radial;
   contact.base = base;
   contact.certificate = hit.certificate;
-  const Vector3 radial_offset_of_center = off_axis(rim.center - s.p_WPi, s.bearing_axis_hat_W);
+  // journal_contact_point reads the direction of the deepest point only for a full arc.
+  const Vector3 radial_offset_of_center =
+      arc.full ? off_axis(rim.center - s.p_WPi, s.bearing_axis_hat_W) : Vector3::Zero();
   copy_arc_crossings(hit.crossings.data(), hit.crossing_count, arc, contact);
   contact.p_WCj = journal_contact_point(rim, arc, contact, radial_offset_of_center, s.journal_axis_hat_W);
   const Vector3 offset = contact.p_WCj - s.p_WPi;
