@@ -1,8 +1,11 @@
 #include "rim_plane_quantities.hpp"
 
+#include <array>
+#include <bit>
 #include <cmath>
 
 #include "a_priori_bounds.hpp"
+#include "pair_lanes.hpp"
 #include "primitives_detail.hpp"
 #include "scale_normalisation.hpp"
 
@@ -15,55 +18,80 @@ BoundedVector3 exact(const Vector3& v) { return {v.x(), v.y(), v.z()}; }
 
 namespace {
 
+/// A value beside its absolute-value twin (a_priori_bounds.hpp), the value in lane 0 and the twin
+/// in lane 1 (pair_lanes.hpp). The twin is the value's expression on |inputs| with subtractions
+/// turned into additions, so one chain of packed operations forms both, each lane rounded exactly
+/// as the scalar operation: the bits of the value and of the twin computed one after the other.
+/// A subtracted product's factor enters as {x, -|x|}: a - (-|x|) y is a + |x| y exactly (negation
+/// is exact, and so is that of a rounded product).
+Pair with_twin(double x) {
+  const PairMask kAllButLane1Sign = ~reinterpret_cast<PairMask>(Pair{0.0, -0.0});
+  return reinterpret_cast<Pair>(reinterpret_cast<PairMask>(Pair{x, x}) & kAllButLane1Sign);
+}
+Pair with_negated_twin(double x) {
+  const PairMask kLane1Sign = reinterpret_cast<PairMask>(Pair{0.0, -0.0});
+  return reinterpret_cast<Pair>(reinterpret_cast<PairMask>(Pair{x, x}) | kLane1Sign);
+}
+
 /// The a priori computation in plain double, each value beside its absolute-value twin
-/// (a_priori_bounds.hpp). Chains of roundings: c - p 1, s 4, w 2, w2 5, nc2 and np2 3,
-/// discriminant 10 (s^2 nc2 9, r^2 w2 7, then the difference).
+/// (with_twin). Chains of roundings: c - p 1, s 4, w 2, w2 5, nc2 and np2 3, discriminant 10
+/// (s^2 nc2 9, r^2 w2 7, then the difference).
 struct APrioriTerms {
-  double s, s_abs;
-  Vector3 w, w_abs;
-  double w2, w2_abs, nc2;
-  double discriminant, discriminant_abs;
+  Pair s;
+  std::array<Pair, 3> w;
+  Pair w2;
+  Pair nc2, np2;  ///< in both lanes: x^2 and |x|^2 round alike, so each is its own twin
+  Pair discriminant;
   double nc_1, np_1;  ///< 1-norms of the normals, for the guard (plane_quantities_if_ready)
 };
 APrioriTerms a_priori_terms(const Circle3& circle, const Plane3& plane) {
   // Component by component: the same operations as Eigen's cwiseAbs/cross/dot, without the
   // temporaries, which it did not fold away here (this and the guard below were ~240
-  // instructions of a ~1250-instruction query).
+  // instructions of a ~1250-instruction query); in lanes, the value's and the twin's at once.
   const Vector3& c = circle.center;
   const Vector3& p = plane.point;
   const Vector3& np = plane.normal;
   const Vector3& nc = circle.normal;
-  const double dx = c.x() - p.x(), dy = c.y() - p.y(), dz = c.z() - p.z();
-  const double px = std::fabs(np.x()), py = std::fabs(np.y()), pz = std::fabs(np.z());
-  const double cx = std::fabs(nc.x()), cy = std::fabs(nc.y()), cz = std::fabs(nc.z());
+  const Pair dx = with_twin(c.x() - p.x()), dy = with_twin(c.y() - p.y()), dz = with_twin(c.z() - p.z());
+  const Pair px = with_twin(np.x()), py = with_twin(np.y()), pz = with_twin(np.z());
+  const Pair cx = with_twin(nc.x()), cy = with_twin(nc.y()), cz = with_twin(nc.z());
   APrioriTerms t;
-  t.s = np.x() * dx + np.y() * dy + np.z() * dz;
-  t.s_abs = px * std::fabs(dx) + py * std::fabs(dy) + pz * std::fabs(dz);
-  t.w = Vector3(np.y() * nc.z() - np.z() * nc.y(), np.z() * nc.x() - np.x() * nc.z(),
-                np.x() * nc.y() - np.y() * nc.x());
-  t.w_abs = Vector3(py * cz + pz * cy, pz * cx + px * cz, px * cy + py * cx);
-  t.w2 = t.w.x() * t.w.x() + t.w.y() * t.w.y() + t.w.z() * t.w.z();
-  t.w2_abs = t.w_abs.x() * t.w_abs.x() + t.w_abs.y() * t.w_abs.y() + t.w_abs.z() * t.w_abs.z();
-  t.nc2 = nc.x() * nc.x() + nc.y() * nc.y() + nc.z() * nc.z();
+  t.s = px * dx + py * dy + pz * dz;
+  // w = n_p x n_c; its twin |n_p| x |n_c| with + (abs_cross).
+  t.w = {py * cz - with_negated_twin(np.z()) * cy, pz * cx - with_negated_twin(np.x()) * cz,
+         px * cy - with_negated_twin(np.y()) * cx};
+  t.w2 = t.w[0] * t.w[0] + t.w[1] * t.w[1] + t.w[2] * t.w[2];
+  t.nc2 = cx * cx + cy * cy + cz * cz;
+  t.np2 = px * px + py * py + pz * pz;
   const double r2 = circle.radius * circle.radius;
-  t.discriminant = t.s * t.s * t.nc2 - r2 * t.w2;
-  t.discriminant_abs = t.s_abs * t.s_abs * t.nc2 + r2 * t.w2_abs;
-  t.nc_1 = cx + cy + cz;
-  t.np_1 = px + py + pz;
+  // r^2 w2 is subtracted from the value and added to the twin: -r^2 in lane 1 (with_negated_twin).
+  t.discriminant = t.s * t.s * t.nc2 - Pair{r2, -r2} * t.w2;
+  t.nc_1 = (cx + cy + cz)[1];
+  t.np_1 = (px + py + pz)[1];
   return t;
+}
+
+/// a_priori_with_underflow(value, twin) of {value, twin}, in the lanes: Bounded is {value, error},
+/// the layout of a Pair. Lane 1 is a_priori_with_underflow's kGamma64 * twin *
+/// kMagnitudeInflation + kUnderflowAllowance; lane 0 multiplies the value by 1 twice and adds -0,
+/// which gives back its bits (-0 and subnormals included). Test: the bits equal those of
+/// a_priori_with_underflow (test_rim_plane_quantities.cpp). As two scalar calls, with the lanes
+/// taken apart first, it cost ~23 more instructions per plane query (callgrind).
+Bounded a_priori_from_twin(Pair value_and_twin) {
+  return std::bit_cast<Bounded>(value_and_twin * Pair{1.0, kGamma64} * Pair{1.0, kMagnitudeInflation} +
+                                Pair{-0.0, kUnderflowAllowance});
 }
 
 }  // namespace
 
 namespace {
 PlaneQuantities plane_quantities_from_terms(const APrioriTerms& t, double np2) {
-  return {a_priori_with_underflow(t.s, t.s_abs),
-          {a_priori_with_underflow(t.w.x(), t.w_abs.x()), a_priori_with_underflow(t.w.y(), t.w_abs.y()),
-           a_priori_with_underflow(t.w.z(), t.w_abs.z())},
-          a_priori_with_underflow(t.w2, t.w2_abs),
-          a_priori_with_underflow(t.nc2, t.nc2),
+  return {a_priori_from_twin(t.s),
+          {a_priori_from_twin(t.w[0]), a_priori_from_twin(t.w[1]), a_priori_from_twin(t.w[2])},
+          a_priori_from_twin(t.w2),
+          a_priori_from_twin(t.nc2),
           a_priori_with_underflow(np2, np2),
-          a_priori_with_underflow(t.discriminant, t.discriminant_abs)};
+          a_priori_from_twin(t.discriminant)};
 }
 
 }  // namespace
@@ -136,9 +164,8 @@ bool plane_a_priori_bounds_apply(const Circle3& circle, const Plane3& plane) {
 
 ReadyPlaneQuantities plane_quantities_if_ready(const Circle3& circle, const Plane3& plane) {
   const APrioriTerms t = a_priori_terms(circle, plane);
-  const Vector3& np = plane.normal;
-  const double np2 = np.x() * np.x() + np.y() * np.y() + np.z() * np.z();
-  const GuardMagnitudes g{lengths_one_norm(circle, plane), t.nc_1, t.np_1, t.nc2, np2};
+  const double np2 = t.np2[0];
+  const GuardMagnitudes g{lengths_one_norm(circle, plane), t.nc_1, t.np_1, t.nc2[0], np2};
   if (!inputs_ready(g, circle.radius)) return {};
   return {true, plane_quantities_from_terms(t, np2)};
 }
@@ -175,12 +202,12 @@ RimSide rim_side_of_plane(const Circle3& circle, const Plane3& plane, bool a_pri
   Bounded s, discriminant;
   if (a_priori_bounds_apply) {  // only the two values the side needs, not all the quantities
     const APrioriTerms t = a_priori_terms(circle, plane);
-    s = a_priori_with_underflow(t.s, t.s_abs);
-    discriminant = a_priori_with_underflow(t.discriminant, t.discriminant_abs);
+    s = a_priori_from_twin(t.s);
+    discriminant = a_priori_from_twin(t.discriminant);
     if (distance_error != 0.0) {
       const double np2 = plane.normal.squaredNorm();
       widen_side_quantities(s, discriminant, a_priori_with_underflow(np2, np2),
-                            a_priori_with_underflow(t.nc2, t.nc2), distance_error);
+                            a_priori_from_twin(t.nc2), distance_error);
     }
   } else {
     PlaneQuantities q = plane_quantities_running_error(circle, plane);
