@@ -12,6 +12,7 @@
 #include <random>
 #include <vector>
 
+#include "a_priori_bounds.hpp"
 #include "enclosure_checks.hpp"
 #include "mpfr_reference.hpp"
 
@@ -221,6 +222,63 @@ TEST(PlaneQuantitiesIfReady, GivesTheAPrioriQuantitiesBitForBitWhenTheInputsAreR
         << i;
   }
   EXPECT_GT(ready, 2000);  // every scale above lies inside the unscaled range
+}
+
+/// The a priori quantities one value at a time, as written before the value and its twin shared
+/// the SSE2 lanes: each value, its absolute-value twin (a_priori_bounds.hpp) and
+/// a_priori_with_underflow of the two.
+PlaneQuantities a_priori_one_at_a_time(const Pose& pose) {
+  const Vector3& c = pose.circle.center;
+  const Vector3& p = pose.plane.point;
+  const Vector3& np = pose.plane.normal;
+  const Vector3& nc = pose.circle.normal;
+  const double dx = c.x() - p.x(), dy = c.y() - p.y(), dz = c.z() - p.z();
+  const double px = std::fabs(np.x()), py = std::fabs(np.y()), pz = std::fabs(np.z());
+  const double cx = std::fabs(nc.x()), cy = std::fabs(nc.y()), cz = std::fabs(nc.z());
+  const double s = np.x() * dx + np.y() * dy + np.z() * dz;
+  const double s_abs = px * std::fabs(dx) + py * std::fabs(dy) + pz * std::fabs(dz);
+  const Vector3 w(np.y() * nc.z() - np.z() * nc.y(), np.z() * nc.x() - np.x() * nc.z(),
+                  np.x() * nc.y() - np.y() * nc.x());
+  const Vector3 w_abs(py * cz + pz * cy, pz * cx + px * cz, px * cy + py * cx);
+  const double w2 = w.x() * w.x() + w.y() * w.y() + w.z() * w.z();
+  const double w2_abs = w_abs.x() * w_abs.x() + w_abs.y() * w_abs.y() + w_abs.z() * w_abs.z();
+  const double nc2 = nc.x() * nc.x() + nc.y() * nc.y() + nc.z() * nc.z();
+  const double np2 = np.squaredNorm();  // as plane_quantities_a_priori forms it
+  const double r2 = pose.circle.radius * pose.circle.radius;
+  const double discriminant = s * s * nc2 - r2 * w2;
+  const double discriminant_abs = s_abs * s_abs * nc2 + r2 * w2_abs;
+  return {a_priori_with_underflow(s, s_abs),
+          {a_priori_with_underflow(w.x(), w_abs.x()), a_priori_with_underflow(w.y(), w_abs.y()),
+           a_priori_with_underflow(w.z(), w_abs.z())},
+          a_priori_with_underflow(w2, w2_abs),
+          a_priori_with_underflow(nc2, nc2),
+          a_priori_with_underflow(np2, np2),
+          a_priori_with_underflow(discriminant, discriminant_abs)};
+}
+
+TEST(PlaneQuantities, APrioriVersionHoldsTheBitsOfEachValueAndItsTwinComputedOneAtATime) {
+  // Random poses at three scales, and poses on small integers with signed zeros, whose exact
+  // cancellations give zeros of either sign: every bit, the sign of a zero included, must be
+  // that of the one-at-a-time computation.
+  std::mt19937_64 rng(20261124);
+  std::uniform_int_distribution<int> small(-2, 2);
+  auto coordinate = [&] {
+    const int k = small(rng);
+    return k == 0 && rng() % 2 == 0 ? -0.0 : static_cast<double>(k);
+  };
+  auto integer_vector = [&] { return Vector3(coordinate(), coordinate(), coordinate()); };
+  for (int i = 0; i < 6000; ++i) {
+    const double scale = i % 3 == 0 ? 1e-12 : (i % 3 == 1 ? 1.0 : 1e12);
+    const Pose pose = i % 2 == 0 ? random_pose(rng, scale, -1.0)
+                                 : Pose{{integer_vector(), integer_vector(), 1.0 + (i / 2) % 3},
+                                        {integer_vector(), integer_vector()}};
+    const PlaneQuantities q = plane_quantities_a_priori(pose.circle, pose.plane);
+    const PlaneQuantities e = a_priori_one_at_a_time(pose);
+    ASSERT_TRUE(same_bits(q.s, e.s) && same_bits(q.w.x, e.w.x) && same_bits(q.w.y, e.w.y) &&
+                same_bits(q.w.z, e.w.z) && same_bits(q.w2, e.w2) && same_bits(q.nc2, e.nc2) &&
+                same_bits(q.np2, e.np2) && same_bits(q.discriminant, e.discriminant))
+        << i;
+  }
 }
 
 TEST(PlaneQuantitiesIfReady, HoldsForRealisticInputsAndFailsForEveryBadOrOutOfRangeField) {
