@@ -186,17 +186,6 @@ RimSide rim_side_of_plane(const Circle3& circle, const Plane3& plane) {
   return rim_side_of_plane(circle, plane, plane_a_priori_bounds_apply(circle, plane));
 }
 
-void widen_side_quantities(Bounded& s, Bounded& discriminant, const Bounded& np2, const Bounded& nc2,
-                           double distance_error) {
-  if (distance_error == 0.0) return;
-  widen_side_quantities_by_shift(s, discriminant, nc2,
-                                 side_shift(plane_normal_length_bound(np2), distance_error));
-}
-
-void widen_for_point_error(PlaneQuantities& q, double distance_error) {
-  widen_side_quantities(q.s, q.discriminant, q.np2, q.nc2, distance_error);
-}
-
 RimSide rim_side_of_plane(const Circle3& circle, const Plane3& plane, bool a_priori_bounds_apply,
                           double distance_error) {
   Bounded s, discriminant;
