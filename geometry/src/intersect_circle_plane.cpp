@@ -8,6 +8,8 @@
 
 #include "clearjoint/geometry/intersect_circle_plane.hpp"
 
+#include <emmintrin.h>
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -16,6 +18,7 @@
 #include "angles.hpp"
 #include "circle_plane_exact.hpp"
 #include "error_bounded.hpp"
+#include "pair_lanes.hpp"
 #include "primitives_detail.hpp"
 #include "rim_plane_quantities.hpp"
 #include "rounded_point_queries.hpp"
@@ -100,10 +103,13 @@ AngleWithTrig acos_of(const Bounded& c) {
   const double spread = c.error * detail::kErrorInflation;
   const double far = std::fabs(c.value) + spread;
   if (far < kNearUnitCosine) {
-    const double slope_bound = 1.0 / std::sqrt((1.0 - far) * (1.0 + far)) * (1 + 0x1p-40);
-    return {{std::acos(c.value), spread * slope_bound + kLibmAngleError},
-            c.value,
-            std::sqrt((1.0 - c.value) * (1.0 + c.value))};
+    // sqrt((1 - x)(1 + x)) of the far end (lane 0, for the slope bound) and of the centre (lane 1,
+    // its sine) side by side (pair_lanes.hpp): one packed square root, each lane correctly
+    // rounded as std::sqrt is (~4 instructions fewer per crossing rim than two, callgrind).
+    const detail::Pair x = {far, c.value};
+    const detail::Pair root = _mm_sqrt_pd((1.0 - x) * (1.0 + x));
+    const double slope_bound = 1.0 / root[0] * (1 + 0x1p-40);
+    return {{std::acos(c.value), spread * slope_bound + kLibmAngleError}, c.value, root[1]};
   }
   const double low = std::acos(std::clamp(c.value + spread, -1.0, 1.0));
   const double high = std::acos(std::clamp(c.value - spread, -1.0, 1.0));
