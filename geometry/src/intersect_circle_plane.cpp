@@ -123,8 +123,9 @@ AngleWithTrig acos_of(const Bounded& c) {
 Bounded in_plane_normal_length(const detail::PlaneQuantities& q) {
   constexpr double kTinySquare = 0x1p-1000, kUp = 0x1p600, kDown = 0x1p-600;
   const Bounded plain = sqrt(q.w2 / q.nc2);
+  if (!(q.w2.value < kTinySquare)) return plain;  // nearly always: w's zero test only after it
   const bool w_computed_zero = q.w.x.value == 0.0 && q.w.y.value == 0.0 && q.w.z.value == 0.0;
-  if (!(q.w2.value < kTinySquare) || w_computed_zero) return plain;
+  if (w_computed_zero) return plain;
   const BoundedVector3 w{q.w.x * kUp, q.w.y * kUp, q.w.z * kUp};
   const Bounded scaled = sqrt(squared_norm(w) / q.nc2) * kDown;
   // The scaling also scales the error bounds, whose squares can overflow (w computed as exactly
