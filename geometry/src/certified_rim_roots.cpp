@@ -161,18 +161,7 @@ bool first_harmonic_proof(const RimDistancePolynomial& g, RimRoots& result) {
   if (!(amplitude_low > 4 * bound_dh)) return false;
   const double sin_alpha = 2 * bound_dh / amplitude_low * kSlack;
   const Bounded cos_alpha = sqrt(Bounded(1.0) - Bounded(sin_alpha) * sin_alpha);
-  const Bounded hg(0.0, bound_h);
-
-  auto end_sign = [&](Bounded near_cos, Bounded far_cos) {
-    // g over an end arc lies in k0 + A [near_cos, far_cos] + [-Hg, Hg] (A > 0, linear in c): it
-    // has a sign if both ends, widened by Hg, have it. x - hg and x + hg are the same
-    // enclosure (hg's value is 0: the sums differ at most in the sign of a zero, which sign()
-    // ignores), so one sign per end decides + and - alike.
-    const int near = (k0 + amplitude * near_cos - hg).sign();
-    return near != 0 && near == (k0 + amplitude * far_cos - hg).sign() ? near : 0;
-  };
-  const int sign_at_zero = end_sign(cos_alpha, Bounded(1.0));
-  const int sign_at_pi = end_sign(-cos_alpha, Bounded(-1.0));
+  const auto [sign_at_zero, sign_at_pi] = end_arc_signs(k0, amplitude, cos_alpha, bound_h);
   if (sign_at_zero == 0 || sign_at_pi == 0) return false;
   if (sign_at_zero == sign_at_pi) {
     result.proved = true;

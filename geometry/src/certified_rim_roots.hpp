@@ -99,6 +99,54 @@ struct NewtonRuns {
   }
 };
 
+/// Bounded's +, - and * (error_bounded.hpp) on two lanes at once, for tier 1's end-arc signs:
+/// each lane does the scalar operation's roundings in the scalar order (no FMA to contract
+/// into, pair_lanes.hpp), so lane(i) of a result is, bit for bit, the scalar operation on the
+/// operands' lane(i), error bound included.
+inline Pair rounding_error(Pair computed) { return kUnitRoundoff * magnitude(computed) + kUnderflowError; }
+inline PairBounded operator+(const PairBounded& a, const PairBounded& b) {
+  const Pair v = a.value + b.value;
+  return {v, (a.error + b.error + rounding_error(v)) * kErrorInflation};
+}
+inline PairBounded operator-(const PairBounded& a, const PairBounded& b) {
+  const Pair v = a.value - b.value;
+  return {v, (a.error + b.error + rounding_error(v)) * kErrorInflation};
+}
+inline PairBounded operator*(const PairBounded& a, const PairBounded& b) {
+  const Pair v = a.value * b.value;
+  const Pair e = magnitude(a.value) * b.error + magnitude(b.value) * a.error + a.error * b.error;
+  return {v, (e + rounding_error(v) + 2 * kUnderflowError) * kErrorInflation};
+}
+/// x in both lanes.
+inline PairBounded both_lanes(const Bounded& x) { return {Pair{x.value, x.value}, Pair{x.error, x.error}}; }
+/// Bounded::sign() per lane, as masks: `positive` where it is +1, `negative` where it is -1.
+struct PairSigns {
+  PairMask positive, negative;
+};
+inline PairSigns signs(const PairBounded& x) {
+  const Pair margin = x.error * kErrorInflation + kUnderflowError;
+  return {x.value > margin, x.value < -margin};
+}
+
+/// The first-harmonic proof's end-arc signs (certified_rim_roots.cpp, tier 1): {at 0, at pi},
+/// the sign g keeps over the end arc |psi| <= alpha, resp. |psi - pi| <= alpha, or 0 where none
+/// is proved. g there lies in k0 + A [near, far] + [-Hg, Hg] (A > 0, linear in the cosine c):
+/// it has a sign if both ends, widened by Hg, have it. Both arcs' near ends (c = cos alpha,
+/// -cos alpha) are evaluated in one pair of lanes and both far ends (c = 1, -1) in another.
+/// x - hg and x + hg are the same enclosure (hg's value is 0: the sums differ at most in the
+/// sign of a zero, which sign() ignores), so one sign per end decides + and - alike.
+inline std::array<int, 2> end_arc_signs(const Bounded& k0, const Bounded& amplitude, const Bounded& cos_alpha,
+                                        double bound_h) {
+  const PairBounded k0s = both_lanes(k0), amplitudes = both_lanes(amplitude);
+  const PairBounded hg = both_lanes(Bounded(0.0, bound_h));
+  const PairBounded near_cos = {Pair{cos_alpha.value, -cos_alpha.value}, Pair{cos_alpha.error, cos_alpha.error}};
+  const PairBounded far_cos = {Pair{1.0, -1.0}, Pair{0.0, 0.0}};
+  const PairSigns near = signs(k0s + amplitudes * near_cos - hg);
+  const PairSigns far = signs(k0s + amplitudes * far_cos - hg);
+  const PairMask positive = near.positive & far.positive, negative = near.negative & far.negative;
+  return {positive[0] ? 1 : negative[0] ? -1 : 0, positive[1] ? 1 : negative[1] ? -1 : 0};
+}
+
 /// Sorts the first `count` roots by angle (insertion sort: at most four elements, and
 /// std::sort on a 4-element array trips gcc 12's -Warray-bounds). Inline: see sort_and_wrap
 /// (certified_rim_roots.cpp).

@@ -417,5 +417,85 @@ TEST(NewtonRuns, FreezesARunWithANonFiniteStepWhileTheOtherRuns) {
   expect_lanes_step_as_the_runs_alone(polynomial(1.0, 1.0, 0.0, 0.0, 0.0), {0.0, 3.0}, moves, one_stopped);
   EXPECT_GT(one_stopped, 0);
 }
+
+/// Tier 1's end-arc signs as first_harmonic_proof computed them before they shared lanes, with
+/// scalar Bounded arithmetic: the reference end_arc_signs must reproduce in each lane.
+int end_sign_alone(const Bounded& k0, const Bounded& amplitude, Bounded near_cos, Bounded far_cos,
+                   double bound_h) {
+  const Bounded hg(0.0, bound_h);
+  const int near = (k0 + amplitude * near_cos - hg).sign();
+  return near != 0 && near == (k0 + amplitude * far_cos - hg).sign() ? near : 0;
+}
+
+void expect_same_bits(const Bounded& scalar, const PairBounded& lanes, int lane) {
+  EXPECT_EQ(bits(lanes.value[lane]), bits(scalar.value)) << "lane " << lane;
+  EXPECT_EQ(bits(lanes.error[lane]), bits(scalar.error)) << "lane " << lane;
+}
+
+/// A value and error of random sign pattern and magnitude, zeros and subnormals included.
+Bounded random_bounded(std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  std::uniform_int_distribution<int> exponent(-1074, 1000), kind(0, 9);
+  const double value = kind(rng) == 0 ? 0.0 : std::ldexp(unit(rng), exponent(rng));
+  const double error = kind(rng) == 0 ? 0.0 : std::ldexp(std::fabs(unit(rng)), exponent(rng));
+  return {value, error};
+}
+
+TEST(PairBoundedArithmetic, EachLaneIsTheScalarOperationBitForBit) {
+  std::mt19937_64 rng(77);
+  for (int i = 0; i < 20000; ++i) {
+    const Bounded a[2] = {random_bounded(rng), random_bounded(rng)};
+    const Bounded b[2] = {random_bounded(rng), random_bounded(rng)};
+    const PairBounded pa = {Pair{a[0].value, a[1].value}, Pair{a[0].error, a[1].error}};
+    const PairBounded pb = {Pair{b[0].value, b[1].value}, Pair{b[0].error, b[1].error}};
+    const PairBounded sum = pa + pb, difference = pa - pb, product = pa * pb;
+    const PairSigns lane_signs = signs(pa);
+    for (int lane = 0; lane < 2; ++lane) {
+      expect_same_bits(a[lane] + b[lane], sum, lane);
+      expect_same_bits(a[lane] - b[lane], difference, lane);
+      expect_same_bits(a[lane] * b[lane], product, lane);
+      const int sign = lane_signs.positive[lane] ? 1 : lane_signs.negative[lane] ? -1 : 0;
+      EXPECT_EQ(sign, a[lane].sign()) << "lane " << lane;
+      EXPECT_FALSE(lane_signs.positive[lane] && lane_signs.negative[lane]);
+    }
+    if (HasFailure()) return;
+  }
+}
+
+TEST(EndArcSigns, AreTheScalarEndSignsOfBothArcs) {
+  // Tier 1's inputs (k0 against an amplitude, a cos(alpha) near 1, Hg a small fraction), with
+  // k0 swept across -A - Hg .. A + Hg so that every end is decided either way or left open, at
+  // many scales; and arbitrary Bounded operands for the arithmetic's corner cases.
+  std::mt19937_64 rng(2025);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  int decided[3] = {0, 0, 0};  // -1, 0, +1 at 0
+  for (int i = 0; i < 40000; ++i) {
+    Bounded k0, amplitude, cos_alpha;
+    double bound_h;
+    if (i % 4 != 3) {
+      const double scale = std::ldexp(1.0, static_cast<int>(unit(rng) * 60));
+      amplitude = {scale * (1 + 0.5 * unit(rng)), scale * std::ldexp(std::fabs(unit(rng)), -50)};
+      bound_h = scale * std::ldexp(std::fabs(unit(rng)), -static_cast<int>(4 + 40 * std::fabs(unit(rng))));
+      const double sin_alpha = std::fabs(unit(rng)) * 0.5;
+      cos_alpha = sqrt(Bounded(1.0) - Bounded(sin_alpha) * sin_alpha);
+      k0 = {amplitude.value * (1.2 * unit(rng)), scale * std::ldexp(std::fabs(unit(rng)), -50)};
+      if (i % 4 == 2) k0.value = (unit(rng) > 0 ? 1 : -1) * (amplitude.value * cos_alpha.value + unit(rng) * bound_h);
+    } else {
+      k0 = random_bounded(rng);
+      amplitude = random_bounded(rng);
+      cos_alpha = random_bounded(rng);
+      bound_h = std::fabs(random_bounded(rng).value);
+    }
+    const std::array<int, 2> lanes = end_arc_signs(k0, amplitude, cos_alpha, bound_h);
+    const int at_zero = end_sign_alone(k0, amplitude, cos_alpha, Bounded(1.0), bound_h);
+    const int at_pi = end_sign_alone(k0, amplitude, -cos_alpha, Bounded(-1.0), bound_h);
+    ASSERT_EQ(lanes[0], at_zero) << "case " << i;
+    ASSERT_EQ(lanes[1], at_pi) << "case " << i;
+    ++decided[at_zero + 1];
+  }
+  EXPECT_GT(decided[0], 1000);
+  EXPECT_GT(decided[1], 1000);
+  EXPECT_GT(decided[2], 1000);
+}
 }  // namespace
 }  // namespace clearjoint::geometry::detail
