@@ -142,8 +142,10 @@ bool first_harmonic_proof(const RimDistancePolynomial& g, RimRoots& result) {
   const double first_error = g.k[1].error + g.k[2].error;
   const double bound_h = (second + first_error) * kSlack;
   const double bound_dh = (2 * second + first_error) * kSlack;
-  const Bounded amplitude =
-      sqrt(Bounded(g.k[1].value) * g.k[1].value + Bounded(g.k[2].value) * g.k[2].value);
+  // A^2 = k1^2 + k2^2 of the stored values (exact operands), both squares in one pair of lanes.
+  const PairBounded first_harmonic = {Pair{g.k[1].value, g.k[2].value}, Pair{0.0, 0.0}};
+  const PairBounded squares = first_harmonic * first_harmonic;
+  const Bounded amplitude = sqrt(squares.lane(0) + squares.lane(1));
   const double amplitude_low = amplitude.lower() / kSlack;
 
   // If there are two roots, they lie at psi = +-acos(-k0 / A) to first order; g decreases through
