@@ -707,6 +707,31 @@ TEST(CircleCylinder, FindsCrossingsAtPiOverSixWhenAllLengthsAreNearTheOverflowLi
   EXPECT_NE(r.crossings[0].point.y() > 0, r.crossings[1].point.y() > 0);
 }
 
+// The crossings of these two lie at x = 1.85e308, beyond the largest double: the root count is
+// decided, but the points overflow, so the answer must not be certified and must carry no error
+// bound. Shifted by -0.7e308 along x, the same crossings are representable and certified.
+TEST(CircleCylinder, DoesNotCertifyCrossingPointsThatOverflow) {
+  const double R = std::sqrt(0.19) * 1e308;
+  const CircleCylinderIntersection far = intersect_circle_cylinder(
+      Circle3{Vector3(1.7e308, 0, 0), Vector3(0, 0, 1), 0.3e308}, Cylinder3{Vector3(1.5e308, 0, 0), Vector3(0, 0, 1), R});
+  ASSERT_EQ(far.crossing_count, 2);
+  EXPECT_EQ(far.certificate.level, Certainty::uncertain);
+  EXPECT_NE(std::string(far.certificate.reason).find("not representable"), std::string::npos);
+  for (int i = 0; i < 2; ++i) {
+    EXPECT_FALSE(far.crossings[i].point.allFinite());
+    EXPECT_EQ(far.crossings[i].angle_error, kNoErrorBound);
+    EXPECT_EQ(far.crossings[i].point_error, kNoErrorBound);
+  }
+  const CircleCylinderIntersection near = intersect_circle_cylinder(
+      Circle3{Vector3(1.0e308, 0, 0), Vector3(0, 0, 1), 0.3e308}, Cylinder3{Vector3(0.8e308, 0, 0), Vector3(0, 0, 1), R});
+  ASSERT_EQ(near.crossing_count, 2);
+  EXPECT_NE(near.certificate.level, Certainty::uncertain);
+  for (int i = 0; i < 2; ++i) {
+    EXPECT_TRUE(near.crossings[i].point.allFinite());
+    EXPECT_TRUE(std::isfinite(near.crossings[i].point_error));
+  }
+}
+
 // Found by fuzzing `clearjoint detect`: a radius of 1e308 next to a subnormal axis point (so the
 // lengths cannot be rescaled exactly) sent an infinity into a CGAL rational, which made GMP
 // raise SIGFPE. The exact tier now refuses non-finite intermediates and gives up with a reason.
