@@ -284,11 +284,16 @@ bool subdivision_proof(const RimDistancePolynomial& g, RimRoots& result) {
 RimRoots certified_rim_roots(const RimDistancePolynomial& g) {
   RimRoots result;
   result.sign_without_roots = g.k[0].value > 0 ? 1 : -1;  // only a guess until proved
+  // Bounded::finite() of every coefficient, each value and error in the two lanes: x - x is +0
+  // for a finite x and NaN otherwise, and the sum of those is +0 exactly when every term is.
+  Pair differences = {0.0, 0.0};
   for (const Bounded& coefficient : g.k) {
-    if (!coefficient.finite()) {
-      result.failure = "coefficient overflow in double precision";
-      return result;
-    }
+    const Pair x = {coefficient.value, coefficient.error};
+    differences += x - x;
+  }
+  if (!all_lanes(differences == 0.0)) {
+    result.failure = "coefficient overflow in double precision";
+    return result;
   }
   if (first_harmonic_proof(g, result)) return result;
   result = RimRoots{};

@@ -259,6 +259,29 @@ TEST(CertifiedRimRoots, RefusesToProveWithNonFiniteCoefficients) {
   EXPECT_FALSE(certified_rim_roots(g).proved);
 }
 
+TEST(CertifiedRimRoots, NamesCoefficientOverflowForAnyNonFiniteValueOrError) {
+  const double non_finite[3] = {HUGE_VAL, -HUGE_VAL, std::numeric_limits<double>::quiet_NaN()};
+  for (int i = 0; i < 5; ++i) {
+    for (const double x : non_finite) {
+      for (const bool in_error : {false, true}) {
+        RimDistancePolynomial g = polynomial(0.5, 1, 0.25, 0.01, 0.02);
+        (in_error ? g.k[i].error : g.k[i].value) = x;
+        const RimRoots roots = certified_rim_roots(g);
+        EXPECT_FALSE(roots.proved);
+        EXPECT_STREQ(roots.failure, "coefficient overflow in double precision")
+            << "coefficient " << i << (in_error ? " error " : " value ") << x;
+      }
+    }
+  }
+  // Finite extremes pass the check: the largest double, a subnormal, and a negative zero.
+  RimDistancePolynomial g = polynomial(0.5, 1, 0.25, 0.01, 0.02);
+  g.k[3].value = -0.0;
+  g.k[4].error = std::numeric_limits<double>::denorm_min();
+  EXPECT_TRUE(certified_rim_roots(g).proved);
+  g.k[0].value = std::numeric_limits<double>::max();
+  EXPECT_STRNE(certified_rim_roots(g).failure, "coefficient overflow in double precision");
+}
+
 TEST(ApproximateRimRoots, FindsTheRootsWithoutClaimingAProof) {
   const RimDistancePolynomial g = polynomial(0.5, 1, 0, 0, 0);
   const RimRoots result = approximate_rim_roots(g);
