@@ -99,32 +99,14 @@ struct NewtonRuns {
   }
 };
 
-/// Bounded's +, - and * (error_bounded.hpp) on two lanes at once, for tier 1's end-arc signs:
-/// each lane does the scalar operation's roundings in the scalar order (no FMA to contract
-/// into, pair_lanes.hpp), so lane(i) of a result is, bit for bit, the scalar operation on the
-/// operands' lane(i), error bound included.
-inline Pair rounding_error(Pair computed) { return kUnitRoundoff * magnitude(computed) + kUnderflowError; }
-inline PairBounded operator+(const PairBounded& a, const PairBounded& b) {
-  const Pair v = a.value + b.value;
-  return {v, (a.error + b.error + rounding_error(v)) * kErrorInflation};
-}
-inline PairBounded operator-(const PairBounded& a, const PairBounded& b) {
-  const Pair v = a.value - b.value;
-  return {v, (a.error + b.error + rounding_error(v)) * kErrorInflation};
-}
-inline PairBounded operator*(const PairBounded& a, const PairBounded& b) {
-  const Pair v = a.value * b.value;
-  const Pair e = magnitude(a.value) * b.error + magnitude(b.value) * a.error + a.error * b.error;
-  return {v, (e + rounding_error(v) + 2 * kUnderflowError) * kErrorInflation};
-}
-/// x in both lanes.
+/// x in both lanes (PairBounded and its arithmetic: error_bounded.hpp).
 inline PairBounded both_lanes(const Bounded& x) { return {Pair{x.value, x.value}, Pair{x.error, x.error}}; }
 /// Bounded::sign() per lane, as masks: `positive` where it is +1, `negative` where it is -1.
 struct PairSigns {
   PairMask positive, negative;
 };
 inline PairSigns signs(const PairBounded& x) {
-  const Pair margin = x.error * kErrorInflation + kUnderflowError;
+  const Pair margin = sign_margin(x.error);
   return {x.value > margin, x.value < -margin};
 }
 

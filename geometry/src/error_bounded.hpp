@@ -17,6 +17,8 @@
 
 #include <cmath>
 
+#include "pair_lanes.hpp"
+
 namespace clearjoint::geometry::detail {
 
 /// Unit roundoff of binary64, round to nearest.
@@ -25,6 +27,17 @@ inline constexpr double kUnitRoundoff = 0x1p-53;
 inline constexpr double kUnderflowError = 0x1p-1074;
 /// See the file comment: covers the rounding of the error computations themselves.
 inline constexpr double kErrorInflation = 1.0 + 0x1p-48;
+
+// The arithmetic below is written once for a value type T: double (Bounded) or Pair (PairBounded,
+// two Boundeds side by side in SSE2 lanes, pair_lanes.hpp). A packed operation rounds each lane
+// as the scalar operation would, so lane i of a PairBounded result is, bit for bit, the Bounded
+// result on the operands' lane i.
+
+/// The margin sign() demands: value - error is itself rounded; one relative rounding more.
+template <class T>
+T sign_margin(T error) {
+  return error * kErrorInflation + kUnderflowError;
+}
 
 struct Bounded {
   double value = 0.0;
@@ -39,8 +52,7 @@ struct Bounded {
   bool finite() const { return std::isfinite(value) && std::isfinite(error); }
   /// +1 or -1 when the sign of the true value is proved, 0 when it is not.
   int sign() const {
-    // value - error is itself rounded; demand a margin of one relative rounding.
-    const double margin = error * kErrorInflation + kUnderflowError;
+    const double margin = sign_margin(error);
     if (value > margin) return 1;
     if (value < -margin) return -1;
     return 0;
@@ -52,24 +64,44 @@ struct Bounded {
 /// certified sqrt, a few percent of a circle-plane query.
 inline double nonnegative_part(double x) { return x > 0.0 ? x : 0.0; }
 
-inline double rounding_error(double computed) {
-  return kUnitRoundoff * std::fabs(computed) + kUnderflowError;
+/// Bounded for two values at once (see above); lane(i) is the i-th Bounded.
+struct PairBounded {
+  Pair value, error;
+  Bounded lane(int i) const { return {value[i], error[i]}; }
+};
+
+template <class T>
+T rounding_error(T computed) {
+  return kUnitRoundoff * magnitude(computed) + kUnderflowError;
 }
 
-inline Bounded operator+(Bounded a, Bounded b) {
-  const double v = a.value + b.value;
+/// +, - and * of Bounded and of PairBounded (B), on their values of type T.
+template <class B, class T = decltype(B::value)>
+B bounded_sum(const B& a, const B& b) {
+  const T v = a.value + b.value;
   return {v, (a.error + b.error + rounding_error(v)) * kErrorInflation};
 }
-inline Bounded operator-(Bounded a, Bounded b) {
-  const double v = a.value - b.value;
+template <class B, class T = decltype(B::value)>
+B bounded_difference(const B& a, const B& b) {
+  const T v = a.value - b.value;
   return {v, (a.error + b.error + rounding_error(v)) * kErrorInflation};
 }
-inline Bounded operator-(Bounded a) { return {-a.value, a.error}; }
-inline Bounded operator*(Bounded a, Bounded b) {
-  const double v = a.value * b.value;
-  const double e = std::fabs(a.value) * b.error + std::fabs(b.value) * a.error + a.error * b.error;
+template <class B, class T = decltype(B::value)>
+B bounded_product(const B& a, const B& b) {
+  const T v = a.value * b.value;
+  const T e = magnitude(a.value) * b.error + magnitude(b.value) * a.error + a.error * b.error;
   return {v, (e + rounding_error(v) + 2 * kUnderflowError) * kErrorInflation};
 }
+
+// Bounded's operators take their operands by value (not as templates): a double converts to an
+// exact Bounded, as in Bounded(1.0) - x * x.
+inline Bounded operator+(Bounded a, Bounded b) { return bounded_sum(a, b); }
+inline Bounded operator-(Bounded a, Bounded b) { return bounded_difference(a, b); }
+inline Bounded operator-(Bounded a) { return {-a.value, a.error}; }
+inline Bounded operator*(Bounded a, Bounded b) { return bounded_product(a, b); }
+inline PairBounded operator+(const PairBounded& a, const PairBounded& b) { return bounded_sum(a, b); }
+inline PairBounded operator-(const PairBounded& a, const PairBounded& b) { return bounded_difference(a, b); }
+inline PairBounded operator*(const PairBounded& a, const PairBounded& b) { return bounded_product(a, b); }
 inline Bounded operator/(Bounded a, Bounded b) {
   const double v = a.value / b.value;
   const double denominator = std::fabs(b.value) - b.error * kErrorInflation;

@@ -38,12 +38,8 @@ struct ValueAndSlopeOf {
 };
 using ValueAndSlope = ValueAndSlopeOf<double>;
 
-/// value_near at two offsets, in lanes; lane(i) is what value_near gives at offset i.
-struct PairBounded {
-  Pair value, error;
-  Bounded lane(int i) const { return {value[i], error[i]}; }
-};
-/// value_near's result: Bounded for one offset, PairBounded for two.
+/// value_near's result: Bounded for one offset, PairBounded (error_bounded.hpp) for two, whose
+/// lane(i) is what value_near gives at offset i.
 template <class T>
 using BoundedOf = std::conditional_t<std::is_same_v<T, Pair>, PairBounded, Bounded>;
 
