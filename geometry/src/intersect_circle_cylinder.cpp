@@ -27,14 +27,6 @@ constexpr double kPointRoundingUlps = 32 * detail::kUnitRoundoff;
 constexpr double kPointFromRootTrigUlps = 64 * detail::kUnitRoundoff;
 static_assert(2 * detail::kAngleAdditionTrigError < 64 * detail::kUnitRoundoff);
 
-/// Whether every x is finite: x - x is +0 for a finite x and NaN for an infinite or NaN one,
-/// and a sum of such terms is 0 exactly when every term is. One comparison and branch for the
-/// lot, instead of one per value (std::isfinite each, or Eigen's allFinite).
-template <class... Doubles>
-bool every_value_finite(Doubles... x) {
-  return ((x - x) + ...) == 0.0;
-}
-
 /// The answer without crossings: `sign` as RimRoots::sign_without_roots. Its own function so
 /// that the reach test's answers need no RimRoots (four default-constructed enclosures, ~30
 /// instructions, on the path most free-flight rims take).
@@ -161,9 +153,9 @@ CircleCylinderIntersection detail::intersect_valid_circle_cylinder(const Circle3
   for (int i = 0; i < out.crossing_count; ++i) {
     const RimCrossing& crossing = out.crossings[i];
     const Vector3& point = crossing.point;
-    if (!(bounded ? every_value_finite(crossing.angle, point.x(), point.y(), point.z(), crossing.angle_error,
+    if (!(bounded ? detail::every_value_finite(crossing.angle, point.x(), point.y(), point.z(), crossing.angle_error,
                                crossing.point_error)
-                  : every_value_finite(crossing.angle, point.x(), point.y(), point.z()))) {
+                  : detail::every_value_finite(crossing.angle, point.x(), point.y(), point.z()))) {
       out.certificate = {Certainty::uncertain,
                          "crossing points or their error bounds not representable in double (intermediate under- or "
                          "overflow: input magnitudes too far apart); the root count is still decided"};
