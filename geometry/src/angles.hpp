@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "pair_lanes.hpp"
+
 namespace clearjoint::geometry::detail {
 
 inline constexpr double kTwoPi = 2 * std::numbers::pi;
@@ -35,22 +37,44 @@ inline constexpr double kApproximateAngleError = 4e-7;
 /// on [0, 1] is z p(z^2), p the degree-7 Chebyshev least-squares fit of atan(z)/z in z^2 on
 /// [0, 1] (numpy, 200001 points; max error 2.9e-7 rad), converted to powers; the other octants
 /// by atan(z) = pi/2 - atan(1/z) and the signs of x and y.
-inline double approximate_atan2(double y, double x) {
-  const double ax = std::fabs(x), ay = std::fabs(y);
-  const double big = ax > ay ? ax : ay, small = ax > ay ? ay : ax;
-  if (big == 0.0) return 0.0;
-  const double z = small / big, t = z * z;
-  const double p =
+/// The fit's z p(z^2), for double or, lane by lane, Pair.
+template <class T>
+T approximate_atan_of_ratio(T z) {
+  const T t = z * z;
+  const T p =
       0.9999999227755191 +
       t * (-0.33332232618669755 +
            t * (0.1997402857578832 +
                 t * (-0.14047821221115434 +
                      t * (0.10002205229428647 +
                           t * (-0.060874481860006865 + t * (0.025331700814268776 + t * -0.005021063842473555))))));
-  double angle = z * p;
+  return z * p;
+}
+
+inline double approximate_atan2(double y, double x) {
+  const double ax = std::fabs(x), ay = std::fabs(y);
+  const double big = ax > ay ? ax : ay, small = ax > ay ? ay : ax;
+  if (big == 0.0) return 0.0;
+  double angle = approximate_atan_of_ratio(small / big);
   if (ay > ax) angle = 0.5 * std::numbers::pi - angle;
   if (x < 0.0) angle = std::numbers::pi - angle;
   return y < 0.0 ? -angle : angle;
+}
+
+/// approximate_atan2 of two (y, x) pairs at once, lane i bit for bit approximate_atan2(y[i], x[i]),
+/// its branches as lane selects: tier 1 (certified_rim_roots.cpp) takes both of its angles here.
+/// Which octant each lands in depends on the pose: as branches they were mispredicted about once
+/// per crossing rim (callgrind's branch simulator, ~2.6 per in-contact detection with wrap_angle).
+inline Pair approximate_atan2(Pair y, Pair x) {
+  const Pair ax = magnitude(x), ay = magnitude(y);
+  const PairMask x_bigger = ax > ay;
+  const Pair big = select(x_bigger, ax, ay), small = select(x_bigger, ay, ax);
+  // 0 / 0 in a lane whose inputs are both zero: NaN there, replaced by 0 at the end.
+  Pair angle = approximate_atan_of_ratio(small / big);
+  angle = select(ay > ax, 0.5 * std::numbers::pi - angle, angle);
+  angle = select(x < 0.0, std::numbers::pi - angle, angle);
+  angle = select(y < 0.0, -angle, angle);
+  return select(big == 0.0, Pair{0.0, 0.0}, angle);
 }
 
 /// acos(c) within kApproximateAngleError for c in [-1, 1] (clamped), in [0, pi]: the angle of
@@ -58,6 +82,13 @@ inline double approximate_atan2(double y, double x) {
 inline double approximate_acos(double c) {
   const double x = c < -1.0 ? -1.0 : (c > 1.0 ? 1.0 : c);
   return approximate_atan2(std::sqrt((1.0 - x) * (1.0 + x)), x);
+}
+
+/// {approximate_atan2(y, x), approximate_acos(c)}, bit for bit, in the two lanes of one
+/// approximate_atan2: tier 1's two starting angles (certified_rim_roots.cpp).
+inline Pair approximate_atan2_and_acos(double y, double x, double c) {
+  const double clamped = c < -1.0 ? -1.0 : (c > 1.0 ? 1.0 : c);
+  return approximate_atan2(Pair{y, std::sqrt((1.0 - clamped) * (1.0 + clamped))}, Pair{x, clamped});
 }
 
 }  // namespace clearjoint::geometry::detail

@@ -154,8 +154,8 @@ bool first_harmonic_proof(const RimDistancePolynomial& g, RimRoots& result) {
   // would buy nothing. Formed (with their grid angles, angle_grid.hpp) before the proof that
   // there are two roots, which nearly every rim that gets here has: the chain of square roots
   // and divisions then overlaps with the proof's arithmetic instead of following it.
-  const double phi = approximate_atan2(g.k[2].value, g.k[1].value);
-  const double beta = approximate_acos(-k0.value / amplitude.value);
+  const Pair phi_beta = approximate_atan2_and_acos(g.k[2].value, g.k[1].value, -k0.value / amplitude.value);
+  const double phi = phi_beta[0], beta = phi_beta[1];
   NewtonRuns runs(g, {phi - beta, phi + beta});
 
   // sin(alpha) = 2 Hd / A: the factor 2 leaves room for rounding; beyond 1/2 the monotone

@@ -8,6 +8,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
+#include <limits>
 #include <numbers>
 #include <random>
 #include <vector>
@@ -129,6 +131,49 @@ TEST(Angles, ApproximateAcosStaysWithinItsErrorAndClampsOutOfRangeCosines) {
   EXPECT_LT(worst, kApproximateAngleError);
   EXPECT_NEAR(approximate_acos(1.0 + 1e-12), 0.0, kApproximateAngleError);
   EXPECT_NEAR(approximate_acos(-1.0 - 1e-12), std::numbers::pi, kApproximateAngleError);
+}
+
+
+/// The same double, bit for bit (a NaN matches any NaN).
+bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0 || (a != a && b != b); }
+
+TEST(Angles, ApproximateAtan2InLanesGivesEachLaneTheScalarBits) {
+  // Every octant and sign (the lane selects replace the scalar's branches), signed zeros, equal
+  // magnitudes (the octant boundary), tiny and huge values, and random pairs; each lane against
+  // the scalar call alone, with the other lane holding a different case.
+  std::vector<double> values = {0.0, -0.0, 1.0, -1.0, 2.0, -2.0, 0.5, -0.5, 1e-300, -1e-300, 1e300, -1e300,
+                                std::numeric_limits<double>::denorm_min(), std::numeric_limits<double>::infinity(),
+                                -std::numeric_limits<double>::infinity()};
+  std::mt19937_64 random(20261124);
+  std::uniform_real_distribution<double> uniform(-3.0, 3.0);
+  for (int i = 0; i < 200; ++i) values.push_back(uniform(random));
+  int compared = 0;
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    for (std::size_t j = 0; j < values.size(); ++j) {
+      const double y0 = values[i], x0 = values[j];
+      const double y1 = values[(i + 7) % values.size()], x1 = values[(j + 3) % values.size()];
+      const Pair lanes = approximate_atan2(Pair{y0, y1}, Pair{x0, x1});
+      ASSERT_TRUE(same_bits(lanes[0], approximate_atan2(y0, x0))) << y0 << " " << x0;
+      ASSERT_TRUE(same_bits(lanes[1], approximate_atan2(y1, x1))) << y1 << " " << x1;
+      ++compared;
+    }
+  }
+  EXPECT_EQ(compared, static_cast<int>(values.size() * values.size()));
+}
+
+TEST(Angles, ApproximateAtan2AndAcosGivesBothScalarAnglesBitForBit) {
+  std::mt19937_64 random(42);
+  std::uniform_real_distribution<double> uniform(-3.0, 3.0), cosine(-1.2, 1.2);
+  for (int i = 0; i < 20000; ++i) {
+    const double y = uniform(random), x = uniform(random), c = cosine(random);
+    const Pair both = approximate_atan2_and_acos(y, x, c);
+    ASSERT_TRUE(same_bits(both[0], approximate_atan2(y, x))) << y << " " << x;
+    ASSERT_TRUE(same_bits(both[1], approximate_acos(c))) << c;
+  }
+  for (const double c : {-1.0, 1.0, -0.0, 0.0, -1.5, 1.5}) {
+    EXPECT_TRUE(same_bits(approximate_atan2_and_acos(0.0, 0.0, c)[1], approximate_acos(c))) << c;
+    EXPECT_TRUE(same_bits(approximate_atan2_and_acos(0.0, 0.0, c)[0], 0.0));
+  }
 }
 
 }  // namespace
