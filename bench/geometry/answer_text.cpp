@@ -1,0 +1,107 @@
+#include "answer_text.hpp"
+
+#include <cstdio>
+
+namespace clearjoint::bench {
+namespace {
+
+namespace geo = clearjoint::geometry;
+
+// "%a" of a double needs at most 24 characters ("-0x1.fffffffffffffp+1023").
+void append_number(std::string& line, double value) {
+  char text[32];
+  const int length = std::snprintf(text, sizeof text, " %a", value);
+  line.append(text, static_cast<std::size_t>(length));
+}
+
+void append_vector(std::string& line, const geo::Vector3& v) {
+  append_number(line, v.x());
+  append_number(line, v.y());
+  append_number(line, v.z());
+}
+
+// An integer or enum with its tag: " n2".
+void append_tagged(std::string& line, const char* tag, int value) {
+  line += ' ';
+  line += tag;
+  line += std::to_string(value);
+}
+
+void append_certificate(std::string& line, const geo::Certificate& certificate) {
+  append_tagged(line, "c", static_cast<int>(certificate.level));
+  line += " \"";
+  // The reason is printed as text: two builds whose reasons are equal strings at different
+  // addresses print the same line.
+  line += certificate.reason != nullptr ? certificate.reason : "(null)";
+  line += '"';
+}
+
+void append_crossing(std::string& line, const geo::RimCrossing& crossing) {
+  line += " x";
+  append_number(line, crossing.angle);
+  append_number(line, crossing.angle_error);
+  append_vector(line, crossing.point);
+  append_number(line, crossing.point_error);
+  append_tagged(line, "m", crossing.multiplicity);
+}
+
+void append_arc(std::string& line, const geo::RimArc& arc) {
+  line += " arc";
+  append_number(line, arc.begin);
+  append_number(line, arc.end);
+  append_tagged(line, "f", arc.full ? 1 : 0);
+}
+
+void append_contact(std::string& line, const geo::Contact& contact) {
+  line += " |";
+  append_tagged(line, "t", static_cast<int>(contact.type));
+  append_tagged(line, "b", static_cast<int>(contact.base));
+  append_vector(line, contact.p_WCj);
+  append_vector(line, contact.p_WCi);
+  append_vector(line, contact.normal_W);
+  append_number(line, contact.depth);
+  append_tagged(line, "nc", contact.crossing_count);
+  for (int k = 0; k < contact.crossing_count; ++k) append_crossing(line, contact.crossings[k]);
+  append_certificate(line, contact.certificate);
+}
+
+}  // namespace
+
+void append_answer(std::string& line, const geo::JointContacts& answer) {
+  append_tagged(line, "s", static_cast<int>(answer.scenario));
+  append_tagged(line, "al", answer.aligned ? 1 : 0);
+  append_tagged(line, "n", answer.contact_count);
+  append_certificate(line, answer.certificate);
+  for (int i = 0; i < answer.contact_count; ++i) append_contact(line, answer.contacts[i]);
+}
+
+void append_answer(std::string& line, const geo::CircleCylinderIntersection& answer) {
+  append_tagged(line, "t", static_cast<int>(answer.topology));
+  append_tagged(line, "n", answer.crossing_count);
+  append_tagged(line, "a", answer.arc_count);
+  append_certificate(line, answer.certificate);
+  for (int k = 0; k < answer.crossing_count; ++k) append_crossing(line, answer.crossings[k]);
+  for (int k = 0; k < answer.arc_count; ++k) append_arc(line, answer.penetration_arcs[k]);
+}
+
+void append_answer(std::string& line, const geo::CirclePlaneIntersection& answer) {
+  append_tagged(line, "t", static_cast<int>(answer.topology));
+  append_tagged(line, "s", answer.side);
+  append_tagged(line, "n", answer.crossing_count);
+  append_certificate(line, answer.certificate);
+  // The arc is printed whatever has_penetration says: a build that leaves another arc there when
+  // there is no penetration has still changed a public field.
+  append_tagged(line, "pen", answer.has_penetration ? 1 : 0);
+  append_arc(line, answer.penetration);
+  line += " msd";
+  append_number(line, answer.max_signed_distance);
+  append_number(line, answer.max_signed_distance_error);
+  for (int k = 0; k < answer.crossing_count; ++k) append_crossing(line, answer.crossings[k]);
+}
+
+void append_exception(std::string& line, const std::exception& error) {
+  line += " threw ";
+  line += error.what();
+}
+
+}  // namespace clearjoint::bench
