@@ -13,36 +13,40 @@
 
 #include <array>
 
-#include <Eigen/Core>
-
 #include "a_priori_bounds.hpp"
 #include "candidate_prefilter.hpp"
 #include "error_bounded.hpp"
+#include "pair_lanes.hpp"
 #include "rim_plane_quantities.hpp"
 
 namespace clearjoint::geometry::detail {
 
-using Lanes = Eigen::Array2d;
-using LaneFlags = Eigen::Array<bool, 2, 1>;
+/// Lane 0 base A's value, lane 1 base B's (or, in rim_distance_polynomial.cpp, a value and its
+/// twin). The GCC vector Pair (pair_lanes.hpp), not Eigen's Array2d, which these lanes were
+/// until 2026-11-24: GCC built an Array2d from two doubles by two 8-byte stores and one 16-byte
+/// load, which the store buffer cannot forward (a stall of ~10 cycles each time, on the
+/// critical path of the prefilter and of the a priori polynomial); a Pair it builds in registers.
+using Lanes = Pair;
+using LaneFlags = PairMask;
 struct LaneVector3 {
   Lanes x, y, z;
 };
 
-inline Lanes lanes(const std::array<double, 2>& v) { return {v[0], v[1]}; }
+/// x in both lanes.
+inline Lanes broadcast(double x) { return Lanes{x, x}; }
+inline Lanes lanes(const std::array<double, 2>& v) { return Lanes{v[0], v[1]}; }
 inline LaneVector3 lanes(const std::array<Vector3, 2>& v) {
-  return {{v[0].x(), v[1].x()}, {v[0].y(), v[1].y()}, {v[0].z(), v[1].z()}};
+  return {Lanes{v[0].x(), v[1].x()}, Lanes{v[0].y(), v[1].y()}, Lanes{v[0].z(), v[1].z()}};
 }
 /// The same vector in both lanes.
-inline LaneVector3 both_lanes(const Vector3& v) {
-  return {Lanes::Constant(v.x()), Lanes::Constant(v.y()), Lanes::Constant(v.z())};
-}
+inline LaneVector3 both_lanes(const Vector3& v) { return {broadcast(v.x()), broadcast(v.y()), broadcast(v.z())}; }
 inline LaneVector3 operator+(const LaneVector3& p, const LaneVector3& q) { return {p.x + q.x, p.y + q.y, p.z + q.z}; }
 inline LaneVector3 operator-(const LaneVector3& p, const LaneVector3& q) { return {p.x - q.x, p.y - q.y, p.z - q.z}; }
 /// v scaled per lane (by +-1 in the callers: exact).
 inline LaneVector3 scaled(const Lanes& s, const Vector3& v) { return {s * v.x(), s * v.y(), s * v.z()}; }
-inline LaneVector3 abs(const LaneVector3& v) { return {v.x.abs(), v.y.abs(), v.z.abs()}; }
+inline LaneVector3 abs(const LaneVector3& v) { return {magnitude(v.x), magnitude(v.y), magnitude(v.z)}; }
 /// |v|_1 per lane, as Eigen's v.cwiseAbs().sum().
-inline Lanes one_norm(const LaneVector3& v) { return v.x.abs() + v.y.abs() + v.z.abs(); }
+inline Lanes one_norm(const LaneVector3& v) { return magnitude(v.x) + magnitude(v.y) + magnitude(v.z); }
 inline Lanes dot(const Vector3& a, const LaneVector3& v) { return a.x() * v.x + a.y() * v.y + a.z() * v.z; }
 inline Lanes squared_norm(const LaneVector3& v) { return v.x * v.x + v.y * v.y + v.z * v.z; }
 /// c x a per lane.
@@ -69,14 +73,14 @@ struct LaneBounded {
 /// operation for operation.
 inline void widen_side_quantities_by_shift(LaneBounded& s, LaneBounded& discriminant, const Bounded& nc2,
                                            const Lanes& shift) {
-  const Lanes high_s = s.value.abs() + s.error;
+  const Lanes high_s = magnitude(s.value) + s.error;
   const double high_nc2 = std::fabs(nc2.value) + nc2.error;
-  const Lanes low_s = s.value.abs() - s.error;
+  const Lanes low_s = magnitude(s.value) - s.error;
   const Lanes centre_shift = shift * shift;
-  const Lanes half_width = (low_s >= shift).select(2.0 * high_s * shift, (2.0 * high_s + shift) * shift);
+  const Lanes half_width = select(low_s >= shift, 2.0 * high_s * shift, (2.0 * high_s + shift) * shift);
   const Lanes value = discriminant.value + centre_shift * nc2.value;
   const Lanes added_error = (half_width * high_nc2 + centre_shift * nc2.error) * kWideningRounding +
-                            kUnitRoundoff * value.abs() + 2 * kUnderflowError;
+                            kUnitRoundoff * magnitude(value) + 2 * kUnderflowError;
   s.error = (s.error + shift) * kWideningRounding;
   discriminant = {value, (discriminant.error + added_error) * kWideningRounding};
 }
@@ -110,15 +114,15 @@ struct CandidateLanes {
 
   // Radial: rim_reach's a priori "strictly inside" test. The axis point is 0, so q = c exactly.
   const Lanes& e = in.radial_errors;
-  const Lanes gap = Lanes::Constant(R - r) - e, gap_abs = Lanes::Constant(R - r) + e;
+  const Lanes gap = broadcast(R - r) - e, gap_abs = broadcast(R - r) + e;
   const Lanes gap2 = gap * gap * axis_norm2;
   const LaneVector3& c = in.radial_centres;
   const Lanes offset2 = squared_norm(cross(c, a));
   const Lanes offset2_abs = squared_norm(abs_cross(abs(c), a_abs));
-  const LaneFlags radial =
-      (Lanes::Constant(R - r) > e) &&
-      (gap2 - offset2 > kGamma64 * (gap_abs * gap_abs * axis_norm2 + offset2_abs) * kMagnitudeInflation +
-                            kUnderflowAllowance);
+  const LaneFlags gap_positive = broadcast(R - r) > e;
+  const LaneFlags offset_proved_small =
+      gap2 - offset2 > kGamma64 * (gap_abs * gap_abs * axis_norm2 + offset2_abs) * kMagnitudeInflation +
+                           kUnderflowAllowance;
 
   // Axial: rim_side_of_plane's a priori "strictly negative" test (a_priori_terms). Base plane X
   // has normal sigma a_i (sigma = +1 at A, -1 at B): its s is sigma (a_i . (c - p)) and its
@@ -132,19 +136,20 @@ struct CandidateLanes {
   const Bounded nc2_bounded = a_priori_with_underflow(nc2, nc2);
   const double normal_length = plane_normal_length_bound(np2);  // |n_p| = |a_i|, rounded up
   const LaneVector3 d = in.rim_centres - in.base_points;
-  const Lanes s_value = dot(a, d) * Lanes(1.0, -1.0);  // times -1: exact, as the negation
+  const Lanes s_value = dot(a, d) * Lanes{1.0, -1.0};  // times -1: exact, as the negation
   const Lanes s_abs = dot(a_abs, abs(d));
   LaneBounded s{s_value, a_priori_error(s_abs)};
   LaneBounded discriminant{s_value * s_value * nc2 - r2_w2, a_priori_error(s_abs * s_abs * nc2 + r2_w2_abs)};
   // side_shift(normal_length, rim error + base error), per lane.
   const Lanes shift = normal_length * (in.rim_errors + in.base_errors) * kWideningRounding + kUnderflowError;
   widen_side_quantities_by_shift(s, discriminant, nc2_bounded, shift);
-  const LaneFlags axial = discriminant.positive() && s.negative();
+  const LaneFlags no_crossing = discriminant.positive(), inside_base = s.negative();
 
+  const LaneFlags radial = gap_positive & offset_proved_small, axial = no_crossing & inside_base;
   CandidatesClear out;
   for (int k = 0; k < 2; ++k) {
-    out.radial[k] = radial[k];
-    out.axial[k] = axial[k];
+    out.radial[k] = radial[k] != 0;
+    out.axial[k] = axial[k] != 0;
   }
   return out;
 }

@@ -11,6 +11,10 @@
 
 #include <cmath>
 
+#ifdef __SSE2__
+#include <emmintrin.h>
+#endif
+
 namespace clearjoint::geometry::detail {
 
 using Pair = double __attribute__((vector_size(16)));
@@ -33,6 +37,16 @@ inline double magnitude(double x) { return std::fabs(x); }
 inline Pair magnitude(Pair x) {
   const PairMask kMagnitudeBits = {0x7fff'ffff'ffff'ffff, 0x7fff'ffff'ffff'ffff};
   return reinterpret_cast<Pair>(reinterpret_cast<PairMask>(x) & kMagnitudeBits);
+}
+
+/// The correctly rounded square root of each lane, as std::sqrt gives it for a double (sqrtpd
+/// on SSE2; one lane at a time elsewhere).
+inline Pair square_root(Pair x) {
+#ifdef __SSE2__
+  return reinterpret_cast<Pair>(_mm_sqrt_pd(reinterpret_cast<__m128d>(x)));
+#else
+  return Pair{std::sqrt(x[0]), std::sqrt(x[1])};
+#endif
 }
 
 }  // namespace clearjoint::geometry::detail

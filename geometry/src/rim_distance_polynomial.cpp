@@ -94,7 +94,7 @@ RimDistancePolynomial rim_distance_polynomial_a_priori(const Circle3& circle,
   // one double at a time (callgrind, 498 -> 394 per detection).
   const LaneVector3 uv = lanes(std::array<Vector3, 2>{u, v});
   const LaneVector3 uv_abs = lanes(std::array<Vector3, 2>{ua, v_abs});
-  const Lanes inverse_norms = 1.0 / squared_norm(uv).sqrt();  // 1 / |u'|, 1 / |v'|
+  const Lanes inverse_norms = 1.0 / square_root(squared_norm(uv));  // 1 / |u'|, 1 / |v'|
   // frame_of(circle) with the same operations as primitives.cpp's unit(), whose plain branch
   // always applies here: the guard keeps |u'|^2 and |n|^2 within [2^-200, 2^202]. Formed as soon
   // as 1 / |u'| is known: at the end, with more values live, it cost 14 instructions more.
@@ -108,25 +108,25 @@ RimDistancePolynomial rim_distance_polynomial_a_priori(const Circle3& circle,
   // From here on each pair is a value (lane 0) beside its absolute-value twin (lane 1): a
   // subtraction in the value is an addition in the twin, x - (-y) = x + y in IEEE arithmetic, so
   // lane 1's subtrahend is negated (times -1, exact) and the pair subtracted.
-  const Lanes kTwinSubtrahend(1.0, -1.0);
+  const Lanes kTwinSubtrahend = {1.0, -1.0};
   const Lanes tilt_term =
       squared_norm(lanes(std::array<Vector3, 2>{n.cross(d), abs_cross(na, da)})) * inverse_n_norm2;
-  const Lanes radii_term = Lanes(r - R, std::fabs(r - R)) * (r + R);
+  const Lanes radii_term = Lanes{r - R, std::fabs(r - R)} * (r + R);
   // Lane i of a u'/v' pair beside lane i of its twin pair.
-  auto with_twin = [](const Lanes& values, const Lanes& twins, int i) { return Lanes(values[i], twins[i]); };
+  auto with_twin = [](const Lanes& values, const Lanes& twins, int i) { return Lanes{values[i], twins[i]}; };
   const Lanes first_cos = with_twin(first, first_abs, 0), first_sin = with_twin(first, first_abs, 1);
   const Lanes along_u = with_twin(along, along_abs, 0), along_v = with_twin(along, along_abs, 1);
 
   const Lanes coefficients[5] = {
-      (Lanes(offset.perp2, offset.perp2_abs) - 0.5 * r2 * tilt_term * kTwinSubtrahend) * inverse_axis_norm2 +
+      (Lanes{offset.perp2, offset.perp2_abs} - 0.5 * r2 * tilt_term * kTwinSubtrahend) * inverse_axis_norm2 +
           radii_term,
       2.0 * r * first_cos * inverse_axis_norm2,
       2.0 * r * first_sin * inverse_axis_norm2,
       0.5 * r2 * (along_v * along_v - along_u * along_u * kTwinSubtrahend) * inverse_axis_norm2,
       // -(r2 along_u along_v) in lane 0, negated before the last product; its twin not negated.
-      r2 * along_u * along_v * Lanes(-1.0, 1.0) * inverse_axis_norm2};
+      r2 * along_u * along_v * Lanes{-1.0, 1.0} * inverse_axis_norm2};
   // The bound kGamma64 * twin * kMagnitudeInflation in lane 1; lane 0's value times 1 (exact).
-  const Lanes kBound(1.0, kGamma64), kInflation(1.0, kMagnitudeInflation);
+  const Lanes kBound = {1.0, kGamma64}, kInflation = {1.0, kMagnitudeInflation};
   RimDistancePolynomial g;
   for (int i = 0; i < 5; ++i) {
     const Lanes k = coefficients[i] * kBound * kInflation;
