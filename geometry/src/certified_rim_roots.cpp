@@ -95,11 +95,12 @@ bool enclose_after_newton(const RimDistancePolynomial& g, const NewtonRuns& runs
   Pair eps = 16 * kUnitRoundoff * (1.0 + magnitude(angle));
   const Pair from_slope = 2 * budget / runs.slope;
   eps = select((runs.slope > 0.0) & (eps < from_slope), from_slope, eps);
+  // The widths in doubles and eps rebuilt whole (not eps[i] = width: see NewtonRuns' constructor).
+  double widths[2] = {eps[0], eps[1]};
   for (int i = 0; i < 2; ++i) {
-    double width = eps[i];
-    if (!prove_sign_change(g, runs.base_of(i), offset[i], directions[i], width)) return false;
-    eps[i] = width;
+    if (!prove_sign_change(g, runs.base_of(i), offset[i], directions[i], widths[i])) return false;
   }
+  eps = Pair{widths[0], widths[1]};
   // offset -+ eps are rounded too: (1 + 4u) covers it.
   const Pair radius = (eps * (1 + 4 * kUnitRoundoff) + rounding) * kSlack;
   // cos and sin of each real base + offset, which lies inside its enclosure.

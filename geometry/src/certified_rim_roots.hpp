@@ -63,15 +63,18 @@ struct NewtonRuns {
   /// (exact) offset.
   NewtonRuns(const RimDistancePolynomial& g, const std::array<double, 2>& guesses) {
     for (int i = 0; i < 5; ++i) k[i] = Pair{g.k[i].value, g.k[i].value};
-    for (int i = 0; i < 2; ++i) start_at(i, grid_angle(guesses[i]));
+    start_at({grid_angle(guesses[0]), grid_angle(guesses[1])});
   }
 
-  void start_at(int i, const GridAngle& at) {
-    base.angle[i] = at.base.angle;
-    base.cos[i] = at.base.cos;
-    base.sin[i] = at.base.sin;
-    offset[i] = at.offset;
+  /// Run i from at[i]. Each Pair is built whole rather than lane by lane: GCC wrote a lane as
+  /// an 8-byte store, which the next step's 16-byte load of the Pair must wait for (no store
+  /// forwarding), and kept the runs' state in memory for it.
+  void start_at(const std::array<GridAngle, 2>& at) {
+    base = {Pair{at[0].base.angle, at[1].base.angle}, Pair{at[0].base.cos, at[1].base.cos},
+            Pair{at[0].base.sin, at[1].base.sin}};
+    offset = Pair{at[0].offset, at[1].offset};
   }
+  GridAngle current(int i) const { return {base_of(i), offset[i]}; }
   AngleBase base_of(int i) const { return {base.angle[i], base.cos[i], base.sin[i]}; }
 
   /// One iteration of each run that has not stopped.
@@ -93,9 +96,9 @@ struct NewtonRuns {
     offset = select(advances, next, offset);
     running &= finite & ~settles;  // a non-finite step stops the run where it is
     if (!any_lane(moves)) return;
-    for (int i = 0; i < 2; ++i) {
-      if (moves[i]) start_at(i, grid_angle(base.angle[i] + next[i]));
-    }
+    std::array<GridAngle, 2> starts;
+    for (int i = 0; i < 2; ++i) starts[i] = moves[i] ? grid_angle(base.angle[i] + next[i]) : current(i);
+    start_at(starts);
   }
 };
 
