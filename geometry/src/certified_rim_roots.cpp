@@ -8,9 +8,10 @@
 namespace clearjoint::geometry::detail {
 namespace {
 
-/// Newton steps from a good start: quadratic convergence from the first harmonic's roots (or an
-/// arc midpoint) reaches double precision in 3-4 steps; more only burns time before the proof.
-constexpr int kMaxNewtonSteps = 6;
+/// Newton steps (tier 2) or Halley steps (tier 1) from a good start: from the first harmonic's
+/// roots (or an arc midpoint) they reach double precision in 3-4, resp. 2-3 steps; more only
+/// burns time before the proof.
+constexpr int kMaxIterationSteps = 6;
 /// Growth of the trial enclosure when a sign check is inconclusive, and how often to try.
 constexpr double kEnclosureGrowth = 8.0;
 constexpr int kMaxEnclosureTrials = 8;
@@ -28,7 +29,7 @@ constexpr double kSlack = 1.0 + 0x1p-44;
 double high(const Bounded& x) { return std::fabs(x.value) + x.error; }
 
 double newton(const RimDistancePolynomial& g, double theta, double low, double high_end) {
-  for (int i = 0; i < kMaxNewtonSteps; ++i) {
+  for (int i = 0; i < kMaxIterationSteps; ++i) {
     const double step = g.approximate_newton_step(theta);
     if (!std::isfinite(step)) break;
     const double next = std::clamp(theta - step, low, high_end);
@@ -75,9 +76,9 @@ bool prove_sign_change(const RimDistancePolynomial& g, const AngleBase& base, do
   return false;
 }
 
-/// The proofs of tier 1's two simple roots where the Newton runs stopped, root i in lane i (g
+/// The proofs of tier 1's two simple roots where the Halley runs stopped, root i in lane i (g
 /// changes sign as directions[i] there), into result.roots[0, 1].
-bool enclose_after_newton(const RimDistancePolynomial& g, const NewtonRuns& runs, RimRoots& result) {
+bool enclose_after_iteration(const RimDistancePolynomial& g, const HalleyRuns& runs, RimRoots& result) {
   const int directions[2] = {+1, -1};
   const Pair offset = runs.offset;
   const Pair angle = runs.base.angle + offset;
@@ -87,7 +88,7 @@ bool enclose_after_newton(const RimDistancePolynomial& g, const NewtonRuns& runs
   const Pair rounding = 2 * kUnitRoundoff * (magnitude(angle) + magnitude(offset)) + kUnderflowError;
   // First trial: twice the root's uncertainty, |g error| / |g'|, with g's error budget being the
   // coefficient errors plus a few ulps of the terms, if wider than a few ulps of the angle; later
-  // trials grow by kEnclosureGrowth. The slope is the last Newton iterate's: a heuristic for the
+  // trials grow by kEnclosureGrowth. The slope is the last Halley iterate's: a heuristic for the
   // first trial only.
   const double term_size = std::fabs(g.k[0].value) + std::fabs(g.k[1].value) +
                            std::fabs(g.k[2].value) + std::fabs(g.k[3].value) + std::fabs(g.k[4].value);
@@ -95,7 +96,7 @@ bool enclose_after_newton(const RimDistancePolynomial& g, const NewtonRuns& runs
   Pair eps = 16 * kUnitRoundoff * (1.0 + magnitude(angle));
   const Pair from_slope = 2 * budget / runs.slope;
   eps = select((runs.slope > 0.0) & (eps < from_slope), from_slope, eps);
-  // The widths in doubles and eps rebuilt whole (not eps[i] = width: see NewtonRuns' constructor).
+  // The widths in doubles and eps rebuilt whole (not eps[i] = width: see HalleyRuns::start_at).
   double widths[2] = {eps[0], eps[1]};
   for (int i = 0; i < 2; ++i) {
     if (!prove_sign_change(g, runs.base_of(i), offset[i], directions[i], widths[i])) return false;
@@ -150,14 +151,14 @@ bool first_harmonic_proof(const RimDistancePolynomial& g, RimRoots& result) {
   const double amplitude_low = amplitude.lower() / kSlack;
 
   // If there are two roots, they lie at psi = +-acos(-k0 / A) to first order; g decreases through
-  // the + one. These are Newton's starting guesses, which the second harmonic moves the roots
+  // the + one. These are the Halley runs' starting guesses, which the second harmonic moves the roots
   // away from by far more than the approximations' 4e-7 rad (angles.hpp): libm's atan2 and acos
   // would buy nothing. Formed (with their grid angles, angle_grid.hpp) before the proof that
   // there are two roots, which nearly every rim that gets here has: the chain of square roots
   // and divisions then overlaps with the proof's arithmetic instead of following it.
   const Pair phi_beta = approximate_atan2_and_acos(g.k[2].value, g.k[1].value, -k0.value / amplitude.value);
   const double phi = phi_beta[0], beta = phi_beta[1];
-  NewtonRuns runs(g, {phi - beta, phi + beta});
+  HalleyRuns runs(g, {phi - beta, phi + beta});
 
   // sin(alpha) = 2 Hd / A: the factor 2 leaves room for rounding; beyond 1/2 the monotone
   // arcs get too short to be useful and tier 2 is the better tool.
@@ -174,8 +175,8 @@ bool first_harmonic_proof(const RimDistancePolynomial& g, RimRoots& result) {
   }
   if (sign_at_zero < 0) return false;  // impossible with A > 0; keep the proof honest
 
-  for (int i = 0; i < kMaxNewtonSteps && any_lane(runs.running); ++i) runs.step();
-  if (!enclose_after_newton(g, runs, result)) return false;
+  for (int i = 0; i < kMaxIterationSteps && any_lane(runs.running); ++i) runs.step();
+  if (!enclose_after_iteration(g, runs, result)) return false;
   result.count = 2;
   result.proved = true;
   sort_and_wrap(result);

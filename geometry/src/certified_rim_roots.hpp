@@ -40,28 +40,34 @@ struct RimRoots {
   int sign_without_roots = 0;
 };
 
-/// Newton stops after a step this small (relative to 1 + |angle|): the next step would be of
-/// the order of its square, 2^-52, below the enclosure's first trial width.
-inline constexpr double kNewtonLastStep = 0x1p-26;
+/// Tier 1's Halley runs stop after a step this small (relative to 1 + |angle|): convergence is
+/// cubic, so the iterate is then off by about K |step|^3 (K a ratio of g's derivatives, of order
+/// one away from tangencies), below 2^-60 relative, an ulp or less. 2^-18 (one step fewer in more
+/// runs) left some crossings a few ulps worse on the accuracy suite; 2^-20 gives its figures.
+inline constexpr double kHalleyLastStep = 0x1p-20;
 
-/// Newton near grid angles whose sine and cosine come from a table (angle_grid.hpp); every
-/// iterate is reached by angle addition (approximate_near). Tier 1's two runs (first_harmonic_proof
-/// in certified_rim_roots.cpp; declared here for its test) side by side, run i in lane i
-/// (pair_lanes.hpp): each run is a chain of dependent divisions and polynomial
+/// Halley's iteration near grid angles whose sine and cosine come from a table (angle_grid.hpp);
+/// every iterate is reached by angle addition (approximate_near). Halley, not Newton: from the
+/// first-harmonic guesses (about 1e-3 rad off) it settles in two steps where Newton took three,
+/// and each step is one division either way (the step is 2 g g' / (2 g'^2 - g g''), whose
+/// g'' costs a few multiplications beside g and g'): a shorter chain by a third (certified roots
+/// 173 -> 162 ns a crossing rim, measured side by side, 2026-11-24). Tier 1's two runs
+/// (first_harmonic_proof in certified_rim_roots.cpp; declared here for its test) side by side,
+/// run i in lane i (pair_lanes.hpp): each run is a chain of dependent divisions and polynomial
 /// evaluations, and one chain of packed operations does the work of both. Each lane's arithmetic
 /// is exactly what its run would do alone: a run that has stopped keeps its state (the masks in
 /// `step`) while the other still iterates, and a move to another grid angle is a table look-up
 /// for that lane alone.
-struct NewtonRuns {
+struct HalleyRuns {
   std::array<Pair, 5> k;  ///< g's coefficient values, each in both lanes
   AngleBaseOf<Pair> base;
   Pair offset;
   Pair slope = {0.0, 0.0};      ///< |g'| at each run's last iterate evaluated
   PairMask running = {-1, -1};  ///< -1 while the run iterates, 0 once it has stopped
 
-  /// Newton on g; run i starts at guesses[i] exactly: the grid angle nearest to it plus the
+  /// Halley on g; run i starts at guesses[i] exactly: the grid angle nearest to it plus the
   /// (exact) offset.
-  NewtonRuns(const RimDistancePolynomial& g, const std::array<double, 2>& guesses) {
+  HalleyRuns(const RimDistancePolynomial& g, const std::array<double, 2>& guesses) {
     for (int i = 0; i < 5; ++i) k[i] = Pair{g.k[i].value, g.k[i].value};
     start_at({grid_angle(guesses[0]), grid_angle(guesses[1])});
   }
@@ -80,18 +86,18 @@ struct NewtonRuns {
   /// One iteration of each run that has not stopped.
   void step() {
     const ValueAndSlopeOf<Pair> at = approximate_at(k, cos_sin_near(base, offset));
-    const Pair change = at.value / at.slope;
+    const Pair change = 2 * at.value * at.slope / (2 * at.slope * at.slope - at.value * at.curvature);
     const Pair next = offset - change;
     const PairMask finite = change - change == 0.0;  // std::isfinite(change)
     // The next iterate lies beyond the angle addition's range from the grid angle (a poor
     // first-harmonic guess): move to the grid angle nearest to it, a table look-up.
     const PairMask moves = running & finite & (magnitude(next) > kMaxAngleOffset);
     const PairMask advances = running & finite & ~moves;
-    // Quadratic convergence: after a step below kNewtonLastStep the iterate is off by about
-    // |g''/(2 g')| times its square, an ulp or less unless g' is small (near a tangency), where
-    // the proof's enclosure grows until its sign checks pass. Either way the proof decides.
+    // Cubic convergence: after a step below kHalleyLastStep the iterate is off by an ulp or less
+    // unless g' is small (near a tangency), where the proof's enclosure grows until its sign
+    // checks pass. Either way the proof decides.
     const PairMask settles =
-        advances & (magnitude(change) < kNewtonLastStep * (1.0 + magnitude(base.angle)));
+        advances & (magnitude(change) < kHalleyLastStep * (1.0 + magnitude(base.angle)));
     slope = select(running, magnitude(at.slope), slope);
     offset = select(advances, next, offset);
     running &= finite & ~settles;  // a non-finite step stops the run where it is

@@ -35,6 +35,7 @@ struct ValueAndSlopeOf {
   T value;
   T slope;
   T cos, sin;  ///< of the angle evaluated at (approximate_near), see kAngleAdditionTrigError
+  T curvature;  ///< g'', for tier 1's Halley steps (callers that do not read it let the compiler drop it)
 };
 using ValueAndSlope = ValueAndSlopeOf<double>;
 
@@ -58,7 +59,7 @@ struct RimDistancePolynomial {
   double approximate_newton_step(double theta) const;
   /// g, g' near a base angle whose sine and cosine are known, at the real angle
   /// base + offset (|offset| <= kMaxAngleOffset): one table look-up (angle_grid.hpp) serves a
-  /// whole Newton run and its proof. Inline (below): they are the inner loop of tier 1, called a
+  /// whole Halley run and its proof. Inline (below): they are the inner loop of tier 1, called a
   /// dozen times per crossing rim, and a call cost a third of each. Templates: T = double, or
   /// Pair for two offsets at once (Base = AngleBase for one base, AngleBaseOf<Pair> for one per
   /// lane), each lane bit for bit the double call (pair_lanes.hpp).
@@ -86,7 +87,7 @@ struct RimDistancePolynomial {
 /// < 3u |x| (the rounded constants 1/6, 1/120, ..., 1/5040, 1/40320 add < u x^2); 4u covers
 /// both. The innermost terms multiply by the rounded reciprocals instead of dividing by 5040
 /// and 40320: one rounding more (the constant's), of a term below x^6 / 5040 < 2^-36, so far
-/// below the 4u; and the divisions were the longest latencies on the Newton step's chain.
+/// below the 4u; and the divisions were the longest latencies on the iteration step's chain.
 /// The reciprocals are constant expressions, folded at compile time whatever the flags of the
 /// file that includes this header: under -frounding-math (which CGAL::CGAL asks for, and which
 /// geometry/CMakeLists.txt now keeps for the exact tiers only) GCC leaves an inexact 1.0 / 6 in
@@ -151,8 +152,8 @@ ValueAndSlopeOf<T> RimDistancePolynomial::approximate_near(const Base& base, T o
   return approximate_at(cos_sin_near(base, offset));
 }
 
-/// g, g' (plain double) from coefficient values k (RimDistancePolynomial::values(), or each
-/// broadcast to both lanes of a Pair, as tier 1's Newton lanes hold them: once per rim instead
+/// g, g', g'' (plain double) from coefficient values k (RimDistancePolynomial::values(), or each
+/// broadcast to both lanes of a Pair, as tier 1's Halley lanes hold them: once per rim instead
 /// of at every use) and a cosine and sine of the angle.
 template <class C, class T>
 ValueAndSlopeOf<T> approximate_at(const std::array<C, 5>& k, CosSinOf<T> t) {
@@ -160,7 +161,8 @@ ValueAndSlopeOf<T> approximate_at(const std::array<C, 5>& k, CosSinOf<T> t) {
   const T cos2 = (c - s) * (c + s), sin2 = 2 * s * c;
   const T value = k[0] + k[1] * c + k[2] * s + k[3] * cos2 + k[4] * sin2;
   const T slope = k[2] * c - k[1] * s + 2 * (k[4] * cos2 - k[3] * sin2);
-  return {value, slope, c, s};
+  const T curvature = -(k[1] * c + k[2] * s) - 4 * (k[3] * cos2 + k[4] * sin2);
+  return {value, slope, c, s, curvature};
 }
 
 template <class T>

@@ -288,10 +288,10 @@ TEST(ApproximateRimRoots, FindsTheRootsWithoutClaimingAProof) {
   EXPECT_FALSE(result.proved);
   EXPECT_STRNE(result.failure, "");
   ASSERT_EQ(result.count, 2);
-  // Double Newton converges to the double nearest the root: a few ulps.
-  const double kNewtonAccuracy = 1e-14;
-  EXPECT_NEAR(result.roots[0].angle, 2 * std::numbers::pi / 3, kNewtonAccuracy);
-  EXPECT_NEAR(result.roots[1].angle, 4 * std::numbers::pi / 3, kNewtonAccuracy);
+  // Tier 1's iteration in double converges to within a few ulps of the root.
+  const double kIterationAccuracy = 1e-14;
+  EXPECT_NEAR(result.roots[0].angle, 2 * std::numbers::pi / 3, kIterationAccuracy);
+  EXPECT_NEAR(result.roots[1].angle, 4 * std::numbers::pi / 3, kIterationAccuracy);
 }
 
 // ---- sort_by_angle ----------------------------------------------------------------------
@@ -335,15 +335,15 @@ TEST(SortByAngle, SortsFourRootsInReverseOrderAndLeavesShortListsAlone) {
 }
 
 
-/// One Newton run alone, as tier 1 stepped each run before they shared lanes: the reference
-/// that each lane of NewtonRuns must reproduce bit for bit.
-struct NewtonRunAlone {
+/// One Halley run alone, as tier 1 would step each run without lanes: the reference that each
+/// lane of HalleyRuns must reproduce bit for bit.
+struct HalleyRunAlone {
   AngleBase base;
   double offset = 0.0;
   double slope = 0.0;
   bool running = true;
 
-  explicit NewtonRunAlone(double guess) {
+  explicit HalleyRunAlone(double guess) {
     const GridAngle start = grid_angle(guess);
     base = start.base;
     offset = start.offset;
@@ -352,7 +352,7 @@ struct NewtonRunAlone {
     if (!running) return;
     const ValueAndSlope at = g.approximate_near(base, offset);
     slope = std::fabs(at.slope);
-    const double change = at.value / at.slope;
+    const double change = 2 * at.value * at.slope / (2 * at.slope * at.slope - at.value * at.curvature);
     if (!std::isfinite(change)) {
       running = false;
       return;
@@ -365,7 +365,7 @@ struct NewtonRunAlone {
       return;
     }
     offset = next;
-    if (std::fabs(change) < kNewtonLastStep * (1.0 + std::fabs(base.angle))) running = false;
+    if (std::fabs(change) < kHalleyLastStep * (1.0 + std::fabs(base.angle))) running = false;
   }
 };
 
@@ -376,8 +376,8 @@ std::uint64_t bits(double x) { return std::bit_cast<std::uint64_t>(x); }
 /// stopped while the other still ran.
 void expect_lanes_step_as_the_runs_alone(const RimDistancePolynomial& g, std::array<double, 2> guesses,
                                          int& moves, int& one_stopped) {
-  NewtonRuns lanes(g, guesses);
-  NewtonRunAlone alone[2] = {NewtonRunAlone(guesses[0]), NewtonRunAlone(guesses[1])};
+  HalleyRuns lanes(g, guesses);
+  HalleyRunAlone alone[2] = {HalleyRunAlone(guesses[0]), HalleyRunAlone(guesses[1])};
   for (int step = 0; step < 6; ++step) {
     const double bases_before[2] = {alone[0].base.angle, alone[1].base.angle};
     lanes.step();
@@ -395,7 +395,7 @@ void expect_lanes_step_as_the_runs_alone(const RimDistancePolynomial& g, std::ar
   }
 }
 
-TEST(NewtonRuns, EachLaneStepsBitForBitAsItsRunAlone) {
+TEST(HalleyRuns, EachLaneStepsBitForBitAsItsRunAlone) {
   // First-harmonic-dominated polynomials (tier 1's), started near their roots, from anywhere on
   // the circle (moves to other grid angles) and with one run on a root already (it stops at its
   // first step while the other runs on).
@@ -418,8 +418,8 @@ TEST(NewtonRuns, EachLaneStepsBitForBitAsItsRunAlone) {
         expect_lanes_step_as_the_runs_alone(g, {angle(rng), angle(rng)}, moves, one_stopped);
         break;
       default: {
-        // Lane 0 starts where a first run settled: its next step is below kNewtonLastStep.
-        NewtonRunAlone settled(phi - beta);
+        // Lane 0 starts where a first run settled: its next step is below kHalleyLastStep.
+        HalleyRunAlone settled(phi - beta);
         for (int step = 0; step < 6; ++step) settled.step(g);
         expect_lanes_step_as_the_runs_alone(g, {settled.base.angle + settled.offset, angle(rng)},
                                             moves, one_stopped);
@@ -431,7 +431,7 @@ TEST(NewtonRuns, EachLaneStepsBitForBitAsItsRunAlone) {
   EXPECT_GT(one_stopped, 300);
 }
 
-TEST(NewtonRuns, FreezesARunWithANonFiniteStepWhileTheOtherRuns) {
+TEST(HalleyRuns, FreezesARunWithANonFiniteStepWhileTheOtherRuns) {
   // A NaN start (grid_angle gives NaN everywhere) and a zero slope each stop their lane at once.
   int moves = 0, one_stopped = 0;
   expect_lanes_step_as_the_runs_alone(polynomial(0.1, 1.0, 0.2, 0.01, 0.02),
