@@ -77,7 +77,7 @@ bool prove_sign_change(const RimDistancePolynomial& g, const AngleBase& base, do
 }
 
 /// The proofs of tier 1's two simple roots where the Halley runs stopped, root i in lane i (g
-/// changes sign as directions[i] there), into result.roots[0, 1].
+/// changes sign as directions[i] there), into result.roots[0, 1], wrapped and sorted by angle.
 bool enclose_after_iteration(const RimDistancePolynomial& g, const HalleyRuns& runs, RimRoots& result) {
   const int directions[2] = {+1, -1};
   const Pair offset = runs.offset;
@@ -106,10 +106,20 @@ bool enclose_after_iteration(const RimDistancePolynomial& g, const HalleyRuns& r
   const Pair radius = (eps * (1 + 4 * kUnitRoundoff) + rounding) * kSlack;
   // cos and sin of each real base + offset, which lies inside its enclosure.
   const CosSinOf<Pair> at = cos_sin_near(runs.base, offset);
+  // Wrapped into [0, 2 pi) and written straight into angle order, as sort_and_wrap would leave
+  // them: sorting after writing swapped the two 56-byte enclosures with 16-byte loads of fields
+  // just stored as doubles, which the store buffer cannot forward (a stall per crossing rim).
+  double wrapped[2], radii[2];
   for (int i = 0; i < 2; ++i) {
-    RootEnclosure& root = result.roots[i];
-    root.angle = angle[i];
-    root.radius = radius[i];
+    wrapped[i] = wrap_angle(angle[i]);
+    // Wrapping subtracts a rounded 2 pi: widen by its rounding (one ulp of 2 pi is 8.9e-16).
+    radii[i] = wrapped[i] != angle[i] ? radius[i] + 2 * kUnitRoundoff * kTwoPi : radius[i];
+  }
+  const int lane_0_slot = wrapped[1] < wrapped[0] ? 1 : 0;  // sort_by_angle's order, ties kept
+  for (int i = 0; i < 2; ++i) {
+    RootEnclosure& root = result.roots[i == 0 ? lane_0_slot : 1 - lane_0_slot];
+    root.angle = wrapped[i];
+    root.radius = radii[i];
     root.multiplicity = 1;
     root.sign_after = directions[i];
     root.cos = at.cos[i];
@@ -118,9 +128,9 @@ bool enclose_after_iteration(const RimDistancePolynomial& g, const HalleyRuns& r
   return true;
 }
 
-/// Always inlined, with sort_by_angle: tier 1 calls it with count == 2 just set, and the loops
-/// then unroll into two wraps and one comparison (~43 instructions per crossing rim; ~74 as calls).
-[[gnu::always_inline]] inline void sort_and_wrap(RimRoots& result) {
+/// Tier 2's roots (collect_distinct) into [0, 2 pi) and angle order; tier 1 writes its two in
+/// order directly (enclose_after_iteration).
+void sort_and_wrap(RimRoots& result) {
   for (int i = 0; i < result.count; ++i) {
     RootEnclosure& root = result.roots[i];
     const double wrapped = wrap_angle(root.angle);
@@ -179,7 +189,6 @@ bool first_harmonic_proof(const RimDistancePolynomial& g, RimRoots& result) {
   if (!enclose_after_iteration(g, runs, result)) return false;
   result.count = 2;
   result.proved = true;
-  sort_and_wrap(result);
   return true;
 }
 

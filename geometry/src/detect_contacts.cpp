@@ -207,8 +207,14 @@ CircleCylinderIntersection against_wall(const JointSetup& s, const detail::Round
 /// Accumulates the weakest certificate over every decision.
 class CertificateAccumulator {
  public:
+  /// overall_ = any_ ? weakest(overall_, c) : c, field by field: `c` was often just built in
+  /// memory field by field, and GCC copied the struct with one 16-byte load that waits for both
+  /// stores (no store forwarding).
   void add(const Certificate& c) {
-    overall_ = any_ ? weakest(overall_, c) : c;
+    if (!any_ || static_cast<int>(c.level) > static_cast<int>(overall_.level)) {
+      overall_.level = c.level;
+      overall_.reason = c.reason;
+    }
     any_ = true;
   }
   Certificate result() const { return overall_; }
@@ -281,8 +287,11 @@ void radial_contact(const JointSetup& s, ContactBase base, const Circle3& rim, c
   const Vector3 radial_offset_of_center =
       arc.full ? off_axis(rim.center - s.p_WPi, s.bearing_axis_hat_W) : Vector3::Zero();
   copy_arc_crossings(hit.crossings.data(), hit.crossing_count, arc, contact);
-  contact.p_WCj = journal_contact_point(rim, arc, contact, radial_offset_of_center, s.journal_axis_hat_W);
-  const Vector3 offset = contact.p_WCj - s.p_WPi;
+  // The point's later uses read the local value: reading contact.p_WCj back made GCC load 16
+  // bytes of what it had just stored as doubles, a store-forwarding stall per contact.
+  const Vector3 p_WCj = journal_contact_point(rim, arc, contact, radial_offset_of_center, s.journal_axis_hat_W);
+  contact.p_WCj = p_WCj;
+  const Vector3 offset = p_WCj - s.p_WPi;
   const Vector3 radial = off_axis(offset, s.bearing_axis_hat_W);
   const double distance_to_axis = radial.norm();
   contact.normal_W = radial / distance_to_axis;  // eq. (20)
@@ -304,9 +313,11 @@ void axial_contact(const JointSetup& s, ContactBase base, const Circle3& rim, co
   contact.certificate = hit.certificate;
   contact.normal_W = outward_sign(base) * s.bearing_axis_hat_W;
   copy_arc_crossings(hit.crossings.data(), hit.crossing_count, hit.penetration, contact);
-  contact.p_WCj = journal_contact_point(rim, hit.penetration, contact, contact.normal_W, s.journal_axis_hat_W);
-  const double beyond_base = (contact.p_WCj - bearing_base(s, base)).dot(contact.normal_W);
-  contact.p_WCi = contact.p_WCj - beyond_base * contact.normal_W;  // eq. (15)
+  // From the local value, as in radial_contact.
+  const Vector3 p_WCj = journal_contact_point(rim, hit.penetration, contact, contact.normal_W, s.journal_axis_hat_W);
+  contact.p_WCj = p_WCj;
+  const double beyond_base = (p_WCj - bearing_base(s, base)).dot(contact.normal_W);
+  contact.p_WCi = p_WCj - beyond_base * contact.normal_W;  // eq. (15)
   contact.depth = std::max(0.0, beyond_base);                      // eq. (23)
 }
 

@@ -365,7 +365,10 @@ void describe(const Circle3& circle, const IntersectionOptions& options, double 
   const Bounded& np2 = q.np2;
   const Bounded r = circle.radius;
   const detail::CirclePlaneTopologyAndSide& decided = decision.topology;
-  out.certificate = decision.certificate;
+  // Field by field: the decision was just built in memory field by field, and GCC copied the
+  // struct with one 16-byte load, which waits for both stores (no store forwarding).
+  out.certificate.level = decision.certificate.level;
+  out.certificate.reason = decision.certificate.reason;
   out.topology = decided.topology;
   out.side = decided.side;
   const bool bounded = options.certify && out.certificate.level != Certainty::uncertain;
