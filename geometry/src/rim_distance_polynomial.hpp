@@ -81,11 +81,20 @@ struct RimDistancePolynomial {
   double second_derivative_bound() const;
 };
 
-/// Taylor polynomials of sin (degree 7) and cos (degree 8) at 0, for |x| <= kMaxAngleOffset.
-/// Error: Lagrange remainders |x|^9/9! and |x|^10/10!, plus Horner rounding: every partial result
-/// is at most 1 in magnitude (at most x^2/2 inside), so the cosine is off by < 2u and the sine by
-/// < 3u |x| (the rounded constants 1/6, 1/120, ..., 1/5040, 1/40320 add < u x^2); 4u covers
-/// both. The innermost terms multiply by the rounded reciprocals instead of dividing by 5040
+/// Taylor polynomials of sin (degree 7) and cos (degree 8) at 0, for |x| <= kMaxAngleOffset, in
+/// Estrin's form (terms paired, the pairs combined by x^4):
+///   cos = (1 - x^2/2) + x^4 ((1/24 - x^2/720) + x^4/40320),
+///   sin = x ((1 - x^2/6) + x^4 (1/120 - x^2/5040)).
+/// Error: Lagrange remainders |x|^9/9! and |x|^10/10!, plus rounding. In the cosine, 1 - x^2/2
+/// is off by u (1 + x^2/2) (x^2 rounded, halving exact, the difference rounded), the x^4 term
+/// (below x^4/24 < 7e-7) by a few u of itself, and the final sum by u: under 2.01u. In the sine,
+/// the bracket is off by u (1 + x^2/2) + u and the product by u of it: under 3.01u |x| (the
+/// rounded constants 1/6, 1/120, ..., 1/40320 add < u x^2). 4u covers both. Estrin's form, not
+/// Horner's (2u and 3u |x|): this heads every Halley step's chain (certified_rim_roots.hpp), and
+/// after x^2 its longest chain is x^4 and three dependent multiply-adds where Horner's was four
+/// (certified roots ~6 ns faster a crossing rim, measured side by side; the accuracy suite's
+/// family figures unchanged). The innermost
+/// terms multiply by the rounded reciprocals instead of dividing by 5040
 /// and 40320: one rounding more (the constant's), of a term below x^6 / 5040 < 2^-36, so far
 /// below the 4u; and the divisions were the longest latencies on the iteration step's chain.
 /// The reciprocals are constant expressions, folded at compile time whatever the flags of the
@@ -102,9 +111,9 @@ struct SmallAngleTrig {
 };
 template <class T>
 SmallAngleTrig<T> small_angle_trig(T x) {
-  const T x2 = x * x;
-  return {x * (1 - x2 * (kInverse6 - x2 * (kInverse120 - x2 * kInverse5040))),
-          1 - x2 * (0.5 - x2 * (kInverse24 - x2 * (kInverse720 - x2 * kInverse40320)))};
+  const T x2 = x * x, x4 = x2 * x2;
+  return {x * ((1 - x2 * kInverse6) + x4 * (kInverse120 - x2 * kInverse5040)),
+          (1 - x2 * 0.5) + x4 * ((kInverse24 - x2 * kInverse720) + x4 * kInverse40320)};
 }
 
 /// cos and sin at base + offset by angle addition: the ones approximate_near and value_near use.
