@@ -455,6 +455,45 @@ TEST(DetectContacts, WritesIntoAReusedResultExactlyWhatAFreshCallReturns) {
   }
 }
 
+TEST(DetectContacts, WritesIntoAResultFullOfStaleValuesWhatAFreshCallReturns) {
+  // The point contacts are written field by field into the result, not built fresh: every slot
+  // filled with values no answer has (two crossings, NaN everywhere, the other type and base)
+  // before each call must not show through, beyond-model rims with fewer crossings included.
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  Contact stale;
+  stale.type = ContactType::axial;
+  stale.base = ContactBase::mid;
+  stale.p_WCj = stale.p_WCi = stale.normal_W = Vector3::Constant(nan);
+  stale.depth = nan;
+  stale.crossings = {RimCrossing{nan, nan, Vector3::Constant(nan), nan, 7}, RimCrossing{nan, nan, Vector3::Constant(nan), nan, 7}};
+  stale.crossing_count = 2;
+  stale.certificate = {Certainty::uncertain, "stale"};
+  // Besides the scenario cases: a slightly tilted journal whose rims lie wholly beyond the wall
+  // (its centre Ri + Rj + 1 mm off the axis): full penetration arcs, point contacts without
+  // crossings.
+  std::vector<JointCase> cases = all_cases();
+  const double tilt = 1e-3;
+  cases.push_back({"rims wholly beyond the wall", kTable2,
+                   {Vector3(kTable2.bearing_radius + kTable2.journal_radius + 1e-3, 0.0, 0.0),
+                    Vector3(std::sin(tilt), 0.0, std::cos(tilt))},
+                   ContactScenario::beyond_model});
+  int fewer_crossings = 0;
+  for (const JointCase& c : cases) {
+    SCOPED_TRACE(c.name);
+    JointContacts reused;
+    reused.contacts.fill(stale);
+    reused.contact_count = kMaxContacts;
+    const JointContacts fresh = detect_contacts(c.dimensions, bearing_on_z(), c.journal);
+    detect_contacts(c.dimensions, bearing_on_z(), c.journal, reused);
+    expect_identical(reused, fresh);
+    for (int k = 0; k < fresh.contact_count; ++k) {
+      const Contact& contact = fresh.contacts[k];
+      if (!fresh.aligned && contact.crossing_count < 2) ++fewer_crossings;
+    }
+  }
+  EXPECT_GT(fewer_crossings, 0);  // misaligned point contacts with fewer than two crossings were seen
+}
+
 TEST(DetectContacts, ProvesFreeFlightStraightFromThePosesWithTheGeneralPathsAnswer) {
   // With the angle tolerance 0 the prefilters run straight from the poses (prefilter_if_ready in
   // detect_contacts.cpp); any positive tolerance skips that, and 1e-300 rad aligns nothing that
