@@ -31,12 +31,6 @@ inline double wrap_angle(double angle) {
 /// rounding; test_angles.cpp measures it).
 inline constexpr double kApproximateAngleError = 4e-7;
 
-/// atan2(y, x) within kApproximateAngleError, in (-pi, pi]; 0 for y = x = 0. For starting guesses
-/// only, never for an answer or a bound: libm's atan2 costs ten times as much, and a guess
-/// 1e-7 rad off changes nothing in a Newton iteration that starts 1e-2 rad from its root. atan(z)
-/// on [0, 1] is z p(z^2), p the degree-7 Chebyshev least-squares fit of atan(z)/z in z^2 on
-/// [0, 1] (numpy, 200001 points; max error 2.9e-7 rad), converted to powers; the other octants
-/// by atan(z) = pi/2 - atan(1/z) and the signs of x and y.
 /// The fit's z p(z^2), for double or, lane by lane, Pair. p in Estrin's form, pairs of terms
 /// combined by t^2 and t^4: the guess heads the chain that tier 1's first Halley step waits
 /// for, and Horner's form was seven dependent multiply-adds (~42 cycles) where this is four
@@ -52,6 +46,12 @@ T approximate_atan_of_ratio(T z) {
   return z * (low + t4 * high);
 }
 
+/// atan2(y, x) within kApproximateAngleError, in (-pi, pi]; 0 for y = x = 0. For starting guesses
+/// only, never for an answer or a bound: libm's atan2 costs ten times as much, and a guess
+/// 1e-7 rad off changes nothing in an iteration that starts 1e-3 rad from its root. atan(z)
+/// on [0, 1] is z p(z^2), p the degree-7 Chebyshev least-squares fit of atan(z)/z in z^2 on
+/// [0, 1] (numpy, 200001 points; max error 2.9e-7 rad), converted to powers; the other octants
+/// by atan(z) = pi/2 - atan(1/z) and the signs of x and y.
 inline double approximate_atan2(double y, double x) {
   const double ax = std::fabs(x), ay = std::fabs(y);
   const double big = ax > ay ? ax : ay, small = ax > ay ? ay : ax;

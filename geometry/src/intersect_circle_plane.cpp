@@ -8,8 +8,6 @@
 
 #include "clearjoint/geometry/intersect_circle_plane.hpp"
 
-#include <emmintrin.h>
-
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -107,7 +105,7 @@ AngleWithTrig acos_of(const Bounded& c) {
     // its sine) side by side (pair_lanes.hpp): one packed square root, each lane correctly
     // rounded as std::sqrt is (~4 instructions fewer per crossing rim than two, callgrind).
     const detail::Pair x = {far, c.value};
-    const detail::Pair root = _mm_sqrt_pd((1.0 - x) * (1.0 + x));
+    const detail::Pair root = detail::square_root((1.0 - x) * (1.0 + x));
     const double slope_bound = 1.0 / root[0] * (1 + 0x1p-40);
     return {{std::acos(c.value), spread * slope_bound + kLibmAngleError}, c.value, root[1]};
   }
