@@ -1,7 +1,9 @@
 #pragma once
-// Two doubles side by side in one SSE2 register (GCC/Clang vector extensions, baseline x86-64):
-// the magnitude guards of rim_distance_polynomial.cpp test two values at once, and tier 1 of
-// certified_rim_roots.cpp runs its two roots' Newton iterations and proofs in the two lanes.
+// Two doubles side by side in one SSE2 register (GCC/Clang vector extensions, baseline x86-64),
+// the kernel's one lane type: the magnitude guards of rim_distance_polynomial.cpp test two
+// values at once, tier 1 of certified_rim_roots.cpp runs its two roots' Halley iterations and
+// proofs in the two lanes, and candidate_prefilter_lanes.hpp's Lanes (bases A and B, or a value
+// and its twin) are Pairs too.
 //
 // Bit for bit: a packed operation rounds each lane exactly as the scalar operation would (IEEE
 // binary64, round to nearest; the build targets no FMA to contract into), so an expression
