@@ -93,10 +93,10 @@ struct RimDistancePolynomial {
 /// Horner's (2u and 3u |x|): this heads every Halley step's chain (certified_rim_roots.hpp), and
 /// after x^2 its longest chain is x^4 and three dependent multiply-adds where Horner's was four
 /// (certified roots ~6 ns faster a crossing rim, measured side by side; the accuracy suite's
-/// family figures unchanged). The innermost
-/// terms multiply by the rounded reciprocals instead of dividing by 5040
-/// and 40320: one rounding more (the constant's), of a term below x^6 / 5040 < 2^-36, so far
-/// below the 4u; and the divisions were the longest latencies on the iteration step's chain.
+/// family figures unchanged). The innermost terms multiply by the rounded reciprocals instead
+/// of dividing by 5040 and 40320: one rounding more (the constant's), of a term below
+/// x^6 / 5040 < 2^-36, so far below the 4u; and the divisions were the longest latencies on the
+/// iteration step's chain.
 /// The reciprocals are constant expressions, folded at compile time whatever the flags of the
 /// file that includes this header: under -frounding-math (which CGAL::CGAL asks for, and which
 /// geometry/CMakeLists.txt now keeps for the exact tiers only) GCC leaves an inexact 1.0 / 6 in
