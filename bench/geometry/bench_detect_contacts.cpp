@@ -13,16 +13,14 @@
 
 #include <benchmark/benchmark.h>
 
+#include "detection_poses.hpp"
 #include "paper_baseline.hpp"
-#include "uniform_source.hpp"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <numbers>
-#include <random>
 #include <string>
 #include <utility>
 #include <vector>
@@ -32,55 +30,17 @@
 namespace {
 
 namespace geo = clearjoint::geometry;
-using geo::Vector3;
 
-// Paper Table 2, in metres.
-const geo::JointDimensions kTable2{.bearing_radius = 10.0e-3,
-                                   .bearing_length = 20.0e-3,
-                                   .journal_radius = 9.9e-3,
-                                   .journal_length = 19.8e-3};
-const double kRadialClearance = kTable2.radial_clearance();
-const double kAxialClearance = kTable2.axial_clearance();
-// Largest tilt of a centred journal spanning the radial clearance: 2 cr / Lj ~ 0.0101 rad.
-const double kMaxTilt = 2.0 * kRadialClearance / kTable2.journal_length;
-const geo::PartPose kBearing{Vector3::Zero(), Vector3::UnitZ()};
-
-constexpr std::uint64_t kSeed = 20170824;
-constexpr std::size_t kInputCount = 4096;
-// Draws allowed per kept pose before giving up (the in-contact share is ~0.7, free flight ~0.3).
-constexpr std::size_t kMaxDrawsPerInput = 50;
+using clearjoint::bench::journals;
+using clearjoint::bench::kBearing;
+using clearjoint::bench::kInputCount;
+using clearjoint::bench::kMaxTilt;
+using clearjoint::bench::kSeed;
+using clearjoint::bench::kTable2;
+using clearjoint::bench::Outcome;
 
 const geo::DetectionOptions kCertified{};
 const geo::DetectionOptions kUncertified{.intersection = {.certify = false}};
-
-using clearjoint::bench::UniformSource;
-
-/// Journal centre off the bearing axis by up to 1.5 cr and along it by up to 1.5 ca either way;
-/// axis tilted by up to `max_tilt`, azimuths uniform.
-geo::PartPose random_journal(UniformSource& uniform, double max_tilt) {
-  const double offset = uniform(0.0, 1.5 * kRadialClearance);
-  const double offset_azimuth = uniform(0.0, 2.0 * std::numbers::pi);
-  const double shift = uniform(-1.5 * kAxialClearance, 1.5 * kAxialClearance);
-  const double tilt = uniform(0.0, max_tilt);
-  const double tilt_azimuth = uniform(0.0, 2.0 * std::numbers::pi);
-  return {{offset * std::cos(offset_azimuth), offset * std::sin(offset_azimuth), shift},
-          {std::sin(tilt) * std::cos(tilt_azimuth), std::sin(tilt) * std::sin(tilt_azimuth),
-           std::cos(tilt)}};
-}
-
-enum class Outcome { in_contact, free_flight };
-
-std::vector<geo::PartPose> journals(std::uint64_t stream, double max_tilt, Outcome wanted) {
-  UniformSource uniform(kSeed + stream);
-  std::vector<geo::PartPose> kept;
-  for (std::size_t draws = 0; kept.size() < kInputCount && draws < kMaxDrawsPerInput * kInputCount;
-       ++draws) {
-    const geo::PartPose journal = random_journal(uniform, max_tilt);
-    const bool contact = geo::detect_contacts(kTable2, kBearing, journal).contact_count > 0;
-    if (contact == (wanted == Outcome::in_contact)) kept.push_back(journal);
-  }
-  return kept;
-}
 
 /// The paper's own method on the same poses (bench/detection/paper_baseline.hpp: plain double,
 /// Newton from the paper's guesses, no proof), as the measuring stick of what the contract costs
