@@ -62,10 +62,52 @@ bool enclose_simple_root(const RimDistancePolynomial& g, double theta, int direc
   return false;
 }
 
+/// The enclosure of each root of tier 1 from g and g' at the iterate x itself (lane i: root i,
+/// g changing sign as directions[i] there): one evaluation for both roots where the sign change
+/// took two per root. `at` is approximate_at there, x = base + offset the real sum. With
+/// |g(x)| <= V, directions[i] g'(x) >= S > 0 and |g''| <= M2 everywhere, a half-width rho with
+///   V <= S rho / 2   and   M2 rho <= S / 2
+/// encloses a root: on [x - rho, x + rho] directions[i] g' >= S / 2 > 0, so g is strictly
+/// monotone there and moves by at least S rho / 2 >= V from g(x) towards each end: g(x - rho)
+/// and g(x + rho) bracket 0 as directions[i] says. The interval holds a simple root of that
+/// direction, and tier 1's count proof leaves only one such root on the circle.
+/// The roundings: V and S are rounded outwards by kSlack (a few relative roundings each), and
+/// S must exceed kSmallestProofSlope, so that no product below underflows by more than the
+/// kUnderflowError terms added.
+struct SlopeBounds {
+  Pair value, slope;  ///< V and S
+  double curvature;   ///< M2
+};
+/// Far above underflow, far below any slope a proof could use (coefficients of rescaled inputs,
+/// scale_normalisation.hpp, are within a few hundred binades of 1).
+constexpr double kSmallestProofSlope = 0x1p-900;
+SlopeBounds slope_bounds(const RimDistancePolynomial& g, const RimDistancePolynomial::NearErrorBounds& errors,
+                         const ValueAndSlopeOf<Pair>& at, const Pair& directions) {
+  return {(magnitude(at.value) + errors.value) * kSlack,           // V
+          (at.slope * directions - errors.slope) / kSlack,         // S (times +-1: exact)
+          g.curvature_bound()};
+}
+/// Lanes where `half_width` passes both conditions: 2 V <= S rho and 2 M2 rho <= S, each side
+/// rounded the safe way (the doublings exact).
+PairMask encloses(const SlopeBounds& b, const Pair& half_width) {
+  return (b.slope > kSmallestProofSlope) & ((2 * b.value + kUnderflowError) * kSlack <= b.slope * half_width) &
+         ((2 * b.curvature * half_width + 4 * kUnderflowError) * kSlack <= b.slope);
+}
+/// The planned half-width: kPlannedWidth times value's error bound over the last Halley
+/// iterate's |g'| (HalleyRuns::slope), known before g at the final iterate is, so that the bound
+/// the crossings carry does not wait for that evaluation (only the branch on the proof does, and
+/// it is predicted). With the half-width 2 V / S from g at the final iterate the in-contact
+/// detection measured slower (531 -> 558 ns, side by side, 2026-11-24). The factor 2.2 leaves
+/// room for |g(x)| (about an ulp of the angle times |g'|, far below the error bound) and for the
+/// change of slope over the last step: the accuracy suite's near-tangent families fall back to
+/// the sign change on 39 rims at 2.2, 37 at 2.5 and 149 at 2.1, the benchmark's poses on none;
+/// the enclosures are about 2.2 / 2 times the smallest this proof allows.
+constexpr double kPlannedWidth = 2.2;
+
 /// Widens eps (by kEnclosureGrowth, at most kMaxEnclosureTrials times) until the signs of g at
 /// base + (offset -+ eps), by angle addition (value_near, both ends in the two lanes), prove a
 /// sign change `direction` (+1: - to +) between them; false if none does within the angle
-/// addition's range.
+/// addition's range. The last fallback of enclose_after_iteration's proof by slope.
 bool prove_sign_change(const RimDistancePolynomial& g, const AngleBase& base, double offset,
                        int direction, double& eps) {
   for (int trial = 0; trial < kMaxEnclosureTrials; ++trial, eps *= kEnclosureGrowth) {
@@ -76,16 +118,10 @@ bool prove_sign_change(const RimDistancePolynomial& g, const AngleBase& base, do
   return false;
 }
 
-/// The proofs of tier 1's two simple roots where the Halley runs stopped, root i in lane i (g
-/// changes sign as directions[i] there), into result.roots[0, 1], wrapped and sorted by angle.
-bool enclose_after_iteration(const RimDistancePolynomial& g, const HalleyRuns& runs, RimRoots& result) {
-  const int directions[2] = {+1, -1};
-  const Pair offset = runs.offset;
-  const Pair angle = runs.base.angle + offset;
-  // The reported angle is the rounded sum, within u |angle| of base + offset; the proof's
-  // sign checks are at base + (offset -+ eps), whose sums offset -+ eps are each within
-  // u (|offset| + eps) of the exact ones (the (1 + 4u) on eps below covers the u eps).
-  const Pair rounding = 2 * kUnitRoundoff * (magnitude(angle) + magnitude(offset)) + kUnderflowError;
+/// The sign-change enclosures (prove_sign_change) of the roots in the lanes `proved` leaves 0;
+/// the others keep `half_width`. False if one fails.
+bool enclose_by_sign_change(const RimDistancePolynomial& g, const HalleyRuns& runs, const Pair& angle,
+                            const int (&directions)[2], PairMask proved, Pair& half_width) {
   // First trial: twice the root's uncertainty, |g error| / |g'|, with g's error budget being the
   // coefficient errors plus a few ulps of the terms, if wider than a few ulps of the angle; later
   // trials grow by kEnclosureGrowth. The slope is the last Halley iterate's: a heuristic for the
@@ -96,16 +132,42 @@ bool enclose_after_iteration(const RimDistancePolynomial& g, const HalleyRuns& r
   Pair eps = 16 * kUnitRoundoff * (1.0 + magnitude(angle));
   const Pair from_slope = 2 * budget / runs.slope;
   eps = select((runs.slope > 0.0) & (eps < from_slope), from_slope, eps);
-  // The widths in doubles and eps rebuilt whole (not eps[i] = width: see HalleyRuns::start_at).
-  double widths[2] = {eps[0], eps[1]};
+  double widths[2] = {half_width[0], half_width[1]};
   for (int i = 0; i < 2; ++i) {
-    if (!prove_sign_change(g, runs.base_of(i), offset[i], directions[i], widths[i])) return false;
+    if (proved[i]) continue;
+    double width = eps[i];
+    if (!prove_sign_change(g, runs.base_of(i), runs.offset[i], directions[i], width)) return false;
+    // The proof's points offset -+ eps are rounded sums: (1 + 4u) covers it.
+    widths[i] = width * (1 + 4 * kUnitRoundoff);
   }
-  eps = Pair{widths[0], widths[1]};
-  // offset -+ eps are rounded too: (1 + 4u) covers it.
-  const Pair radius = (eps * (1 + 4 * kUnitRoundoff) + rounding) * kSlack;
-  // cos and sin of each real base + offset, which lies inside its enclosure.
-  const CosSinOf<Pair> at = cos_sin_near(runs.base, offset);
+  half_width = Pair{widths[0], widths[1]};  // rebuilt whole: see HalleyRuns::start_at
+  return true;
+}
+
+/// The proofs of tier 1's two simple roots where the Halley runs stopped, root i in lane i (g
+/// changes sign as directions[i] there), into result.roots[0, 1], wrapped and sorted by angle.
+bool enclose_after_iteration(const RimDistancePolynomial& g, const HalleyRuns& runs, RimRoots& result) {
+  const int directions[2] = {+1, -1};
+  const Pair offset = runs.offset;
+  const Pair angle = runs.base.angle + offset;
+  // The reported angle is the rounded sum, within u |angle| of base + offset (and the
+  // sign-change fallback's points within u |offset| of theirs).
+  const Pair rounding = 2 * kUnitRoundoff * (magnitude(angle) + magnitude(offset)) + kUnderflowError;
+  // g, g' at each real base + offset: the same cosine and sine (bit for bit) as the Halley steps
+  // form, handed on to the crossing points. Angle addition holds for |offset| <= kMaxAngleOffset,
+  // which every iterate keeps (HalleyRuns::step); checked, as the fallback does.
+  const ValueAndSlopeOf<Pair> at = approximate_at(runs.k, cos_sin_near(runs.base, offset));
+  const RimDistancePolynomial::NearErrorBounds errors = g.near_error_bounds();
+  const SlopeBounds bounds = slope_bounds(g, errors, at, Pair{1.0, -1.0});
+  const PairMask in_range = magnitude(offset) <= kMaxAngleOffset;
+  Pair half_width = (kPlannedWidth * errors.value / runs.slope + kUnderflowError) * kSlack;
+  PairMask proved = encloses(bounds, half_width) & in_range;
+  // Near a tangency (|g'| small next to |g''|) the slope's conditions fail: the sign change,
+  // which the iteration's remaining error does not hamper, decides those lanes. (The half-width
+  // 2 V / S from g at x itself, tried in between, never rescued a lane there: 0 of the 63 in
+  // the tests that reach this.)
+  if (!all_lanes(proved) && !enclose_by_sign_change(g, runs, angle, directions, proved, half_width)) return false;
+  const Pair radius = (half_width + rounding) * kSlack;
   // Wrapped into [0, 2 pi) and written straight into angle order, as sort_and_wrap would leave
   // them: sorting after writing swapped the two 56-byte enclosures with 16-byte loads of fields
   // just stored as doubles, which the store buffer cannot forward (a stall per crossing rim).

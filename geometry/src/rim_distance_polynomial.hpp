@@ -79,6 +79,17 @@ struct RimDistancePolynomial {
 
   /// Bound on |g''| over all angles: hypot(k1, k2) + 4 hypot(k3, k4) with coefficient errors.
   double second_derivative_bound() const;
+  /// A looser bound on |g''| without second_derivative_bound's two libm hypot calls:
+  /// |k1| + |k2| + 4 (|k3| + |k4|) with coefficient errors (at most sqrt(2) times wider). For tier
+  /// 1's proofs (certified_rim_roots.cpp), where it is only weighed against |g'|.
+  double curvature_bound() const;
+
+  /// Bounds on |computed - true| of approximate_near's value and slope at the real angle
+  /// base + offset, the same for every offset in the angle addition's range (below).
+  struct NearErrorBounds {
+    double value, slope;
+  };
+  NearErrorBounds near_error_bounds() const;
 };
 
 /// Taylor polynomials of sin (degree 7) and cos (degree 8) at 0, for |x| <= kMaxAngleOffset, in
@@ -154,6 +165,35 @@ BoundedOf<T> RimDistancePolynomial::value_near(const Base& base, T offset) const
                        8 * kUnitRoundoff * (std::fabs(k[0].value) + first + second) +
                        32 * kUnderflowError;
   return {value, error * kErrorInflation};
+}
+
+/// value_near's bound with the sine's Taylor remainder at its largest (kAngleAdditionTrigError:
+/// |offset| = kMaxAngleOffset), so the same for every offset: tier 1's proof then forms it once
+/// per rim, not per evaluation. The slope k2 c - k1 s + 2 (k4 cos2 - k3 sin2) (approximate_at)
+/// is bounded as the value is: the coefficients' own errors (each true trig value is at most 1
+/// in magnitude), |k1| + |k2| times the trig error and 2 (|k3| + |k4|) times the double-angle
+/// error, and the rounding of the expression, gamma_3 of its terms' magnitudes, under
+/// 8u (|k1| + |k2| + 2 (|k3| + |k4|)), plus underflow. test_rim_distance_polynomial.cpp checks
+/// both against MPFR across the offset range.
+inline RimDistancePolynomial::NearErrorBounds RimDistancePolynomial::near_error_bounds() const {
+  constexpr double trig_error = kAngleAdditionTrigError;
+  constexpr double double_angle_error = 4 * trig_error + 4 * kUnitRoundoff;
+  const double first = std::fabs(k[1].value) + std::fabs(k[2].value);
+  const double second = std::fabs(k[3].value) + std::fabs(k[4].value);
+  const double value = coefficient_error() + first * trig_error + second * double_angle_error +
+                       8 * kUnitRoundoff * (std::fabs(k[0].value) + first + second) + 32 * kUnderflowError;
+  const double slope = (k[1].error + k[2].error) + 2 * (k[3].error + k[4].error) + first * trig_error +
+                       2 * second * double_angle_error + 8 * kUnitRoundoff * (first + 2 * second) +
+                       32 * kUnderflowError;
+  return {value * kErrorInflation, slope * kErrorInflation};
+}
+
+inline double RimDistancePolynomial::curvature_bound() const {
+  // g'' = -(k1 cos + k2 sin) - 4 (k3 cos2 + k4 sin2): sums of non-negative terms, each rounding
+  // relative; (1 + 8u) covers the few of them.
+  const double first = (std::fabs(k[1].value) + k[1].error) + (std::fabs(k[2].value) + k[2].error);
+  const double second = (std::fabs(k[3].value) + k[3].error) + (std::fabs(k[4].value) + k[4].error);
+  return (first + 4 * second) * (1 + 8 * kUnitRoundoff) + kUnderflowError;
 }
 
 template <class Base, class T>

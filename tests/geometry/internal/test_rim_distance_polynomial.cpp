@@ -144,11 +144,25 @@ void check_pose(const Pose& pose, std::mt19937_64& rng, bool tight) {
       if (tight) {
         ASSERT_LE(Real(near.error), kUsefulRelativeError * scale);
       }
+      // Tier 1's proof by the slope: approximate_near's value and slope within
+      // near_error_bounds of the exact ones, at every offset in range.
+      const ValueAndSlope approximate = g.approximate_near(base, offset);
+      const RimDistancePolynomial::NearErrorBounds bounds = g.near_error_bounds();
+      ASSERT_LE(abs(Real(approximate.value) - it::trig_polynomial(k, shifted)), Real(bounds.value))
+          << "g(" << base.angle << " + " << offset << ")";
+      ASSERT_LE(abs(Real(approximate.slope) - it::trig_polynomial_derivative(k, shifted)), Real(bounds.slope))
+          << "g'(" << base.angle << " + " << offset << ")";
+      if (tight) {
+        ASSERT_LE(Real(bounds.value), kUsefulRelativeError * scale);
+        ASSERT_LE(Real(bounds.slope), kUsefulRelativeError * scale);
+      }
     }
     const Real second = -k[1] * cos(t) - k[2] * sin(t) - 4 * k[3] * cos(2 * t) - 4 * k[4] * sin(2 * t);
     max_curvature = std::max(max_curvature, abs(second));
   }
   EXPECT_GE(Real(g.second_derivative_bound()), max_curvature);
+  EXPECT_GE(Real(g.curvature_bound()), max_curvature);
+  EXPECT_GE(g.curvature_bound(), g.second_derivative_bound() * (1 - 1e-12));  // the looser of the two
 }
 
 TEST(RimDistancePolynomial, EnclosesTheExactDistanceExcessForRandomPoses) {
