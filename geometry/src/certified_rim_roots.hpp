@@ -67,7 +67,10 @@ struct HalleyRuns {
 
   /// Halley on g; run i starts at guesses[i] exactly: the grid angle nearest to it plus the
   /// (exact) offset.
-  HalleyRuns(const RimDistancePolynomial& g, const std::array<double, 2>& guesses) {
+  /// The constructor and step are always inlined: tier 1 calls them from two places (the
+  /// first-harmonic proof and its cap), and GCC then kept them out of line, the runs' state in
+  /// memory (certified_rim_roots.cpp, enclose_after_iteration).
+  [[gnu::always_inline]] HalleyRuns(const RimDistancePolynomial& g, const std::array<double, 2>& guesses) {
     for (int i = 0; i < 5; ++i) k[i] = Pair{g.k[i].value, g.k[i].value};
     start_at({grid_angle(guesses[0]), grid_angle(guesses[1])});
   }
@@ -84,7 +87,7 @@ struct HalleyRuns {
   AngleBase base_of(int i) const { return {base.angle[i], base.cos[i], base.sin[i]}; }
 
   /// One iteration of each run that has not stopped.
-  void step() {
+  [[gnu::always_inline]] void step() {
     const ValueAndSlopeOf<Pair> at = approximate_at(k, cos_sin_near(base, offset));
     const Pair change = 2 * at.value * at.slope / (2 * at.slope * at.slope - at.value * at.curvature);
     const Pair next = offset - change;

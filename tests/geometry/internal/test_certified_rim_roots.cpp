@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <bit>
 #include <cmath>
@@ -249,6 +250,114 @@ TEST(CertifiedRimRoots, EnclosuresHoldTheRootsOfEveryPolynomialWithinTheCoeffici
       }
     }
   }
+}
+
+// ---- The cap proof: a rim barely beyond or barely inside the wall -------------------------
+// g = k0 + cos t + k3 cos 2t with k3 < 0 peaks at t = 0 at k0 + 1 + k3, while the first-harmonic
+// bound there is k0 + 1 + |k3|: for a peak within 2 |k3| below that, the end arc around 0 has
+// no proved sign, and the cap proof (certified_rim_roots.cpp) decides.
+constexpr double kCapSecondHarmonic = -0x1p-9;
+
+/// The roots of k0 + cos t + k3 cos 2t, from cos 2t = 2 c^2 - 1: 2 k3 c^2 + c + (k0 - k3) = 0,
+/// each cosine in [-1, 1] giving t = +-acos(c).
+std::vector<Real> cap_family_roots(double k0, double k3) {
+  const Real a = 2 * Real(k3), b = 1, c = Real(k0) - Real(k3);
+  const Real discriminant = b * b - 4 * a * c;
+  std::vector<Real> roots;
+  if (discriminant < 0) return roots;
+  for (const int sign : {-1, 1}) {
+    const Real cosine = (-b + sign * sqrt(discriminant)) / (2 * a);
+    if (cosine <= -1 || cosine >= 1) continue;
+    const Real t = acos(cosine);
+    roots.push_back(t);
+    roots.push_back(it::two_pi() - t);
+  }
+  std::sort(roots.begin(), roots.end());
+  return roots;
+}
+
+TEST(CertifiedRimRoots, ProvesTheTwoRootsOfAShallowCrossingInTierOne) {
+  // Peak 2^-10 above zero: roots near +-0.045 rad.
+  const double k0 = -1 - kCapSecondHarmonic + 0x1p-10;
+  const RimDistancePolynomial g = polynomial(k0, 1, 0, kCapSecondHarmonic, 0);
+  const RimRoots result = certified_rim_roots(g);
+  expect_proved_roots_match(result, cap_family_roots(k0, kCapSecondHarmonic), exact(g));
+  // Tier 1 hands on the cosine and sine of its roots; tier 2 does not.
+  ASSERT_EQ(result.count, 2);
+  EXPECT_TRUE(result.roots[0].has_trig());
+  EXPECT_TRUE(result.roots[1].has_trig());
+}
+
+TEST(CertifiedRimRoots, ProvesNoRootWhenTheSecondHarmonicKeepsTheRimInside) {
+  // Peak 2^-10 below zero, while the first-harmonic bound there is 2^-10 above it.
+  const double k0 = -1 - kCapSecondHarmonic - 0x1p-10;
+  const RimDistancePolynomial g = polynomial(k0, 1, 0, kCapSecondHarmonic, 0);
+  ASSERT_TRUE(cap_family_roots(k0, kCapSecondHarmonic).empty());
+  const RimRoots result = certified_rim_roots(g);
+  expect_proved_roots_match(result, {}, exact(g));
+  EXPECT_EQ(result.sign_without_roots, -1);
+}
+
+TEST(CertifiedRimRoots, NeverProvesTheDoubleRootAtTheTopOfACap) {
+  // k0 = -(1 + k3): g(0) = g'(0) = 0 (exact doubles), concave around it.
+  for (const double k3 : {kCapSecondHarmonic, -0x1p-20, 0x1p-10}) {
+    const RimDistancePolynomial g = polynomial(-(1 + k3), 1, 0, k3, 0);
+    const RimRoots result = certified_rim_roots(g);
+    EXPECT_FALSE(result.proved) << "k3 " << k3 << " count " << result.count;
+  }
+}
+
+TEST(CertifiedRimRoots, IsNeverWrongOneUlpAwayFromTheDoubleRootAtTheTopOfACap) {
+  const double top = -(1 + kCapSecondHarmonic);
+  double up = top, down = top;
+  int proved = 0;
+  for (int step = 0; step < 64; ++step) {
+    up = std::nextafter(up, 0.0);      // k0 larger: a peak just above zero, two close roots
+    down = std::nextafter(down, -2.0);  // a peak just below zero: none
+    for (const double k0 : {up, down}) {
+      const RimDistancePolynomial g = polynomial(k0, 1, 0, kCapSecondHarmonic, 0);
+      const RimRoots result = certified_rim_roots(g);
+      if (!result.proved) continue;
+      ++proved;
+      expect_proved_roots_match(result, cap_family_roots(k0, kCapSecondHarmonic), exact(g));
+    }
+  }
+  // Nothing to require of how many: a few ulps from a double root any honest tier may decline.
+  RecordProperty("proved", proved);
+}
+
+TEST(CertifiedRimRoots, MatchesTheExactRootsOfShallowCrossingsAndNearMisses) {
+  // Peaks spread across the band where the first-harmonic proof cannot sign the end arc, with
+  // the first harmonic's phase and the second harmonic's turned at random.
+  std::mt19937_64 rng(2026'11'25);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  int compared = 0, proved = 0, proved_in_tier_one = 0;
+  const int kCases = 200;
+  for (int i = 0; i < kCases; ++i) {
+    const double second = 1e-3 * (1 + unit(rng));
+    const double phase = 2 * std::numbers::pi * unit(rng), turn = 2 * std::numbers::pi * unit(rng);
+    // Peak of cos(t - phase) + second cos(2 (t - turn)) above k0 + 1, as far as its worst 2 second.
+    const double k0 = -1 + second * (4 * unit(rng) - 2);
+    const RimDistancePolynomial g = polynomial(k0, std::cos(phase), std::sin(phase), second * std::cos(2 * turn),
+                                               second * std::sin(2 * turn));
+    // The reference's grid cannot separate roots much closer than its cell (peaks within
+    // ~1e-5 of zero): those cases are left out.
+    const std::optional<std::vector<Real>> truth = reference_roots(exact(g));
+    if (!truth) continue;
+    ++compared;
+    const RimRoots result = certified_rim_roots(g);
+    if (!result.proved) continue;
+    ++proved;
+    expect_proved_roots_match(result, *truth, exact(g));
+    proved_in_tier_one += result.count == 2 && result.roots[0].has_trig();
+  }
+  RecordProperty("compared", compared);
+  RecordProperty("proved", proved);
+  RecordProperty("proved_in_tier_one", proved_in_tier_one);
+  EXPECT_GT(compared, kCases * 3 / 4);
+  EXPECT_GT(proved, compared * 9 / 10);
+  // Before the cap proof, every crossing here went to tier 2; most are now tier 1's.
+  EXPECT_GT(proved_in_tier_one, compared / 4);
 }
 
 TEST(CertifiedRimRoots, RefusesToProveWithNonFiniteCoefficients) {
