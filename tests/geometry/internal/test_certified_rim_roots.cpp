@@ -116,6 +116,24 @@ void expect_proved_roots_match(const RimRoots& result, const std::vector<Real>& 
   }
 }
 
+/// How many polynomials of a random family the reference decided, and how many of those the
+/// tiers proved.
+struct ReferenceTally {
+  int compared = 0, proved = 0;
+};
+/// certified_rim_roots(g), checked against the reference where it proves (and counted in
+/// `tally`); nullopt where the reference cannot decide or the tiers do not prove.
+std::optional<RimRoots> proved_and_checked(const RimDistancePolynomial& g, ReferenceTally& tally) {
+  const std::optional<std::vector<Real>> truth = reference_roots(exact(g));
+  if (!truth) return std::nullopt;
+  ++tally.compared;
+  const RimRoots result = certified_rim_roots(g);
+  if (!result.proved) return std::nullopt;
+  ++tally.proved;
+  expect_proved_roots_match(result, *truth, exact(g));
+  return result;
+}
+
 Real wrap(const Real& angle) {
   Real a = fmod(angle, it::two_pi());
   if (a < 0) a += it::two_pi();
@@ -166,23 +184,16 @@ TEST(CertifiedRimRoots, ProvesTheSignOfRootFreePolynomials) {
 TEST(CertifiedRimRoots, MatchesTheMultiprecisionRootsOfRandomPolynomials) {
   std::mt19937_64 rng(211);
   std::uniform_real_distribution<double> coefficient(-1.0, 1.0);
-  int compared = 0, proved = 0;
+  ReferenceTally tally;
   for (int i = 0; i < 120; ++i) {
     // Vary the balance between the harmonics so that both tiers are exercised.
     const double second = (i % 3 == 0) ? 0.05 : (i % 3 == 1 ? 0.5 : 2.0);
-    const RimDistancePolynomial g =
-        polynomial(coefficient(rng), coefficient(rng), coefficient(rng), second * coefficient(rng),
-                   second * coefficient(rng));
-    const std::optional<std::vector<Real>> truth = reference_roots(exact(g));
-    if (!truth) continue;
-    ++compared;
-    const RimRoots result = certified_rim_roots(g);
-    if (!result.proved) continue;
-    ++proved;
-    expect_proved_roots_match(result, *truth, exact(g));
+    proved_and_checked(polynomial(coefficient(rng), coefficient(rng), coefficient(rng), second * coefficient(rng),
+                                  second * coefficient(rng)),
+                       tally);
   }
-  EXPECT_GT(compared, 100);
-  EXPECT_GT(proved, compared * 9 / 10);  // unproved answers are allowed, but must be rare here
+  EXPECT_GT(tally.compared, 100);
+  EXPECT_GT(tally.proved, tally.compared * 9 / 10);  // unproved answers are allowed, but must be rare here
 }
 
 TEST(CertifiedRimRoots, NeverProvesADoubleRoot) {
@@ -331,7 +342,8 @@ TEST(CertifiedRimRoots, MatchesTheExactRootsOfShallowCrossingsAndNearMisses) {
   // the first harmonic's phase and the second harmonic's turned at random.
   std::mt19937_64 rng(2026'11'25);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
-  int compared = 0, proved = 0, proved_in_tier_one = 0;
+  ReferenceTally tally;
+  int proved_in_tier_one = 0;
   const int kCases = 200;
   for (int i = 0; i < kCases; ++i) {
     const double second = 1e-3 * (1 + unit(rng));
@@ -342,22 +354,16 @@ TEST(CertifiedRimRoots, MatchesTheExactRootsOfShallowCrossingsAndNearMisses) {
                                                second * std::sin(2 * turn));
     // The reference's grid cannot separate roots much closer than its cell (peaks within
     // ~1e-5 of zero): those cases are left out.
-    const std::optional<std::vector<Real>> truth = reference_roots(exact(g));
-    if (!truth) continue;
-    ++compared;
-    const RimRoots result = certified_rim_roots(g);
-    if (!result.proved) continue;
-    ++proved;
-    expect_proved_roots_match(result, *truth, exact(g));
-    proved_in_tier_one += result.count == 2 && result.roots[0].has_trig();
+    const std::optional<RimRoots> result = proved_and_checked(g, tally);
+    proved_in_tier_one += result && result->count == 2 && result->roots[0].has_trig();
   }
-  RecordProperty("compared", compared);
-  RecordProperty("proved", proved);
+  RecordProperty("compared", tally.compared);
+  RecordProperty("proved", tally.proved);
   RecordProperty("proved_in_tier_one", proved_in_tier_one);
-  EXPECT_GT(compared, kCases * 3 / 4);
-  EXPECT_GT(proved, compared * 9 / 10);
+  EXPECT_GT(tally.compared, kCases * 3 / 4);
+  EXPECT_GT(tally.proved, tally.compared * 9 / 10);
   // Before the cap proof, every crossing here went to tier 2; most are now tier 1's.
-  EXPECT_GT(proved_in_tier_one, compared / 4);
+  EXPECT_GT(proved_in_tier_one, tally.compared / 4);
 }
 
 TEST(CertifiedRimRoots, RefusesToProveWithNonFiniteCoefficients) {
