@@ -57,8 +57,10 @@ JointDescription description(JointType type) {
   JointDescription j;
   j.name = std::string(to_string(type));
   j.type = type;
-  j.body_i = "a";
-  j.body_j = "b";
+  // One-character names assigned as characters: assigning the literals "a" and "b" trips GCC 12's
+  // bogus -Wrestrict in std::string::assign (GCC bug 105329).
+  j.body_i = 'a';
+  j.body_j = 'b';
   j.point_i_B = Vector3(0.1, -0.2, 0.3);
   j.point_j_B = Vector3(-0.3, 0.05, 0.2);
   j.axis_i_B = Vector3(0.2, 1.0, -0.3);
