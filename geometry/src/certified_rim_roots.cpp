@@ -207,6 +207,18 @@ void sort_and_wrap(RimRoots& result) {
   sort_by_angle(result);
 }
 
+/// Tier 1's end once the count proof leaves exactly two simple roots, g rising through the one
+/// run 0 seeks and falling through run 1's: the Halley runs to their stop, then the proofs of
+/// both roots (enclose_after_iteration) into `result`. False if a proof fails.
+[[gnu::always_inline]] inline bool iterate_and_enclose_two_roots(const RimDistancePolynomial& g, HalleyRuns& runs,
+                                                                 RimRoots& result) {
+  for (int i = 0; i < kMaxIterationSteps && any_lane(runs.running); ++i) runs.step();
+  if (!enclose_after_iteration(g, runs, result)) return false;
+  result.count = 2;
+  result.proved = true;
+  return true;
+}
+
 // ---- Tier 1, the cap: a rim barely beyond the wall, or barely inside it -----------------
 // (docs/circle-cylinder.md, section 2.1.) When the rim's deepest reach lies within the second
 // harmonic's size of the wall (a contact just beginning or just missed: the prefilters pass it,
@@ -256,11 +268,7 @@ constexpr double kLargestPeakShift = 1.0;
   if (peak_value > 0.0) {
     const double half_gap = std::sqrt(-2 * peak_value / at.curvature);
     HalleyRuns runs(g, {peak - half_gap, peak + half_gap});
-    for (int i = 0; i < kMaxIterationSteps && any_lane(runs.running); ++i) runs.step();
-    if (!enclose_after_iteration(g, runs, result)) return false;
-    result.count = 2;
-    result.proved = true;
-    return true;
+    return iterate_and_enclose_two_roots(g, runs, result);
   }
   // No root: for t and x on the cap, g(t) <= g(x) + g'(x) (t - x) (concavity), and
   // |t - x| <= gamma + |x - phi| <= pi / 2 + |peak_shift| + phi's error.
@@ -322,12 +330,7 @@ bool first_harmonic_proof(const RimDistancePolynomial& g, RimRoots& result) {
     return true;
   }
   if (sign_at_zero < 0) return false;  // impossible with A > 0; keep the proof honest
-
-  for (int i = 0; i < kMaxIterationSteps && any_lane(runs.running); ++i) runs.step();
-  if (!enclose_after_iteration(g, runs, result)) return false;
-  result.count = 2;
-  result.proved = true;
-  return true;
+  return iterate_and_enclose_two_roots(g, runs, result);
 }
 
 // ---- Tier 2: subdivision with Taylor bounds (docs/circle-cylinder.md, section 3) ---------
