@@ -300,7 +300,8 @@ TEST(CertifiedRimRoots, ProvesTheTwoRootsOfAShallowCrossingInTierOne) {
 }
 
 TEST(CertifiedRimRoots, ProvesNoRootWhenTheSecondHarmonicKeepsTheRimInside) {
-  // Peak 2^-10 below zero, while the first-harmonic bound there is 2^-10 above it.
+  // Peak 2^-10 below zero, while the first-harmonic bound there, k0 + 1 + |k3|, is 3 2^-10 above
+  // zero.
   const double k0 = -1 - kCapSecondHarmonic - 0x1p-10;
   const RimDistancePolynomial g = polynomial(k0, 1, 0, kCapSecondHarmonic, 0);
   ASSERT_TRUE(cap_family_roots(k0, kCapSecondHarmonic).empty());
