@@ -90,6 +90,13 @@ struct RimDistancePolynomial {
     double value, slope;
   };
   NearErrorBounds near_error_bounds() const;
+
+ private:
+  /// value_near's bound on |computed - true| of g, for cosines and sines each within
+  /// `trig_error` of the true ones (see value_near): one formula for value_near and
+  /// near_error_bounds, per offset and at the largest offset.
+  template <class T>
+  T value_error_bound(T trig_error) const;
 };
 
 /// Taylor polynomials of sin (degree 7) and cos (degree 8) at 0, for |x| <= kMaxAngleOffset, in
@@ -158,13 +165,17 @@ BoundedOf<T> RimDistancePolynomial::value_near(const Base& base, T offset) const
   // The sine's Taylor remainder a^9 / 9!, rounded to nearest (a few u of a term below 0.4 u:
   // inside the factor-2 slack of kAngleAdditionUlps).
   const T trig_error = kAngleAdditionUlps * kUnitRoundoff + a3 * a3 * a3 * kInverse362880;
+  return {value, value_error_bound(trig_error)};
+}
+
+template <class T>
+[[gnu::always_inline]] inline T RimDistancePolynomial::value_error_bound(T trig_error) const {
   const T double_angle_error = 4 * trig_error + 4 * kUnitRoundoff;
   const double first = std::fabs(k[1].value) + std::fabs(k[2].value);
   const double second = std::fabs(k[3].value) + std::fabs(k[4].value);
   const T error = coefficient_error() + first * trig_error + second * double_angle_error +
-                       8 * kUnitRoundoff * (std::fabs(k[0].value) + first + second) +
-                       32 * kUnderflowError;
-  return {value, error * kErrorInflation};
+                  8 * kUnitRoundoff * (std::fabs(k[0].value) + first + second) + 32 * kUnderflowError;
+  return error * kErrorInflation;
 }
 
 /// value_near's bound with the sine's Taylor remainder at its largest (kAngleAdditionTrigError:
@@ -174,18 +185,17 @@ BoundedOf<T> RimDistancePolynomial::value_near(const Base& base, T offset) const
 /// in magnitude), |k1| + |k2| times the trig error and 2 (|k3| + |k4|) times the double-angle
 /// error, and the rounding of the expression, gamma_3 of its terms' magnitudes, under
 /// 8u (|k1| + |k2| + 2 (|k3| + |k4|)), plus underflow. test_rim_distance_polynomial.cpp checks
-/// both against MPFR across the offset range.
-inline RimDistancePolynomial::NearErrorBounds RimDistancePolynomial::near_error_bounds() const {
+/// both against MPFR across the offset range. Always inlined (as value_error_bound): with the
+/// shared helper GCC emitted it out of line, a call through the PLT on tier 1's path.
+[[gnu::always_inline]] inline RimDistancePolynomial::NearErrorBounds RimDistancePolynomial::near_error_bounds() const {
   constexpr double trig_error = kAngleAdditionTrigError;
   constexpr double double_angle_error = 4 * trig_error + 4 * kUnitRoundoff;
   const double first = std::fabs(k[1].value) + std::fabs(k[2].value);
   const double second = std::fabs(k[3].value) + std::fabs(k[4].value);
-  const double value = coefficient_error() + first * trig_error + second * double_angle_error +
-                       8 * kUnitRoundoff * (std::fabs(k[0].value) + first + second) + 32 * kUnderflowError;
   const double slope = (k[1].error + k[2].error) + 2 * (k[3].error + k[4].error) + first * trig_error +
                        2 * second * double_angle_error + 8 * kUnitRoundoff * (first + 2 * second) +
                        32 * kUnderflowError;
-  return {value * kErrorInflation, slope * kErrorInflation};
+  return {value_error_bound(trig_error), slope * kErrorInflation};
 }
 
 inline double RimDistancePolynomial::curvature_bound() const {
