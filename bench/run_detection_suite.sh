@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # The detection suite (issue 5): accuracy of the paper's Newton baseline, clearjoint uncertified
 # and clearjoint certified against an MPFR reference on five input families, their timings side by
 # side (Google Benchmark), the robustness export, then docs/benchmarks.md and its plots.

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # Builds bench_intersections (Release) and runs it with 10 interleaved repetitions, medians only.
 # JSON: build/bench_intersections.json (docs/benchmarks-kernel.md reads its table from it);
 # the console table goes to stdout, then the certified/uncertified ratios of the medians.

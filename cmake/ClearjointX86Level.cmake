@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # CLEARJOINT_X86_64_V2: compile the geometry kernel for the x86-64-v2 level (SSE4.1, SSE4.2,
 # SSSE3, POPCNT; every x86-64 processor of the last fifteen years or so, and the baseline of
 # RHEL 9), not the original x86-64 that Debian's compilers target by default. With it GCC 12

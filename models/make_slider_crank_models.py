@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: BSD-3-Clause
 """Writes the slider-crank model files of Marques et al. (2017), Section 6, Tables 1-3.
 
 Ideal joints: slider_crank_planar_ideal.json, slider_crank_spatial_ideal.json.

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # Configure and build clearjoint (Release) in ./build with 2 parallel jobs.
 set -euo pipefail
 cd "$(dirname "$0")/.."

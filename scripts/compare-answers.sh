@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # Compares the geometry kernel's answers at two revisions, bit for bit (docs/verifying-refactors.md).
 #
 #   bash scripts/compare-answers.sh [--keep] [REV_A [REV_B]]

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # Installs the Debian 12 packages clearjoint needs, only those that are missing.
 # Run as root (or with sudo available). Idempotent: a no-op when everything is there.
 set -euo pipefail

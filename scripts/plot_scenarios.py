@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: BSD-3-Clause
 """Draw what `clearjoint detect` finds for each configuration of a JSON Lines file.
 
 Runs `clearjoint detect` on the input (default examples/scenarios.jsonl, one configuration per

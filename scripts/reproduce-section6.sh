@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # Reproduce Section 6 of Marques et al. (2017): build the clearjoint program, run the slider-crank
 # models (planar and spatial, ideal and with the clearance joint, the 4 x 4 clearance study and
 # ensembles of 9 slightly perturbed runs per point of its three sweeps (and of the radial and axial

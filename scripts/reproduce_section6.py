@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: BSD-3-Clause
 """Reproduce Section 6 of Marques et al. (2017): run the slider-crank models and draw Figs. 7-11
 and 13-19 as PNG files.
 

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # The main job: install what is missing, build, run the shipped examples and the paper's spatial
 # slider-crank (Section 6.2) with its clearance joint.
 set -euo pipefail

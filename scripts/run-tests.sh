@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # The whole test suite: install what is missing, build, run ctest. Ends with ctest's summary.
 set -euo pipefail
 cd "$(dirname "$0")/.."

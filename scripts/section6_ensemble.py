@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The clearance trend of Sec. 6.2 ("the increase of clearance is typically associated with the
 increase of magnitude of the acceleration peaks") as a statistical statement over ensembles of
 runs, drawn from the reduced runs of reproduce_section6.py.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Figures 7-11 and 13-19 of Marques et al. (2017), Section 6, from the reduced runs of
 reproduce_section6.py, and the numbers docs/reproduction.md quotes.
 

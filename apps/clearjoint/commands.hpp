@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Subcommands of the clearjoint program. Each takes the arguments after the subcommand name and
 // returns the process exit status.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // clearjoint detect [FILE]: joint contact detection (paper Section 3, eqs. 3-26) as JSON Lines.
 //
 // One joint configuration per input line, one answer per line, in the same order: the scenario

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // clearjoint intersect [FILE]: rim/plane and rim/cylinder queries as JSON Lines.
 //
 // One JSON object per input line, one JSON object per answer line, in the same order. The format

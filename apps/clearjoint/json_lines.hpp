@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // What the JSON Lines commands (`clearjoint intersect`, `clearjoint detect`) share: the
 // command-line handling (FILE or standard input, --help, exit statuses), the line loop with its

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // clearjoint: the command-line front of the library, so that any language can call it.
 
 #include <cstdio>

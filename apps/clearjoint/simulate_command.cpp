@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // clearjoint simulate MODEL --out DIR: run a multibody model file and write CSV time series
 // (dynamics/include/clearjoint/dynamics/simulation.hpp lists the files and columns).
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// \file
 /// The random source of every benchmark input set, so that a seed means the same inputs in every

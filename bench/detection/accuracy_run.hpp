@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// \file
 /// The accuracy evaluation: every method on every input of the chosen families, scored against

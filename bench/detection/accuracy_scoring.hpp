@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// \file
 /// Scoring one detection answer against the multiprecision reference, and tallying the scores.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Timings of full-joint contact detection (issue 5): the paper's Newton baseline, clearjoint's
 // uncertified pipeline and its certified pipeline, side by side in one run, on the input families
 // of input_families.hpp (the same inputs the accuracy evaluation scores).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "detection_methods.hpp"
 
 #include "paper_baseline.hpp"

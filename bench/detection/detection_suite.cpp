@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The detection suite's non-timing half (issue 5): the accuracy evaluation of every method on
 // every input family against the multiprecision reference, and the robustness export of the
 // families as `clearjoint detect` JSON Lines with their reference answers.

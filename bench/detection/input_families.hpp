@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// \file
 /// The input families of the detection benchmarks (issue 5), each generated from a fixed seed.

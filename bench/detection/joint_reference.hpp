@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// \file
 /// A multiprecision reference for full-joint contact detection (paper Section 3, eqs. 5-23), the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// \file
 /// JSON pieces shared by the accuracy report and the robustness export: inputs in the

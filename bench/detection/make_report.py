@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: BSD-3-Clause
 """Writes docs/benchmarks.md and its plots from the detection suite's outputs.
 
 Inputs: the accuracy report of `detection_suite accuracy` and the Google Benchmark JSON of

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// \file
 /// The paper's contact detection as written (Marques et al. 2017, Section 3), in plain double

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: BSD-3-Clause
 """Scores `clearjoint detect` answers (or any code's answers in that format) against the reference
 answers of the detection suite's robustness export.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Wall time per simulated second for the paper's slider-cranks at the paper's settings (Table 2:
 // tolerance 1e-7, reported step 1e-5 s): with ideal joints (issue 6 target: < 50 ms), and the
 // spatial one with its revolute clearance joint (issue 7: report the figure, the steps and the

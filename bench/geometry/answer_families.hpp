@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// \file
 /// The inputs dump_answers prints answers for, in families, each drawn from its own fixed seed

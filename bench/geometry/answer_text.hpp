@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// \file
 /// One answer of the geometry kernel as text, every field of it: doubles in C's `%a` (hexadecimal,

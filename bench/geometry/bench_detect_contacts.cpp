@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Timings of full-joint detection, detect_contacts (issue 4's targets), on the paper's joint
 // (Marques et al. 2017, Table 2): random poses split by outcome into "in contact" (at least one
 // contact) and "free flight" (none), and the aligned journal of the planar mechanism (Section 6.1).

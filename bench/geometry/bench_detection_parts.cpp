@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The parts of an in-contact detection, each timed alone on the poses of
 // bench_detect_contacts' detect/in_contact rows (detection_poses.hpp): the whole detection for
 // reference, the circle-cylinder query of each rim that crosses the bearing wall, its two inner

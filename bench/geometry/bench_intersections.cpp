@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Timings of the kernel's rim queries on the paper's joint (Marques et al. 2017, Table 2).
 //
 // Every input set is built once, before any timing, from a fixed seed that is written into the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The detection benchmarks' joint and random journal poses (bench_detect_contacts,
 // bench_detection_parts): the paper's joint (Marques et al. 2017, Table 2) with the bearing fixed

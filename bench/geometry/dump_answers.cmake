@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # dump_answers: every field of 192,000 kernel answers in %a, for bit-for-bit comparisons of two
 # builds (docs/verifying-refactors.md). Its printing and input families are a library of their own,
 # which the tests in tests/ link too. This file is included by bench/geometry/CMakeLists.txt and by

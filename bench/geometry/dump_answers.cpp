@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // dump_answers: every field of 192,000 answers of the geometry kernel, one answer a line, doubles
 // in %a, on standard output. Two builds of the library that print the same text gave the same
 // answers bit for bit on these inputs; scripts/compare-answers.sh builds two revisions and

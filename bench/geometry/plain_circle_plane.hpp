@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // A measuring stick, not a query to use: the circle-plane answer (topology, side, depth of the
 // deepest rim point, two crossing angles and points) in plain double with no error bound and no

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "clearjoint/dynamics/clearance_revolute_joint.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "clearjoint/dynamics/gravity.hpp"
 
 #include "clearjoint/dynamics/errors.hpp"

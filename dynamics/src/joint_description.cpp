@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "clearjoint/dynamics/joint_description.hpp"
 
 #include <array>

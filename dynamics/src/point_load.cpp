@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "clearjoint/dynamics/point_load.hpp"
 
 #include "clearjoint/dynamics/errors.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "clearjoint/dynamics/spring_damper.hpp"
 
 #include "clearjoint/dynamics/errors.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // A priori error bounds in plain double (Higham, "Accuracy and Stability of Numerical
 // Algorithms", Lemma 3.3 and sec. 3.1): an expression of + - * / on exact doubles, computed in

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Starting angles of tier 1's Newton runs (certified_rim_roots.cpp) on a grid of multiples of
 // 1/16 rad, with their cosine and sine from a table: every root then takes its base's sine and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "candidate_prefilter.hpp"
 
 #include "a_priori_bounds.hpp"

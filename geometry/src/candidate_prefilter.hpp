@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The reach prefilters of a misaligned joint's four candidate point contacts (radial and axial at
 // bases A and B; paper eqs. 11-21), proved together. They are the tests rim_reach and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The four reach prefilters of candidate_prefilter.hpp inside their magnitude guard, computed for
 // bases A and B side by side: lane 0 holds base A's value, lane 1 base B's. Inline, so that

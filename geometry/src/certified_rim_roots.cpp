@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "certified_rim_roots.hpp"
 
 #include <algorithm>

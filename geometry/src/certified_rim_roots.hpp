@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // All roots of the rim distance polynomial g on the circle, each proved, plus a proof that no
 // other root exists (docs/circle-cylinder.md, sections 2-3). Two floating-point tiers:

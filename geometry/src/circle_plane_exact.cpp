@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "circle_plane_exact.hpp"
 
 #include <CGAL/Gmpq.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Exact fallback of the circle-plane topology predicate (CGAL rationals).
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // A double together with a rigorous bound on its distance to the real number it stands for
 // (running error analysis, Higham, "Accuracy and Stability of Numerical Algorithms", sec. 3.3).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The exact point behind a RoundedPoint, in rationals, for the exact tiers (CGAL headers: include
 // only from the exact tiers' .cpp files).

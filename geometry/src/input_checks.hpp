@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Input checks shared by every validate(): each failure throws InvalidInput naming the field and
 // the value, e.g. "circle.radius = -1: must be positive".

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Circle against plane, paper eqs. (11)-(15); derivation in docs/circle-plane.md.
 //
 // With s = n_p . (c - p) and P n_p the part of the plane normal in the circle's plane, the

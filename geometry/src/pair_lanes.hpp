@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Two doubles side by side in one SSE2 register (GCC/Clang vector extensions, baseline x86-64),
 // the kernel's one lane type: the magnitude guards of rim_distance_polynomial.cpp test two

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The exact problem (docs/circle-cylinder.md, section 4). Write rim points as
 //   x = c + X u' + Y v',   u' = n x e_k (exact), v' = n x u',  a = |u'|^2, b = |v'|^2,
 // so the rim is the ellipse E: a X^2 + b Y^2 = r^2 in the (X, Y) plane, with rational

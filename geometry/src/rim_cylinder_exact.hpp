@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Exact tier for rim/cylinder: decides the crossings of the stored primitives with rational
 // arithmetic (CGAL::Gmpq, CGAL::Polynomial). Slow (tens to hundreds of microseconds) and only

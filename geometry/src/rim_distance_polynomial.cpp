@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "rim_distance_polynomial.hpp"
 
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The rim's squared distance to the cylinder axis as a trigonometric polynomial of degree 2 in
 // the rim angle (docs/circle-cylinder.md, section 1). Its roots are the crossings of eqs. (16)-(17).

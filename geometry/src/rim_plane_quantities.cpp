@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "rim_plane_quantities.hpp"
 
 #include <array>

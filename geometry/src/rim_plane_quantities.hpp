@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The quantities that decide a rim against a plane (docs/circle-plane.md; paper eqs. 11-15), each
 // with a rigorous error bound, and the cheap "which side is the whole rim on" test built on them.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // A point that detection computes in double from exact inputs (a base or rim centre, eqs. 3-4,
 // in the bearing-centred frame of detect_contacts), with a rigorous bound on its rounding and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The kernel queries on a rim whose centre (and a plane whose point) detection computed by
 // rounding (rounded_point.hpp): every certified or exact answer holds for the exact points, not

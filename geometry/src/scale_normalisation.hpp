@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Exact rescaling by powers of two before a query. A normal or axis means only its direction,
 // and a uniform scale of all lengths by 2^k changes no topology; multiplying by 2^k is exact

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Where unit_axis (joint_geometry.cpp) normalises an axis directly, a / sqrt(|a|^2): for callers
 // that compute |a|^2 themselves and must get the same unit axis bit for bit (detect_contacts'

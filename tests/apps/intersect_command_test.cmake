@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # Checks of `clearjoint intersect` (apps/clearjoint/intersect_command.cpp) against
 # docs/command-line.md. Run by ctest, one case per test:
 #   cmake -DCLEARJOINT=<program> -DSOURCE_DIR=<repository> -DWORK_DIR=<scratch dir> -DCASE=<case>

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # Checks shared by the end-to-end tests of the JSON Lines commands (intersect_command_test.cmake,
 # detect_command_test.cmake). Before include(), the including script sets SUBCOMMAND (the
 # clearjoint subcommand to run), TEST_NAME (for messages) and CLEARJOINT, CASE.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The clearance joint integrated through impacts (issue 7's physics checks): a free journal in a
 // grounded bearing in zero gravity, and the shipped planar slider-crank with an aligned joint.
 

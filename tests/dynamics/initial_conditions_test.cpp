@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "clearjoint/dynamics/initial_conditions.hpp"
 
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Every joint type's Jacobian and gamma against finite differences of Phi along a motion with
 // constant rdot and constant body-frame omega' (so dv/dt = 0 and d2Phi/dt2 = -gamma exactly).
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "clearjoint/dynamics/model_builder.hpp"
 
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "clearjoint/dynamics/multibody_system.hpp"
 
 #include <gtest/gtest.h>

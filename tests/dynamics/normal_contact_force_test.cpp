@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "clearjoint/dynamics/normal_contact_force.hpp"
 
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Reaction forces from the multipliers (eq. 37) against hand computations.
 
 #include "clearjoint/dynamics/reaction_forces.hpp"

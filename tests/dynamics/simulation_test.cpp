@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The paper's two slider-cranks with ideal joints: mechanical energy and constraints over 1 s.
 
 #include "clearjoint/dynamics/simulation.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// \file
 /// Helpers shared by the geometry tests: rigid motions and unit changes of primitives, and an

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Certificate: trust levels, their names, and how the parts of one answer combine.
 
 #include "clearjoint/geometry/certificate.hpp"

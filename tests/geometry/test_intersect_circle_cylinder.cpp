@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // intersect_circle_cylinder: a journal rim against the bearing's lateral wall (paper eqs. 16-21).
 //
 // The degenerate configurations are built from small integers (exactly representable), with a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // intersect_circle_plane: a journal rim against a bearing base plane (paper eqs. 11-15).
 //
 // Every degenerate configuration below is built from small integers, so it is exactly what the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The kernel against the independent multiprecision reference (tests/geometry/reference), on
 // random configurations with fixed, recorded seeds:
 //

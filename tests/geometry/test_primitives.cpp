@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Primitives: validation of every field, and the documented rim parametrisation (frame_of,
 // point_at).
 

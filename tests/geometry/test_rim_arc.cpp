@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // RimArc: middle and sweep of counter-clockwise arcs on a rim, including arcs through angle 0.
 
 #include "clearjoint/geometry/rim_arc.hpp"

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # usage: run_package_test.sh BUILD_DIR CONSUMER_SOURCE SCRATCH_DIR
 set -euo pipefail
 build_dir=$1 consumer=$2 scratch=$3

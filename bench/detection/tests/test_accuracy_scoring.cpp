@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Tests of the scoring (accuracy_scoring.hpp): each kind of failure is counted where it happens
 // and nowhere else, enclosures are checked on proved crossings only, and the percentiles are
 // nearest-rank.

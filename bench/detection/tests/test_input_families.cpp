@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Tests of the input families (input_families.hpp): reproducible from their seeds, with the groups
 // they document, and the near-tangent margins and near-parallel tilts they claim.
 

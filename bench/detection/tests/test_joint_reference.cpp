@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Tests of the detection suite's MPFR reference (joint_reference.hpp): closed forms of a journal
 // tilted in the y-z plane of a bearing on the z axis (the construction of
 // tests/geometry/joint/test_detect_contacts.cpp, here evaluated in MPFR on the exact unit axis),

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Tests of the paper baseline (paper_baseline.hpp): it must be a faithful implementation of the
 // paper's method, right where the paper's assumptions hold (each scenario of Fig. 2 built from
 // closed forms), and it keeps the paper's documented limits (no "beyond the model", a penetration

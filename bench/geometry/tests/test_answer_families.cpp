@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Tests of bench/geometry/answer_families.hpp: dump_answers' text must be a function of the
 // library build alone (the same lines every time), every line must hold exactly the fields its
 // counts announce (answer_text.hpp's grammar), and the families must reach what they are there

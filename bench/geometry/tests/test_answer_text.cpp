@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Tests of bench/geometry/answer_text.hpp: the text of an answer must change whenever one of its
 // fields changes by the least amount a double can (one ulp, or the sign of a zero), and only in
 // that field's place, or two builds could print the same text for different answers.

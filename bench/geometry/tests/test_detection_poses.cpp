@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Tests of bench/geometry/detection_poses.{hpp,cpp}: the poses both detection benchmarks time.
 
 #include "detection_poses.hpp"

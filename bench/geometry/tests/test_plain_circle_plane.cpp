@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Tests of bench/geometry/plain_circle_plane.hpp: the measuring stick must do the work of the
 // certified query (same topology, depth and crossings where rounding cannot change the answer),
 // or the floor it measures would be a floor of something else.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// \file
 /// Checks shared by the internal tests that compare a Bounded (error_bounded.hpp) with a 256-bit

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// \file
 /// Independent 256-bit MPFR references for the tests of the kernel's internal pieces: the rim

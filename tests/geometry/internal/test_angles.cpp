@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Tests of geometry/src/angles.hpp: wrap_angle maps every finite angle into [0, 2 pi).
 
 #include "angles.hpp"

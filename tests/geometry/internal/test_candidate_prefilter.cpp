@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Tests of geometry/src/candidate_prefilter.{hpp,cpp}: a candidate contact claimed absent must be
 // absent for every rim centre and base point within their error bounds (checked in 256-bit
 // MPFR), on joints near and far from touching, at tiny and huge scales and with axis components

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Tests of geometry/src/certified_rim_roots.{hpp,cpp} on hand-made coefficient sets: a proved
 // answer must be right (count, enclosures holding the analytic or MPFR roots, sign_after), and
 // multiple roots or ambiguous coefficients must never be "proved".

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Tests of geometry/src/circle_plane_exact.{hpp,cpp}: the exact topology of a circle against a
 // plane on integer (exactly representable) poses, non-unit normals, both sides, and single-ulp
 // perturbations of a tangency; random poses against 256-bit MPFR extremes.

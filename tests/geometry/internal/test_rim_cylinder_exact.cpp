@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Tests of geometry/src/rim_cylinder_exact.{hpp,cpp}: exactly representable rim/wall poses with
 // analytic roots and multiplicities (tangencies, double roots, the M = 0 and shared-root branches
 // of the file's elimination), and random integer poses against 256-bit MPFR signs.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Tests of geometry/src/rim_distance_polynomial.{hpp,cpp}: the coefficients, value and
 // derivative (also by angle addition, value_near) must enclose the exact quantities of the stored primitives (256-bit MPFR from the
 // definitions in primitives.hpp), and rim_reach must never give a wrong decided answer.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Tests of geometry/src/rim_plane_quantities.{hpp,cpp}: both versions of the quantities (a priori
 // and running error) must enclose the exact values of the stored primitives (256-bit MPFR), and
 // rim_side_of_plane must never claim a side the exact rim does not keep.

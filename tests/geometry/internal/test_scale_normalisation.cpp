@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "scale_normalisation.hpp"
 
 #include <gtest/gtest.h>

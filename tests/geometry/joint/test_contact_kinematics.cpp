@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Tests of contact_kinematics (eqs. 24-26): material-point velocities against finite differences
 // of rigidly moved points, the approach speed against finite differences of the detected depth,
 // and the face contact point (a material point of the journal) against its own finite difference.

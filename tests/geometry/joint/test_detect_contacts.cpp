@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Tests of detect_contacts: each scenario of Fig. 2 plus none and beyond_model, built from a
 // journal tilted in the y-z plane of a bearing on the z axis, where every depth and contact
 // point has a closed form (derived below); invariance under rigid motions, flipping the journal

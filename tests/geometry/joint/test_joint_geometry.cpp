@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Tests of joint_geometry: dimensions and clearances (eqs. 1-2), validation, base centres
 // (eqs. 3-4).
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// \file
 /// The misaligned scenarios (a)-(i) of the paper's Fig. 2, plus none, built from a journal tilted

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// \file
 /// An independent multiprecision reference for the rim queries, used only by the tests.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Exits 0 only if the installed dynamics library (which links the geometry library) answers: the
 // Hertz force K delta^n of paper Sec. 4 at a known depth, and a full-joint detection through the
 // geometry library it depends on (so a missing runtime path to it fails here).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// \file
 /// A rigid body as a model describes it: inertial properties, and a state in the paper's

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// \file
 /// The spatial revolute joint with radial and axial clearance as a force element (paper

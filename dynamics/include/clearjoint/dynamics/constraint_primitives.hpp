@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// \file
 /// The building blocks every ideal joint is assembled from (Nikravesh's spherical, dot-1 and dot-2

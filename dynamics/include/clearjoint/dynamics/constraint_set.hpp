@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// \file
 /// All joints of a system stacked into eq. (33) Phi(q, t) = 0 and eq. (34) Phi_q dv/dt = gamma,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// \file
 /// A CSV file written atomically: rows go to a temporary file in the same directory, which

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// \file
 /// The two ways the dynamics module refuses to go on, and the checks that name the bad field.

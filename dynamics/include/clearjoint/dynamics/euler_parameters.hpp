@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// \file
 /// Euler parameters p = (e0, e1, e2, e3) = (e0, e), the paper's rotational coordinates: the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// \file
 /// The interface of everything that adds to g in eq. (35): gravity, loads, spring-dampers, and

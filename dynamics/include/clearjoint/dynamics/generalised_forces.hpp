@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// \file
 /// The applied part of eq. (35)'s generalised force vector g, accumulated per body as a force at

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// \file
 /// Uniform gravity: m g at every mass centre; potential energy -sum m g . r.

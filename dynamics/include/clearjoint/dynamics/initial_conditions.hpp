@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// \file
 /// Consistent initial conditions (paper Sec. 6: "the remaining coordinates and velocities are

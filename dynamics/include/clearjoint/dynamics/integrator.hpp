@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// \file
 /// Time integration with Boost.Odeint's controlled, dense-output Dormand-Prince 5(4) stepper (the

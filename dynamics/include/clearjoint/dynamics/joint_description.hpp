@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// \file
 /// An ideal joint as a user or a model file describes it: which bodies, which points and axes in

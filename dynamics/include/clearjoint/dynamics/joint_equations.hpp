@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// \file
 /// A joint's constraint equations (eqs. 33-34) as the solver needs them: body indices and

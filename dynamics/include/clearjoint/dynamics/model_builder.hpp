@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// \file
 /// From a ModelDescription to a MultibodySystem with consistent initial conditions.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// \file
 /// Everything a model file says: bodies with their initial states, joints, forces, how to make

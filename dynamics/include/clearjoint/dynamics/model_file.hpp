@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// \file
 /// The JSON model file (docs/dynamics.md has the schema; models/ has examples). Unknown keys are

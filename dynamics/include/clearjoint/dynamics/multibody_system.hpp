@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// \file
 /// Bodies, ideal joints and force elements, and the right-hand side of the equations of motion:

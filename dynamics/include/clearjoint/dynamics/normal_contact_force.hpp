@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// \file
 /// Normal contact force laws for the clearance joint (paper Section 4): Hertz with hysteresis

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// \file
 /// A constant world-frame force at a body-fixed point and a constant world-frame moment.

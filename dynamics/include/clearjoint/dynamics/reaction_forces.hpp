@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// \file
 /// Joint reaction forces from the Lagrange multipliers, eq. (37): g(c) = -Phi_q^T lambda.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// \file
 /// Coulomb friction with the hyperbolic-tangent regularisation of the paper's eq. (32):

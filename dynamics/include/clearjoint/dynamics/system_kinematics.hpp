@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// \file
 /// The state vector layout used by the integrator, and the per-body kinematics derived from it

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// \file
 /// The contact scenarios of the paper's Fig. 2, (a) to (l), plus free flight and "beyond the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// \file
 /// Contact detection between a journal and its bearing: paper Section 3, eqs. (5)-(23).

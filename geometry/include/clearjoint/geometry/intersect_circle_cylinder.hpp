@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// \file
 /// A journal rim against the bearing's lateral wall: radial contact, paper eqs. (16)-(21).

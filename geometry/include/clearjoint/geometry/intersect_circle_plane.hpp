@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// \file
 /// A journal rim against a bearing base plane: axial contact, paper eqs. (11)-(15).

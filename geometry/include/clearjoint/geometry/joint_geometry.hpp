@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// \file
 /// The joint as the paper describes it: dimensions (eqs. 1-2), part poses and base centres

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// \file
 /// Circle3, Plane3 and Cylinder3: the exact sets their stored doubles describe.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// \file
 /// The one vector type of the public API: three doubles, world frame unless a name says otherwise.
