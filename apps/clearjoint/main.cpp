@@ -5,6 +5,7 @@
 #include <cstring>
 #include <exception>
 
+#include "clearjoint/version.hpp"
 #include "commands.hpp"
 
 namespace {
@@ -26,7 +27,7 @@ constexpr Command kCommands[] = {
 };
 
 int print_usage(std::FILE* to) {
-  std::fprintf(to, "usage: clearjoint COMMAND [ARGS...]\ncommands:\n");
+  std::fprintf(to, "usage: clearjoint COMMAND [ARGS...]\n       clearjoint --version\ncommands:\n");
   for (const Command& c : kCommands) std::fprintf(to, "  %-10s %s\n", c.name, c.summary);
   return to == stdout ? 0 : 2;
 }
@@ -37,6 +38,10 @@ int main(int argc, char** argv) {
   if (argc < 2) return print_usage(stderr);
   if (std::strcmp(argv[1], "--help") == 0 || std::strcmp(argv[1], "-h") == 0) {
     return print_usage(stdout);
+  }
+  if (std::strcmp(argv[1], "--version") == 0) {
+    std::printf("clearjoint %s\n", clearjoint::version_string());
+    return 0;
   }
   for (const Command& c : kCommands) {
     if (std::strcmp(argv[1], c.name) == 0) {
