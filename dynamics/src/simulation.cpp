@@ -8,6 +8,7 @@
 #include "clearjoint/dynamics/csv_writer.hpp"
 #include "clearjoint/dynamics/errors.hpp"
 #include "clearjoint/dynamics/reaction_forces.hpp"
+#include "clearjoint/dynamics/simulation_output.hpp"
 
 namespace clearjoint::dynamics {
 
@@ -37,38 +38,56 @@ std::string file_name_part(std::string_view name) {
   return part;
 }
 
-/// A force element that records outputs, and its file.
+/// A force element that records outputs, and its table.
 struct ElementOutput {
   size_t element = 0;
   size_t width = 0;
-  std::unique_ptr<CsvWriter> file;
+  size_t table = 0;
 };
 
-}  // namespace
-
-SimulationSummary simulate(const ModelDescription& model,
-                           const std::filesystem::path& output_directory,
-                           const ProgressCallback& progress) {
-  BuiltModel built = build_model(model);
-  MultibodySystem& system = *built.system;
-  std::error_code error;
-  std::filesystem::create_directories(output_directory, error);
-  if (error) {
-    throw std::runtime_error(output_directory.string() + ": cannot create the output directory (" +
-                             error.message() + ")");
+/// The CSV files of simulation.hpp, one CsvWriter per table; each file appears only on commit().
+class CsvDirectory final : public SimulationOutput {
+ public:
+  explicit CsvDirectory(std::filesystem::path directory) : directory_(std::move(directory)) {
+    std::error_code error;
+    std::filesystem::create_directories(directory_, error);
+    if (error) {
+      throw std::runtime_error(directory_.string() + ": cannot create the output directory (" +
+                               error.message() + ")");
+    }
   }
+  size_t add_table(const std::string& name, const std::vector<std::string>& header) override {
+    files_.push_back(std::make_unique<CsvWriter>(directory_ / (name + ".csv"), header));
+    return files_.size() - 1;
+  }
+  void write_row(size_t table, std::span<const double> values) override {
+    files_[table]->write_row(values);
+  }
+  void commit() override {
+    for (auto& file : files_) file->commit();
+  }
+
+ private:
+  std::filesystem::path directory_;
+  std::vector<std::unique_ptr<CsvWriter>> files_;
+};
+
+/// The run itself, on a model already built (so that the CSV directory is created only for a
+/// model that builds).
+SimulationSummary run(const ModelDescription& model, BuiltModel built, SimulationOutput& output,
+                      const ProgressCallback& progress) {
+  MultibodySystem& system = *built.system;
 
   std::vector<BodyIndex> output_bodies;
-  std::vector<std::unique_ptr<CsvWriter>> body_files;
+  std::vector<size_t> body_tables;
   for (const std::string& name : model.output_bodies) {
     output_bodies.push_back(system.body_index(name, "output.bodies"));
-    body_files.push_back(
-        std::make_unique<CsvWriter>(output_directory / ("body_" + name + ".csv"), body_header()));
+    body_tables.push_back(output.add_table("body_" + name, body_header()));
   }
-  CsvWriter energy_file(output_directory / "energy.csv",
-                        {"time", "kinetic", "potential", "total", "position_violation",
-                         "velocity_violation", "euler_norm_drift"});
-  CsvWriter reaction_file(output_directory / "reactions.csv", reaction_header(system.constraints()));
+  const size_t energy_table =
+      output.add_table("energy", {"time", "kinetic", "potential", "total", "position_violation",
+                                  "velocity_violation", "euler_norm_drift"});
+  const size_t reaction_table = output.add_table("reactions", reaction_header(system.constraints()));
   std::vector<ElementOutput> element_outputs;
   for (size_t e = 0; e < system.force_elements().size(); ++e) {
     const ForceElement& element = *system.force_elements()[e];
@@ -80,8 +99,8 @@ SimulationSummary simulate(const ModelDescription& model,
     }
     const size_t width = header.size();
     header.insert(header.begin(), "time");
-    element_outputs.push_back({e, width, std::make_unique<CsvWriter>(
-        output_directory / ("force_" + file_name_part(element.name()) + ".csv"), header)});
+    element_outputs.push_back(
+        {e, width, output.add_table("force_" + file_name_part(element.name()), header)});
   }
 
   SimulationSummary summary;
@@ -108,7 +127,7 @@ SimulationSummary simulate(const ModelDescription& model,
       row.insert(row.end(), kin.angular_velocity_W.data(), kin.angular_velocity_W.data() + 3);
       row.insert(row.end(), a.data() + 6 * b, a.data() + 6 * b + 3);
       row.insert(row.end(), angular_acceleration_W.data(), angular_acceleration_W.data() + 3);
-      body_files[k]->write_row(row);
+      output.write_row(body_tables[k], row);
     }
 
     row.assign({t});
@@ -117,15 +136,15 @@ SimulationSummary simulate(const ModelDescription& model,
       row.insert(row.end(), r.force_W.data(), r.force_W.data() + 3);
       row.insert(row.end(), r.moment_W.data(), r.moment_W.data() + 3);
     }
-    reaction_file.write_row(row);
+    output.write_row(reaction_table, row);
 
-    for (const ElementOutput& output : element_outputs) {
-      row.assign(output.width + 1, 0.0);
+    for (const ElementOutput& output_table : element_outputs) {
+      row.assign(output_table.width + 1, 0.0);
       row[0] = t;
-      system.force_elements()[output.element]->record_outputs(
-          t, system.kinematics(), system.extra_state(y, output.element),
+      system.force_elements()[output_table.element]->record_outputs(
+          t, system.kinematics(), system.extra_state(y, output_table.element),
           std::span<double>(row).subspan(1));
-      output.file->write_row(row);
+      output.write_row(output_table.table, row);
     }
 
     const double kinetic = system.kinetic_energy(y);
@@ -134,7 +153,7 @@ SimulationSummary simulate(const ModelDescription& model,
     const ConstraintViolation violation = system.constraint_violation(t, y);
     const double values[] = {t, kinetic, potential, kinetic + potential, violation.position,
                              violation.velocity, drift};
-    energy_file.write_row(values);
+    output.write_row(energy_table, values);
     summary.max_energy_change = std::max(summary.max_energy_change,
                                          std::abs(kinetic + potential - summary.initial_energy));
     summary.max_position_violation = std::max(summary.max_position_violation, violation.position);
@@ -145,15 +164,27 @@ SimulationSummary simulate(const ModelDescription& model,
 
   std::vector<double> y = built.initial_state;
   summary.integration = integrate(system, y, model.solver, observe);
-  for (auto& file : body_files) file->commit();
-  energy_file.commit();
-  reaction_file.commit();
-  for (ElementOutput& output : element_outputs) output.file->commit();
+  output.commit();
   for (const auto& element : system.force_elements()) {
     std::string text = element->statistics_text();
     if (!text.empty()) summary.element_statistics.push_back(std::move(text));
   }
   return summary;
+}
+
+}  // namespace
+
+SimulationSummary simulate(const ModelDescription& model,
+                           const std::filesystem::path& output_directory,
+                           const ProgressCallback& progress) {
+  BuiltModel built = build_model(model);
+  CsvDirectory files(output_directory);
+  return run(model, std::move(built), files, progress);
+}
+
+SimulationSummary simulate(const ModelDescription& model, SimulationOutput& output,
+                           const ProgressCallback& progress) {
+  return run(model, build_model(model), output, progress);
 }
 
 }  // namespace clearjoint::dynamics

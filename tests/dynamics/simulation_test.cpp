@@ -5,7 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
+#include <sstream>
 
 #include "dynamics_test_support.hpp"
 
@@ -75,6 +77,75 @@ TEST(SpatialSliderCrankWithClearance, WritesTheJointsContactTimeSeriesUnlessAske
   simulate(model, dir);
   EXPECT_FALSE(std::filesystem::exists(file));
   EXPECT_TRUE(std::filesystem::exists(dir / "body_slider.csv"));
+}
+
+
+/// Every value of a CSV file written by simulate(), read back as doubles (round-trip form).
+std::vector<double> csv_values(const std::filesystem::path& file, std::string& header) {
+  std::ifstream csv(file);
+  std::getline(csv, header);
+  std::vector<double> values;
+  std::string line;
+  while (std::getline(csv, line)) {
+    std::stringstream fields(line);
+    std::string field;
+    while (std::getline(fields, field, ',')) values.push_back(std::stod(field));
+  }
+  return values;
+}
+
+TEST(SpatialSliderCrankWithClearance, KeepsInMemoryExactlyTheTablesItWritesToFiles) {
+  ModelDescription model = test::shipped_model("slider_crank_spatial_clearance.json");
+  model.solver.end_time = 0.01;
+  model.solver.report_step = 1e-3;
+  const auto dir = std::filesystem::temp_directory_path() / "clearjoint_in_memory_test";
+  std::filesystem::remove_all(dir);
+  simulate(model, dir);
+  TablesInMemory tables;
+  simulate(model, tables);
+  ASSERT_TRUE(tables.committed());
+  size_t files = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) files += entry.path().extension() == ".csv";
+  ASSERT_EQ(tables.tables().size(), files);
+  for (const TablesInMemory::Table& table : tables.tables()) {
+    std::string header;
+    const std::vector<double> values = csv_values(dir / (table.name + ".csv"), header);
+    std::string joined;
+    for (const std::string& column : table.header) joined += (joined.empty() ? "" : ",") + column;
+    EXPECT_EQ(joined, header) << table.name;
+    EXPECT_EQ(table.rows(), 11u) << table.name;
+    // Equal values (NaN where the file says nan: a contact slot not in use): the files print
+    // each double in its shortest round-trip form.
+    ASSERT_EQ(table.values.size(), values.size()) << table.name;
+    for (size_t k = 0; k < values.size(); ++k) {
+      const bool same = table.values[k] == values[k] || (std::isnan(table.values[k]) && std::isnan(values[k]));
+      ASSERT_TRUE(same) << table.name << " value " << k << ": " << table.values[k] << " vs " << values[k];
+    }
+  }
+}
+
+TEST(SpatialSliderCrankWithClearance, StopsWithoutCommittingWhenTheProgressCallbackThrows) {
+  ModelDescription model = test::shipped_model("slider_crank_spatial_clearance.json");
+  model.solver.end_time = 0.01;
+  model.solver.report_step = 1e-3;
+  struct Interrupted {};
+  TablesInMemory tables;
+  int calls = 0;
+  EXPECT_THROW(simulate(model, tables, [&calls](double) {
+                 if (++calls == 4) throw Interrupted{};
+               }),
+               Interrupted);
+  EXPECT_FALSE(tables.committed());
+  EXPECT_EQ(calls, 4);  // nothing ran after the throw
+  EXPECT_EQ(tables.tables().at(0).rows(), 4u);
+
+  const auto dir = std::filesystem::temp_directory_path() / "clearjoint_interrupted_test";
+  std::filesystem::remove_all(dir);
+  EXPECT_THROW(simulate(model, dir, [](double fraction) {
+                 if (fraction >= 0.5) throw Interrupted{};
+               }),
+               Interrupted);
+  EXPECT_TRUE(std::filesystem::is_empty(dir));  // neither results nor temporary files are left
 }
 
 }  // namespace

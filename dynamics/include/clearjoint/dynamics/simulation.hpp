@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// \file
-/// A whole run: build the model, integrate it, and write the CSV time series.
+/// A whole run: build the model, integrate it, and write the CSV time series (or hand the same
+/// tables to a SimulationOutput).
 ///
 /// Files in the output directory (one row per report time):
 ///   body_<name>.csv  time, x, y, z, e0..e3, vx, vy, vz, wx, wy, wz (world), ax, ay, az,
@@ -19,6 +20,7 @@
 #include <functional>
 
 #include "clearjoint/dynamics/model_builder.hpp"
+#include "clearjoint/dynamics/simulation_output.hpp"
 
 namespace clearjoint::dynamics {
 
@@ -33,13 +35,20 @@ struct SimulationSummary {
   std::vector<std::string> element_statistics;  ///< ForceElement::statistics_text(), non-empty ones
 };
 
-/// progress(fraction in [0, 1]) is called at report times (may be empty).
+/// progress(fraction in [0, 1]) is called at report times (may be empty). It may throw to stop
+/// the run (a user's interrupt): the exception leaves simulate() and no output is committed.
 using ProgressCallback = std::function<void(double fraction)>;
 
 /// Run `model` and write the files above into `output_directory` (created if missing). Each file
 /// appears only when complete (CsvWriter). Throws ModelError, SolverError or std::runtime_error.
 SimulationSummary simulate(const ModelDescription& model,
                            const std::filesystem::path& output_directory,
+                           const ProgressCallback& progress = {});
+
+/// Run `model` and send the same tables to `output` (simulation_output.hpp): named like the files
+/// above without ".csv" ("energy", "body_crank", ...), with the same columns and values.
+/// TablesInMemory keeps them in memory. Throws as above.
+SimulationSummary simulate(const ModelDescription& model, SimulationOutput& output,
                            const ProgressCallback& progress = {});
 
 }  // namespace clearjoint::dynamics

@@ -1,0 +1,154 @@
+# SPDX-License-Identifier: BSD-3-Clause
+"""clearjoint.simulate: run a multibody model in process and get its time series as NumPy arrays."""
+from __future__ import annotations
+
+import json
+import os
+import sys
+from dataclasses import dataclass, field
+from typing import Any, Callable, Dict, Mapping, Optional, Union
+
+import numpy as np
+
+from . import _core
+
+Model = Union[str, "os.PathLike[str]", Mapping[str, Any]]
+Progress = Union[bool, None, Callable[[float], None]]
+
+
+@dataclass(frozen=True)
+class SimulationResult:
+    """The time series of one run, the same numbers ``clearjoint simulate`` writes as CSV files.
+
+    ``tables`` maps a table name to its columns, in file order, each a float64 array of shape
+    ``(rows,)`` (one row per report time, ``solver.report_step`` apart from ``solver.start_time``
+    to ``solver.end_time``). Names and columns are those of the CSV files without ``.csv``
+    (docs/dynamics.md, dynamics/include/clearjoint/dynamics/simulation.hpp):
+
+    - ``"body_<name>"``: time, x, y, z [m], e0..e3 (Euler parameters), vx, vy, vz [m/s],
+      wx, wy, wz [rad/s], ax, ay, az [m/s^2], alphax, alphay, alphaz [rad/s^2]; world frame;
+    - ``"energy"``: time, kinetic, potential, total [J], position_violation (max abs Phi),
+      velocity_violation (max abs of Phi_q v + Phi_t), euler_norm_drift (max abs(abs(p) - 1));
+    - ``"reactions"``: time, then ``<joint>.fx .. <joint>.mz`` per joint [N, N m]: the reaction
+      of eq. (37) on body j, moment about the joint point, world frame;
+    - ``"force_<element>"``: time and the columns a force element records (a clearance joint's
+      scenario, depths, forces ...); NaN where the CSV file says ``nan``.
+
+    ``summary`` has the run's statistics: steps, derivative_calls, smallest_step, largest_step,
+    restarts, failed_attempts, initial_condition_iterations, initial_position_residual,
+    initial_velocity_residual, initial_energy, max_energy_change, max_position_violation,
+    max_velocity_violation, max_euler_norm_drift, element_statistics (list of str).
+
+    ``result["energy"]["total"]`` is shorthand for ``result.tables["energy"]["total"]``. The
+    object holds only dicts, lists and arrays, so it pickles (for process pools and Dask).
+    """
+
+    tables: Dict[str, Dict[str, np.ndarray]] = field(default_factory=dict)
+    summary: Dict[str, Any] = field(default_factory=dict)
+
+    def __getitem__(self, table: str) -> Dict[str, np.ndarray]:
+        return self.tables[table]
+
+    def __repr__(self) -> str:
+        shapes = ", ".join(f"{name}: {len(columns)} columns x {len(next(iter(columns.values())))} rows"
+                           for name, columns in self.tables.items())
+        return f"SimulationResult({shapes})"
+
+
+class _TextBar:
+    """A one-line bar on standard error, used for ``progress=True`` when tqdm is not installed."""
+
+    def __init__(self) -> None:
+        self._percent = -1
+
+    def __call__(self, fraction: float) -> None:
+        percent = int(fraction * 100)
+        if percent != self._percent:
+            self._percent = percent
+            filled = percent * 40 // 100
+            sys.stderr.write(f"\r[{'#' * filled}{' ' * (40 - filled)}] {percent:3d}%")
+            sys.stderr.flush()
+
+    def close(self) -> None:
+        if self._percent >= 0:
+            sys.stderr.write("\n")
+
+
+class _TqdmBar:
+    """tqdm counting per cent of simulated time."""
+
+    def __init__(self, tqdm_class: Any) -> None:
+        self._bar = tqdm_class(total=100, unit="%", desc="simulate")
+        self._percent = 0
+
+    def __call__(self, fraction: float) -> None:
+        percent = int(fraction * 100)
+        if percent > self._percent:
+            self._bar.update(percent - self._percent)
+            self._percent = percent
+
+    def close(self) -> None:
+        self._bar.close()
+
+
+def _progress_bar(progress: Progress) -> Any:
+    if progress is None or progress is False:
+        return None
+    if progress is True:
+        try:
+            from tqdm import tqdm
+        except ImportError:
+            return _TextBar()
+        return _TqdmBar(tqdm)
+    if callable(progress):
+        return progress
+    raise TypeError(f"progress = {progress!r}: must be True, False, None or a callable(fraction)")
+
+
+def simulate(model: Model, *, progress: Progress = False) -> SimulationResult:
+    """Run a multibody model in process and return its time series as NumPy arrays.
+
+    Parameters
+    ----------
+    model:
+        A path to a model file (str or os.PathLike), or a dict in the same JSON model-file format
+        (docs/dynamics.md; models/ has examples), e.g. ``json.load(open(path))`` with some values
+        changed.
+    progress:
+        False (default) or None: silent. True: a progress bar over simulated time, tqdm's when
+        tqdm is installed, else a one-line bar on standard error. A callable: called as
+        ``progress(fraction)`` with the fraction of simulated time done, in [0, 1], at every
+        report time.
+
+    Returns
+    -------
+    SimulationResult
+        ``tables[name][column]``: float64 arrays of shape (rows,), bit for bit the values of the
+        CSV files ``clearjoint simulate MODEL --out DIR`` writes; ``summary``: run statistics.
+
+    Raises
+    ------
+    ValueError
+        A bad model; the message names the field, e.g.
+        ``"<dict>: bodies[1].mass = -1: must be positive"``.
+    clearjoint.SolverError
+        The equations could not be solved from some time on (a RuntimeError).
+    KeyboardInterrupt
+        Ctrl-C: the run stops at the next report time; nothing is returned.
+
+    The integration runs without the GIL; other Python threads keep running.
+    """
+    bar = _progress_bar(progress)
+    try:
+        if isinstance(model, Mapping):
+            tables, summary = _core.simulate_text(json.dumps(model), "<dict>", bar)
+        elif isinstance(model, (str, os.PathLike)):
+            tables, summary = _core.simulate_file(os.fspath(model), bar)
+        else:
+            raise TypeError(f"model = {type(model).__name__}: must be a path or a dict in the "
+                            "model-file format")
+    finally:
+        if bar is not None and hasattr(bar, "close"):
+            bar.close()
+    columns = {name: dict(zip(header, values)) for name, (header, values) in tables.items()}
+    return SimulationResult(tables=columns, summary=summary)

@@ -1,0 +1,14 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+// The parts of the `clearjoint._core` extension module, one function per source file.
+
+#include <pybind11/pybind11.h>
+
+namespace clearjoint::python {
+
+void bind_simulation(pybind11::module_& module);      // simulation.cpp
+void bind_types(pybind11::module_& module);           // detection.cpp: enums, dimensions, results
+void bind_detection_batch(pybind11::module_& module); // detection_batch.cpp
+void bind_kernel(pybind11::module_& module);          // kernel.cpp
+
+}  // namespace clearjoint::python

@@ -1,0 +1,21 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// clearjoint._core: the compiled half of the `clearjoint` package (bindings/python/clearjoint/
+// holds the Python half and the documentation users see).
+
+#include <pybind11/pybind11.h>
+
+#include "bindings.hpp"
+#include "clearjoint/dynamics/errors.hpp"
+#include "clearjoint/version.hpp"
+
+namespace py = pybind11;
+
+PYBIND11_MODULE(_core, module) {
+  module.doc() = "Compiled core of the clearjoint package; use the `clearjoint` package itself.";
+  // The linked library's version, not the headers': the two agree in any consistent install.
+  module.attr("__version__") = clearjoint::version_string();
+  // geometry::InvalidInput and dynamics::ModelError derive from std::invalid_argument, which
+  // pybind11 already turns into ValueError; a solver failure gets its own RuntimeError subclass.
+  py::register_exception<clearjoint::dynamics::SolverError>(module, "SolverError", PyExc_RuntimeError);
+  clearjoint::python::bind_simulation(module);
+}

@@ -1,0 +1,161 @@
+# SPDX-License-Identifier: BSD-3-Clause
+"""clearjoint.simulate against `clearjoint simulate`, and its inputs, progress and interrupts."""
+import json
+import os
+import pickle
+import signal
+import subprocess
+import threading
+import time
+
+import numpy as np
+import pytest
+
+import clearjoint
+
+# A short run of the paper's spatial slider-crank with a clearance joint: contact outputs with
+# NaN slots, impacts, all four kinds of tables, in about a tenth of a second.
+SHORT_RUN_END_TIME = 0.02
+SHORT_RUN_REPORT_STEP = 1e-3
+
+
+@pytest.fixture
+def short_model(models_dir):
+    with open(models_dir / "slider_crank_spatial_clearance.json") as f:
+        model = json.load(f)
+    model["solver"]["end_time"] = SHORT_RUN_END_TIME
+    model["solver"]["report_step"] = SHORT_RUN_REPORT_STEP
+    return model
+
+
+def read_csv(path):
+    """Header and columns of a CSV file of `clearjoint simulate`; float() reads the shortest
+    round-trip form back to the exact double."""
+    with open(path) as f:
+        header = f.readline().strip().split(",")
+        rows = [[float(v) for v in line.split(",")] for line in f]
+    values = np.array(rows, dtype=np.float64).reshape(len(rows), len(header))
+    return header, values.T
+
+
+def same_bits(a, b):
+    """Equal bit patterns, NaN matching NaN (a contact slot not in use)."""
+    a, b = np.asarray(a, dtype=np.float64), np.asarray(b, dtype=np.float64)
+    both_nan = np.isnan(a) & np.isnan(b)
+    return a.shape == b.shape and bool(np.all((a.view(np.int64) == b.view(np.int64)) | both_nan))
+
+
+def test_the_arrays_equal_the_csv_files_of_the_command_line_bit_for_bit(short_model, cli, tmp_path):
+    model_file = tmp_path / "model.json"
+    model_file.write_text(json.dumps(short_model))
+    out = tmp_path / "csv"
+    subprocess.run([str(cli), "simulate", str(model_file), "--out", str(out)], check=True,
+                   capture_output=True)
+    result = clearjoint.simulate(model_file)
+
+    files = sorted(p.stem for p in out.glob("*.csv"))
+    assert sorted(result.tables) == files
+    assert {"energy", "reactions", "body_slider", "force_ground-crank_clearance"} <= set(files)
+    for name in files:
+        header, columns = read_csv(out / f"{name}.csv")
+        assert list(result[name]) == header, name
+        for column, values in zip(header, columns):
+            assert same_bits(result[name][column], values), f"{name}.{column}"
+    rows = round(SHORT_RUN_END_TIME / SHORT_RUN_REPORT_STEP) + 1
+    assert result["energy"]["time"].shape == (rows,)
+
+
+def test_a_dict_and_the_file_it_was_written_to_give_the_same_arrays(short_model, tmp_path):
+    model_file = tmp_path / "model.json"
+    model_file.write_text(json.dumps(short_model))
+    from_dict = clearjoint.simulate(short_model)
+    from_file = clearjoint.simulate(str(model_file))
+    assert from_dict.tables.keys() == from_file.tables.keys()
+    for name, columns in from_dict.tables.items():
+        for column, values in columns.items():
+            assert same_bits(values, from_file[name][column]), f"{name}.{column}"
+    assert from_dict.summary == from_file.summary
+
+
+def test_the_summary_reports_the_run(short_model):
+    summary = clearjoint.simulate(short_model).summary
+    assert summary["steps"] > 0
+    assert summary["derivative_calls"] >= 6 * summary["steps"]  # Dormand-Prince: 6 stages a step
+    assert 0.0 < summary["smallest_step"] <= summary["largest_step"]
+    assert summary["initial_energy"] != 0.0
+    assert any("contact detections" in line for line in summary["element_statistics"])
+
+
+def test_the_result_pickles_with_its_arrays(short_model):
+    result = clearjoint.simulate(short_model)
+    copy = pickle.loads(pickle.dumps(result))
+    assert same_bits(copy["energy"]["total"], result["energy"]["total"])
+    assert copy.summary == result.summary
+    assert "energy: 7 columns x 21 rows" in repr(result)
+
+
+def test_a_bad_model_raises_value_error_naming_the_field(short_model):
+    short_model["bodies"][1]["mass"] = -1.0
+    with pytest.raises(ValueError, match=r"<dict>: bodies\[1\]\.mass = -1: must be positive"):
+        clearjoint.simulate(short_model)
+
+
+def test_a_missing_model_file_raises_value_error_naming_the_path(tmp_path):
+    missing = tmp_path / "no-such-model.json"
+    with pytest.raises(ValueError, match=f"{missing}: cannot open the model file"):
+        clearjoint.simulate(missing)
+
+
+def test_a_model_that_is_neither_path_nor_dict_raises_type_error():
+    with pytest.raises(TypeError, match="model = list: must be a path or a dict"):
+        clearjoint.simulate([1, 2, 3])
+
+
+def test_a_progress_callable_sees_the_simulated_fraction_grow_from_zero_to_one(short_model):
+    fractions = []
+    clearjoint.simulate(short_model, progress=fractions.append)
+    assert len(fractions) == round(SHORT_RUN_END_TIME / SHORT_RUN_REPORT_STEP) + 1
+    assert fractions[0] == 0.0 and fractions[-1] == pytest.approx(1.0)
+    assert all(b > a for a, b in zip(fractions, fractions[1:]))
+
+
+def test_progress_true_draws_a_bar_on_standard_error(short_model, capsys):
+    clearjoint.simulate(short_model, progress=True)
+    assert "100%" in capsys.readouterr().err
+
+
+def test_an_exception_in_the_progress_callable_stops_the_run_and_propagates(short_model):
+    calls = []
+
+    def stop_at_the_fourth_report(fraction):
+        calls.append(fraction)
+        if len(calls) == 4:
+            raise KeyboardInterrupt
+
+    with pytest.raises(KeyboardInterrupt):
+        clearjoint.simulate(short_model, progress=stop_at_the_fourth_report)
+    assert len(calls) == 4  # nothing ran after the interrupt
+
+
+def test_ctrl_c_during_a_run_raises_keyboard_interrupt_promptly(models_dir):
+    # The full one-second run takes seconds; SIGINT arrives after a fraction of that, while the
+    # integration runs without the GIL and without a progress callable.
+    with open(models_dir / "slider_crank_spatial_clearance.json") as f:
+        model = json.load(f)
+    delay = 0.3
+    timer = threading.Timer(delay, os.kill, args=(os.getpid(), signal.SIGINT))
+    start = time.monotonic()
+    timer.start()
+    try:
+        with pytest.raises(KeyboardInterrupt):
+            clearjoint.simulate(model)
+    finally:
+        timer.cancel()
+    full_run = 1.5  # seconds: the run alone on an idle machine takes ~2 s (CPU time)
+    assert time.monotonic() - start < full_run
+
+
+def test_the_version_is_the_command_line_programs(cli):
+    printed = subprocess.run([str(cli), "--version"], check=True, capture_output=True,
+                             text=True).stdout.split()
+    assert printed == ["clearjoint", clearjoint.__version__]
