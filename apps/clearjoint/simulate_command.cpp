@@ -91,6 +91,8 @@ int run_simulate(Arguments args) {
               summary.integration.largest_step);
   if (summary.integration.restarts > 0) {
     std::printf("stepper restarts after impact-memory changes: %ld\n", summary.integration.restarts);
+    std::printf("contact onsets located inside steps: %ld (%ld dense-output probes)\n",
+                summary.integration.located_onsets, summary.integration.onset_probes);
   }
   if (summary.integration.failed_attempts > 0) {
     std::printf("steps retried shorter after a trial stage could not be evaluated: %ld\n",

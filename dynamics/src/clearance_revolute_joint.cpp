@@ -218,8 +218,9 @@ bool ClearanceRevoluteJoint::update_extra_state(double time, const SystemKinemat
   for (int slot = 0; slot < kContactSlotCount; ++slot) {
     const SlotState& s = now.slots[slot];
     if (s.active && state[slot] == 0.0) {
-      state[slot] = s.impact_speed;  // max(delta_dot, floor) at the first accepted step in contact
+      state[slot] = s.impact_speed;  // max(delta_dot, floor) where the contact was first seen
       ++statistics_.impacts;
+      recorded_impacts_.push_back({time, kSlots[slot], s.impact_speed});
       changed = true;
     } else if (!s.active && state[slot] != 0.0) {
       state[slot] = 0.0;
@@ -227,6 +228,15 @@ bool ClearanceRevoluteJoint::update_extra_state(double time, const SystemKinemat
     }
   }
   return changed;
+}
+
+bool ClearanceRevoluteJoint::begins_event(const SystemKinematics& kinematics,
+                                          std::span<const double> state) const {
+  const geometry::JointContacts contacts = detect(kinematics.time(), kinematics);
+  for (int c = 0; c < contacts.contact_count; ++c) {
+    if (state[index_of(slot_of(contacts.contacts[c]))] == 0.0) return true;
+  }
+  return false;
 }
 
 std::vector<std::string> ClearanceRevoluteJoint::output_columns() const {

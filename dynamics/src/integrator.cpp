@@ -21,6 +21,32 @@ bool all_finite(const std::vector<double>& y) {
   return std::all_of(y.begin(), y.end(), [](double x) { return std::isfinite(x); });
 }
 
+/// Bracket the first instant of [interval.first, interval.second] at which system.begins_event
+/// holds on the dense output, knowing it does not at the start (the extra state was updated
+/// there) and does at the end. Bisection, because the event is a predicate (a contact present or
+/// not) and its depth is defined on one side only. The interpolant matches the solution to about
+/// the step's error tolerance, so a bracket of relative_tolerance times the step is as fine as
+/// the onset is known: the contact's depth at the upper end is below its approach speed times
+/// that width. Returns the upper end; `onset` holds the interpolated state there.
+template <class Stepper>
+double locate_onset(MultibodySystem& system, Stepper& stepper, std::pair<double, double> interval,
+                    double relative_tolerance, std::vector<double>& onset,
+                    IntegrationStatistics& stats) {
+  double before = interval.first;
+  double after = interval.second;
+  const double width = relative_tolerance * (after - before);
+  while (after - before > width) {
+    const double middle = 0.5 * (before + after);
+    if (!(middle > before && middle < after)) break;  // adjacent doubles
+    stepper.calc_state(middle, onset);
+    ++stats.onset_probes;
+    (system.begins_event(middle, onset) ? after : before) = middle;
+  }
+  stepper.calc_state(after, onset);
+  ++stats.located_onsets;
+  return after;
+}
+
 }  // namespace
 
 void validate(const IntegratorSettings& s) {
@@ -66,6 +92,7 @@ IntegrationStatistics integrate(MultibodySystem& system, std::vector<double>& y,
   observer(settings.start_time, y);
   State reported(y.size());
   State accepted(y.size());
+  State onset(y.size());
   long k = 1;  // next report
   while (k <= report_count) {
     std::pair<double, double> interval;
@@ -111,14 +138,38 @@ IntegrationStatistics integrate(MultibodySystem& system, std::vector<double>& y,
                         ": more than solver.max_steps = " + std::to_string(settings.max_steps) +
                         " steps");
     }
+    // A new event (contact onset) seen at the end of the step: bracket its first instant.
+    double step_end = stepper.current_time();
+    bool located = false;
+    if (settings.onset != OnsetHandling::step_end &&
+        system.begins_event(step_end, stepper.current_state())) {
+      step_end = locate_onset(system, stepper, interval, settings.relative_tolerance, onset, stats);
+      located = true;
+    }
+    const bool restart_at_onset = located && settings.onset == OnsetHandling::restart_at_onset;
+    const double reported_up_to = restart_at_onset ? step_end : stepper.current_time();
     // Report times inside this step, interpolated before any restart discards the interpolant.
-    for (; k <= report_count && report_time(k) <= stepper.current_time(); ++k) {
+    for (; k <= report_count && report_time(k) <= reported_up_to; ++k) {
       stepper.calc_state(report_time(k), reported);
       observer(report_time(k), reported);
     }
     if (k > report_count) break;
+    if (restart_at_onset) {
+      // The rest of the step was integrated with a provisional delta_dot(-): drop it.
+      system.update_extra_states(step_end, onset);
+      stepper.initialize(onset, step_end, stepper.current_time_step());
+      ++stats.restarts;
+      continue;
+    }
     accepted = stepper.current_state();
-    if (system.update_extra_states(stepper.current_time(), accepted)) {
+    if (located) {
+      // Record at the onset, then carry what was recorded to the end of the step, where the
+      // usual update adds events seen only there and clears those that ended.
+      system.update_extra_states(step_end, onset);
+      const auto extra = static_cast<std::ptrdiff_t>(system.layout().extra_offset());
+      std::copy(onset.begin() + extra, onset.end(), accepted.begin() + extra);
+    }
+    if (system.update_extra_states(stepper.current_time(), accepted) || located) {
       // odeint's dense-output stepper keeps the last derivative (FSAL); a changed state needs a
       // fresh start from it, keeping the step size the controller had chosen.
       stepper.initialize(accepted, stepper.current_time(), stepper.current_time_step());

@@ -167,6 +167,16 @@ bool MultibodySystem::update_extra_states(double time, std::span<double> y) {
   return changed;
 }
 
+bool MultibodySystem::begins_event(double time, std::span<const double> y) {
+  if (layout_.extra_count == 0) return false;
+  kinematics_.update(time, y);
+  for (size_t e = 0; e < forces_.size(); ++e) {
+    if (forces_[e]->extra_state_count() == 0) continue;
+    if (forces_[e]->begins_event(kinematics_, extra_state(y, e))) return true;
+  }
+  return false;
+}
+
 std::span<const double> MultibodySystem::extra_state(std::span<const double> y, size_t e) const {
   return y.subspan(static_cast<size_t>(layout_.extra_offset() + extra_offsets_[e]),
                    static_cast<size_t>(forces_[e]->extra_state_count()));

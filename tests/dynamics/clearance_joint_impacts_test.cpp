@@ -172,10 +172,17 @@ TEST(ClearanceJointImpacts, NeverGainEnergyWithDampingAndFriction) {
 struct SingleImpact {
   double peak_depth = 0.0;
   double rebound_velocity = 0.0;
+  double recorded_impact_speed = 0.0;  ///< the delta_dot(-) the memory recorded
   long impacts = 0;
 };
 
-SingleImpact single_impact(FreeJournal f, double speed, double tolerance, double report_step) {
+/// Hertz peak penetration of a mass m hitting at v: m v^2 / 2 = K delta^2.5 / 2.5.
+double hertz_peak_depth(double mass, double speed) {
+  return std::pow(5.0 * mass * speed * speed / (4.0 * kStiffness), 0.4);
+}
+
+SingleImpact single_impact(FreeJournal f, double speed, double tolerance, double report_step,
+                           OnsetHandling onset = IntegratorSettings{}.onset) {
   f.velocity_W = Vector3(speed, 0.0, 0.0);
   f.joint.friction.coefficient = 0.0;
   BuiltModel built = build_model(free_journal_model(f));
@@ -183,15 +190,21 @@ SingleImpact single_impact(FreeJournal f, double speed, double tolerance, double
   std::vector<double> y = built.initial_state;
   const ClearanceRevoluteJoint& joint = joint_of(system);
   SingleImpact result;
-  // Reaches the wall after cr / v; the contact lasts ~3 delta_max / v; stop before the way back.
-  const double end = 1.5 * kRadialClearance / speed;
-  integrate(system, y, settings(end, report_step, tolerance), [&](double t, std::span<const double> state) {
-    const ClearanceJointState s = joint_state(system, t, state);
-    const SlotState& line = s.slots[static_cast<int>(ContactSlot::line)];
+  // Reaches the wall after cr / v; the contact lasts about 3 delta_max / v; stop before the way
+  // back reaches the other side (2 cr further).
+  const double end = (kRadialClearance + 5.0 * hertz_peak_depth(f.mass, speed)) / speed;
+  IntegratorSettings s = settings(end, report_step, tolerance);
+  s.onset = onset;
+  integrate(system, y, s, [&](double t, std::span<const double> state) {
+    const ClearanceJointState js = joint_state(system, t, state);
+    const SlotState& line = js.slots[static_cast<int>(ContactSlot::line)];
     if (line.active) result.peak_depth = std::max(result.peak_depth, line.depth);
     result.rebound_velocity = state[system.layout().velocity_offset(0)];
   });
   result.impacts = joint.statistics().impacts;
+  if (!joint.recorded_impacts().empty()) {
+    result.recorded_impact_speed = joint.recorded_impacts().front().impact_speed;
+  }
   return result;
 }
 
@@ -199,8 +212,7 @@ TEST(ClearanceJointImpacts, ReachTheHertzPeakPenetrationInASingleElasticImpact) 
   FreeJournal f;
   f.joint.normal.model = NormalForceModel::hertz;
   const double v = 0.1;
-  // Energy balance m v^2 / 2 = K delta^2.5 / 2.5.
-  const double expected = std::pow(5.0 * f.mass * v * v / (4.0 * kStiffness), 0.4);
+  const double expected = hertz_peak_depth(f.mass, v);
   // Sampling every 1e-7 s misses the peak by at most a (dt/2)^2 / 2 = 2.3e-12 m (a = K delta^1.5 /
   // m = 1.8e3 m/s^2), 3e-7 relative; the integration at 1e-12 adds ~1e-12 m. Bound: 1e-6 relative.
   constexpr double kPeakTolerance = 1e-6;
@@ -237,23 +249,78 @@ double one_dimensional_restitution(const NormalForceParameters& law, double mass
   return -s[1] / speed;
 }
 
-TEST(ClearanceJointImpacts, GiveTheLankaraniNikraveshEffectiveRestitution) {
+// The impact velocity is recorded at the located instant of first touch, so a single impact at
+// the paper's tolerance follows the exact 1-D law: restitution to 1e-4 relative (issue 23's
+// requirement) from 1 m/s down to 1e-2 m/s.
+constexpr double kLocatedRestitutionTolerance = 1e-4;
+
+TEST(ClearanceJointImpacts, FollowTheExactLankaraniNikraveshRestitutionFromOneToOneHundredthMetrePerSecond) {
   FreeJournal f;  // Lankarani-Nikravesh, ce = 0.9
-  const double v = 0.1;
-  const double reference = one_dimensional_restitution(f.joint.normal, f.mass, v);
-  // The memory records the approach speed at the end of the first accepted step in contact, not
-  // at first touch; at the paper's tolerance 1e-7 that step removes a little speed. Measured
-  // difference from the 1-D law: see the printout; bound 1e-3 (restitution to 3 digits).
-  constexpr double kRestitutionTolerance = 1e-3;
-  const SingleImpact impact = single_impact(f, v, 1e-7, 1e-6);
-  const double restitution = -impact.rebound_velocity / v;
-  std::printf("effective restitution %.6f, 1-D law %.6f, chosen ce %.2f\n", restitution, reference,
-              f.joint.normal.restitution);
-  EXPECT_EQ(impact.impacts, 1);
-  EXPECT_NEAR(restitution, reference, kRestitutionTolerance);
+  for (const double v : {1.0, 0.3, 0.1, 0.03, 0.01}) {
+    const double reference = one_dimensional_restitution(f.joint.normal, f.mass, v);
+    const double report_step = hertz_peak_depth(f.mass, v) / v / 100.0;  // 100 reports in contact
+    const SingleImpact located = single_impact(f, v, 1e-7, report_step);  // the default
+    const SingleImpact restarted =
+        single_impact(f, v, 1e-7, report_step, OnsetHandling::restart_at_onset);
+    const SingleImpact at_step_end = single_impact(f, v, 1e-7, report_step, OnsetHandling::step_end);
+    const double restitution = -located.rebound_velocity / v;
+    std::printf("v = %4.2f m/s: restitution / 1-D law - 1 = %+.2e (record at onset), %+.2e (restart "
+                "at onset), %+.2e (step end); recorded delta_dot(-) / v - 1 = %+.2e located, %+.2e "
+                "step end\n",
+                v, restitution / reference - 1.0, -restarted.rebound_velocity / v / reference - 1.0,
+                -at_step_end.rebound_velocity / v / reference - 1.0,
+                located.recorded_impact_speed / v - 1.0, at_step_end.recorded_impact_speed / v - 1.0);
+    EXPECT_EQ(located.impacts, 1) << "v = " << v;
+    EXPECT_NEAR(restitution / reference, 1.0, kLocatedRestitutionTolerance) << "v = " << v;
+  }
   // Lankarani-Nikravesh is derived for ce near 1: at ce = 0.9 its own effective restitution is
   // 0.913 (the 1-D reference), close to the chosen value.
-  EXPECT_NEAR(restitution, f.joint.normal.restitution, 0.02);
+  EXPECT_NEAR(one_dimensional_restitution(f.joint.normal, f.mass, 0.1), f.joint.normal.restitution, 0.02);
+}
+
+/// The impact speeds the planar aligned slider-crank records in its first `duration` seconds.
+std::vector<RecordedImpact> planar_aligned_impacts(double duration, double tolerance,
+                                                   OnsetHandling onset) {
+  ModelDescription model = test::shipped_model("slider_crank_planar_clearance_aligned.json");
+  model.solver.end_time = duration;
+  model.solver.relative_tolerance = model.solver.absolute_tolerance = tolerance;
+  model.solver.onset = onset;
+  BuiltModel built = build_model(model);
+  std::vector<double> y = built.initial_state;
+  integrate(*built.system, y, model.solver, [](double, std::span<const double>) {});
+  return joint_of(*built.system).recorded_impacts();
+}
+
+// Issue 23: at the paper's tolerance the recorded impact speeds of the planar aligned model are
+// within 1 % of those at 1e-12 for every impact of the first 5 ms (recorded at the end of the
+// first accepted step in contact they were up to 88 % larger).
+constexpr double kImpactSpeedAgreement = 0.01;
+
+TEST(PlanarSliderCrankWithAlignedClearanceJoint, RecordsTheTightToleranceImpactSpeedsAtThePapersTolerance) {
+  constexpr double kDuration = 5e-3;
+  const OnsetHandling located = IntegratorSettings{}.onset;
+  const std::vector<RecordedImpact> reference = planar_aligned_impacts(kDuration, 1e-12, located);
+  const std::vector<RecordedImpact> paper = planar_aligned_impacts(kDuration, 1e-7, located);
+  const std::vector<RecordedImpact> unlocated =
+      planar_aligned_impacts(kDuration, 1e-7, OnsetHandling::step_end);
+  const std::vector<RecordedImpact> restarted =
+      planar_aligned_impacts(kDuration, 1e-7, OnsetHandling::restart_at_onset);
+  ASSERT_GE(reference.size(), 3u);
+  ASSERT_EQ(paper.size(), reference.size());
+  for (size_t i = 0; i < reference.size(); ++i) {
+    const double step_end_speed = i < unlocated.size() ? unlocated[i].impact_speed : NAN;
+    const double restarted_speed = i < restarted.size() ? restarted[i].impact_speed : NAN;
+    std::printf("impact %2zu at %.7f s (%s): delta_dot(-) at 1e-12 %.6f m/s; at 1e-7 %.6f (%+.2e), "
+                "restarting at onset %.6f (%+.2e), recorded at the step end %.6f (%+.2e)\n",
+                i + 1, reference[i].time, std::string(to_string(reference[i].slot)).c_str(),
+                reference[i].impact_speed, paper[i].impact_speed,
+                paper[i].impact_speed / reference[i].impact_speed - 1.0, restarted_speed,
+                restarted_speed / reference[i].impact_speed - 1.0, step_end_speed,
+                step_end_speed / reference[i].impact_speed - 1.0);
+    EXPECT_EQ(paper[i].slot, reference[i].slot) << "impact " << i + 1;
+    EXPECT_NEAR(paper[i].impact_speed / reference[i].impact_speed, 1.0, kImpactSpeedAgreement)
+        << "impact " << i + 1 << " at " << reference[i].time << " s";
+  }
 }
 
 TEST(PlanarSliderCrankWithAlignedClearanceJoint, KeepsTheRodsThirdEulerParameterZeroAndNoAxialMotion) {

@@ -14,15 +14,14 @@
 /// of the adaptive integrator read it but can never change it. It changes only between accepted
 /// steps, through update_extra_state(): a slot whose contact is present in the accepted state and
 /// has no memory (0) records max(delta_dot, minimum_impact_speed); a slot whose contact is absent
-/// is cleared to 0. The integrator then restarts its stepper from the changed state (a restart
-/// costs one right-hand-side evaluation and happens twice per impact). Until the first accepted
-/// step that sees a new contact, the trial stages use max(delta_dot, minimum_impact_speed) at
-/// the stage itself as delta_dot(-): a pure function of the stage's state. At those stages the
+/// is cleared to 0. When an accepted step ends with such a new contact (begins_event), the
+/// integrator first locates the instant of first touch inside the step on its dense output and
+/// records delta_dot(-) there (IntegratorSettings::onset); then it restarts its stepper from the
+/// changed state (a restart costs one right-hand-side evaluation and happens twice per impact).
+/// Until the memory is set, the trial stages use max(delta_dot, minimum_impact_speed) at the
+/// stage itself as delta_dot(-): a pure function of the stage's state. At those stages the
 /// penetration has only just begun (it is below one step's travel), so the damping term, which
-/// scales with delta^n, is small. Consequence: delta_dot(-) is the approach speed at the end of
-/// the first accepted step in contact, not at the exact instant of first touch; the difference
-/// is the speed the contact force removes in part of one step (measured in the tests through
-/// the effective restitution).
+/// scales with delta^n, is small.
 ///
 /// Contact slots: radial contact at rim A, at rim B, the aligned line contact, axial (point or
 /// face) contact at base A, at base B. Beyond the model a rim may cross the wall twice (two
@@ -101,6 +100,13 @@ struct ClearanceJointStatistics {
   long beyond_model_updates = 0;  ///< accepted steps whose state was beyond the paper's model
 };
 
+/// One impact velocity recorded in the memory (update_extra_state).
+struct RecordedImpact {
+  double time = 0.0;   ///< the accepted (or located) instant where it was recorded [s]
+  ContactSlot slot = ContactSlot::line;
+  double impact_speed = 0.0;  ///< delta_dot(-) recorded [m/s]
+};
+
 class ClearanceRevoluteJoint final : public ForceElement {
  public:
   /// Throws ModelError naming "<name>.<field>" for bad dimensions (non-finite, non-positive,
@@ -120,6 +126,8 @@ class ClearanceRevoluteJoint final : public ForceElement {
   void initial_extra_state(std::span<double> state) const override;
   bool update_extra_state(double time, const SystemKinematics& kinematics,
                           std::span<double> state) const override;
+  /// A contact present in a slot without memory: an impact begins (one detection).
+  bool begins_event(const SystemKinematics& kinematics, std::span<const double> state) const override;
   std::vector<std::string> output_columns() const override;
   void record_outputs(double time, const SystemKinematics& kinematics,
                       std::span<const double> state, std::span<double> values) const override;
@@ -132,6 +140,9 @@ class ClearanceRevoluteJoint final : public ForceElement {
 
   const ClearanceJointParameters& parameters() const { return parameters_; }
   const ClearanceJointStatistics& statistics() const { return statistics_; }
+  /// Every impact velocity recorded so far, in order (grows by one per impact, never per
+  /// right-hand-side evaluation).
+  const std::vector<RecordedImpact>& recorded_impacts() const { return recorded_impacts_; }
   /// The bearing frame used for rim_a/b_in_bearing: u is the body axis least aligned with the
   /// bearing axis a (first on ties) made perpendicular to it, v = a x u; for a along z: x, y.
   const Vector3& bearing_frame_u_B() const { return bearing_u_B_; }
@@ -148,6 +159,7 @@ class ClearanceRevoluteJoint final : public ForceElement {
   Vector3 bearing_u_B_;
   Vector3 bearing_v_B_;
   mutable ClearanceJointStatistics statistics_;  // counters only; the physics is const
+  mutable std::vector<RecordedImpact> recorded_impacts_;
 };
 
 }  // namespace clearjoint::dynamics

@@ -52,6 +52,16 @@ class ForceElement {
     return false;
   }
 
+  /// True if update_extra_state() would, at this state, record something that begins here and
+  /// depends on the instant it began (a contact onset whose impact velocity is remembered). The
+  /// integrator then brackets the earliest such instant inside the step just accepted, by
+  /// bisection on its dense output, and calls update_extra_state() there. `state` is this
+  /// element's extra state, constant through a step (its rate is zero). Must not allocate.
+  virtual bool begins_event(const SystemKinematics& /*kinematics*/,
+                            std::span<const double> /*state*/) const {
+    return false;
+  }
+
   /// Names of the values record_outputs() writes (none by default).
   virtual std::vector<std::string> output_columns() const { return {}; }
   /// Write output_columns().size() values describing the element at this instant.

@@ -66,6 +66,9 @@ class MultibodySystem {
   /// Let the force elements change their extra state discretely at (t, y), an accepted state
   /// (ForceElement::update_extra_state). Returns true if any element changed y.
   bool update_extra_states(double time, std::span<double> y);
+  /// True if any force element would record an event that begins at (t, y)
+  /// (ForceElement::begins_event). Updates kinematics(). No allocation.
+  bool begins_event(double time, std::span<const double> y);
   /// Force element e's extra variables within y.
   std::span<const double> extra_state(std::span<const double> y, size_t e) const;
 
