@@ -5,11 +5,27 @@ The Python interface of the clearjoint C++ library, which implements F. Marques,
 N. Dourado, P. Flores, "An enhanced formulation to model spatial revolute joints with radial and
 axial clearances", Mechanism and Machine Theory 116 (2017) 123-144. docs/python.md is the guide.
 
+- ``detect(dims, bearing_center, bearing_axis, journal_center, journal_axis)``: the contacts of
+  a journal in its bearing, for one pose or a NumPy batch (Section 3, eqs. 3-26);
+- ``intersect_circle_plane``, ``intersect_circle_cylinder``: the certified kernel queries
+  (eqs. 11-15, 16-21);
 - ``simulate(model)``: run a multibody model file (or dict) and get its time series as arrays.
 
-Lengths are in one unit of the caller's choice (metres in the shipped models), angles in radians.
+Lengths are in one unit of the caller's choice (metres in the shipped models), angles in radians,
+vectors in the world frame.
 """
-from ._core import SolverError, __version__
+from ._core import (Certainty, Certificate, CircleCylinderIntersection, CircleCylinderTopology,
+                    CirclePlaneIntersection, CirclePlaneTopology, Contact, ContactBase,
+                    ContactScenario, ContactType, JointContacts, JointDimensions, RimArc,
+                    RimCrossing, SolverError, __version__, scenario_label)
+from ._detect import (MAX_CONTACTS, CircleCylinderBatch, CirclePlaneBatch, DetectionBatch, detect,
+                      intersect_circle_cylinder, intersect_circle_plane)
 from ._simulate import SimulationResult, simulate
 
-__all__ = ["SimulationResult", "SolverError", "__version__", "simulate"]
+__all__ = [
+    "MAX_CONTACTS", "Certainty", "Certificate", "CircleCylinderBatch", "CircleCylinderIntersection",
+    "CircleCylinderTopology", "CirclePlaneBatch", "CirclePlaneIntersection", "CirclePlaneTopology",
+    "Contact", "ContactBase", "ContactScenario", "ContactType", "DetectionBatch", "JointContacts",
+    "JointDimensions", "RimArc", "RimCrossing", "SimulationResult", "SolverError", "__version__",
+    "detect", "intersect_circle_cylinder", "intersect_circle_plane", "scenario_label", "simulate",
+]

@@ -17,5 +17,8 @@ PYBIND11_MODULE(_core, module) {
   // geometry::InvalidInput and dynamics::ModelError derive from std::invalid_argument, which
   // pybind11 already turns into ValueError; a solver failure gets its own RuntimeError subclass.
   py::register_exception<clearjoint::dynamics::SolverError>(module, "SolverError", PyExc_RuntimeError);
+  clearjoint::python::bind_types(module);
+  clearjoint::python::bind_detection_batch(module);
+  clearjoint::python::bind_kernel(module);
   clearjoint::python::bind_simulation(module);
 }

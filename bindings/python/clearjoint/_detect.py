@@ -1,0 +1,204 @@
+# SPDX-License-Identifier: BSD-3-Clause
+"""clearjoint.detect and the kernel queries, on one pose or on NumPy batches."""
+from __future__ import annotations
+
+from typing import Any, Optional, Union
+
+import numpy as np
+
+from . import _core
+from ._arrays import ArrayResult
+from ._core import (CircleCylinderIntersection, CirclePlaneIntersection, ContactScenario,
+                    JointContacts, JointDimensions)
+
+#: Room for contacts per pose: two radial per rim (beyond the model a rim may have two
+#: penetration arcs) plus two axial; C++ ``clearjoint::geometry::kMaxContacts``.
+MAX_CONTACTS = 6
+
+ArrayLike = Any
+
+
+class DetectionBatch(ArrayResult):
+    """The contacts of N poses, as NumPy arrays.
+
+    Per pose, shape (N,):
+
+    - ``scenario`` (int8): a :class:`ContactScenario` code, Fig. 2 of the paper; ``none`` 0,
+      (a)-(i) 1-9, (j)-(l) 10-12, ``beyond_model`` 13. ``scenarios()`` gives the enum values.
+    - ``aligned`` (bool): axes parallel, exactly (eq. 5) or within ``parallel_angle_tolerance``.
+    - ``certificate`` (int8): a :class:`Certainty` code (exact 0, certified 1, uncertain 2), the
+      weakest over every decision for that pose, "no contact" included.
+    - ``contact_count`` (int8): 0 to 6.
+
+    The contacts of all poses, packed in pose order, shape (M, ...) with M = contact_count.sum();
+    pose n owns rows ``contact_start[n]:contact_start[n + 1]`` (``contact_start``: (N + 1,)
+    int64), radial before axial, base A before B; ``contact_pose`` (M,) is the pose of each row:
+
+    - ``contact_type`` (int8): :class:`ContactType` (radial 0, axial 1);
+    - ``contact_base`` (int8): :class:`ContactBase` (a 0, b 1, mid 2);
+    - ``depth`` (M,): penetration depth >= 0, the input's length unit (eq. 23);
+    - ``point_journal``, ``point_bearing``, ``normal`` (M, 3): C_j, C_i and the unit normal, out
+      of the bearing, world frame: point_journal - point_bearing = depth * normal up to rounding
+      (eqs. 7-10, 14-15, 19-22);
+    - ``crossing_count`` (int8, M,): rim crossings bounding the penetration arc (0 for line and
+      face contacts); ``crossing_angle``, ``crossing_angle_error`` (M, 2) radians,
+      ``crossing_point`` (M, 2, 3), ``crossing_point_error`` (M, 2) length: a certified or exact
+      crossing lies within its error of the value; NaN in unused slots;
+      ``crossing_multiplicity`` (int8, M, 2): 1 crossing, 2 tangency, 0 unused;
+    - ``contact_certificate`` (int8, M,): the contact's :class:`Certainty` code.
+
+    Packed rather than padded to (N, 6, ...): a padded batch writes about a kilobyte a pose, as
+    much time as the detection of a realistic pose itself. ``padded(field)`` gives the (N, 6, ...)
+    view of one field when that shape is handier.
+    """
+
+    _rows_field = "scenario"
+
+    def scenarios(self) -> list:
+        """``scenario`` as :class:`ContactScenario` values (a list, length N)."""
+        return [ContactScenario(int(code)) for code in self.scenario]
+
+    def slot(self) -> np.ndarray:
+        """Each contact row's index among its pose's contacts, 0 to 5, shape (M,)."""
+        return np.arange(len(self.contact_pose)) - self.contact_start[self.contact_pose]
+
+    def padded(self, field: str) -> np.ndarray:
+        """One contact field laid out per pose: shape (N, 6, ...), slots past the pose's
+        contact_count filled with NaN (floats), -1 (integer codes) or False.
+
+        >>> batch.padded("depth")[n, k]   # depth of contact k of pose n
+        """
+        values = getattr(self, field)
+        if values.shape[:1] != self.contact_pose.shape or field in ("contact_start", "contact_pose"):
+            raise ValueError(f"field = {field!r}: must be one of the contact fields (shape (M, ...))")
+        fill: Any = np.nan if np.issubdtype(values.dtype, np.floating) else (
+            False if values.dtype == np.bool_ else -1)
+        out = np.full((len(self), MAX_CONTACTS) + values.shape[1:], fill, dtype=values.dtype)
+        out[self.contact_pose, self.slot()] = values
+        return out
+
+
+class CirclePlaneBatch(ArrayResult):
+    """Circle-plane answers for N pairs (a rim against a base plane, eqs. 11-15).
+
+    Shape (N,): ``topology`` (int8, :class:`CirclePlaneTopology`: disjoint 0, tangent 1,
+    two_crossings 2, circle_in_plane 3); ``side`` (int8, +1 / -1 / 0); ``crossing_count``;
+    ``has_penetration`` (bool), ``penetration_begin``, ``penetration_end`` (rim angles, radians,
+    NaN when no penetration), ``penetration_full`` (bool); ``max_signed_distance`` and its
+    ``max_signed_distance_error`` (length; positive on the normal's side); ``certificate``
+    (int8 :class:`Certainty`). Shape (N, 2): ``crossing_angle``, ``crossing_angle_error``,
+    ``crossing_point_error``, ``crossing_multiplicity`` (0 unused); ``crossing_point`` (N, 2, 3).
+    Unused crossing slots hold NaN.
+    """
+
+    _rows_field = "topology"
+
+
+class CircleCylinderBatch(ArrayResult):
+    """Circle-cylinder answers for N pairs (a rim against the bearing wall, eqs. 16-21).
+
+    Shape (N,): ``topology`` (int8, :class:`CircleCylinderTopology`: inside 0, outside 1,
+    crossing 2, on_surface 3), ``crossing_count`` (0-4), ``arc_count`` (0-2), ``certificate``.
+    Shape (N, 4): ``crossing_angle``, ``crossing_angle_error``, ``crossing_point_error``,
+    ``crossing_multiplicity``; ``crossing_point`` (N, 4, 3); sorted by angle, NaN when unused.
+    Shape (N, 2): ``arc_begin``, ``arc_end`` (radians, NaN when unused), ``arc_full`` (bool): the
+    maximal arcs of rim points strictly beyond the wall.
+    """
+
+    _rows_field = "topology"
+
+
+def detect(dims: JointDimensions, bearing_center: ArrayLike, bearing_axis: ArrayLike,
+           journal_center: ArrayLike, journal_axis: ArrayLike, *, certify: bool = True,
+           parallel_angle_tolerance: float = 0.0,
+           threads: Optional[int] = None) -> Union[JointContacts, DetectionBatch]:
+    """Detect every contact between a journal and its bearing (paper Section 3, eqs. 3-26).
+
+    Parameters
+    ----------
+    dims:
+        The joint's :class:`JointDimensions` (Ri, Li, Rj, Lj; any one length unit).
+    bearing_center, bearing_axis, journal_center, journal_axis:
+        Each of shape (3,) (one pose, the same for every row) or (N, 3) (one per row): the centre
+        P of the part's axis segment and its axis direction a (any non-zero length; only the
+        direction counts), world frame. Base A of a part is at P + (L/2) a/|a| (eq. 3), base B at
+        P - (L/2) a/|a| (eq. 4). Lists and integer arrays are converted to float64.
+    certify:
+        Prove every decision (default). False: plain floating point, every answer uncertain.
+    parallel_angle_tolerance:
+        Radians, in [0, pi/2). 0 (default): axes are parallel only when a_i x a_j = 0 exactly
+        (eq. 5). Larger: nearly parallel axes are treated as parallel (eqs. 6-10) and their
+        contacts are uncertain.
+    threads:
+        Threads for a batch (default None: every core). The answers do not depend on it.
+
+    Returns
+    -------
+    JointContacts
+        When every pose argument has shape (3,).
+    DetectionBatch
+        Otherwise: arrays for N poses (see its documentation for the layout).
+
+    Raises
+    ------
+    ValueError
+        A bad value, naming the argument and the row: ``"journal_axis[7] = [0, 0, 0]: must not be
+        the zero vector"``; a shape other than (3,) or (N, 3); batched arguments of different N.
+    TypeError
+        Arguments that are not numbers.
+
+    The detection runs without the GIL.
+    """
+    result = _core.detect(dims, bearing_center, bearing_axis, journal_center, journal_axis,
+                          certify, parallel_angle_tolerance, threads)
+    return DetectionBatch(result) if isinstance(result, dict) else result
+
+
+def intersect_circle_plane(circle_center: ArrayLike, circle_normal: ArrayLike,
+                           circle_radius: ArrayLike, plane_point: ArrayLike,
+                           plane_normal: ArrayLike, *, certify: bool = True,
+                           exact_fallback: bool = True, threads: Optional[int] = None
+                           ) -> Union[CirclePlaneIntersection, CirclePlaneBatch]:
+    """Intersect a circle (a journal rim) with a plane (a bearing base): eqs. (11)-(15).
+
+    The circle is {x : n . (x - c) = 0, |x - c| = r}; the plane {x : m . (x - p) = 0}, its
+    positive side the one m points to (for a bearing base: outside the bearing). Normals need not
+    be unit. Vectors have shape (3,) or (N, 3), the radius () or (N,); single rows broadcast.
+    Rim angles follow the circle's frame (u, v, n/|n|), u = n x e_k / |n x e_k|, k the axis of
+    the smallest |n_k|: x(theta) = c + r (cos(theta) u + sin(theta) v).
+
+    The topology is decided exactly (a floating-point filter, then rationals); crossings come with
+    certified error bounds. ``certify=False``: plain floating point, uncertain answers;
+    ``exact_fallback=False``: no rationals, answers the filter cannot decide are uncertain.
+
+    Returns a :class:`CirclePlaneIntersection` for one pair, else a :class:`CirclePlaneBatch`.
+    Raises ValueError naming the argument and row (``"circle_radius[3] = -1: must be
+    positive"``).
+    """
+    result = _core.intersect_circle_plane(circle_center, circle_normal, circle_radius,
+                                          plane_point, plane_normal, certify, exact_fallback,
+                                          threads)
+    return CirclePlaneBatch(result) if isinstance(result, dict) else result
+
+
+def intersect_circle_cylinder(circle_center: ArrayLike, circle_normal: ArrayLike,
+                              circle_radius: ArrayLike, cylinder_point: ArrayLike,
+                              cylinder_axis: ArrayLike, cylinder_radius: ArrayLike, *,
+                              certify: bool = True, exact_fallback: bool = True,
+                              threads: Optional[int] = None
+                              ) -> Union[CircleCylinderIntersection, CircleCylinderBatch]:
+    """Intersect a circle (a journal rim) with a cylinder's lateral surface (the bearing wall):
+    eqs. (16)-(21).
+
+    The cylinder is {x : |(x - p) x a|^2 = R^2 |a|^2}; points farther from the axis are outside
+    (beyond the wall). Every crossing (0 to 4) is found and proved, and so is the absence of
+    others; tangencies are decided exactly. Shapes, angles and options as in
+    :func:`intersect_circle_plane`.
+
+    Returns a :class:`CircleCylinderIntersection` for one pair, else a
+    :class:`CircleCylinderBatch`. Raises ValueError naming the argument and row.
+    """
+    result = _core.intersect_circle_cylinder(circle_center, circle_normal, circle_radius,
+                                             cylinder_point, cylinder_axis, cylinder_radius,
+                                             certify, exact_fallback, threads)
+    return CircleCylinderBatch(result) if isinstance(result, dict) else result

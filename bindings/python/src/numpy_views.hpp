@@ -1,0 +1,101 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+// NumPy inputs read as rows of 3-vectors or of scalars, with NumPy's broadcasting of a single row
+// over a batch, and the error messages that name the argument and the row.
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+
+#include <cstddef>
+#include <initializer_list>
+#include <string>
+
+#include "clearjoint/geometry/vector3.hpp"
+
+namespace clearjoint::python {
+
+/// An argument of shape (3,) (one vector, broadcast over every row) or (N, 3) (one per row), held
+/// as a C-contiguous float64 array (converted from lists, integers, other dtypes on the way in).
+class VectorRows {
+ public:
+  /// Throws TypeError (not numbers) or ValueError (another shape) naming `name`.
+  VectorRows(const pybind11::handle& value, const char* name);
+  geometry::Vector3 operator[](std::size_t row) const {
+    const double* p = data_ + (batched_ ? 3 * row : 0);
+    return {p[0], p[1], p[2]};
+  }
+  bool batched() const { return batched_; }
+  std::size_t rows() const { return rows_; }
+  const char* name() const { return name_; }
+
+ private:
+  pybind11::array_t<double, pybind11::array::c_style | pybind11::array::forcecast> array_;
+  const double* data_ = nullptr;
+  std::size_t rows_ = 1;
+  bool batched_ = false;
+  const char* name_;
+};
+
+/// An argument of shape () (one number, broadcast) or (N,).
+class ScalarRows {
+ public:
+  ScalarRows(const pybind11::handle& value, const char* name);
+  double operator[](std::size_t row) const { return data_[batched_ ? row : 0]; }
+  bool batched() const { return batched_; }
+  std::size_t rows() const { return rows_; }
+  const char* name() const { return name_; }
+
+ private:
+  pybind11::array_t<double, pybind11::array::c_style | pybind11::array::forcecast> array_;
+  const double* data_ = nullptr;
+  std::size_t rows_ = 1;
+  bool batched_ = false;
+  const char* name_;
+};
+
+/// What a list of arguments broadcasts to: `rows` (N) and whether any argument is batched (a
+/// batch of one differs from a single query: it returns arrays). Throws ValueError when two
+/// batched arguments have different lengths, naming both.
+struct Broadcast {
+  std::size_t rows = 1;
+  bool batched = false;
+};
+template <typename... Inputs>
+Broadcast broadcast(const Inputs&... inputs);
+
+void throw_length_mismatch(const char* first, std::size_t first_rows, const char* second,
+                           std::size_t second_rows);
+
+template <typename... Inputs>
+Broadcast broadcast(const Inputs&... inputs) {
+  Broadcast result;
+  const char* batched_name = nullptr;
+  auto visit = [&](const auto& input) {
+    if (!input.batched()) return;
+    if (batched_name != nullptr && input.rows() != result.rows) {
+      throw_length_mismatch(batched_name, result.rows, input.name(), input.rows());
+    }
+    batched_name = input.name();
+    result.rows = input.rows();
+    result.batched = true;
+  };
+  (visit(inputs), ...);
+  return result;
+}
+
+/// Turn a library message about a field into one about the Python argument and its row:
+/// "bearing.axis_W = [0, 0, 0]: must not be ..." with {"bearing.axis_W", bearing_axis} becomes
+/// "bearing_axis[7] = [0, 0, 0]: must not be ..." (no index for a broadcast argument).
+struct FieldName {
+  const char* library;  ///< prefix in the library's message, "bearing.axis_W"
+  const char* argument; ///< the Python argument, "bearing_axis"
+  bool batched;
+};
+std::string argument_message(const std::string& library_message, std::size_t row,
+                             std::initializer_list<FieldName> fields);
+
+/// Threads to use: None -> every core the machine reports; else a positive integer (ValueError
+/// "threads = 0: must be at least 1").
+unsigned thread_count(const pybind11::object& threads);
+
+}  // namespace clearjoint::python

@@ -1,0 +1,19 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+// Text for reprs and conversions shared by the result bindings (detection.cpp, kernel.cpp).
+
+#include <string>
+#include <vector>
+
+#include "clearjoint/geometry/certificate.hpp"
+#include "clearjoint/geometry/rim_arc.hpp"
+#include "clearjoint/geometry/vector3.hpp"
+
+namespace clearjoint::python {
+
+std::string repr_number(double x);              ///< round-trip precision
+std::string repr_vector(const geometry::Vector3& v);
+std::string repr_certificate(const geometry::Certificate& c);  ///< "uncertain (why)"
+std::vector<geometry::RimCrossing> first_crossings(const geometry::RimCrossing* crossings, int count);
+
+}  // namespace clearjoint::python

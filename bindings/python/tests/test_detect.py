@@ -1,0 +1,343 @@
+# SPDX-License-Identifier: BSD-3-Clause
+"""clearjoint.detect: the C++ tests' scenario cases bit for bit, batches of mixed shapes,
+broadcasting, threads, and bad inputs."""
+import json
+import math
+import pickle
+import struct
+import subprocess
+
+import numpy as np
+import pytest
+
+import clearjoint
+from cases import CASES, TABLE2, dims
+
+TYPE_NAMES = {clearjoint.ContactType.radial: "radial", clearjoint.ContactType.axial: "axial"}
+BASE_NAMES = {clearjoint.ContactBase.a: "A", clearjoint.ContactBase.b: "B",
+              clearjoint.ContactBase.mid: "mid"}
+CASE_IDS = [c.name for c in CASES]
+CLI_CASES = [c for c in CASES if c.command_line]
+
+
+def bits(x):
+    return struct.pack("<d", float(x))
+
+
+def same_vector(a, b):
+    return [bits(v) for v in a] == [bits(v) for v in b]
+
+
+def detect_case(case, **options):
+    return clearjoint.detect(dims(case.dimensions), case.bearing[0], case.bearing[1],
+                             case.journal[0], case.journal[1],
+                             parallel_angle_tolerance=case.parallel_angle_tolerance, **options)
+
+
+@pytest.fixture(scope="module")
+def cli_answers(cli):
+    """`clearjoint detect` on every case: the library's answers, printed in round-trip form."""
+    lines = []
+    for case in CLI_CASES:
+        d = case.dimensions
+        lines.append(json.dumps({
+            "id": case.name,
+            "bearing": {"radius": d[0], "length": d[1], "center": case.bearing[0],
+                        "axis": case.bearing[1]},
+            "journal": {"radius": d[2], "length": d[3], "center": case.journal[0],
+                        "axis": case.journal[1]},
+            "options": {"parallel_angle_tolerance": case.parallel_angle_tolerance}}))
+    run = subprocess.run([str(cli), "detect"], input="\n".join(lines) + "\n", text=True,
+                         capture_output=True, check=True)
+    answers = [json.loads(line) for line in run.stdout.splitlines()]
+    return {a["id"]: a for a in answers}
+
+
+@pytest.mark.parametrize("case", CASES, ids=CASE_IDS)
+def test_every_scenario_case_of_the_cpp_tests_has_its_scenario(case):
+    assert detect_case(case).scenario == case.scenario
+
+
+@pytest.mark.parametrize("case", CLI_CASES, ids=[c.name for c in CLI_CASES])
+def test_every_scenario_case_equals_the_command_lines_answer_bit_for_bit(case, cli_answers):
+    expected = cli_answers[case.name]
+    result = detect_case(case)
+    assert result.aligned == expected["aligned"]
+    assert str(result.certificate.level).split(".")[1] == expected["certificate"]
+    assert result.certificate.reason == expected["certificate_reason"]
+    assert len(result.contacts) == len(expected["contacts"])
+    for contact, want in zip(result.contacts, expected["contacts"]):
+        assert TYPE_NAMES[contact.type] == want["type"]
+        assert BASE_NAMES[contact.base] == want["base"]
+        assert bits(contact.depth) == bits(want["depth"])
+        assert same_vector(contact.point_journal, want["point_journal"])
+        assert same_vector(contact.point_bearing, want["point_bearing"])
+        assert same_vector(contact.normal, want["normal"])
+        assert len(contact.crossings) == len(want["crossings"])
+        for crossing, point, error in zip(contact.crossings, want["crossings"],
+                                          want["crossing_errors"]):
+            assert same_vector(crossing.point, point)
+            assert bits(crossing.point_error) == bits(math.inf if error is None else error)
+        assert str(contact.certificate.level).split(".")[1] == want["certificate"]
+
+
+def assert_row_equals_single(batch, n, single):
+    """Row n of a batch holds exactly the single-pose answer, bit for bit."""
+    assert batch.scenario[n] == int(single.scenario)
+    assert batch.aligned[n] == single.aligned
+    assert batch.certificate[n] == int(single.certificate.level)
+    assert batch.contact_count[n] == single.contact_count
+    rows = range(batch.contact_start[n], batch.contact_start[n + 1])
+    assert len(rows) == single.contact_count
+    for k, contact in zip(rows, single.contacts):
+        assert batch.contact_pose[k] == n
+        assert batch.contact_type[k] == int(contact.type)
+        assert batch.contact_base[k] == int(contact.base)
+        assert bits(batch.depth[k]) == bits(contact.depth)
+        assert same_vector(batch.point_journal[k], contact.point_journal)
+        assert same_vector(batch.point_bearing[k], contact.point_bearing)
+        assert same_vector(batch.normal[k], contact.normal)
+        assert batch.contact_certificate[k] == int(contact.certificate.level)
+        assert batch.crossing_count[k] == len(contact.crossings)
+        for x, crossing in enumerate(contact.crossings):
+            assert bits(batch.crossing_angle[k, x]) == bits(crossing.angle)
+            assert bits(batch.crossing_angle_error[k, x]) == bits(crossing.angle_error)
+            assert same_vector(batch.crossing_point[k, x], crossing.point)
+            assert bits(batch.crossing_point_error[k, x]) == bits(crossing.point_error)
+            assert batch.crossing_multiplicity[k, x] == crossing.multiplicity
+        for x in range(len(contact.crossings), 2):
+            assert np.isnan(batch.crossing_angle[k, x]) and batch.crossing_multiplicity[k, x] == 0
+
+
+def test_a_batch_of_every_table2_case_equals_the_single_pose_answers_row_by_row():
+    cases = [c for c in CASES if c.dimensions == TABLE2 and c.parallel_angle_tolerance == 0.0]
+    batch = clearjoint.detect(dims(TABLE2), [c.bearing[0] for c in cases],
+                              [c.bearing[1] for c in cases], [c.journal[0] for c in cases],
+                              [c.journal[1] for c in cases])
+    assert isinstance(batch, clearjoint.DetectionBatch) and len(batch) == len(cases)
+    assert batch.contact_start[-1] == len(batch.depth) == batch.contact_count.sum()
+    for n, case in enumerate(cases):
+        assert_row_equals_single(batch, n, detect_case(case))
+
+
+def realistic_poses(count, seed):
+    """Bearings anywhere within 0.2 m, any axis; journals tilted up to ~1.5 clearances' worth
+    and offset up to 1.5 clearances (Table 2 in metres): about half the poses touch."""
+    rng = np.random.default_rng(seed)
+    bearing_center = rng.uniform(-0.2, 0.2, (count, 3))
+    bearing_axis = rng.normal(size=(count, 3))
+    bearing_axis /= np.linalg.norm(bearing_axis, axis=1)[:, None]
+    helper = np.where(np.abs(bearing_axis[:, :1]) < 0.9, [[1.0, 0, 0]], [[0, 1.0, 0]])
+    p = np.cross(bearing_axis, helper)
+    p /= np.linalg.norm(p, axis=1)[:, None]
+    q = np.cross(bearing_axis, p)
+    tilt = rng.uniform(0.0, 0.01, count)[:, None]
+    lean = rng.uniform(0.0, 2 * np.pi, count)[:, None]
+    journal_axis = np.cos(tilt) * bearing_axis + np.sin(tilt) * (np.cos(lean) * p + np.sin(lean) * q)
+    radial = rng.uniform(0.0, 1.5e-4, count)[:, None]
+    toward = rng.uniform(0.0, 2 * np.pi, count)[:, None]
+    axial = rng.uniform(-1.5e-4, 1.5e-4, count)[:, None]
+    journal_center = (bearing_center + radial * (np.cos(toward) * p + np.sin(toward) * q)
+                      + axial * bearing_axis)
+    return bearing_center, bearing_axis, journal_center, journal_axis
+
+
+METRES = clearjoint.JointDimensions(bearing_radius=0.01, bearing_length=0.02,
+                                    journal_radius=0.0099, journal_length=0.0198)
+
+
+def test_realistic_poses_reach_most_scenarios():
+    batch = clearjoint.detect(METRES, *realistic_poses(4000, seed=1))
+    found = set(batch.scenarios())
+    assert clearjoint.ContactScenario.none in found
+    assert clearjoint.ContactScenario.single_radial in found
+    assert len(found) >= 6, found
+
+
+def test_a_batch_of_realistic_poses_equals_the_single_pose_answers_row_by_row():
+    poses = realistic_poses(300, seed=2)
+    batch = clearjoint.detect(METRES, *poses)
+    for n in range(300):
+        single = clearjoint.detect(METRES, *(p[n] for p in poses))
+        assert_row_equals_single(batch, n, single)
+
+
+@pytest.mark.parametrize("batched", [(0,), (1,), (2,), (3,), (0, 2), (1, 3), (0, 1, 2, 3)])
+def test_mixed_shapes_broadcast_the_single_rows_over_the_batched_ones(batched):
+    poses = realistic_poses(50, seed=3)
+    args = [p if k in batched else p[7] for k, p in enumerate(poses)]
+    batch = clearjoint.detect(METRES, *args)
+    assert len(batch) == 50
+    tiled = [p if k in batched else np.tile(p[7], (50, 1)) for k, p in enumerate(poses)]
+    assert batch == clearjoint.detect(METRES, *tiled)
+    for n in (0, 7, 49):
+        assert_row_equals_single(batch, n, clearjoint.detect(METRES, *(a[n] for a in tiled)))
+
+
+def test_a_fixed_bearing_broadcasts_over_journal_poses_given_as_lists_and_integers():
+    batch = clearjoint.detect(dims(TABLE2), [0, 0, 0], [0, 0, 1],
+                              [[0, 0, 0], [0, 0.15, 0.02], [0.03, 0.04, 0.13]], [0, 0, 1])
+    assert batch.scenarios() == [clearjoint.ContactScenario.none, clearjoint.ContactScenario.line,
+                                 clearjoint.ContactScenario.face]
+
+
+def test_a_batch_of_one_returns_arrays_and_a_single_pose_returns_an_object():
+    one = clearjoint.detect(METRES, *(p[:1] for p in realistic_poses(1, seed=4)))
+    assert isinstance(one, clearjoint.DetectionBatch) and len(one) == 1
+    single = clearjoint.detect(METRES, *(p[0] for p in realistic_poses(1, seed=4)))
+    assert isinstance(single, clearjoint.JointContacts)
+    assert_row_equals_single(one, 0, single)
+
+
+def test_an_empty_batch_gives_empty_arrays():
+    empty = np.empty((0, 3))
+    batch = clearjoint.detect(METRES, empty, empty, empty, empty)
+    assert len(batch) == 0 and batch.contact_start.tolist() == [0] and batch.depth.shape == (0,)
+    assert batch.padded("depth").shape == (0, 6)
+
+
+@pytest.mark.parametrize("threads", [2, 3, 8])
+def test_any_thread_count_gives_the_answers_of_one_thread(threads):
+    poses = realistic_poses(20000, seed=5)
+    assert clearjoint.detect(METRES, *poses, threads=threads) == clearjoint.detect(METRES, *poses, threads=1)
+
+
+def test_the_default_thread_count_gives_the_answers_of_one_thread():
+    poses = realistic_poses(20000, seed=6)
+    assert clearjoint.detect(METRES, *poses) == clearjoint.detect(METRES, *poses, threads=1)
+
+
+def test_padded_lays_a_contact_field_out_per_pose_with_empty_slots_filled():
+    batch = clearjoint.detect(METRES, *realistic_poses(500, seed=7))
+    depth = batch.padded("depth")
+    assert depth.shape == (500, 6)
+    counts = np.sum(~np.isnan(depth), axis=1)
+    assert np.array_equal(counts, batch.contact_count)
+    n = int(np.argmax(batch.contact_count))
+    start = batch.contact_start[n]
+    assert np.array_equal(depth[n, :batch.contact_count[n]], batch.depth[start:start + batch.contact_count[n]])
+    assert batch.padded("point_journal").shape == (500, 6, 3)
+    assert batch.padded("contact_type")[n, 5] == -1 or batch.contact_count[n] == 6
+    with pytest.raises(ValueError, match="field = 'scenario': must be one of the contact fields"):
+        batch.padded("scenario")
+
+
+def test_certify_false_gives_the_same_contacts_marked_uncertain():
+    poses = realistic_poses(2000, seed=8)
+    proved = clearjoint.detect(METRES, *poses)
+    plain = clearjoint.detect(METRES, *poses, certify=False)
+    assert np.all(plain.certificate == int(clearjoint.Certainty.uncertain))
+    assert np.array_equal(plain.scenario, proved.scenario)
+
+
+def test_a_batch_pickles():
+    batch = clearjoint.detect(METRES, *realistic_poses(100, seed=9))
+    assert pickle.loads(pickle.dumps(batch)) == batch
+
+
+def test_results_read_well():
+    case = next(c for c in CASES if c.name == "e")
+    result = detect_case(case)
+    assert repr(result) == ("JointContacts((e) radial and axial at the same base, certified; "
+                            f"radial at a depth {result.contacts[0].depth!r}, "
+                            f"axial at a depth {result.contacts[1].depth!r})")
+    assert repr(result.contacts[0]).startswith("Contact(radial at a, depth=")
+    assert repr(dims(TABLE2)) == ("JointDimensions(bearing_radius=10.0, bearing_length=20.0, "
+                                  "journal_radius=9.9, journal_length=19.8)")
+    batch = clearjoint.detect(METRES, *realistic_poses(3, seed=9))
+    assert repr(batch).startswith("DetectionBatch(3 rows: scenario, aligned, certificate")
+
+
+# ---- bad inputs ----------------------------------------------------------------------------------
+
+def bad_batch(row, argument, value, count=10):
+    poses = [np.array(p) for p in realistic_poses(count, seed=10)]
+    index = ["bearing_center", "bearing_axis", "journal_center", "journal_axis"].index(argument)
+    poses[index][row] = value
+    return poses
+
+
+@pytest.mark.parametrize("argument, value, message", [
+    ("journal_center", [np.nan, 0, 0], r"journal_center\[3\] = \[nan, 0, 0\]: every component must be finite"),
+    ("journal_axis", [0, 0, 0], r"journal_axis\[3\] = \[0, 0, 0\]: must not be the zero vector"),
+    ("bearing_center", [0, np.inf, 0], r"bearing_center\[3\] = \[0, inf, 0\]: every component must be finite"),
+    ("bearing_axis", [0, 0, 0], r"bearing_axis\[3\] = \[0, 0, 0\]: must not be the zero vector"),
+])
+def test_a_bad_value_raises_value_error_naming_the_argument_and_row(argument, value, message):
+    with pytest.raises(ValueError, match=message):
+        clearjoint.detect(METRES, *bad_batch(3, argument, value))
+
+
+@pytest.mark.parametrize("threads", [1, 2, 5])
+def test_the_first_bad_row_is_reported_whatever_the_thread_count(threads):
+    poses = bad_batch(15000, "journal_axis", [0, 0, 0], count=20000)
+    poses[3][5000] = [0, 0, 0]
+    with pytest.raises(ValueError, match=r"journal_axis\[5000\] = "):
+        clearjoint.detect(METRES, *poses, threads=threads)
+
+
+def test_a_bad_broadcast_row_is_named_without_an_index():
+    poses = realistic_poses(5, seed=11)
+    with pytest.raises(ValueError, match=r"^bearing_axis = \[0, 0, 0\]: must not be the zero vector$"):
+        clearjoint.detect(METRES, poses[0], [0, 0, 0], poses[2], poses[3])
+
+
+def test_a_bad_single_pose_raises_value_error_naming_the_argument():
+    with pytest.raises(ValueError, match=r"^journal_center = \[nan, 0, 0\]: every component must be finite$"):
+        clearjoint.detect(METRES, [0, 0, 0], [0, 0, 1], [np.nan, 0, 0], [0, 0, 1])
+
+
+@pytest.mark.parametrize("shape", [(2,), (4,), (3, 2), (2, 3, 3), ()])
+def test_a_pose_argument_of_another_shape_raises_value_error(shape):
+    with pytest.raises(ValueError, match=r"journal_center: shape \(.*\) must be \(3,\) or \(N, 3\)"):
+        clearjoint.detect(METRES, [0, 0, 0], [0, 0, 1], np.zeros(shape), [0, 0, 1])
+
+
+def test_batched_arguments_of_different_lengths_raise_value_error_naming_both():
+    with pytest.raises(ValueError, match=r"journal_axis has 4 rows and journal_center 5: batched "
+                                         r"arguments must have the same length N"):
+        clearjoint.detect(METRES, [0, 0, 0], [0, 0, 1], np.zeros((5, 3)), np.ones((4, 3)))
+
+
+def test_arguments_that_are_not_numbers_raise_type_error():
+    with pytest.raises(TypeError, match="bearing_axis: must be numbers"):
+        clearjoint.detect(METRES, [0, 0, 0], ["x", "y", "z"], [0, 0, 0], [0, 0, 1])
+
+
+@pytest.mark.parametrize("tolerance", [-1.0, math.pi / 2, math.nan])
+def test_a_parallel_angle_tolerance_outside_its_range_raises_value_error(tolerance):
+    with pytest.raises(ValueError, match=r"parallel_angle_tolerance = .*: must lie in \[0, pi/2\) radians"):
+        clearjoint.detect(METRES, [0, 0, 0], [0, 0, 1], np.zeros((2, 3)), [0, 0, 1],
+                          parallel_angle_tolerance=tolerance)
+
+
+@pytest.mark.parametrize("threads, error, message", [
+    (0, ValueError, "threads = 0: must be at least 1"),
+    (-2, ValueError, "threads = -2: must be at least 1"),
+    ("2", TypeError, "threads = '2': must be an int or None"),
+    (True, TypeError, "threads = True: must be an int or None"),
+])
+def test_a_bad_thread_count_raises(threads, error, message):
+    with pytest.raises(error, match=message):
+        clearjoint.detect(METRES, [0, 0, 0], [0, 0, 1], np.zeros((2, 3)), [0, 0, 1], threads=threads)
+
+
+@pytest.mark.parametrize("field, value, message", [
+    ("bearing_radius", -1.0, r"JointDimensions.bearing_radius = -1: must be positive"),
+    ("journal_length", math.nan, r"JointDimensions.journal_length = nan: must be finite"),
+    ("journal_radius", 10.0, r"JointDimensions.journal_radius = 10: must be smaller than bearing_radius = 10"),
+    ("journal_length", 25.0, r"JointDimensions.journal_length = 25: must be smaller than bearing_length = 20"),
+])
+def test_bad_dimensions_raise_value_error_naming_the_field(field, value, message):
+    values = dict(bearing_radius=10.0, bearing_length=20.0, journal_radius=9.9, journal_length=19.8)
+    values[field] = value
+    with pytest.raises(ValueError, match=message):
+        clearjoint.JointDimensions(**values)
+
+
+def test_dimensions_take_keyword_arguments_only():
+    with pytest.raises(TypeError):
+        clearjoint.JointDimensions(10.0, 20.0, 9.9, 19.8)
+    d = dims(TABLE2)
+    assert (d.radial_clearance, d.axial_clearance) == (10.0 - 9.9, 0.5 * (20.0 - 19.8))
+    assert pickle.loads(pickle.dumps(d)).journal_radius == 9.9
