@@ -1,0 +1,370 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
+#ifndef CLEARJOINT_CLEARJOINT_H
+#define CLEARJOINT_CLEARJOINT_H
+/**
+ * \file
+ * The C API of clearjoint: contact detection between the journal and the bearing of a spatial
+ * revolute joint with clearance (Marques et al. 2017, Section 3), and the two kernel queries it
+ * is made of. C99, usable from C and C++, and from any language that can call C (the MATLAB/Octave
+ * MEX gateway in bindings/matlab and the Fortran module in bindings/fortran are built on it).
+ *
+ * It wraps the C++ API (clearjoint/geometry/detect_contacts.hpp and the headers it includes,
+ * where the mathematics and the conventions are documented): the answers are the C++ answers,
+ * bit for bit. No C++ type and no exception crosses it.
+ *
+ * Errors. Every function that can fail returns a cj_status. Those functions take a message
+ * buffer (`message`, `message_capacity`): on failure the reason is written there, naming the
+ * offending field and its value ("journal.axis_W = [0, 0, 0]: must not be the zero vector"),
+ * always NUL-terminated and truncated to fit; on success an empty string is written. NULL with
+ * capacity 0 means "no message wanted". There is no global error state: every function is
+ * thread-safe as long as two threads do not write to the same result or buffer.
+ *
+ * Units: lengths in any one unit (metres in the paper), angles in radians. Frames: every vector is
+ * in the world frame W; `p_WX` names point X measured from W's origin.
+ *
+ * ABI rules (what may change, and how):
+ *  - The library's soname carries MAJOR.MINOR while the version is below 1.0 and MAJOR from 1.0
+ *    on. Within one soname, no function signature, struct layout or enum value changes.
+ *  - Structs never grow. Room for later fields is reserved inside them: `reserved` members in the
+ *    structs a caller fills in must be zero (cj_default_options() and zero-initialisation give
+ *    that), and a call rejects a nonzero reserved field, so a program written for a later version
+ *    fails loudly against an older library instead of being silently ignored. `reserved` members
+ *    of the structs the library fills in are written as zero; callers must not rely on them.
+ *    Such a reserved field is given a meaning only where zero keeps the old behaviour.
+ *  - Enums may gain values at the end (a new scenario, a new certificate reason). Callers must
+ *    handle values they do not know; the to-string functions return "unknown" for them.
+ *  - New functions may be added at any version.
+ *  - Every struct member that holds an enum value is an int32_t, and booleans are int32_t
+ *    (0 or 1), so that the layout is the same for every C compiler and for Fortran's
+ *    BIND(C) types.
+ */
+
+#include <stddef.h>
+#include <stdint.h>
+
+#if defined(_WIN32) && !defined(CJ_STATIC)
+#  if defined(CJ_BUILDING_LIBRARY)
+#    define CJ_API __declspec(dllexport)
+#  else
+#    define CJ_API __declspec(dllimport)
+#  endif
+#elif defined(__GNUC__)
+#  define CJ_API __attribute__((visibility("default")))
+#else
+#  define CJ_API
+#endif
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* ---- Versions --------------------------------------------------------------------------------- */
+
+/** The layout version of the structs in this header. Raised only together with the soname. */
+#define CJ_ABI_VERSION 1
+
+/** The version of the linked library, "MAJOR.MINOR.PATCH" (a static string). */
+CJ_API const char* cj_version(void);
+/** CJ_ABI_VERSION of the linked library: compare it with the macro to detect a header that does
+ * not match the library. */
+CJ_API int cj_abi_version(void);
+
+/* ---- Status ----------------------------------------------------------------------------------- */
+
+typedef enum cj_status {
+  CJ_OK = 0,
+  /** An input is NULL, non-finite, out of its range or inconsistent; the message names it. */
+  CJ_INVALID_INPUT = 1,
+  /** The exact (rational) fallback could not allocate memory. */
+  CJ_OUT_OF_MEMORY = 2,
+  /** Anything else: a bug in clearjoint; the message says what was caught. */
+  CJ_INTERNAL_ERROR = 3
+} cj_status;
+
+/** "ok", "invalid input", "out of memory", "internal error", or "unknown". */
+CJ_API const char* cj_status_string(int status);
+
+/* ---- Enums ------------------------------------------------------------------------------------ */
+
+/** The contact scenarios of the paper's Fig. 2, plus free flight and "beyond the model"
+ * (C++: ContactScenario). */
+typedef enum cj_scenario {
+  CJ_SCENARIO_NONE = 0,                            /**< free flight: no contact */
+  CJ_SCENARIO_SINGLE_RADIAL = 1,                   /**< (a) */
+  CJ_SCENARIO_SINGLE_AXIAL = 2,                    /**< (b) */
+  CJ_SCENARIO_RADIAL_AT_BOTH_BASES = 3,            /**< (c) */
+  CJ_SCENARIO_AXIAL_AT_BOTH_BASES = 4,             /**< (d) */
+  CJ_SCENARIO_RADIAL_AND_AXIAL_SAME_BASE = 5,      /**< (e) */
+  CJ_SCENARIO_RADIAL_AND_AXIAL_OPPOSITE_BASES = 6, /**< (f) */
+  CJ_SCENARIO_TWO_RADIAL_ONE_AXIAL = 7,            /**< (g) */
+  CJ_SCENARIO_ONE_RADIAL_TWO_AXIAL = 8,            /**< (h) */
+  CJ_SCENARIO_ALL_FOUR = 9,                        /**< (i) */
+  CJ_SCENARIO_LINE = 10,                           /**< (j) parallel axes, along the wall */
+  CJ_SCENARIO_FACE = 11,                           /**< (k) parallel axes, flat on a base */
+  CJ_SCENARIO_LINE_AND_FACE = 12,                  /**< (l) */
+  CJ_SCENARIO_BEYOND_MODEL = 13 /**< outside the paper's model (contact_scenario.hpp) */
+} cj_scenario;
+
+/** Trust in an answer, strongest first (C++: Certainty). */
+typedef enum cj_certainty {
+  CJ_CERTAINTY_EXACT = 0,     /**< decided in exact rational arithmetic */
+  CJ_CERTAINTY_CERTIFIED = 1, /**< proved in floating point with rigorous error bounds */
+  CJ_CERTAINTY_UNCERTAIN = 2  /**< not proved; the reason says why */
+} cj_certainty;
+
+/** Why an answer is not proved. CJ_REASON_NONE for exact and certified answers. */
+typedef enum cj_reason {
+  CJ_REASON_NONE = 0,
+  /** Uncertain for a reason this version cannot name by a code: read `reason_text`. */
+  CJ_REASON_UNSPECIFIED = 1
+} cj_reason;
+
+typedef enum cj_contact_type {
+  CJ_CONTACT_RADIAL = 0, /**< against the lateral wall (a point, or a line when aligned) */
+  CJ_CONTACT_AXIAL = 1   /**< against a base (a point, or a face when aligned) */
+} cj_contact_type;
+
+typedef enum cj_base {
+  CJ_BASE_A = 0,  /**< bearing base A (eq. 3) and the journal rim facing it */
+  CJ_BASE_B = 1,  /**< bearing base B (eq. 4) and the journal rim facing it */
+  CJ_BASE_MID = 2 /**< the journal's mid-length (aligned line contact, eqs. 6-8) */
+} cj_base;
+
+typedef enum cj_circle_plane_topology {
+  CJ_CIRCLE_PLANE_DISJOINT = 0,
+  CJ_CIRCLE_PLANE_TANGENT = 1,
+  CJ_CIRCLE_PLANE_TWO_CROSSINGS = 2,
+  CJ_CIRCLE_PLANE_CIRCLE_IN_PLANE = 3
+} cj_circle_plane_topology;
+
+typedef enum cj_circle_cylinder_topology {
+  CJ_CIRCLE_CYLINDER_INSIDE = 0,
+  CJ_CIRCLE_CYLINDER_OUTSIDE = 1,
+  CJ_CIRCLE_CYLINDER_CROSSING = 2,
+  CJ_CIRCLE_CYLINDER_ON_SURFACE = 3
+} cj_circle_cylinder_topology;
+
+/** Static strings; "unknown" for a value this version does not know. The scenario's text is the
+ * C++ to_string ("(a) single radial", "(j) line", "none", "beyond model"). */
+CJ_API const char* cj_scenario_string(int scenario);
+CJ_API const char* cj_certainty_string(int certainty);
+CJ_API const char* cj_reason_string(int reason);
+CJ_API const char* cj_contact_type_string(int type);
+CJ_API const char* cj_base_string(int base);
+CJ_API const char* cj_circle_plane_topology_string(int topology);
+CJ_API const char* cj_circle_cylinder_topology_string(int topology);
+
+/* ---- Inputs ----------------------------------------------------------------------------------- */
+
+/** Bearing radius Ri and length Li, journal radius Rj and length Lj (eqs. 1-2).
+ * Valid when finite, Ri > Rj > 0 and Li > Lj > 0. */
+typedef struct cj_dimensions {
+  double bearing_radius;
+  double bearing_length;
+  double journal_radius;
+  double journal_length;
+} cj_dimensions;
+
+/** Where a part is: P, the centre of its axis segment, and its axis direction a (any nonzero
+ * length; only its direction counts). Finite. */
+typedef struct cj_pose {
+  double p_WP[3];
+  double axis_W[3];
+} cj_pose;
+
+typedef struct cj_options {
+  /** Nonzero: prove every answer. 0: plain double-precision pipeline, answers `uncertain`. */
+  int32_t certify;
+  /** Nonzero: decide in exact rational arithmetic where the floating-point proof fails. */
+  int32_t exact_fallback;
+  /** Axes within this angle (radians, in [0, pi/2)) of parallel are treated as parallel; their
+   * contacts are `uncertain`. 0: parallel only when a_i x a_j = 0 exactly (eq. 5). */
+  double parallel_angle_tolerance;
+  /** Must be zero (see the ABI rules). */
+  double reserved[4];
+} cj_options;
+
+/** certify = 1, exact_fallback = 1, parallel_angle_tolerance = 0. A NULL options pointer means
+ * the same. */
+CJ_API cj_options cj_default_options(void);
+
+/* ---- Results ---------------------------------------------------------------------------------- */
+
+/** "No error bound known" in the *_error_bound fields is +infinity (uncertain answers, and
+ * quantities whose bound this version does not compute). */
+
+/** A trust level and why it is not stronger. */
+typedef struct cj_certificate {
+  int32_t level;           /**< cj_certainty */
+  int32_t reason;          /**< cj_reason */
+  const char* reason_text; /**< static string, "" for exact and certified answers */
+} cj_certificate;
+
+/** A point where a journal rim meets a bearing surface. When the answer is certified or exact,
+ * the true crossing angle lies within angle_error_bound of `angle` and the true point within
+ * point_error_bound (Euclidean) of `point`. */
+typedef struct cj_crossing {
+  double angle; /**< rim angle in [0, 2 pi), in the rim's CircleFrame (primitives.hpp) */
+  double angle_error_bound;
+  double point[3];
+  double point_error_bound;
+  int32_t multiplicity; /**< 1 crossing, 2 tangency, 3-4 higher-order contact */
+  int32_t reserved;
+} cj_crossing;
+
+/** One contact (C++: Contact). normal_W points out of the bearing, in the direction the journal
+ * penetrates; depth = |p_WCj - p_WCi| >= 0, so p_WCj - p_WCi = depth * normal_W up to rounding
+ * (eqs. 22-23). */
+typedef struct cj_contact {
+  int32_t type; /**< cj_contact_type */
+  int32_t base; /**< cj_base */
+  double p_WCj[3];    /**< contact point on the journal */
+  double p_WCi[3];    /**< contact point on the bearing */
+  double normal_W[3];
+  double depth;
+  double depth_error_bound;
+  double p_WCj_error_bound;
+  double p_WCi_error_bound;
+  /** Rim crossings bounding the penetration arc (point contacts); none for line and face
+   * contacts. */
+  cj_crossing crossings[2];
+  int32_t crossing_count;
+  int32_t reserved0;
+  cj_certificate certificate;
+  double reserved[4];
+} cj_contact;
+
+#define CJ_MAX_CONTACTS 6
+
+/** The answer of a detection (C++: JointContacts). contacts[0, contact_count) are set, radial
+ * before axial, base A before B; the entries after them are left as they were. */
+typedef struct cj_result {
+  int32_t scenario;      /**< cj_scenario */
+  int32_t aligned;       /**< 1 when the axes are (treated as) parallel */
+  int32_t contact_count; /**< 0 to CJ_MAX_CONTACTS */
+  int32_t reserved0;
+  /** The weakest certificate over every decision taken, "no contact" answers included. */
+  cj_certificate certificate;
+  cj_contact contacts[CJ_MAX_CONTACTS];
+  double reserved[8];
+} cj_result;
+
+/* ---- Detection -------------------------------------------------------------------------------- */
+
+/**
+ * Detect every contact between a journal and its bearing (C++: detect_contacts).
+ * On CJ_OK `*result` holds the answer; on any other status `*result` is untouched.
+ * `options` may be NULL (cj_default_options()).
+ */
+CJ_API cj_status cj_detect(const cj_dimensions* dimensions, const cj_pose* bearing,
+                           const cj_pose* journal, const cj_options* options, cj_result* result,
+                           char* message, size_t message_capacity);
+
+/**
+ * `count` poses read in place from the caller's arrays: pose k's component c (c = 0, 1, 2 for
+ * p_WP x, y, z, then 3, 4, 5 for axis_W x, y, z) is the double at byte address
+ *   (const char*)component[c] + k * stride.
+ * The stride is in bytes (so that an array of the caller's own structs works as well as an array
+ * of doubles) and may be 0 (the same pose for every k) or negative.
+ *   row-major count x 6 doubles `d`:   component[c] = d + c,         stride = 6 * sizeof(double)
+ *   column-major (MATLAB, Fortran's d(count, 6)): component[c] = d + c * count, stride = sizeof(double)
+ *   six separate arrays x, y, z, ax, ay, az: component = {x, y, z, ax, ay, az}, stride = sizeof(double)
+ * cj_pose_array_rows() and cj_pose_array_columns() fill in the first two.
+ */
+typedef struct cj_pose_array {
+  const double* component[6];
+  ptrdiff_t stride;
+} cj_pose_array;
+
+/** Row-major count x 6 doubles (pose k is data[6k .. 6k+5]; also a contiguous cj_pose array). */
+CJ_API cj_pose_array cj_pose_array_rows(const double* data);
+/** Column-major count x 6 doubles (pose k is data[k], data[k + count], ..., data[k + 5 count]). */
+CJ_API cj_pose_array cj_pose_array_columns(const double* data, size_t count);
+/** One pose for every k (stride 0). */
+CJ_API cj_pose_array cj_pose_array_repeat(const cj_pose* pose);
+
+/**
+ * cj_detect for poses k = 0 .. count-1: results[k] is the answer for bearings k and journals k.
+ * Stops at the first pose that fails: results before it are set, results from it on untouched,
+ * the message names the pose ("poses[17]: journal.axis_W = [0, 0, 0]: must not be the zero
+ * vector"), and `*processed` (when not NULL) receives the number of results set (count on CJ_OK).
+ */
+CJ_API cj_status cj_detect_many(const cj_dimensions* dimensions, const cj_pose_array* bearings,
+                                const cj_pose_array* journals, size_t count,
+                                const cj_options* options, cj_result* results, size_t* processed,
+                                char* message, size_t message_capacity);
+
+/* ---- Kernel queries --------------------------------------------------------------------------- */
+
+/** { x : normal . (x - center) = 0, |x - center| = radius }, radius > 0, normal != 0. */
+typedef struct cj_circle {
+  double center[3];
+  double normal[3];
+  double radius;
+} cj_circle;
+
+/** { x : normal . (x - point) = 0 }; the side `normal` points to is positive. normal != 0. */
+typedef struct cj_plane {
+  double point[3];
+  double normal[3];
+} cj_plane;
+
+/** The lateral surface { x : |(x - axis_point) x axis| = radius |axis| }, radius > 0. */
+typedef struct cj_cylinder {
+  double axis_point[3];
+  double axis[3];
+  double radius;
+} cj_cylinder;
+
+/** Rim points with angle in the counter-clockwise sweep from begin to end (rim_arc.hpp). */
+typedef struct cj_arc {
+  double begin;
+  double end;
+  int32_t full;
+  int32_t reserved;
+} cj_arc;
+
+/** C++: CirclePlaneIntersection. */
+typedef struct cj_circle_plane_result {
+  int32_t topology; /**< cj_circle_plane_topology */
+  int32_t side;     /**< +1, -1 or 0 (intersect_circle_plane.hpp) */
+  cj_crossing crossings[2];
+  int32_t crossing_count;
+  int32_t has_penetration;
+  cj_arc penetration;
+  double max_signed_distance;
+  double max_signed_distance_error_bound;
+  cj_certificate certificate;
+  double reserved[4];
+} cj_circle_plane_result;
+
+/** C++: CircleCylinderIntersection. */
+typedef struct cj_circle_cylinder_result {
+  int32_t topology; /**< cj_circle_cylinder_topology */
+  int32_t crossing_count;
+  cj_crossing crossings[4];
+  cj_arc penetration_arcs[2];
+  int32_t arc_count;
+  int32_t reserved0;
+  cj_certificate certificate;
+  double reserved[4];
+} cj_circle_cylinder_result;
+
+/** A journal rim against a bearing base plane (eqs. 11-15). Only `certify` and `exact_fallback`
+ * of `options` (may be NULL) apply. On failure `*result` is untouched. */
+CJ_API cj_status cj_intersect_circle_plane(const cj_circle* circle, const cj_plane* plane,
+                                           const cj_options* options,
+                                           cj_circle_plane_result* result, char* message,
+                                           size_t message_capacity);
+
+/** A journal rim against the bearing's lateral wall (eqs. 16-21). As above. */
+CJ_API cj_status cj_intersect_circle_cylinder(const cj_circle* circle, const cj_cylinder* cylinder,
+                                              const cj_options* options,
+                                              cj_circle_cylinder_result* result, char* message,
+                                              size_t message_capacity);
+
+#ifdef __cplusplus
+}  /* extern "C" */
+#endif
+
+#endif /* CLEARJOINT_CLEARJOINT_H */

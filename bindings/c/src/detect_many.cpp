@@ -1,0 +1,88 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// cj_detect_many: detection over the caller's arrays of poses, read in place through strides,
+// and the helpers that describe the common layouts.
+#include <cstring>
+#include <string>
+
+#include "conversions.hpp"
+
+using namespace clearjoint::c_api;
+
+namespace {
+
+/// Pose k of `poses` (clearjoint.h: component c at component[c] + k * stride bytes). memcpy,
+/// because an array of the caller's own structs need not keep its doubles aligned.
+geo::PartPose pose_at(const cj_pose_array& poses, size_t k) {
+  const std::ptrdiff_t offset = static_cast<std::ptrdiff_t>(k) * poses.stride;
+  double v[6];
+  for (int c = 0; c < 6; ++c) {
+    std::memcpy(&v[c], reinterpret_cast<const char*>(poses.component[c]) + offset, sizeof(double));
+  }
+  return {{v[0], v[1], v[2]}, {v[3], v[4], v[5]}};
+}
+
+void require_components(const cj_pose_array* poses, const char* name) {
+  if (poses == nullptr) throw geo::InvalidInput(std::string(name) + " = NULL: must point to a cj_pose_array");
+  for (int c = 0; c < 6; ++c) {
+    if (poses->component[c] == nullptr) {
+      throw geo::InvalidInput(std::string(name) + ".component[" + std::to_string(c) +
+                              "] = NULL: must point to the first pose's value");
+    }
+  }
+}
+
+}  // namespace
+
+extern "C" cj_status cj_detect_many(const cj_dimensions* dimensions, const cj_pose_array* bearings,
+                                    const cj_pose_array* journals, size_t count,
+                                    const cj_options* options, cj_result* results,
+                                    size_t* processed, char* message, size_t message_capacity) {
+  size_t done = 0;
+  const cj_status status = reporting_failures(message, message_capacity, [&] {
+    require_not_null(dimensions, "dimensions = NULL: must point to the joint's dimensions");
+    if (count == 0) return;
+    require_components(bearings, "bearings");
+    require_components(journals, "journals");
+    require_not_null(results, "results = NULL: must point to count cj_result");
+    const geo::JointDimensions joint = dimensions_of(*dimensions);
+    geo::validate(joint);  // before the loop: not a pose's fault, so not named after one
+    const geo::DetectionOptions detection = detection_options_of(options);
+    geo::JointContacts found;  // reused, as in cj_detect
+    for (; done < count; ++done) {
+      try {
+        geo::detect_contacts(joint, pose_at(*bearings, done), pose_at(*journals, done), found, detection);
+      } catch (const geo::InvalidInput& e) {
+        throw geo::InvalidInput("poses[" + std::to_string(done) + "]: " + e.what());
+      }
+      copy_result(found, results[done]);
+    }
+  });
+  if (processed != nullptr) *processed = done;
+  return status;
+}
+
+extern "C" cj_pose_array cj_pose_array_rows(const double* data) {
+  cj_pose_array poses{};
+  for (int c = 0; c < 6; ++c) poses.component[c] = data == nullptr ? nullptr : data + c;
+  poses.stride = 6 * static_cast<std::ptrdiff_t>(sizeof(double));
+  return poses;
+}
+
+extern "C" cj_pose_array cj_pose_array_columns(const double* data, size_t count) {
+  cj_pose_array poses{};
+  for (int c = 0; c < 6; ++c) poses.component[c] = data == nullptr ? nullptr : data + c * count;
+  poses.stride = static_cast<std::ptrdiff_t>(sizeof(double));
+  return poses;
+}
+
+extern "C" cj_pose_array cj_pose_array_repeat(const cj_pose* pose) {
+  cj_pose_array poses{};
+  if (pose != nullptr) {
+    for (int c = 0; c < 3; ++c) {
+      poses.component[c] = &pose->p_WP[c];
+      poses.component[c + 3] = &pose->axis_W[c];
+    }
+  }
+  poses.stride = 0;
+  return poses;
+}

@@ -1,0 +1,16 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "status_reporting.hpp"
+
+#include <algorithm>
+#include <cstring>
+
+namespace clearjoint::c_api {
+
+void write_message(char* message, std::size_t capacity, std::string_view text) noexcept {
+  if (message == nullptr || capacity == 0) return;
+  const std::size_t length = std::min(text.size(), capacity - 1);
+  std::memcpy(message, text.data(), length);
+  message[length] = '\0';
+}
+
+}  // namespace clearjoint::c_api

@@ -1,0 +1,273 @@
+! SPDX-License-Identifier: BSD-3-Clause
+!> Fortran binding of the clearjoint C API (clearjoint/clearjoint.h) through ISO_C_BINDING.
+!>
+!> The BIND(C) types below mirror the C structs field by field (same names, same layout); the
+!> constants mirror the C enums. cj_detect and cj_detect_many are Fortran wrappers that return the
+!> C status and, when asked, the error message as a Fortran string. See clearjoint.h for the
+!> meaning of every field and for the ABI rules.
+module clearjoint
+  use, intrinsic :: iso_c_binding, only: c_int, c_int32_t, c_double, c_char, c_ptr, c_size_t, &
+                                         c_ptrdiff_t, c_null_char, c_null_ptr, c_loc, &
+                                         c_f_pointer, c_associated, c_sizeof
+  implicit none
+  private
+
+  ! cj_status
+  integer(c_int), parameter, public :: CJ_OK = 0, CJ_INVALID_INPUT = 1, CJ_OUT_OF_MEMORY = 2, &
+                                       CJ_INTERNAL_ERROR = 3
+  ! cj_scenario (Fig. 2 of the paper)
+  integer(c_int32_t), parameter, public :: CJ_SCENARIO_NONE = 0, CJ_SCENARIO_SINGLE_RADIAL = 1, &
+    CJ_SCENARIO_SINGLE_AXIAL = 2, CJ_SCENARIO_RADIAL_AT_BOTH_BASES = 3, &
+    CJ_SCENARIO_AXIAL_AT_BOTH_BASES = 4, CJ_SCENARIO_RADIAL_AND_AXIAL_SAME_BASE = 5, &
+    CJ_SCENARIO_RADIAL_AND_AXIAL_OPPOSITE_BASES = 6, CJ_SCENARIO_TWO_RADIAL_ONE_AXIAL = 7, &
+    CJ_SCENARIO_ONE_RADIAL_TWO_AXIAL = 8, CJ_SCENARIO_ALL_FOUR = 9, CJ_SCENARIO_LINE = 10, &
+    CJ_SCENARIO_FACE = 11, CJ_SCENARIO_LINE_AND_FACE = 12, CJ_SCENARIO_BEYOND_MODEL = 13
+  ! cj_certainty, cj_reason, cj_contact_type, cj_base
+  integer(c_int32_t), parameter, public :: CJ_CERTAINTY_EXACT = 0, CJ_CERTAINTY_CERTIFIED = 1, &
+                                           CJ_CERTAINTY_UNCERTAIN = 2
+  integer(c_int32_t), parameter, public :: CJ_REASON_NONE = 0, CJ_REASON_UNSPECIFIED = 1
+  integer(c_int32_t), parameter, public :: CJ_CONTACT_RADIAL = 0, CJ_CONTACT_AXIAL = 1
+  integer(c_int32_t), parameter, public :: CJ_BASE_A = 0, CJ_BASE_B = 1, CJ_BASE_MID = 2
+  integer, parameter, public :: CJ_MAX_CONTACTS = 6
+
+  type, bind(c), public :: cj_dimensions
+    real(c_double) :: bearing_radius, bearing_length, journal_radius, journal_length
+  end type
+
+  type, bind(c), public :: cj_pose
+    real(c_double) :: p_WP(3), axis_W(3)
+  end type
+
+  type, bind(c), public :: cj_options
+    integer(c_int32_t) :: certify, exact_fallback
+    real(c_double) :: parallel_angle_tolerance
+    real(c_double) :: reserved(4)
+  end type
+
+  type, bind(c), public :: cj_certificate
+    integer(c_int32_t) :: level, reason
+    type(c_ptr) :: reason_text  ! static C string: cj_string(reason_text)
+  end type
+
+  type, bind(c), public :: cj_crossing
+    real(c_double) :: angle, angle_error_bound, point(3), point_error_bound
+    integer(c_int32_t) :: multiplicity, reserved
+  end type
+
+  type, bind(c), public :: cj_contact
+    integer(c_int32_t) :: type, base
+    real(c_double) :: p_WCj(3), p_WCi(3), normal_W(3)
+    real(c_double) :: depth, depth_error_bound, p_WCj_error_bound, p_WCi_error_bound
+    type(cj_crossing) :: crossings(2)
+    integer(c_int32_t) :: crossing_count, reserved0
+    type(cj_certificate) :: certificate
+    real(c_double) :: reserved(4)
+  end type
+
+  type, bind(c), public :: cj_result
+    integer(c_int32_t) :: scenario, aligned, contact_count, reserved0
+    type(cj_certificate) :: certificate
+    type(cj_contact) :: contacts(CJ_MAX_CONTACTS)
+    real(c_double) :: reserved(8)
+  end type
+
+  type, bind(c), public :: cj_pose_array
+    type(c_ptr) :: component(6)
+    integer(c_ptrdiff_t) :: stride
+  end type
+
+  public :: cj_detect, cj_detect_many, cj_default_options, cj_version, cj_string
+  public :: cj_scenario_string, cj_certainty_string, cj_contact_type_string, cj_base_string
+
+  interface
+    function c_detect(dimensions, bearing, journal, options, result, message, capacity) &
+        bind(c, name="cj_detect") result(status)
+      import :: c_int, c_ptr, c_char, c_size_t, cj_dimensions, cj_pose, cj_result
+      type(cj_dimensions), intent(in) :: dimensions
+      type(cj_pose), intent(in) :: bearing, journal
+      type(c_ptr), value :: options
+      type(cj_result), intent(inout) :: result
+      character(kind=c_char), dimension(*), intent(out) :: message
+      integer(c_size_t), value :: capacity
+      integer(c_int) :: status
+    end function
+
+    function c_detect_many(dimensions, bearings, journals, count, options, results, processed, &
+                           message, capacity) bind(c, name="cj_detect_many") result(status)
+      import :: c_int, c_ptr, c_char, c_size_t, cj_dimensions, cj_pose_array, cj_result
+      type(cj_dimensions), intent(in) :: dimensions
+      type(cj_pose_array), intent(in) :: bearings, journals
+      integer(c_size_t), value :: count
+      type(c_ptr), value :: options
+      type(cj_result), intent(inout) :: results(*)
+      integer(c_size_t), intent(out) :: processed
+      character(kind=c_char), dimension(*), intent(out) :: message
+      integer(c_size_t), value :: capacity
+      integer(c_int) :: status
+    end function
+
+    function cj_default_options() bind(c, name="cj_default_options") result(options)
+      import :: cj_options
+      type(cj_options) :: options
+    end function
+
+    function c_version() bind(c, name="cj_version") result(text)
+      import :: c_ptr
+      type(c_ptr) :: text
+    end function
+
+    function c_scenario_string(code) bind(c, name="cj_scenario_string") result(text)
+      import :: c_ptr, c_int
+      integer(c_int), value :: code
+      type(c_ptr) :: text
+    end function
+
+    function c_certainty_string(code) bind(c, name="cj_certainty_string") result(text)
+      import :: c_ptr, c_int
+      integer(c_int), value :: code
+      type(c_ptr) :: text
+    end function
+
+    function c_contact_type_string(code) bind(c, name="cj_contact_type_string") result(text)
+      import :: c_ptr, c_int
+      integer(c_int), value :: code
+      type(c_ptr) :: text
+    end function
+
+    function c_base_string(code) bind(c, name="cj_base_string") result(text)
+      import :: c_ptr, c_int
+      integer(c_int), value :: code
+      type(c_ptr) :: text
+    end function
+
+    pure function c_strlen(text) bind(c, name="strlen") result(length)
+      import :: c_ptr, c_size_t
+      type(c_ptr), value, intent(in) :: text
+      integer(c_size_t) :: length
+    end function
+  end interface
+
+  !> Capacity of the message buffer the wrappers pass to the C API.
+  integer(c_size_t), parameter :: message_capacity = 1024
+
+contains
+
+  !> A NUL-terminated C string (a static string of the library) as a Fortran string.
+  function cj_string(text) result(out)
+    type(c_ptr), intent(in) :: text
+    character(len=:), allocatable :: out
+    character(kind=c_char), pointer :: chars(:)
+    integer :: k, length
+    if (.not. c_associated(text)) then
+      out = ''
+      return
+    end if
+    length = int(c_strlen(text))
+    call c_f_pointer(text, chars, [length])
+    allocate(character(len=length) :: out)
+    do k = 1, length
+      out(k:k) = chars(k)
+    end do
+  end function
+
+  !> The message the C API wrote into `buffer`, up to its NUL.
+  function message_text(buffer) result(out)
+    character(kind=c_char, len=*), intent(in) :: buffer
+    character(len=:), allocatable :: out
+    integer :: length
+    length = index(buffer, c_null_char) - 1
+    if (length < 0) length = len(buffer)
+    out = buffer(1:length)
+  end function
+
+  function cj_version() result(out)
+    character(len=:), allocatable :: out
+    out = cj_string(c_version())
+  end function
+
+  function cj_scenario_string(code) result(out)
+    integer(c_int32_t), intent(in) :: code
+    character(len=:), allocatable :: out
+    out = cj_string(c_scenario_string(int(code, c_int)))
+  end function
+
+  function cj_certainty_string(code) result(out)
+    integer(c_int32_t), intent(in) :: code
+    character(len=:), allocatable :: out
+    out = cj_string(c_certainty_string(int(code, c_int)))
+  end function
+
+  function cj_contact_type_string(code) result(out)
+    integer(c_int32_t), intent(in) :: code
+    character(len=:), allocatable :: out
+    out = cj_string(c_contact_type_string(int(code, c_int)))
+  end function
+
+  function cj_base_string(code) result(out)
+    integer(c_int32_t), intent(in) :: code
+    character(len=:), allocatable :: out
+    out = cj_string(c_base_string(int(code, c_int)))
+  end function
+
+  !> Detect the contacts of one joint (C: cj_detect). Returns the status; on failure `result` is
+  !> untouched and `message` (when present) holds the reason, naming the field and its value.
+  function cj_detect(dimensions, bearing, journal, result, options, message) result(status)
+    type(cj_dimensions), intent(in) :: dimensions
+    type(cj_pose), intent(in) :: bearing, journal
+    type(cj_result), intent(inout) :: result
+    type(cj_options), intent(in), target, optional :: options
+    character(len=:), allocatable, intent(out), optional :: message
+    integer(c_int) :: status
+    character(kind=c_char, len=message_capacity) :: buffer
+    type(c_ptr) :: options_pointer
+    options_pointer = c_null_ptr
+    if (present(options)) options_pointer = c_loc(options)
+    status = c_detect(dimensions, bearing, journal, options_pointer, result, buffer, message_capacity)
+    if (present(message)) message = message_text(buffer)
+  end function
+
+  !> Detect the contacts of n poses (C: cj_detect_many). bearings and journals hold one pose
+  !> [p_WP, axis_W] per column, shape (6, n), read in place; a single column (6, 1) serves every
+  !> pose. results(1:n) receive the answers; on failure the results before the failing pose are
+  !> set and `message` names it (poses numbered from 0, as in C).
+  function cj_detect_many(dimensions, bearings, journals, results, options, message) result(status)
+    type(cj_dimensions), intent(in) :: dimensions
+    real(c_double), intent(in), target, contiguous :: bearings(:, :), journals(:, :)
+    type(cj_result), intent(inout) :: results(:)
+    type(cj_options), intent(in), target, optional :: options
+    character(len=:), allocatable, intent(out), optional :: message
+    integer(c_int) :: status
+    character(kind=c_char, len=message_capacity) :: buffer
+    type(c_ptr) :: options_pointer
+    type(cj_pose_array) :: bearing_array, journal_array
+    integer(c_size_t) :: processed
+    options_pointer = c_null_ptr
+    if (present(options)) options_pointer = c_loc(options)
+    if (size(bearings, 1) /= 6 .or. size(journals, 1) /= 6 .or. &
+        (size(bearings, 2) /= 1 .and. size(bearings, 2) /= size(results)) .or. &
+        (size(journals, 2) /= 1 .and. size(journals, 2) /= size(results))) then
+      status = CJ_INVALID_INPUT
+      if (present(message)) message = 'bearings and journals: must have shape (6, size(results)) or (6, 1)'
+      return
+    end if
+    bearing_array = columns_of(bearings)
+    journal_array = columns_of(journals)
+    status = c_detect_many(dimensions, bearing_array, journal_array, int(size(results), c_size_t), &
+                           options_pointer, results, processed, buffer, message_capacity)
+    if (present(message)) message = message_text(buffer)
+  end function
+
+  !> Poses stored one per column of a (6, n) array: C's row-major n x 6 layout; one column
+  !> repeats (stride 0).
+  function columns_of(poses) result(array)
+    real(c_double), intent(in), target, contiguous :: poses(:, :)
+    type(cj_pose_array) :: array
+    integer :: c
+    do c = 1, 6
+      array%component(c) = c_loc(poses(c, 1))
+    end do
+    array%stride = 0
+    if (size(poses, 2) > 1) array%stride = 6 * c_sizeof(poses(1, 1))
+  end function
+
+end module clearjoint

@@ -1,0 +1,81 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
+#include "mex_results.h"
+
+static const char* const kResultFields[] = {"scenario",      "scenario_code", "aligned",
+                                            "certificate",   "contact_count", "contacts"};
+static const char* const kContactFields[] = {
+    "type",  "base",     "depth",     "depth_error_bound", "p_WCj",     "p_WCj_error_bound",
+    "p_WCi", "p_WCi_error_bound", "normal_W", "crossings", "certificate"};
+static const char* const kCrossingFields[] = {"angle", "angle_error_bound", "point",
+                                              "point_error_bound", "multiplicity"};
+static const char* const kCertificateFields[] = {"level", "level_code", "reason", "reason_code"};
+
+#define COUNT_OF(a) ((int)(sizeof(a) / sizeof((a)[0])))
+
+static mxArray* row3(const double v[3]) {
+  mxArray* out = mxCreateDoubleMatrix(1, 3, mxREAL);
+  double* p = mxGetPr(out);
+  p[0] = v[0];
+  p[1] = v[1];
+  p[2] = v[2];
+  return out;
+}
+
+static mxArray* certificate(const cj_certificate* c) {
+  mxArray* out = mxCreateStructMatrix(1, 1, COUNT_OF(kCertificateFields), (const char**)kCertificateFields);
+  mxSetFieldByNumber(out, 0, 0, mxCreateString(cj_certainty_string(c->level)));
+  mxSetFieldByNumber(out, 0, 1, mxCreateDoubleScalar(c->level));
+  mxSetFieldByNumber(out, 0, 2, mxCreateString(c->reason_text));
+  mxSetFieldByNumber(out, 0, 3, mxCreateDoubleScalar(c->reason));
+  return out;
+}
+
+static mxArray* crossings(const cj_contact* c) {
+  int k;
+  mxArray* out = mxCreateStructMatrix((mwSize)c->crossing_count, 1, COUNT_OF(kCrossingFields),
+                                      (const char**)kCrossingFields);
+  for (k = 0; k < c->crossing_count; ++k) {
+    const cj_crossing* x = &c->crossings[k];
+    mxSetFieldByNumber(out, k, 0, mxCreateDoubleScalar(x->angle));
+    mxSetFieldByNumber(out, k, 1, mxCreateDoubleScalar(x->angle_error_bound));
+    mxSetFieldByNumber(out, k, 2, row3(x->point));
+    mxSetFieldByNumber(out, k, 3, mxCreateDoubleScalar(x->point_error_bound));
+    mxSetFieldByNumber(out, k, 4, mxCreateDoubleScalar(x->multiplicity));
+  }
+  return out;
+}
+
+static mxArray* contacts(const cj_result* r) {
+  int k;
+  mxArray* out = mxCreateStructMatrix((mwSize)r->contact_count, 1, COUNT_OF(kContactFields),
+                                      (const char**)kContactFields);
+  for (k = 0; k < r->contact_count; ++k) {
+    const cj_contact* c = &r->contacts[k];
+    mxSetFieldByNumber(out, k, 0, mxCreateString(cj_contact_type_string(c->type)));
+    mxSetFieldByNumber(out, k, 1, mxCreateString(cj_base_string(c->base)));
+    mxSetFieldByNumber(out, k, 2, mxCreateDoubleScalar(c->depth));
+    mxSetFieldByNumber(out, k, 3, mxCreateDoubleScalar(c->depth_error_bound));
+    mxSetFieldByNumber(out, k, 4, row3(c->p_WCj));
+    mxSetFieldByNumber(out, k, 5, mxCreateDoubleScalar(c->p_WCj_error_bound));
+    mxSetFieldByNumber(out, k, 6, row3(c->p_WCi));
+    mxSetFieldByNumber(out, k, 7, mxCreateDoubleScalar(c->p_WCi_error_bound));
+    mxSetFieldByNumber(out, k, 8, row3(c->normal_W));
+    mxSetFieldByNumber(out, k, 9, crossings(c));
+    mxSetFieldByNumber(out, k, 10, certificate(&c->certificate));
+  }
+  return out;
+}
+
+mxArray* mex_create_results(size_t count) {
+  return mxCreateStructMatrix((mwSize)count, 1, COUNT_OF(kResultFields), (const char**)kResultFields);
+}
+
+void mex_set_result(mxArray* results, size_t index, const cj_result* r) {
+  const mwIndex i = (mwIndex)index;
+  mxSetFieldByNumber(results, i, 0, mxCreateString(cj_scenario_string(r->scenario)));
+  mxSetFieldByNumber(results, i, 1, mxCreateDoubleScalar(r->scenario));
+  mxSetFieldByNumber(results, i, 2, mxCreateLogicalScalar(r->aligned != 0));
+  mxSetFieldByNumber(results, i, 3, certificate(&r->certificate));
+  mxSetFieldByNumber(results, i, 4, mxCreateDoubleScalar(r->contact_count));
+  mxSetFieldByNumber(results, i, 5, contacts(r));
+}

@@ -1,0 +1,26 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
+#ifndef CLEARJOINT_MEX_RESULTS_H
+#define CLEARJOINT_MEX_RESULTS_H
+/* The MEX gateway's output: C API results written as MATLAB structs.
+ *
+ * One result is a struct with fields
+ *   scenario (char, "(a) single radial", ...), scenario_code (cj_scenario), aligned (logical),
+ *   certificate (struct: level, level_code, reason, reason_code), contact_count, contacts;
+ * contacts is a contact_count x 1 struct array with fields
+ *   type ("radial"/"axial"), base ("A"/"B"/"mid"), depth, depth_error_bound,
+ *   p_WCj, p_WCj_error_bound, p_WCi, p_WCi_error_bound, normal_W (1 x 3 each point),
+ *   crossings (crossing_count x 1 struct array: angle, angle_error_bound, point, point_error_bound,
+ *   multiplicity) and certificate.
+ * Numbers are doubles; "no bound known" is Inf. */
+
+#include "mex.h"
+
+#include "clearjoint/clearjoint.h"
+
+/* An N x 1 struct array with the result fields, to be filled by mex_set_result. */
+mxArray* mex_create_results(size_t count);
+
+/* Write `result` into element `index` of an array from mex_create_results. */
+void mex_set_result(mxArray* results, size_t index, const cj_result* result);
+
+#endif

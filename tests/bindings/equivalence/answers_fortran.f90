@@ -1,0 +1,127 @@
+! SPDX-License-Identifier: BSD-3-Clause
+!> The Fortran binding's answers for the equivalence test (README.md): cj_detect on the
+!> single-call records, cj_detect_many on the batch records (copied into (6, n) arrays, the
+!> layout the Fortran wrapper takes).
+!>
+!> usage: answers_fortran INPUT OUTPUT
+program answers_fortran
+  use clearjoint
+  use, intrinsic :: iso_c_binding, only: c_double, c_int, c_int32_t
+  use, intrinsic :: iso_fortran_env, only: int64, error_unit
+  implicit none
+  integer, parameter :: record = 18
+  character(len=4096) :: input_path, output_path
+  real(c_double), allocatable :: data(:), bearings(:, :), journals(:, :)
+  type(cj_result), allocatable :: results(:)
+  type(cj_result) :: single
+  type(cj_dimensions) :: dims
+  type(cj_pose) :: bearing, journal
+  type(cj_options) :: options
+  character(len=:), allocatable :: message
+  integer :: unit, out, count, singles, batch, i, k, first
+  integer(int64) :: bytes
+  integer(c_int) :: status
+
+  if (command_argument_count() /= 2) then
+    write (error_unit, '(a)') 'usage: answers_fortran INPUT OUTPUT'
+    stop 2
+  end if
+  call get_command_argument(1, input_path)
+  call get_command_argument(2, output_path)
+  open (newunit=unit, file=trim(input_path), access='stream', form='unformatted', status='old', &
+        action='read')
+  inquire (unit=unit, size=bytes)
+  allocate (data(bytes / 8))
+  read (unit) data
+  close (unit)
+  count = nint(data(1))
+  singles = nint(data(2))
+  open (newunit=out, file=trim(output_path), status='replace', action='write')
+
+  do i = 0, singles - 1
+    first = (i + 1) * record  ! 0-based offset of the record, past the header
+    dims = cj_dimensions(data(first + 1), data(first + 2), data(first + 3), data(first + 4))
+    bearing = cj_pose(data(first + 5:first + 7), data(first + 8:first + 10))
+    journal = cj_pose(data(first + 11:first + 13), data(first + 14:first + 16))
+    options = cj_default_options()
+    options%certify = merge(1_c_int32_t, 0_c_int32_t, data(first + 17) /= 0)
+    options%parallel_angle_tolerance = data(first + 18)
+    status = cj_detect(dims, bearing, journal, single, options, message)
+    if (status == CJ_OK) then
+      write (out, '(a)') result_line('S', i, single)
+    else
+      write (out, '(a)') 'S '//decimal(i)//' error '//decimal(status)//' '//message
+    end if
+  end do
+
+  batch = count - singles
+  if (batch > 0) then
+    allocate (bearings(6, batch), journals(6, batch), results(batch))
+    do k = 1, batch
+      first = (singles + k) * record
+      bearings(:, k) = data(first + 5:first + 10)
+      journals(:, k) = data(first + 11:first + 16)
+    end do
+    first = (singles + 1) * record
+    dims = cj_dimensions(data(first + 1), data(first + 2), data(first + 3), data(first + 4))
+    status = cj_detect_many(dims, bearings, journals, results, message=message)
+    if (status /= CJ_OK) then
+      write (error_unit, '(a)') 'cj_detect_many failed: '//message
+      stop 1
+    end if
+    do k = 1, batch
+      write (out, '(a)') result_line('B', singles + k - 1, results(k))
+    end do
+  end if
+  close (out)
+
+contains
+
+  function decimal(n) result(text)
+    integer, intent(in) :: n
+    character(len=:), allocatable :: text
+    character(len=24) :: buffer
+    write (buffer, '(i0)') n
+    text = trim(buffer)
+  end function
+
+  !> IEEE bits of x as 16 upper-case hex digits, after a space.
+  function hex(x) result(text)
+    real(c_double), intent(in) :: x
+    character(len=17) :: text
+    write (text, '(1x, z16.16)') transfer(x, 0_int64)
+  end function
+
+  function hex3(v) result(text)
+    real(c_double), intent(in) :: v(3)
+    character(len=51) :: text
+    text = hex(v(1))//hex(v(2))//hex(v(3))
+  end function
+
+  function result_line(tag, index, r) result(line)
+    character, intent(in) :: tag
+    integer, intent(in) :: index
+    type(cj_result), intent(in) :: r
+    character(len=:), allocatable :: line
+    integer :: k, m
+    line = tag//' '//decimal(index)//' ok '//decimal(r%scenario)//' '//decimal(r%aligned)//' '// &
+           decimal(r%certificate%level)//' '//decimal(r%certificate%reason)
+    if (tag == 'S') line = line//' "'//cj_string(r%certificate%reason_text)//'"'
+    line = line//' '//decimal(r%contact_count)
+    do k = 1, r%contact_count
+      associate (c => r%contacts(k))
+        line = line//' | '//decimal(c%type)//' '//decimal(c%base)//hex(c%depth)//hex3(c%p_WCj)// &
+               hex3(c%p_WCi)//hex3(c%normal_W)//' '//decimal(c%crossing_count)
+        do m = 1, c%crossing_count
+          associate (x => c%crossings(m))
+            line = line//hex(x%angle)//hex(x%angle_error_bound)//hex3(x%point)// &
+                   hex(x%point_error_bound)//' '//decimal(x%multiplicity)
+          end associate
+        end do
+        line = line//' '//decimal(c%certificate%level)//' '//decimal(c%certificate%reason)
+        if (tag == 'S') line = line//' "'//cj_string(c%certificate%reason_text)//'"'
+      end associate
+    end do
+  end function
+
+end program

@@ -1,0 +1,111 @@
+% SPDX-License-Identifier: BSD-3-Clause
+% The MEX gateways' answers for the equivalence test (README.md), run by octave-cli:
+% cj_detect on the single-call records, cj_detect_many on the batch records (N x 6 matrices).
+%
+% usage: answers_octave(INPUT, OUTPUT), with the MEX files on the path.
+function answers_octave(input_path, output_path)
+  fid = fopen(input_path, 'r');
+  data = fread(fid, Inf, 'double');
+  fclose(fid);
+  records = reshape(data, 18, [])';
+  count = records(1, 1);
+  singles = records(1, 2);
+  records = records(2:end, :);
+  assert(rows(records) == count);
+  out = fopen(output_path, 'w');
+  for i = 0:singles - 1
+    r = records(i + 1, :);
+    options = struct('certify', r(17), 'parallel_angle_tolerance', r(18));
+    try
+      found = cj_detect(dimensions_of(r), r(5:10), r(11:16), options);
+      fprintf(out, '%s\n', single_line(i, found));
+    catch err
+      % Octave puts the function's name before a MEX error's text; MATLAB does not.
+      text = regexprep(err.message, '^cj_detect: ', '');
+      fprintf(out, 'S %d error %d %s\n', i, status_of(err), text);
+    end_try_catch
+  end
+  if count > singles
+    b = records(singles + 1:end, :);
+    found = cj_detect_many(dimensions_of(b(1, :)), b(:, 5:10), b(:, 11:16));
+    write_batch_lines(out, singles, found);
+  end
+  fclose(out);
+end
+
+function d = dimensions_of(r)
+  d = struct('bearing_radius', r(1), 'bearing_length', r(2), 'journal_radius', r(3), ...
+             'journal_length', r(4));
+end
+
+function s = status_of(err)
+  if strcmp(err.identifier, 'clearjoint:invalidInput')
+    s = 1;  % CJ_INVALID_INPUT
+  else
+    s = 3;  % CJ_INTERNAL_ERROR
+  end
+end
+
+function t = hex(x)
+  % IEEE bits of each double, 16 upper-case hex digits after a space.
+  h = upper(num2hex(x(:)));
+  t = reshape([repmat(' ', rows(h), 1), h]', 1, []);
+end
+
+function line = single_line(i, r)
+  line = sprintf('S %d ok %d %d %d %d "%s" %d', i, r.scenario_code, r.aligned, ...
+                 r.certificate.level_code, r.certificate.reason_code, r.certificate.reason, ...
+                 r.contact_count);
+  for k = 1:r.contact_count
+    c = r.contacts(k);
+    line = [line, sprintf(' | %d %d', type_code(c.type), base_code(c.base)), hex(c.depth), ...
+            hex(c.p_WCj), hex(c.p_WCi), hex(c.normal_W), sprintf(' %d', numel(c.crossings))];
+    for m = 1:numel(c.crossings)
+      x = c.crossings(m);
+      line = [line, hex(x.angle), hex(x.angle_error_bound), hex(x.point), ...
+              hex(x.point_error_bound), sprintf(' %d', x.multiplicity)];
+    end
+    line = [line, sprintf(' %d %d "%s"', c.certificate.level_code, c.certificate.reason_code, ...
+                          c.certificate.reason)];
+  end
+end
+
+function code = type_code(name)
+  code = find(strcmp(name, {'radial', 'axial'})) - 1;
+end
+
+function code = base_code(name)
+  code = find(strcmp(name, {'A', 'B', 'mid'})) - 1;
+end
+
+function write_batch_lines(out, first_index, r)
+  % The hex digits of every field at once (num2hex per value costs more than the detection).
+  n = numel(r.scenario_code);
+  h = struct();
+  for name = {'depth', 'p_WCj', 'p_WCi', 'normal_W', 'crossing_angle', ...
+              'crossing_angle_error_bound', 'crossing_point', 'crossing_point_error_bound'}
+    h.(name{1}) = [repmat(' ', numel(r.(name{1})), 1), upper(num2hex(r.(name{1})(:)))];
+  end
+  % Rows of a point's three coordinates: pose i, coordinate c, slot s (contact, or crossing and
+  % contact) at i + n (c - 1) + 3 n (s - 1).
+  xyz = @(i, s) i + n * (0:2) + 3 * n * (s - 1);
+  for i = 1:n
+    line = sprintf('B %d ok %d %d %d %d %d', first_index + i - 1, r.scenario_code(i), r.aligned(i), ...
+                   r.certificate_level(i), r.certificate_reason(i), r.contact_count(i));
+    for k = 1:r.contact_count(i)
+      ik = i + n * (k - 1);
+      line = [line, sprintf(' | %d %d', r.type(ik), r.base(ik)), h.depth(ik, :), ...
+              reshape(h.p_WCj(xyz(i, k), :)', 1, []), reshape(h.p_WCi(xyz(i, k), :)', 1, []), ...
+              reshape(h.normal_W(xyz(i, k), :)', 1, []), sprintf(' %d', r.crossing_count(ik))];
+      for m = 1:r.crossing_count(ik)
+        imk = i + n * (m - 1) + 2 * n * (k - 1);
+        line = [line, h.crossing_angle(imk, :), h.crossing_angle_error_bound(imk, :), ...
+                reshape(h.crossing_point(xyz(i, m + 2 * (k - 1)), :)', 1, []), ...
+                h.crossing_point_error_bound(imk, :), sprintf(' %d', r.crossing_multiplicity(imk))];
+      end
+      line = [line, sprintf(' %d %d', r.certificate_level_of_contact(ik), ...
+                            r.certificate_reason_of_contact(ik))];
+    end
+    fprintf(out, '%s\n', line);
+  end
+end
