@@ -38,7 +38,8 @@ constexpr const char* kUsage =
     "Writes one JSON line per joint line, in order (empty lines are skipped):\n"
     "  {\"id\", \"scenario\": \"none\"|\"a\"..\"l\"|\"beyond_model\", \"aligned\",\n"
     "   \"certificate\", \"certificate_reason\", \"contacts\": [{\"type\", \"base\", \"depth\",\n"
-    "   \"point_journal\", \"point_bearing\", \"normal\", \"crossings\", \"crossing_errors\",\n"
+    "   \"depth_error\", \"point_journal\", \"point_bearing\", \"point_journal_error\",\n"
+    "   \"point_bearing_error\", \"normal\", \"crossings\", \"crossing_errors\",\n"
     "   \"certificate\", \"certificate_reason\", \"approach_velocity\",\n"
     "   \"tangential_velocity\"}]}\n"
     "(velocities only with motions), or {\"id\": ..., \"error\": \"...\"}. Any consistent units\n"
@@ -145,9 +146,7 @@ const char* label(geo::ContactBase base) {
   throw std::logic_error("unknown ContactBase");
 }
 
-std::string reason(const geo::Certificate& certificate) {
-  return certificate.reason != nullptr ? certificate.reason : "";
-}
+std::string reason(const geo::Certificate& certificate) { return std::string(certificate.reason_text()); }
 
 /// Throws when a computed value is not finite. The contact points and velocities are
 /// double-precision evaluations of the paper's formulas (not the certified kernel); speeds near
@@ -180,8 +179,11 @@ Json to_json(const geo::Contact& contact, const std::string& where) {
   return Json{{"type", label(contact.type)},
               {"base", label(contact.base)},
               {"depth", contact.depth},
+              {"depth_error", error_bound(contact.depth_error)},
               {"point_journal", app::to_json(contact.p_WCj)},
               {"point_bearing", app::to_json(contact.p_WCi)},
+              {"point_journal_error", error_bound(contact.p_WCj_error)},
+              {"point_bearing_error", error_bound(contact.p_WCi_error)},
               {"normal", app::to_json(contact.normal_W)},
               {"crossings", std::move(crossings)},
               {"crossing_errors", std::move(crossing_errors)},

@@ -85,7 +85,7 @@ Json to_json(const geo::RimArc& arc) {
 
 Json to_json(const geo::Certificate& certificate) {
   return Json{{"level", std::string(geo::to_string(certificate.level))},
-              {"reason", certificate.reason != nullptr ? certificate.reason : ""}};
+              {"reason", std::string(certificate.reason_text())}};
 }
 
 const char* to_string(geo::CirclePlaneTopology topology) {
@@ -120,7 +120,7 @@ void answer_plane(const geo::Circle3& circle, const Json& plane_json,
   if (hit.has_penetration) arcs.push_back(to_json(hit.penetration));
   answer["query"] = "circle_plane";
   answer["topology"] = to_string(hit.topology);
-  answer["side"] = hit.side;
+  answer["side"] = static_cast<int>(hit.side);  // PlaneSide: -1, 0, +1
   answer["crossings"] = std::move(crossings);
   answer["penetration_arcs"] = std::move(arcs);
   answer["max_signed_distance"] = hit.max_signed_distance;

@@ -2,6 +2,8 @@
 #include "answer_text.hpp"
 
 #include <cstdio>
+#include <string_view>
+#include <type_traits>
 
 namespace clearjoint::bench {
 namespace {
@@ -28,12 +30,23 @@ void append_tagged(std::string& line, const char* tag, int value) {
   line += std::to_string(value);
 }
 
+// The reason's text. Certificates held it as a C string before the reason became an enum
+// (CertificateReason); both print the same text, so revisions from either side compare.
+template <class CertificateType>
+std::string_view reason_text(const CertificateType& certificate) {
+  if constexpr (std::is_convertible_v<decltype(certificate.reason), const char*>) {
+    return certificate.reason != nullptr ? std::string_view(certificate.reason) : std::string_view("(null)");
+  } else {
+    return to_string(certificate.reason);
+  }
+}
+
 void append_certificate(std::string& line, const geo::Certificate& certificate) {
   append_tagged(line, "c", static_cast<int>(certificate.level));
   line += " \"";
   // The reason is printed as text: two builds whose reasons are equal strings at different
   // addresses print the same line.
-  line += certificate.reason != nullptr ? certificate.reason : "(null)";
+  line += reason_text(certificate);
   line += '"';
 }
 
@@ -53,6 +66,18 @@ void append_arc(std::string& line, const geo::RimArc& arc) {
   append_tagged(line, "f", arc.full ? 1 : 0);
 }
 
+// " e <p_WCj_error> <p_WCi_error> <depth_error>", for revisions whose Contact has the bounds;
+// nothing for the revisions before them, which then still build and print the other fields.
+template <class ContactType>
+void append_contact_errors(std::string& line, const ContactType& contact) {
+  if constexpr (requires { contact.depth_error; }) {
+    line += " e";
+    append_number(line, contact.p_WCj_error);
+    append_number(line, contact.p_WCi_error);
+    append_number(line, contact.depth_error);
+  }
+}
+
 void append_contact(std::string& line, const geo::Contact& contact) {
   line += " |";
   append_tagged(line, "t", static_cast<int>(contact.type));
@@ -61,6 +86,7 @@ void append_contact(std::string& line, const geo::Contact& contact) {
   append_vector(line, contact.p_WCi);
   append_vector(line, contact.normal_W);
   append_number(line, contact.depth);
+  append_contact_errors(line, contact);
   append_tagged(line, "nc", contact.crossing_count);
   for (int k = 0; k < contact.crossing_count; ++k) append_crossing(line, contact.crossings[k]);
   append_certificate(line, contact.certificate);
@@ -87,7 +113,7 @@ void append_answer(std::string& line, const geo::CircleCylinderIntersection& ans
 
 void append_answer(std::string& line, const geo::CirclePlaneIntersection& answer) {
   append_tagged(line, "t", static_cast<int>(answer.topology));
-  append_tagged(line, "s", answer.side);
+  append_tagged(line, "s", static_cast<int>(answer.side));  // PlaneSide: -1, 0, +1
   append_tagged(line, "n", answer.crossing_count);
   append_certificate(line, answer.certificate);
   // The arc is printed whatever has_penetration says: a build that leaves another arc there when

@@ -19,7 +19,9 @@
 ///   JointContacts               s<scenario> al<aligned> n<contact_count> <certificate>
 ///                               and per contact:
 ///                               | t<type> b<base> <p_WCj x y z> <p_WCi x y z> <normal_W x y z>
-///                                 <depth> nc<crossing_count> <crossing>... <certificate>
+///                                 <depth> e <p_WCj_error> <p_WCi_error> <depth_error>
+///                                 nc<crossing_count> <crossing>... <certificate>
+///                               (the `e` group only from the revision that added the bounds)
 ///   CircleCylinderIntersection  t<topology> n<crossing_count> a<arc_count> <certificate>
 ///                               <crossing>... <arc>...
 ///   CirclePlaneIntersection     t<topology> s<side> n<crossing_count> <certificate>

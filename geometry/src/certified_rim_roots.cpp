@@ -280,7 +280,7 @@ constexpr double kLargestPeakShift = 1.0;
   if ((value + Bounded(0.0, tangent_rise)).sign() >= 0) return false;
   result.proved = true;
   result.count = 0;
-  result.sign_without_roots = -1;
+  result.side_without_roots = RimSideWithoutRoots::inside;
   return true;
 }
 
@@ -327,7 +327,7 @@ bool first_harmonic_proof(const RimDistancePolynomial& g, RimRoots& result) {
   if (sign_at_zero == sign_at_pi) {
     result.proved = true;
     result.count = 0;
-    result.sign_without_roots = sign_at_zero;
+    result.side_without_roots = side_of_sign(sign_at_zero);
     return true;
   }
   if (sign_at_zero < 0) return false;  // impossible with A > 0; keep the proof honest
@@ -352,7 +352,7 @@ void collect_distinct(const RootEnclosure* found, int count, int seen_sign, RimR
     }
     if (!duplicate && result.count < 4) result.roots[result.count++] = found[i];
   }
-  result.sign_without_roots = result.count == 0 ? seen_sign : 0;
+  result.side_without_roots = side_of_sign(result.count == 0 ? seen_sign : 0);
   sort_and_wrap(result);
 }
 
@@ -374,7 +374,7 @@ bool subdivision_proof(const RimDistancePolynomial& g, RimRoots& result) {
   while (top > 0) {
     const Arc arc = stack[--top];
     if (++arcs_done > kMaxArcs) {
-      result.failure = "subdivision budget exhausted (roots too close: near tangency)";
+      result.failure = CertificateReason::subdivision_budget_exhausted;
       collect_distinct(roots, found, seen_sign, result);
       return false;
     }
@@ -399,7 +399,7 @@ bool subdivision_proof(const RimDistancePolynomial& g, RimRoots& result) {
       }
       if (sign_low == -direction && sign_high == direction) {
         if (found == 4) {
-          result.failure = "more than four roots found (cannot happen for a proper rim)";
+          result.failure = CertificateReason::more_than_four_roots;
           collect_distinct(roots, found, seen_sign, result);
           return false;
         }
@@ -418,7 +418,7 @@ bool subdivision_proof(const RimDistancePolynomial& g, RimRoots& result) {
       }
     }
     if (arc.depth >= kMaxDepth) {
-      result.failure = "interval proof failed near a multiple root (tangency)";
+      result.failure = CertificateReason::interval_proof_failed_near_multiple_root;
       // Best guess for the uncertain path: g vanishes to double precision here.
       seen_sign = at.value > 0 ? 1 : -1;
       collect_distinct(roots, found, seen_sign, result);
@@ -436,7 +436,7 @@ bool subdivision_proof(const RimDistancePolynomial& g, RimRoots& result) {
 
 RimRoots certified_rim_roots(const RimDistancePolynomial& g) {
   RimRoots result;
-  result.sign_without_roots = g.k[0].value > 0 ? 1 : -1;  // only a guess until proved
+  result.side_without_roots = g.k[0].value > 0 ? RimSideWithoutRoots::beyond : RimSideWithoutRoots::inside;  // only a guess until proved
   // Bounded::finite() of every coefficient, each value and error in the two lanes: x - x is +0
   // for a finite x and NaN otherwise, and the sum of those is +0 exactly when every term is.
   Pair differences = {0.0, 0.0};
@@ -445,7 +445,7 @@ RimRoots certified_rim_roots(const RimDistancePolynomial& g) {
     differences += x - x;
   }
   if (!all_lanes(differences == 0.0)) {
-    result.failure = "coefficient overflow in double precision";
+    result.failure = CertificateReason::coefficient_overflow;
     return result;
   }
   if (first_harmonic_proof(g, result)) return result;
@@ -461,7 +461,7 @@ RimRoots approximate_rim_roots(const RimDistancePolynomial& g) {
   for (Bounded& coefficient : plain.k) coefficient.error = 0.0;
   RimRoots result = certified_rim_roots(plain);
   result.proved = false;
-  if (*result.failure == '\0') result.failure = "certificate switched off";
+  if (result.failure == CertificateReason::none) result.failure = CertificateReason::certificate_switched_off;
   return result;
 }
 

@@ -12,6 +12,7 @@
 #include <limits>
 #include <utility>
 
+#include "clearjoint/geometry/certificate.hpp"
 #include "rim_distance_polynomial.hpp"
 
 namespace clearjoint::geometry::detail {
@@ -31,14 +32,23 @@ struct RootEnclosure {
   bool has_trig() const { return cos == cos; }
 };
 
+/// Where a rim without crossings lies: the sign of g on the whole rim.
+enum class RimSideWithoutRoots : signed char {
+  inside = -1,     ///< every rim point strictly inside the wall (g < 0)
+  on_surface = 0,  ///< g vanishes identically (only the exact tier reports this)
+  beyond = 1,      ///< every rim point strictly beyond the wall (g > 0)
+};
+/// The side whose sign is `sign` (-1, 0 or +1).
+constexpr RimSideWithoutRoots side_of_sign(int sign) { return static_cast<RimSideWithoutRoots>(sign); }
+
 struct RimRoots {
-  bool proved = false;            ///< false: the tier could not decide; `failure` says why
-  const char* failure = "";
+  bool proved = false;  ///< false: the tier could not decide; `failure` says why
+  /// Why the tier could not decide (when !proved); `none` otherwise.
+  CertificateReason failure = CertificateReason::none;
   int count = 0;                  ///< distinct roots
   std::array<RootEnclosure, 4> roots{};  ///< sorted by angle
-  /// When count == 0: +1 every rim point is beyond the wall, -1 every point inside,
-  /// 0 g vanishes identically (rim on the surface; only the exact tier reports this).
-  int sign_without_roots = 0;
+  /// When count == 0: where the rim lies.
+  RimSideWithoutRoots side_without_roots = RimSideWithoutRoots::on_surface;
 };
 
 /// Tier 1's Halley runs stop after a step this small (relative to 1 + |angle|): convergence is

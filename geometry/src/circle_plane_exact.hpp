@@ -9,7 +9,7 @@ namespace clearjoint::geometry::detail {
 
 struct CirclePlaneTopologyAndSide {
   CirclePlaneTopology topology;
-  int side;
+  int side;  ///< PlaneSide as -1, 0, +1 (the sign the filters and CGAL compute)
 };
 
 /// Decides, exactly on the stored doubles: parallel normals (n_p x n_c = 0), the sign of

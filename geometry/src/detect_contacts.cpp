@@ -13,6 +13,7 @@
 #include "a_priori_bounds.hpp"
 #include "candidate_prefilter.hpp"
 #include "candidate_prefilter_lanes.hpp"
+#include "contact_error_bounds.hpp"
 #include "error_bounded.hpp"
 #include "primitives_detail.hpp"
 #include "rim_distance_polynomial.hpp"
@@ -24,13 +25,8 @@
 namespace clearjoint::geometry {
 namespace {
 
-constexpr const char* kNotRepresentableInWorld =
-    "crossing point or its error bound not representable in double after the translation to the "
-    "world frame (coordinates too large); the contact's existence is still decided";
-
-constexpr const char* kToleranceReason =
-    "axes treated as parallel within DetectionOptions::parallel_angle_tolerance (eq. 5 relaxed; "
-    "decided in double precision)";
+constexpr CertificateReason kNotRepresentableInWorld = CertificateReason::contact_not_representable_in_world;
+constexpr CertificateReason kToleranceReason = CertificateReason::axes_parallel_within_tolerance;
 
 /// a*b == c*d in real arithmetic: Dekker's two-product in range, CGAL rationals otherwise.
 bool products_equal(double a, double b, double c, double d) {
@@ -268,26 +264,60 @@ void contact_header(ContactType type, ContactBase base, const Certificate& certi
 /// rim plane, (end - begin) x n_hat, for every sweep: with begin angle a and sweep s in the rim
 /// frame (whose normal is n_hat), end - begin = 2 r sin(s/2) (-sin m, cos m), m = a + s/2 the
 /// middle angle, and sin(s/2) > 0. The middle angle is evaluated only where neither applies.
-Vector3 journal_contact_point(const Circle3& rim, const RimArc& arc, const Contact& contact,
-                              const Vector3& deepest_direction, const Vector3& rim_normal_hat) {
+/// `error`: a bound on the distance to the exact rim's exact arc middle (contact_error_bounds.hpp;
+/// the rim centre within `centre_error` of rim.center). The two chord constructions propagate the
+/// crossings' bounds; the full arc (beyond the model: a convention, not an arc middle) and the
+/// angle evaluation get the trivial bound of any exact rim point.
+struct JournalPoint {
+  Vector3 point;
+  double error;
+};
+JournalPoint journal_contact_point(const Circle3& rim, double centre_error, const RimArc& arc, const Contact& contact,
+                                   const Vector3& deepest_direction, const Vector3& rim_normal_hat) {
+  using detail::kEvaluationRounding;
   if (arc.full) {
     const Vector3 in_plane = off_axis(deepest_direction, rim_normal_hat);
     const double length = in_plane.norm();
-    if (length > 0.0) return rim.center + (rim.radius / length) * in_plane;
+    if (length > 0.0) {
+      const Vector3 point = rim.center + (rim.radius / length) * in_plane;
+      return {point, detail::any_rim_point_error(point, rim.center, centre_error, rim.radius)};
+    }
   } else if (contact.crossing_count == 2) {
-    const Vector3 &p0 = contact.crossings[0].point, &p1 = contact.crossings[1].point;
+    const RimCrossing &c0 = contact.crossings[0], &c1 = contact.crossings[1];
+    const Vector3 &p0 = c0.point, &p1 = c1.point;
     const Vector3 towards_middle = 0.5 * (p0 + p1) - rim.center;
     const double length = towards_middle.norm();
+    const double magnitudes = p0.cwiseAbs().sum() + p1.cwiseAbs().sum() + rim.center.cwiseAbs().sum();
     if (length > 0.25 * rim.radius) {
       const double side = arc.sweep() < std::numbers::pi ? 1.0 : -1.0;
-      return rim.center + (side * rim.radius / length) * towards_middle;
+      const Vector3 point = rim.center + (side * rim.radius / length) * towards_middle;
+      // The crossings' errors move the chord's ends: x = (p0 + p1)/2 - c by half their sum, plus
+      // the centre's error and the rounding of x. The side (towards or away from the middle) is
+      // the exact arc's when the angle errors cannot carry the sweep across pi: |x| > r/4 keeps
+      // the sweep more than 0.5 rad from pi.
+      const double perturbation =
+          0.5 * (c0.point_error + c1.point_error) + centre_error + kEvaluationRounding * magnitudes;
+      const double error =
+          c0.angle_error + c1.angle_error < 0.25
+              ? detail::rim_point_along_error(point, rim.center, centre_error, rim.radius, perturbation, length)
+              : detail::any_rim_point_error(point, rim.center, centre_error, rim.radius);
+      return {point, error};
     }
     const Vector3 begin_to_end = contact.crossings[0].angle == arc.begin ? Vector3(p1 - p0) : Vector3(p0 - p1);
     const Vector3 across = begin_to_end.cross(rim_normal_hat);
     const double across_length = across.norm();
-    if (across_length > 0.0) return rim.center + (rim.radius / across_length) * across;  // NaN fails
+    if (across_length > 0.0) {  // NaN fails
+      const Vector3 point = rim.center + (rim.radius / across_length) * across;
+      // (P1 - P0) x n* for the exact ends and unit normal: the ends' errors, the normal's
+      // direction error times |P1 - P0| <= 2 r, and the rounding of the difference and product.
+      const double perturbation = c0.point_error + c1.point_error + 2 * rim.radius * detail::kUnitAxisError +
+                                  kEvaluationRounding * (magnitudes + 2 * rim.radius);
+      return {point, detail::rim_point_along_error(point, rim.center, centre_error, rim.radius, perturbation,
+                                                   across_length)};
+    }
   }
-  return point_at(rim, frame_of(rim), arc.middle());
+  const Vector3 point = point_at(rim, frame_of(rim), arc.middle());
+  return {point, detail::any_rim_point_error(point, rim.center, centre_error, rim.radius)};
 }
 
 /// Radial point contact from one penetration arc of rim `base` against the wall, eqs. (18)-(23),
@@ -295,6 +325,7 @@ Vector3 journal_contact_point(const Circle3& rim, const RimArc& arc, const Conta
 /// result cost ~30 instructions per contact).
 void radial_contact(const JointSetup& s, ContactBase base, const Circle3& rim, const CircleCylinderIntersection& hit,
                     const RimArc& arc, Contact& contact) {
+  using detail::kEvaluationRounding;
   contact_header(ContactType::radial, base, hit.certificate, contact);
   // journal_contact_point reads the direction of the deepest point only for a full arc.
   const Vector3 radial_offset_of_center =
@@ -302,7 +333,9 @@ void radial_contact(const JointSetup& s, ContactBase base, const Circle3& rim, c
   copy_arc_crossings(hit.crossings.data(), hit.crossing_count, arc, contact);
   // The point's later uses read the local value: reading contact.p_WCj back made GCC load 16
   // bytes of what it had just stored as doubles, a store-forwarding stall per contact.
-  const Vector3 p_WCj = journal_contact_point(rim, arc, contact, radial_offset_of_center, s.journal_axis_hat_W);
+  const JournalPoint journal_point = journal_contact_point(rim, s.journal_rim_errors[base == ContactBase::a ? 0 : 1],
+                                                          arc, contact, radial_offset_of_center, s.journal_axis_hat_W);
+  const Vector3 p_WCj = journal_point.point;
   contact.p_WCj = p_WCj;
   const Vector3 offset = p_WCj - s.p_WPi;
   const Vector3 radial = off_axis(offset, s.bearing_axis_hat_W);
@@ -314,6 +347,42 @@ void radial_contact(const JointSetup& s, ContactBase base, const Circle3& rim, c
   // close to Ri, so the difference is exact (Sterbenz); rounding of C_j may leave it a few
   // ulps below 0 for an arc of vanishing length, hence the clamp.
   contact.depth = std::max(0.0, distance_to_axis - s.bearing_radius);
+  // Bounds: the exact point's distance to the exact axis (through P_i, the frame's exact origin,
+  // direction a_i/|a_i|) differs from distance_to_axis by the point's error, the axis direction's
+  // error times 2 |offset|, and the rounding; its direction from the axis by direction_error.
+  const double magnitude = offset.cwiseAbs().sum();
+  const double off_axis_error =
+      journal_point.error + 2 * magnitude * detail::kUnitAxisError + kEvaluationRounding * magnitude;
+  contact.p_WCj_error = journal_point.error;
+  contact.depth_error = off_axis_error + kEvaluationRounding * (distance_to_axis + s.bearing_radius);
+  contact.p_WCi_error =
+      off_axis_error < 0.5 * distance_to_axis
+          ? off_axis_error + s.bearing_radius * detail::direction_error(off_axis_error, distance_to_axis) +
+                kEvaluationRounding * (magnitude + s.bearing_radius)
+          : kNoErrorBound;
+  if (hit.certificate.level == Certainty::uncertain) {
+    contact.p_WCj_error = contact.p_WCi_error = contact.depth_error = kNoErrorBound;
+  }
+}
+
+/// The error bounds of a contact against a base plane (axial, eqs. 13-15; face, eqs. 9-10): the
+/// journal point p within `point_error` of the exact one, the base centre within `base_error`,
+/// the normal a unit axis within kUnitAxisError of the exact direction. beyond = (p - B) . n
+/// moves by both errors plus |p - B| times the direction's; the bearing point p - beyond n by the
+/// point's error, beyond's, and |beyond| times the direction's.
+void set_plane_contact_errors(const Vector3& p, double point_error, const Vector3& base_centre, double base_error,
+                              double beyond, const Certificate& certificate, Contact& contact) {
+  using detail::kEvaluationRounding;
+  if (certificate.level == Certainty::uncertain) {
+    contact.p_WCj_error = contact.p_WCi_error = contact.depth_error = kNoErrorBound;
+    return;
+  }
+  const double magnitudes = p.cwiseAbs().sum() + base_centre.cwiseAbs().sum();
+  const double depth_error = point_error + base_error + magnitudes * detail::kUnitAxisError + kEvaluationRounding * magnitudes;
+  contact.p_WCj_error = point_error;
+  contact.depth_error = depth_error;
+  contact.p_WCi_error = point_error + depth_error + std::fabs(beyond) * detail::kUnitAxisError +
+                        kEvaluationRounding * (magnitudes + std::fabs(beyond));
 }
 
 /// Axial point contact of rim `base` against base plane `base`, eqs. (13)-(15), (22)-(23), written
@@ -324,11 +393,16 @@ void axial_contact(const JointSetup& s, ContactBase base, const Circle3& rim, co
   contact.normal_W = outward_sign(base) * s.bearing_axis_hat_W;
   copy_arc_crossings(hit.crossings.data(), hit.crossing_count, hit.penetration, contact);
   // From the local value, as in radial_contact.
-  const Vector3 p_WCj = journal_contact_point(rim, hit.penetration, contact, contact.normal_W, s.journal_axis_hat_W);
+  const int k = base == ContactBase::a ? 0 : 1;
+  const JournalPoint journal_point =
+      journal_contact_point(rim, s.journal_rim_errors[k], hit.penetration, contact, contact.normal_W, s.journal_axis_hat_W);
+  const Vector3 p_WCj = journal_point.point;
   contact.p_WCj = p_WCj;
   const double beyond_base = (p_WCj - bearing_base(s, base)).dot(contact.normal_W);
   contact.p_WCi = p_WCj - beyond_base * contact.normal_W;  // eq. (15)
   contact.depth = std::max(0.0, beyond_base);                      // eq. (23)
+  set_plane_contact_errors(p_WCj, journal_point.error, bearing_base(s, base), s.bearing_base_errors[k], beyond_base,
+                           hit.certificate, contact);
 }
 
 /// The kernel query of journal rim `base` against bearing base plane `base` (outward normal),
@@ -353,8 +427,8 @@ CirclePlaneIntersection rim_against_base(const JointSetup& s, ContactBase base, 
 /// The certificate of a "no contact" proved by a reach prefilter: as the kernel gives for the
 /// same decision (its own first test), so that switching the certificate off reads the same.
 Certificate clear_certificate(const DetectionOptions& options) {
-  return options.intersection.certify ? Certificate{Certainty::certified, ""}
-                                      : Certificate{Certainty::uncertain, "certificate switched off"};
+  return options.intersection.certify ? Certificate{Certainty::certified, CertificateReason::none}
+                                      : Certificate{Certainty::uncertain, CertificateReason::certificate_switched_off};
 }
 
 /// The misaligned case: four candidate point contacts. `prefiltered`: the prefilters' answer when
@@ -408,6 +482,30 @@ void detect_misaligned(const JointSetup& s, const DetectionOptions& options,
   }
 }
 
+/// The error bounds of the aligned line contact, eqs. (6)-(8): the journal centre within its
+/// rounding bound of P_j - P_i, the bearing axis a unit axis within kUnitAxisError of the exact
+/// direction. The eccentricity moves by the centre's error plus 2 |offset| times the direction's;
+/// the normal by direction_error of that; the depth e - cr also by cr's rounding.
+void set_line_contact_errors(const JointSetup& s, const Vector3& offset, double eccentricity, Contact& contact) {
+  using detail::kEvaluationRounding;
+  if (contact.certificate.level == Certainty::uncertain) {
+    contact.p_WCj_error = contact.p_WCi_error = contact.depth_error = kNoErrorBound;
+    return;
+  }
+  const double magnitude = offset.cwiseAbs().sum();
+  const double radial_error =
+      s.journal_centre_error + 2 * magnitude * detail::kUnitAxisError + kEvaluationRounding * magnitude;
+  contact.depth_error = radial_error + kEvaluationRounding * (eccentricity + s.bearing_radius);
+  if (!(radial_error < 0.5 * eccentricity)) {
+    contact.p_WCj_error = contact.p_WCi_error = kNoErrorBound;
+    return;
+  }
+  const double normal_error = detail::direction_error(radial_error, eccentricity);
+  contact.p_WCj_error =
+      s.journal_centre_error + s.journal_radius * normal_error + kEvaluationRounding * (magnitude + s.journal_radius);
+  contact.p_WCi_error = radial_error + s.bearing_radius * normal_error + kEvaluationRounding * (magnitude + s.bearing_radius);
+}
+
 /// The aligned case, eqs. (6)-(10). `exactly_parallel`: eq. (5) holds exactly, and the
 /// existence of each contact is decided by the certified kernel; otherwise (angle tolerance)
 /// in double precision, and the contacts are uncertain. `prefiltered`: as for detect_misaligned,
@@ -459,6 +557,7 @@ void detect_aligned(const JointSetup& s, const DetectionOptions& options, bool e
                     s.bearing_radius * contact.normal_W;                       // eq. (7)
     contact.p_WCj = s.p_WPj + s.journal_radius * contact.normal_W;            // eq. (8)
     contact.depth = std::max(0.0, eccentricity - s.radial_clearance);        // eq. (23)
+    set_line_contact_errors(s, offset, eccentricity, contact);
     if (contact.depth > s.radial_clearance) presence.beyond_model = true;
     out.contacts[out.contact_count++] = contact;
   }
@@ -475,7 +574,7 @@ void detect_aligned(const JointSetup& s, const DetectionOptions& options, bool e
         face_certificate = proved_clear;
       } else {
         const CirclePlaneIntersection hit = rim_against_base(s, base, options);
-        face = hit.topology == CirclePlaneTopology::disjoint && hit.side > 0;
+        face = hit.topology == CirclePlaneTopology::disjoint && hit.side == PlaneSide::positive;
         face_certificate = hit.certificate;
       }
     } else {
@@ -492,6 +591,9 @@ void detect_aligned(const JointSetup& s, const DetectionOptions& options, bool e
     contact.p_WCj = p_WBj;                               // eq. (10)
     contact.p_WCi = p_WBj - beyond_base * normal_W;      // eq. (9)
     contact.depth = std::max(0.0, beyond_base);          // eq. (23)
+    const int k = base == ContactBase::a ? 0 : 1;
+    set_plane_contact_errors(p_WBj, s.journal_rim_errors[k], bearing_base(s, base), s.bearing_base_errors[k],
+                             beyond_base, face_certificate, contact);
     if (contact.depth > s.axial_clearance) presence.beyond_model = true;
     out.contacts[out.contact_count++] = contact;
   }
@@ -508,6 +610,8 @@ void translate_to_world(const Vector3& p_WPi, JointContacts& out) {
     Contact& contact = out.contacts[i];
     contact.p_WCj += p_WPi;
     contact.p_WCi += p_WPi;
+    contact.p_WCj_error += kTranslationRounding * contact.p_WCj.cwiseAbs().sum();
+    contact.p_WCi_error += kTranslationRounding * contact.p_WCi.cwiseAbs().sum();
     for (int k = 0; k < contact.crossing_count; ++k) {
       RimCrossing& crossing = contact.crossings[k];
       crossing.point += p_WPi;
@@ -515,6 +619,7 @@ void translate_to_world(const Vector3& p_WPi, JointContacts& out) {
       if (contact.certificate.level != Certainty::uncertain &&
           !(crossing.point.allFinite() && std::isfinite(crossing.point_error))) {
         contact.certificate = {Certainty::uncertain, kNotRepresentableInWorld};
+        contact.p_WCj_error = contact.p_WCi_error = contact.depth_error = kNoErrorBound;
         out.certificate = {Certainty::uncertain, kNotRepresentableInWorld};
       }
     }

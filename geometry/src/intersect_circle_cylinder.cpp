@@ -28,13 +28,14 @@ constexpr double kPointRoundingUlps = 32 * detail::kUnitRoundoff;
 constexpr double kPointFromRootTrigUlps = 64 * detail::kUnitRoundoff;
 static_assert(2 * detail::kAngleAdditionTrigError < 64 * detail::kUnitRoundoff);
 
-/// The answer without crossings: `sign` as RimRoots::sign_without_roots. Its own function so
-/// that the reach test's answers need no RimRoots (four default-constructed enclosures, ~30
-/// instructions, on the path most free-flight rims take).
-void fill_without_roots(int sign, CircleCylinderIntersection& out) {
-  out.topology = sign > 0   ? CircleCylinderTopology::outside
-                 : sign < 0 ? CircleCylinderTopology::inside
-                            : CircleCylinderTopology::on_surface;
+/// The answer without crossings. Its own function so that the reach test's answers need no
+/// RimRoots (four default-constructed enclosures, ~30 instructions, on the path most free-flight
+/// rims take).
+void fill_without_roots(detail::RimSideWithoutRoots side, CircleCylinderIntersection& out) {
+  using detail::RimSideWithoutRoots;
+  out.topology = side == RimSideWithoutRoots::beyond   ? CircleCylinderTopology::outside
+                 : side == RimSideWithoutRoots::inside ? CircleCylinderTopology::inside
+                                                       : CircleCylinderTopology::on_surface;
   if (out.topology == CircleCylinderTopology::outside) {
     out.penetration_arcs[0] = {0.0, detail::kTwoPi, true};
     out.arc_count = 1;
@@ -47,7 +48,7 @@ void fill_without_roots(int sign, CircleCylinderIntersection& out) {
 void fill(const Circle3& circle, const RimRoots& roots, bool bounded, double centre_error,
           CircleCylinderIntersection& out, const std::optional<CircleFrame>& frame = std::nullopt) {
   if (roots.count == 0) {
-    fill_without_roots(roots.sign_without_roots, out);
+    fill_without_roots(roots.side_without_roots, out);
     return;
   }
   out.topology = CircleCylinderTopology::crossing;
@@ -157,9 +158,7 @@ CircleCylinderIntersection detail::intersect_valid_circle_cylinder(const Circle3
     if (!(bounded ? detail::every_value_finite(crossing.angle, point.x(), point.y(), point.z(), crossing.angle_error,
                                crossing.point_error)
                   : detail::every_value_finite(crossing.angle, point.x(), point.y(), point.z()))) {
-      out.certificate = {Certainty::uncertain,
-                         "crossing points or their error bounds not representable in double (intermediate under- or "
-                         "overflow: input magnitudes too far apart); the root count is still decided"};
+      out.certificate = {Certainty::uncertain, CertificateReason::cylinder_points_not_representable};
       for (int k = 0; k < out.crossing_count; ++k) {
         out.crossings[k].angle_error = out.crossings[k].point_error = kNoErrorBound;
       }
@@ -184,9 +183,11 @@ CircleCylinderIntersection intersect_scaled(const Circle3& circle, const Cylinde
   const bool reach_a_priori = detail::reach_a_priori_bounds_apply(offset, circle, cylinder);
   const detail::RimReach reach = detail::rim_reach(circle, cylinder, offset, reach_a_priori, centre_error);
   if (reach != detail::RimReach::undecided) {
-    fill_without_roots(reach == detail::RimReach::strictly_outside ? 1 : -1, out);
-    out.certificate = options.certify ? Certificate{Certainty::certified, ""}
-                                      : Certificate{Certainty::uncertain, "certificate switched off"};
+    fill_without_roots(reach == detail::RimReach::strictly_outside ? detail::RimSideWithoutRoots::beyond
+                                                                     : detail::RimSideWithoutRoots::inside,
+                       out);
+    out.certificate = options.certify ? Certificate{Certainty::certified, CertificateReason::none}
+                                      : Certificate{Certainty::uncertain, CertificateReason::certificate_switched_off};
     return out;
   }
 
@@ -195,14 +196,14 @@ CircleCylinderIntersection intersect_scaled(const Circle3& circle, const Cylinde
   detail::RimDistancePolynomial g = detail::rim_distance_polynomial(circle, cylinder, offset, a_priori, frame);
   if (!options.certify) {
     fill(circle, detail::approximate_rim_roots(g), false, centre_error, out, frame);
-    out.certificate = {Certainty::uncertain, "certificate switched off"};
+    out.certificate = {Certainty::uncertain, CertificateReason::certificate_switched_off};
     return out;
   }
   detail::widen_for_centre_error(g, circle, offset, centre_error);
   const RimRoots roots = detail::certified_rim_roots(g);
   if (roots.proved) {
     fill(circle, roots, true, centre_error, out, frame);
-    out.certificate = {Certainty::certified, ""};
+    out.certificate = {Certainty::certified, CertificateReason::none};
   } else if (options.exact_fallback) {
     const RimRoots exact = detail::exact_rim_roots(circle, cylinder, centre, scale_exponent);
     if (exact.proved) {

@@ -30,10 +30,7 @@ using detail::Bounded;
 using detail::BoundedVector3;
 
 /// Reason given when the topology is decided but a crossing or the depth is not finite.
-constexpr const char* kNotRepresentable =
-    "crossing points, depth or their error bounds not representable in double (intermediate "
-    "under- or overflow: "
-    "input magnitudes too far apart); the topology is still decided";
+constexpr CertificateReason kNotRepresentable = CertificateReason::plane_results_not_representable;
 
 /// See intersect_circle_cylinder.cpp: rounding of point_at.
 constexpr double kPointRoundingUlps = 32 * detail::kUnitRoundoff;
@@ -291,7 +288,7 @@ bool answer(const Circle3& circle_in, const Plane3& plane_in, const Intersection
     if (scope == Scope::detection) return false;
     decision = Decision{detail::exact_circle_plane_topology(*circle, *plane, errors.centre_recipe,
                                                             errors.point_recipe, e),
-                        {Certainty::exact, "floating-point filter could not decide (tangent or parallel)"}};
+                        {Certainty::exact, CertificateReason::plane_filter_undecided}};
   }
   const bool with_depth = scope == Scope::whole_query;
   describe(*circle, options, scaled_centre_error, q, *decision, with_depth, out);
@@ -338,7 +335,7 @@ std::optional<Decision> decide_without_exact_tier(const Circle3& circle, const P
     decided = {CirclePlaneTopology::two_crossings, 0};
     filtered = true;
   }
-  if (filtered && options.certify) return Decision{decided, {Certainty::certified, ""}};
+  if (filtered && options.certify) return Decision{decided, {Certainty::certified, CertificateReason::none}};
   if (!options.certify) {
     // Plain double pipeline: read the signs off the computed values.
     const bool parallel = w2.value == 0.0;
@@ -347,14 +344,14 @@ std::optional<Decision> decide_without_exact_tier(const Circle3& circle, const P
     else if (discriminant.value > 0) decided = {CirclePlaneTopology::disjoint, side};
     else if (discriminant.value == 0) decided = {CirclePlaneTopology::tangent, side};
     else decided = {CirclePlaneTopology::two_crossings, 0};
-    return Decision{decided, {Certainty::uncertain, "certificate switched off"}};
+    return Decision{decided, {Certainty::uncertain, CertificateReason::certificate_switched_off}};
   }
   if (options.exact_fallback) return std::nullopt;
   const int side = s.value > 0 ? 1 : (s.value < 0 ? -1 : 0);
   decided = {discriminant.value > 0 ? CirclePlaneTopology::disjoint : CirclePlaneTopology::two_crossings,
              discriminant.value > 0 ? side : 0};
   return Decision{decided,
-                  {Certainty::uncertain, "floating-point filter could not decide and the exact fallback is off"}};
+                  {Certainty::uncertain, CertificateReason::plane_filter_undecided_exact_fallback_off}};
 }
 
 void describe(const Circle3& circle, const IntersectionOptions& options, double centre_error,
@@ -369,7 +366,7 @@ void describe(const Circle3& circle, const IntersectionOptions& options, double 
   out.certificate.level = decision.certificate.level;
   out.certificate.reason = decision.certificate.reason;
   out.topology = decided.topology;
-  out.side = decided.side;
+  out.side = static_cast<PlaneSide>(decided.side);
   const bool bounded = options.certify && out.certificate.level != Certainty::uncertain;
 
   // Deepest reach beyond the plane, in metres: (s + r |P n_p|) / |n_p|.
@@ -381,7 +378,7 @@ void describe(const Circle3& circle, const IntersectionOptions& options, double 
   }
 
   if (out.topology == CirclePlaneTopology::disjoint || out.topology == CirclePlaneTopology::circle_in_plane) {
-    if (out.topology == CirclePlaneTopology::disjoint && out.side > 0) {
+    if (out.topology == CirclePlaneTopology::disjoint && out.side == PlaneSide::positive) {
       out.penetration = {0.0, detail::kTwoPi, true};
       out.has_penetration = true;
     }
@@ -425,8 +422,8 @@ void describe(const Circle3& circle, const IntersectionOptions& options, double 
 
   if (out.topology == CirclePlaneTopology::tangent) {
     // The touching point is where f is smallest (side +1) or largest (side -1).
-    const double angle = out.side > 0 ? theta_m.value + std::numbers::pi : theta_m.value;
-    const double sign = out.side > 0 ? -1.0 : 1.0;
+    const double angle = out.side == PlaneSide::positive ? theta_m.value + std::numbers::pi : theta_m.value;
+    const double sign = out.side == PlaneSide::positive ? -1.0 : 1.0;
     set_bounds(theta_m.error, angle_error, point_error);
     out.crossings[0] = {detail::wrap_angle(angle), angle_error, point_with(sign * cos_m, sign * sin_m),
                         point_error, 2};

@@ -54,14 +54,11 @@ constexpr std::size_t kMaxCoefficientBits = 8192;
 
 /// Thrown inside this file only, caught by exact_rim_roots: the tier cannot finish.
 struct GiveUp {
-  const char* why;
+  CertificateReason why;
 };
-constexpr const char* kBudgetExhausted =
-    "exact tier gave up: root isolation exceeded its budget (input magnitudes too far apart)";
-constexpr const char* kCoefficientsTooLarge =
-    "exact tier gave up: polynomial coefficients too large (input magnitudes too far apart)";
-constexpr const char* kBeyondDoubleRange =
-    "exact tier gave up: an intermediate value left the double range (input magnitudes too far apart)";
+constexpr CertificateReason kBudgetExhausted = CertificateReason::exact_root_isolation_budget_exhausted;
+constexpr CertificateReason kCoefficientsTooLarge = CertificateReason::exact_coefficients_too_large;
+constexpr CertificateReason kBeyondDoubleRange = CertificateReason::exact_intermediate_beyond_double_range;
 
 /// A double computed from rationals, about to become a rational or an angle: a Gmpq made from
 /// an infinity or a NaN aborts the process (GMP raises SIGFPE), so refuse it first.
@@ -379,7 +376,7 @@ RimRoots exact_rim_roots_within_budget(const Circle3& circle, const Cylinder3& c
   RimRoots result;
   result.proved = true;
   if (conic.L.is_zero() && conic.M.is_zero()) {
-    result.sign_without_roots = 0;  // g vanishes on the whole rim
+    result.side_without_roots = RimSideWithoutRoots::on_surface;  // g vanishes on the whole rim
     return result;
   }
 
@@ -464,7 +461,7 @@ RimRoots exact_rim_roots_within_budget(const Circle3& circle, const Cylinder3& c
       Rational(finite_or_give_up(circle.radius * std::cos(sample) / u_norm * (1 - 0x1p-40)));
   int sign = exact_sign_at(conic, x_sample, std::sin(sample) >= 0 ? 1 : -1);
   if (result.count == 0) {
-    result.sign_without_roots = sign;
+    result.side_without_roots = side_of_sign(sign);
     return result;
   }
   for (int step = 0; step < result.count; ++step) {

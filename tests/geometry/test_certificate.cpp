@@ -4,6 +4,8 @@
 #include "clearjoint/geometry/certificate.hpp"
 
 #include <array>
+#include <set>
+#include <string_view>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -20,41 +22,53 @@ TEST(Certificate, NamesEachLevelAfterItsEnumerator) {
   EXPECT_EQ(to_string(Certainty::uncertain), "uncertain");
 }
 
-TEST(Certificate, DefaultsToCertifiedWithAnEmptyReason) {
+TEST(Certificate, DefaultsToUncertainBecauseNothingDecidedIt) {
   const Certificate c;
-  EXPECT_EQ(c.level, Certainty::certified);
-  ASSERT_NE(c.reason, nullptr);
-  EXPECT_EQ(std::string(c.reason), "");
+  EXPECT_EQ(c.level, Certainty::uncertain);
+  EXPECT_EQ(c.reason, CertificateReason::not_decided);
+  EXPECT_NE(c.reason_text(), "");
+}
+
+TEST(Certificate, GivesEveryReasonButNoneADistinctNonEmptyText) {
+  EXPECT_EQ(to_string(CertificateReason::none), "");
+  std::set<std::string_view> texts;
+  const int last = static_cast<int>(CertificateReason::axes_parallel_within_tolerance);
+  for (int i = 1; i <= last; ++i) {
+    const std::string_view text = to_string(static_cast<CertificateReason>(i));
+    EXPECT_NE(text, "") << i;
+    EXPECT_NE(text, "unknown") << i;
+    EXPECT_TRUE(texts.insert(text).second) << "repeated: " << text;
+  }
 }
 
 TEST(Certificate, WeakestOfExactAndCertifiedIsCertified) {
-  const Certificate exact{Certainty::exact, "rationals"};
-  const Certificate certified{Certainty::certified, ""};
+  const Certificate exact{Certainty::exact, CertificateReason::plane_filter_undecided};
+  const Certificate certified{Certainty::certified, CertificateReason::none};
   EXPECT_EQ(weakest(exact, certified).level, Certainty::certified);
   EXPECT_EQ(weakest(certified, exact).level, Certainty::certified);
 }
 
 TEST(Certificate, WeakestKeepsTheReasonOfTheUncertainPart) {
-  const Certificate exact{Certainty::exact, "rationals"};
-  const Certificate uncertain{Certainty::uncertain, "certificate switched off"};
-  for (const Certificate& other : {exact, Certificate{}}) {
+  const Certificate exact{Certainty::exact, CertificateReason::plane_filter_undecided};
+  const Certificate uncertain{Certainty::uncertain, CertificateReason::certificate_switched_off};
+  const Certificate certified{Certainty::certified, CertificateReason::none};
+  for (const Certificate& other : {exact, certified}) {
     const Certificate ab = weakest(other, uncertain);
     const Certificate ba = weakest(uncertain, other);
     EXPECT_EQ(ab.level, Certainty::uncertain);
     EXPECT_EQ(ba.level, Certainty::uncertain);
-    EXPECT_EQ(std::string(ab.reason), "certificate switched off");
-    EXPECT_EQ(std::string(ba.reason), "certificate switched off");
+    EXPECT_EQ(ab.reason, CertificateReason::certificate_switched_off);
+    EXPECT_EQ(ba.reason, CertificateReason::certificate_switched_off);
   }
 }
 
 TEST(Certificate, WeakestOfTwoEqualLevelsIsThatLevelWithOneOfTheirReasons) {
   for (Certainty level : kLevelsStrongestFirst) {
-    const Certificate a{level, "first reason"};
-    const Certificate b{level, "second reason"};
+    const Certificate a{level, CertificateReason::subdivision_budget_exhausted};
+    const Certificate b{level, CertificateReason::coefficient_overflow};
     const Certificate w = weakest(a, b);
     EXPECT_EQ(w.level, level);
-    const std::string reason = w.reason;
-    EXPECT_TRUE(reason == "first reason" || reason == "second reason") << reason;
+    EXPECT_TRUE(w.reason == a.reason || w.reason == b.reason) << w.reason_text();
   }
 }
 
@@ -62,8 +76,8 @@ TEST(Certificate, WeakestIsSymmetricInLevelForEveryPair) {
   // The level of weakest(a, b) is the later of the two in strongest-first order.
   for (std::size_t i = 0; i < kLevelsStrongestFirst.size(); ++i) {
     for (std::size_t j = 0; j < kLevelsStrongestFirst.size(); ++j) {
-      const Certificate a{kLevelsStrongestFirst[i], "a"};
-      const Certificate b{kLevelsStrongestFirst[j], "b"};
+      const Certificate a{kLevelsStrongestFirst[i], CertificateReason::none};
+      const Certificate b{kLevelsStrongestFirst[j], CertificateReason::certificate_switched_off};
       const Certainty expected = kLevelsStrongestFirst[std::max(i, j)];
       EXPECT_EQ(weakest(a, b).level, expected) << i << " " << j;
       EXPECT_EQ(weakest(b, a).level, expected) << i << " " << j;

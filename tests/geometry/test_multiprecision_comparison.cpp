@@ -539,9 +539,9 @@ void compare_plane(const Circle3& rim, const Plane3& plane, const IntersectionOp
     ++tally.wrong_topology;
     tally.fail(label + ": topology " + name_of(r.topology) + ", reference " + name_of(truth.topology));
   }
-  if (r.side != truth.side) {
+  if (static_cast<int>(r.side) != truth.side) {
     ++tally.wrong_side;
-    tally.fail(label + ": side " + std::to_string(r.side) + ", reference " + std::to_string(truth.side));
+    tally.fail(label + ": side " + std::to_string(static_cast<int>(r.side)) + ", reference " + std::to_string(truth.side));
   }
   if (r.crossing_count != static_cast<int>(truth.roots.size())) {
     ++tally.wrong_crossing_count;

@@ -79,7 +79,7 @@ TEST(AccuracyScoring, TheSameErrorInAnUncertainContactBreaksNoPromise) {
   JointContacts answer = certified_answer();
   geometry::RimCrossing& crossing = answer.contacts[0].crossings[0];
   crossing.point += Vector3(0.0, 0.0, 10.0 * crossing.point_error + 1e-12);
-  answer.contacts[0].certificate = {Certainty::uncertain, "test"};
+  answer.contacts[0].certificate = {Certainty::uncertain, geometry::CertificateReason::certificate_switched_off};
   const InputScore score = score_answer(answer, reference());
   EXPECT_EQ(score.enclosures_checked, 0);
   EXPECT_EQ(score.enclosures_missed, 0);

@@ -43,7 +43,7 @@ TEST(PlainCirclePlane, AgreesWithTheCertifiedQueryOnRandomRimsAwayFromTangency) 
     const PlainCirclePlane plain = plain_circle_plane(rim, base);
     ASSERT_EQ(plain.topology, certified.topology) << i;
     if (certified.topology == geo::CirclePlaneTopology::disjoint) {
-      EXPECT_EQ(plain.side, certified.side) << i;
+      EXPECT_EQ(plain.side, static_cast<int>(certified.side)) << i;
     }
     EXPECT_NEAR(plain.max_signed_distance, certified.max_signed_distance, kLengthAgreement) << i;
     ASSERT_EQ(plain.crossing_count, certified.crossing_count) << i;

@@ -374,7 +374,7 @@ void expect_identical(const JointContacts& a, const JointContacts& b) {
   ASSERT_EQ(a.contact_count, b.contact_count);
   EXPECT_EQ(a.aligned, b.aligned);
   EXPECT_EQ(a.certificate.level, b.certificate.level);
-  EXPECT_STREQ(a.certificate.reason, b.certificate.reason);
+  EXPECT_EQ(a.certificate.reason, b.certificate.reason);
   for (int k = 0; k < a.contact_count; ++k) {
     const Contact& x = a.contacts[k];
     const Contact& y = b.contacts[k];
@@ -384,8 +384,11 @@ void expect_identical(const JointContacts& a, const JointContacts& b) {
     EXPECT_EQ(x.p_WCi, y.p_WCi);
     EXPECT_EQ(x.normal_W, y.normal_W);
     EXPECT_EQ(x.depth, y.depth);
+    EXPECT_EQ(x.p_WCj_error, y.p_WCj_error);
+    EXPECT_EQ(x.p_WCi_error, y.p_WCi_error);
+    EXPECT_EQ(x.depth_error, y.depth_error);
     EXPECT_EQ(x.certificate.level, y.certificate.level);
-    EXPECT_STREQ(x.certificate.reason, y.certificate.reason);
+    EXPECT_EQ(x.certificate.reason, y.certificate.reason);
     ASSERT_EQ(x.crossing_count, y.crossing_count);
     for (int j = 0; j < x.crossing_count; ++j) {
       EXPECT_EQ(x.crossings[j].angle, y.crossings[j].angle);
@@ -468,7 +471,8 @@ TEST(DetectContacts, WritesIntoAResultFullOfStaleValuesWhatAFreshCallReturns) {
   stale.depth = nan;
   stale.crossings = {RimCrossing{nan, nan, Vector3::Constant(nan), nan, 7}, RimCrossing{nan, nan, Vector3::Constant(nan), nan, 7}};
   stale.crossing_count = 2;
-  stale.certificate = {Certainty::uncertain, "stale"};
+  stale.certificate = {Certainty::uncertain, CertificateReason::more_than_four_roots};
+  stale.p_WCj_error = stale.p_WCi_error = stale.depth_error = nan;
   // Besides the scenario cases: a slightly tilted journal whose rims lie wholly beyond the wall
   // (its centre Ri + Rj + 1 mm off the axis): full penetration arcs, point contacts without
   // crossings.

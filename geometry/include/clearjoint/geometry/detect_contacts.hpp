@@ -81,13 +81,21 @@ struct Contact {
   Vector3 p_WCi = Vector3::Zero();  ///< contact point on the bearing (eqs. 7, 9, 15, 21)
   Vector3 normal_W = Vector3::UnitZ();
   double depth = 0.0;               ///< metres (the unit of the input)
+  /// Error bounds in metres: the contact the joint as given defines (its exact centres and
+  /// crossings, the paper's formulas evaluated in real arithmetic at the exact arc middle) has
+  /// its journal point within p_WCj_error of p_WCj (Euclidean), its bearing point within
+  /// p_WCi_error of p_WCi and its depth within depth_error of depth. Certified enclosures when
+  /// `certificate` is exact or certified; kNoErrorBound when it is uncertain.
+  double p_WCj_error = kNoErrorBound;
+  double p_WCi_error = kNoErrorBound;
+  double depth_error = kNoErrorBound;
   /// Rim crossings bounding the penetration arc (point contacts; 0 for line and face contacts,
   /// 1 when the rim touches from outside everywhere but one point).
   std::array<RimCrossing, 2> crossings{};
   int crossing_count = 0;
   /// Trust in this contact's existence and crossings (the kernel query's, or the parallelism
   /// decision's). Points, normal and depth are double-precision evaluations of the paper's
-  /// formulas at the certified arc middle.
+  /// formulas at the certified arc middle, with the error bounds above.
   Certificate certificate{};
 };
 
@@ -117,9 +125,8 @@ JointContacts detect_contacts(const JointDimensions& dimensions, const PartPose&
 /// The same answer written into `out`, for loops that detect again and again (a simulation
 /// step): scenario, aligned, contact_count, certificate and contacts[0, contact_count) are set
 /// exactly as the call above returns them; contacts[contact_count, kMaxContacts) keep whatever
-/// they held. A fresh JointContacts is 1.4 KB of default values, and writing them was ~17 ns of
-/// a ~110 ns free-flight detection (measured, docs/benchmarks-kernel.md). On bad input it throws
-/// before touching `out`.
+/// they held: a fresh JointContacts is about 1.6 KB of default values, whose writing is a
+/// sizeable part of a free-flight detection. On bad input it throws before touching `out`.
 void detect_contacts(const JointDimensions& dimensions, const PartPose& bearing,
                      const PartPose& journal, JointContacts& out, const DetectionOptions& options = {});
 

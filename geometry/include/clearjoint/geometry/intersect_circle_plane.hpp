@@ -12,6 +12,13 @@
 
 namespace clearjoint::geometry {
 
+/// Which side of the plane the circle lies on (apart from a tangent point).
+enum class PlaneSide : signed char {
+  negative = -1,  ///< away from the side the plane normal points to
+  none = 0,       ///< on both sides (two_crossings) or in the plane (circle_in_plane)
+  positive = 1,   ///< on the side the plane normal points to (for a bearing base: outside)
+};
+
 enum class CirclePlaneTopology {
   disjoint,        ///< no common point; `side` says where the circle is
   tangent,         ///< one common point of multiplicity 2; the rest of the circle is on `side`
@@ -21,13 +28,13 @@ enum class CirclePlaneTopology {
 
 struct CirclePlaneIntersection {
   CirclePlaneTopology topology = CirclePlaneTopology::disjoint;
-  /// +1: the circle (apart from a tangent point) is on the side the plane normal points to,
-  /// -1: on the other side; 0 for two_crossings and circle_in_plane.
-  int side = 0;
+  /// Where the circle lies (disjoint, tangent); PlaneSide::none for two_crossings and
+  /// circle_in_plane.
+  PlaneSide side = PlaneSide::none;
   std::array<RimCrossing, 2> crossings{};
   int crossing_count = 0;
   /// The rim points strictly on the positive side (the penetration arc when the normal points
-  /// out of the bearing). Empty for disjoint with side -1, tangent, circle_in_plane.
+  /// out of the bearing). Empty for disjoint on the negative side, tangent, circle_in_plane.
   RimArc penetration{};
   bool has_penetration = false;
   /// Largest signed distance of a rim point from the plane (metres, positive on the normal's
