@@ -80,6 +80,8 @@ class LineGrammar {
       tagged("t");
       tagged("b");
       numbers(10);  // p_WCj, p_WCi, normal_W, depth
+      word("e");
+      numbers(3);  // p_WCj_error, p_WCi_error, depth_error
       const int crossings = tagged("nc");
       for (int k = 0; k < crossings; ++k) crossing();
       certificate();

@@ -40,7 +40,7 @@ std::string repr_vector(const geo::Vector3& v) {
 
 std::string repr_certificate(const geo::Certificate& c) {
   std::string text = std::string(geo::to_string(c.level));
-  if (c.reason != nullptr && c.reason[0] != '\0') text += " (" + std::string(c.reason) + ")";
+  if (c.reason != geo::CertificateReason::none) text += " (" + std::string(c.reason_text()) + ")";
   return text;
 }
 
@@ -149,7 +149,7 @@ void bind_dimensions(py::module_& m) {
 void bind_results(py::module_& m) {
   py::class_<geo::Certificate>(m, "Certificate", "A trust level and, unless certified, why.")
       .def_property_readonly("level", [](const geo::Certificate& c) { return c.level; })
-      .def_property_readonly("reason", [](const geo::Certificate& c) { return std::string(c.reason); },
+      .def_property_readonly("reason", [](const geo::Certificate& c) { return std::string(c.reason_text()); },
                              "Text for humans; empty for certified answers.")
       .def("__repr__", [](const geo::Certificate& c) { return "Certificate(" + repr_certificate(c) + ")"; });
 
@@ -194,6 +194,10 @@ void bind_results(py::module_& m) {
       .def_readonly("point_journal", &geo::Contact::p_WCj, "C_j on the journal (eqs. 8, 10, 14, 19)")
       .def_readonly("point_bearing", &geo::Contact::p_WCi, "C_i on the bearing (eqs. 7, 9, 15, 21)")
       .def_readonly("normal", &geo::Contact::normal_W, "unit normal, out of the bearing")
+      .def_readonly("depth_error", &geo::Contact::depth_error,
+                    "bound on the depth's error; certified unless uncertain (then inf)")
+      .def_readonly("point_journal_error", &geo::Contact::p_WCj_error, "bound on point_journal's error (Euclidean)")
+      .def_readonly("point_bearing_error", &geo::Contact::p_WCi_error, "bound on point_bearing's error (Euclidean)")
       .def_property_readonly(
           "crossings", [](const geo::Contact& c) { return first_crossings(c.crossings.data(), c.crossing_count); },
           "the rim crossings bounding the penetration arc (none for line and face contacts)")

@@ -295,8 +295,8 @@ void bind_kernel_types(py::module_& m) {
   py::class_<geo::CirclePlaneIntersection>(m, "CirclePlaneIntersection",
                                            "A circle against a plane (a rim against a base, eqs. 11-15).")
       .def_readonly("topology", &geo::CirclePlaneIntersection::topology)
-      .def_readonly("side", &geo::CirclePlaneIntersection::side,
-                    "+1: the circle lies on the side the plane normal points to, -1 the other; 0 "
+      .def_property_readonly("side", [](const geo::CirclePlaneIntersection& r) { return static_cast<int>(r.side); },
+                    "PlaneSide as an int. +1: the circle lies on the side the plane normal points to, -1 the other; 0 "
                     "for two_crossings and circle_in_plane")
       .def_property_readonly("crossings", [](const geo::CirclePlaneIntersection& r) {
         return first_crossings(r.crossings.data(), r.crossing_count);
@@ -314,7 +314,7 @@ void bind_kernel_types(py::module_& m) {
       .def("__repr__", [](const geo::CirclePlaneIntersection& r) {
         static const char* names[] = {"disjoint", "tangent", "two_crossings", "circle_in_plane"};
         return std::string("CirclePlaneIntersection(") + names[static_cast<int>(r.topology)] +
-               ", side=" + std::to_string(r.side) + ", crossings=" + std::to_string(r.crossing_count) +
+               ", side=" + std::to_string(static_cast<int>(r.side)) + ", crossings=" + std::to_string(r.crossing_count) +
                ", max_signed_distance=" + repr_number(r.max_signed_distance) + ", " +
                repr_certificate(r.certificate) + ")";
       });
