@@ -1,15 +1,119 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: BSD-3-Clause
-# usage: run_package_test.sh BUILD_DIR CONSUMER_SOURCE SCRATCH_DIR
+# The installed package, used as a user outside this repository would use it.
+#
+# usage: run_package_test.sh STEP SCRATCH [ARGS...]
+#   install-shared BUILD_DIR             cmake --install BUILD_DIR into SCRATCH/prefix
+#   install-static SOURCE_DIR CMAKE_ARGS  configure, build and install SOURCE_DIR with static
+#                                         libraries (and without tests, benchmarks, programs)
+#   cmake-consumer CONSUMER_SOURCE       build the consumer project with find_package(clearjoint)
+#                                         against SCRATCH/prefix and run its programs
+#   pkg-config-consumer CONSUMER_SOURCE  compile the consumer's sources with the flags of
+#                                         clearjoint-geometry.pc / clearjoint-dynamics.pc and run
+#   installed-program SOURCE_DIR BUILD_PROGRAM
+#                                         run SCRATCH/prefix/bin/clearjoint with an empty
+#                                         environment and compare it with the build's program
+#   exported-interface                   every entry of the exported link interface is a target
+#                                         (Namespace::name), never a bare library name or path
+# Environment: CXX, the compiler the consumers are built with; CLEARJOINT_VERSION, the version
+# the package must report.
 set -euo pipefail
-build_dir=$1 consumer=$2 scratch=$3
-rm -rf "$scratch"
-cmake --install "$build_dir" --prefix "$scratch/prefix" > "$scratch.install.log" 2>&1 ||
-  { cat "$scratch.install.log"; exit 1; }
-cmake -S "$consumer" -B "$scratch/consumer-build" -DCMAKE_BUILD_TYPE=Release \
-      -DCMAKE_PREFIX_PATH="$scratch/prefix"
-cmake --build "$scratch/consumer-build" -j2
-# The installed shared libraries are found through the consumers' build RPATH (and the dynamics
-# library finds the geometry library beside it through its own RUNPATH).
-"$scratch/consumer-build/consumer"
-"$scratch/consumer-build/dynamics_consumer"
+step=$1 scratch=$2
+shift 2
+prefix=$scratch/prefix
+cxx=${CXX:-c++}
+fail() { echo "FAIL: $*" >&2; exit 1; }
+
+case $step in
+install-shared)
+  build_dir=$1
+  rm -rf "$prefix"
+  cmake --install "$build_dir" --prefix "$prefix" > "$scratch.install.log" 2>&1 ||
+    { cat "$scratch.install.log"; exit 1; }
+  ;;
+install-static)
+  source_dir=$1
+  shift
+  rm -rf "$prefix"
+  # The build folder is kept between runs: a rerun recompiles only what changed.
+  cmake -S "$source_dir" -B "$scratch/build" -DBUILD_SHARED_LIBS=OFF \
+        -DCLEARJOINT_BUILD_TESTS=OFF -DCLEARJOINT_BUILD_BENCHMARKS=OFF \
+        -DCLEARJOINT_BUILD_APPS=OFF -DCLEARJOINT_BUILD_PYTHON=OFF "$@" > "$scratch.configure.log" 2>&1 ||
+    { cat "$scratch.configure.log"; exit 1; }
+  cmake --build "$scratch/build" -j2 > "$scratch.build.log" 2>&1 || { tail -50 "$scratch.build.log"; exit 1; }
+  cmake --install "$scratch/build" --prefix "$prefix" > "$scratch.install.log" 2>&1 ||
+    { cat "$scratch.install.log"; exit 1; }
+  ls "$prefix"/lib*/libclearjoint_geometry.a > /dev/null || fail "no static library installed"
+  ;;
+cmake-consumer)
+  consumer=$1
+  rm -rf "$scratch/cmake-consumer"
+  cmake -S "$consumer" -B "$scratch/cmake-consumer" -DCMAKE_BUILD_TYPE=Release \
+        -DCMAKE_CXX_COMPILER="$cxx" -DCMAKE_PREFIX_PATH="$prefix"
+  cmake --build "$scratch/cmake-consumer" -j2
+  # Shared: the libraries are found through the consumer's build RPATH, and the dynamics library
+  # finds the geometry library beside it through its own RUNPATH.
+  "$scratch/cmake-consumer/consumer"
+  "$scratch/cmake-consumer/dynamics_consumer"
+  ;;
+pkg-config-consumer)
+  consumer=$1
+  out=$scratch/pkg-config-consumer
+  rm -rf "$out" && mkdir -p "$out"
+  export PKG_CONFIG_PATH
+  PKG_CONFIG_PATH=$(echo "$prefix"/lib*/pkgconfig)
+  static=()
+  if ls "$prefix"/lib*/libclearjoint_geometry.a > /dev/null 2>&1; then static=(--static); fi
+  for module in clearjoint-geometry clearjoint-dynamics; do
+    pkg-config --exists --print-errors "$module"
+    [[ $(pkg-config --modversion "$module") == "$CLEARJOINT_VERSION" ]] ||
+      fail "$module.pc says version $(pkg-config --modversion "$module"), the project $CLEARJOINT_VERSION"
+  done
+  libdir=$(pkg-config --variable=libdir clearjoint-geometry)
+  # shellcheck disable=SC2046 # the flags are separate words
+  "$cxx" -std=c++20 -o "$out/consumer" "$consumer/main.cpp" \
+    $(pkg-config "${static[@]}" --cflags --libs clearjoint-geometry) -Wl,-rpath,"$libdir"
+  # shellcheck disable=SC2046
+  "$cxx" -std=c++20 -o "$out/dynamics_consumer" "$consumer/dynamics_main.cpp" \
+    $(pkg-config "${static[@]}" --cflags --libs clearjoint-dynamics) -Wl,-rpath,"$libdir"
+  echo "pkg-config ${static[*]} --libs clearjoint-dynamics: $(pkg-config "${static[@]}" --libs clearjoint-dynamics)"
+  "$out/consumer"
+  "$out/dynamics_consumer"
+  ;;
+installed-program)
+  source_dir=$1 build_program=$2
+  program=$prefix/bin/clearjoint
+  [[ -x $program ]] || fail "$program not installed"
+  # Each clearjoint library the program loads comes from the prefix, not from the build tree.
+  for lib in libclearjoint_geometry libclearjoint_dynamics; do
+    resolved=$(env -i ldd "$program" | awk -v lib="$lib" 'index($1, lib) == 1 { print $3 }')
+    [[ $resolved == "$prefix"/* ]] || fail "$program loads $lib from '$resolved', not from $prefix"
+  done
+  version=$(env -i "$program" --version)
+  [[ $version == "clearjoint $CLEARJOINT_VERSION" ]] || fail "--version printed '$version'"
+  echo "$version"
+  for command in detect intersect; do
+    example=$source_dir/examples/$([[ $command == detect ]] && echo joints || echo rims).jsonl
+    env -i "$program" "$command" "$example" > "$scratch/installed-$command.jsonl"
+    "$build_program" "$command" "$example" > "$scratch/build-$command.jsonl"
+    cmp "$scratch/installed-$command.jsonl" "$scratch/build-$command.jsonl" ||
+      fail "the installed and the built program answer $example differently"
+    echo "$command $example: $(wc -l < "$scratch/installed-$command.jsonl") lines, as the build's program"
+  done
+  ;;
+exported-interface)
+  targets=$(echo "$prefix"/lib*/cmake/clearjoint/clearjointTargets.cmake)
+  # INTERFACE_LINK_LIBRARIES "a;b;\$<LINK_ONLY:c>": every entry, generator expressions unwrapped.
+  entries=$(sed -n 's/^ *INTERFACE_LINK_LIBRARIES "\(.*\)"$/\1/p' "$targets" | tr ';' '\n' |
+            sed -e 's/^\\\$<LINK_ONLY:\(.*\)>$/\1/' | sed '/^$/d')
+  [[ -n $entries ]] || fail "no INTERFACE_LINK_LIBRARIES in $targets"
+  while read -r entry; do
+    [[ $entry =~ ^[A-Za-z0-9_]+::[A-Za-z0-9_]+$ ]] ||
+      fail "exported link interface entry '$entry' is not a Namespace::target ($targets)"
+  done <<< "$entries"
+  echo "exported link interface: $(echo "$entries" | sort -u | tr '\n' ' ')"
+  ;;
+*)
+  fail "unknown step $step"
+  ;;
+esac
