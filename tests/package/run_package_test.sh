@@ -5,7 +5,8 @@
 # usage: run_package_test.sh STEP SCRATCH [ARGS...]
 #   install-shared BUILD_DIR             cmake --install BUILD_DIR into SCRATCH/prefix
 #   install-static SOURCE_DIR CMAKE_ARGS  configure, build and install SOURCE_DIR with static
-#                                         libraries (and without tests, benchmarks, programs)
+#                                         libraries (without tests, benchmarks, programs and
+#                                         bindings other than C)
 #   cmake-consumer CONSUMER_SOURCE       build the consumer project with find_package(clearjoint)
 #                                         against SCRATCH/prefix and run its programs
 #   pkg-config-consumer CONSUMER_SOURCE  compile the consumer's sources with the flags of
@@ -38,7 +39,8 @@ install-static)
   # The build folder is kept between runs: a rerun recompiles only what changed.
   cmake -S "$source_dir" -B "$scratch/build" -DBUILD_SHARED_LIBS=OFF \
         -DCLEARJOINT_BUILD_TESTS=OFF -DCLEARJOINT_BUILD_BENCHMARKS=OFF \
-        -DCLEARJOINT_BUILD_APPS=OFF -DCLEARJOINT_BUILD_PYTHON=OFF "$@" > "$scratch.configure.log" 2>&1 ||
+        -DCLEARJOINT_BUILD_APPS=OFF -DCLEARJOINT_BUILD_PYTHON=OFF -DCLEARJOINT_BUILD_MATLAB=OFF \
+        -DCLEARJOINT_BUILD_FORTRAN=OFF "$@" > "$scratch.configure.log" 2>&1 ||
     { cat "$scratch.configure.log"; exit 1; }
   cmake --build "$scratch/build" -j2 > "$scratch.build.log" 2>&1 || { tail -50 "$scratch.build.log"; exit 1; }
   cmake --install "$scratch/build" --prefix "$prefix" > "$scratch.install.log" 2>&1 ||
