@@ -96,10 +96,11 @@ inline int32_t code_of(geo::ContactBase base) {
 }
 
 inline cj_certificate certificate_of(const geo::Certificate& c) {
-  // The C++ reason is free text; every uncertain answer carries one.
+  // Every uncertain answer carries a reason; its text (a string literal, so NUL-terminated)
+  // names it. geo::CertificateReason lists them all, should the codes name them one day.
   const bool has_reason = c.level == geo::Certainty::uncertain;
   return {code_of(c.level), has_reason ? CJ_REASON_UNSPECIFIED : CJ_REASON_NONE,
-          has_reason ? c.reason : ""};
+          has_reason ? c.reason_text().data() : ""};
 }
 
 inline void copy_crossing(const geo::RimCrossing& from, cj_crossing& to) {

@@ -71,7 +71,7 @@ void expect_same_answer(const cj_result& c, const geo::JointContacts& cpp) {
   EXPECT_STREQ(cj_scenario_string(c.scenario), geo::to_string(cpp.scenario).data());
   EXPECT_EQ(c.aligned != 0, cpp.aligned);
   EXPECT_STREQ(cj_certainty_string(c.certificate.level), geo::to_string(cpp.certificate.level).data());
-  EXPECT_STREQ(c.certificate.reason_text, cpp.certificate.reason);
+  EXPECT_STREQ(c.certificate.reason_text, cpp.certificate.reason_text().data());
   ASSERT_EQ(c.contact_count, cpp.contact_count);
   for (int k = 0; k < c.contact_count; ++k) {
     const cj_contact& x = c.contacts[k];

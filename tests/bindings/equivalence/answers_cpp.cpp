@@ -84,7 +84,7 @@ std::string line_of(char tag, std::size_t index, const geo::JointContacts& r) {
   std::string line = std::string(1, tag) + ' ' + std::to_string(index) + " ok " + std::to_string(code(r.scenario)) +
                      ' ' + std::to_string(r.aligned ? 1 : 0) + ' ' + std::to_string(code(r.certificate.level)) +
                      ' ' + std::to_string(reason_code(r.certificate));
-  if (text) line += std::string(" \"") + r.certificate.reason + '"';
+  if (text) line += std::string(" \"") + std::string(r.certificate.reason_text()) + '"';
   line += ' ' + std::to_string(r.contact_count);
   for (int k = 0; k < r.contact_count; ++k) {
     const geo::Contact& c = r.contacts[k];
@@ -96,7 +96,7 @@ std::string line_of(char tag, std::size_t index, const geo::JointContacts& r) {
               std::to_string(x.multiplicity);
     }
     line += ' ' + std::to_string(code(c.certificate.level)) + ' ' + std::to_string(reason_code(c.certificate));
-    if (text) line += std::string(" \"") + c.certificate.reason + '"';
+    if (text) line += std::string(" \"") + std::string(c.certificate.reason_text()) + '"';
   }
   return line;
 }
