@@ -16,7 +16,11 @@ PYBIND11_MODULE(_core, module) {
   module.attr("__version__") = clearjoint::version_string();
   // geometry::InvalidInput and dynamics::ModelError derive from std::invalid_argument, which
   // pybind11 already turns into ValueError; a solver failure gets its own RuntimeError subclass.
-  py::register_exception<clearjoint::dynamics::SolverError>(module, "SolverError", PyExc_RuntimeError);
+  py::register_exception<clearjoint::dynamics::SolverError>(module, "SolverError", PyExc_RuntimeError)
+      .attr("__doc__") =
+      "The equations of motion cannot be solved from some time on: singular or inconsistent "
+      "constraints, a collapsed step size, a state that stopped being finite. The message says "
+      "when and why.";
   clearjoint::python::bind_types(module);
   clearjoint::python::bind_detection_batch(module);
   clearjoint::python::bind_kernel(module);

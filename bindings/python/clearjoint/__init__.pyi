@@ -1,0 +1,256 @@
+# SPDX-License-Identifier: BSD-3-Clause
+# Type stubs of the clearjoint package for editors and type checkers; the docstrings are in the
+# package (help(clearjoint.detect)) and docs/python.md.
+import enum
+import os
+from dataclasses import dataclass
+from typing import Any, Callable, Dict, List, Mapping, Optional, Sequence, Tuple, Union, overload
+
+import numpy as np
+import numpy.typing as npt
+
+__version__: str
+MAX_CONTACTS: int
+
+_Vector = Union[Sequence[float], npt.NDArray[np.float64]]  # shape (3,)
+_Vectors = Union[Sequence[Sequence[float]], npt.NDArray[np.float64]]  # shape (3,) or (N, 3)
+_Scalars = Union[float, Sequence[float], npt.NDArray[np.float64]]  # shape () or (N,)
+
+class SolverError(RuntimeError): ...
+
+class Certainty(enum.IntEnum):
+    exact = 0
+    certified = 1
+    uncertain = 2
+
+class ContactScenario(enum.IntEnum):
+    none = 0
+    single_radial = 1
+    single_axial = 2
+    radial_at_both_bases = 3
+    axial_at_both_bases = 4
+    radial_and_axial_same_base = 5
+    radial_and_axial_opposite_bases = 6
+    two_radial_one_axial = 7
+    one_radial_two_axial = 8
+    all_four = 9
+    line = 10
+    face = 11
+    line_and_face = 12
+    beyond_model = 13
+
+class ContactType(enum.IntEnum):
+    radial = 0
+    axial = 1
+
+class ContactBase(enum.IntEnum):
+    a = 0
+    b = 1
+    mid = 2
+
+class CirclePlaneTopology(enum.IntEnum):
+    disjoint = 0
+    tangent = 1
+    two_crossings = 2
+    circle_in_plane = 3
+
+class CircleCylinderTopology(enum.IntEnum):
+    inside = 0
+    outside = 1
+    crossing = 2
+    on_surface = 3
+
+def scenario_label(scenario: ContactScenario) -> str: ...
+
+class JointDimensions:
+    def __init__(self, *, bearing_radius: float, bearing_length: float, journal_radius: float,
+                 journal_length: float) -> None: ...
+    @property
+    def bearing_radius(self) -> float: ...
+    @property
+    def bearing_length(self) -> float: ...
+    @property
+    def journal_radius(self) -> float: ...
+    @property
+    def journal_length(self) -> float: ...
+    @property
+    def radial_clearance(self) -> float: ...
+    @property
+    def axial_clearance(self) -> float: ...
+
+class Certificate:
+    @property
+    def level(self) -> Certainty: ...
+    @property
+    def reason(self) -> str: ...
+
+class RimCrossing:
+    @property
+    def angle(self) -> float: ...
+    @property
+    def angle_error(self) -> float: ...
+    @property
+    def point(self) -> npt.NDArray[np.float64]: ...
+    @property
+    def point_error(self) -> float: ...
+    @property
+    def multiplicity(self) -> int: ...
+
+class RimArc:
+    @property
+    def begin(self) -> float: ...
+    @property
+    def end(self) -> float: ...
+    @property
+    def full(self) -> bool: ...
+    @property
+    def middle(self) -> float: ...
+    @property
+    def sweep(self) -> float: ...
+
+class Contact:
+    @property
+    def type(self) -> ContactType: ...
+    @property
+    def base(self) -> ContactBase: ...
+    @property
+    def depth(self) -> float: ...
+    @property
+    def point_journal(self) -> npt.NDArray[np.float64]: ...
+    @property
+    def point_bearing(self) -> npt.NDArray[np.float64]: ...
+    @property
+    def normal(self) -> npt.NDArray[np.float64]: ...
+    @property
+    def crossings(self) -> List[RimCrossing]: ...
+    @property
+    def certificate(self) -> Certificate: ...
+
+class JointContacts:
+    @property
+    def scenario(self) -> ContactScenario: ...
+    @property
+    def aligned(self) -> bool: ...
+    @property
+    def contacts(self) -> List[Contact]: ...
+    @property
+    def contact_count(self) -> int: ...
+    @property
+    def certificate(self) -> Certificate: ...
+
+class CirclePlaneIntersection:
+    @property
+    def topology(self) -> CirclePlaneTopology: ...
+    @property
+    def side(self) -> int: ...
+    @property
+    def crossings(self) -> List[RimCrossing]: ...
+    @property
+    def penetration(self) -> Optional[RimArc]: ...
+    @property
+    def max_signed_distance(self) -> float: ...
+    @property
+    def max_signed_distance_error(self) -> float: ...
+    @property
+    def certificate(self) -> Certificate: ...
+
+class CircleCylinderIntersection:
+    @property
+    def topology(self) -> CircleCylinderTopology: ...
+    @property
+    def crossings(self) -> List[RimCrossing]: ...
+    @property
+    def penetration_arcs(self) -> List[RimArc]: ...
+    @property
+    def root_count(self) -> int: ...
+    @property
+    def certificate(self) -> Certificate: ...
+
+class ArrayResult:
+    def fields(self) -> Tuple[str, ...]: ...
+    def as_dict(self) -> Dict[str, npt.NDArray[Any]]: ...
+    def __len__(self) -> int: ...
+
+class DetectionBatch(ArrayResult):
+    scenario: npt.NDArray[np.int8]            # (N,)
+    aligned: npt.NDArray[np.bool_]            # (N,)
+    certificate: npt.NDArray[np.int8]         # (N,)
+    contact_count: npt.NDArray[np.int8]       # (N,)
+    contact_start: npt.NDArray[np.int64]      # (N + 1,)
+    contact_pose: npt.NDArray[np.int64]       # (M,)
+    contact_type: npt.NDArray[np.int8]        # (M,)
+    contact_base: npt.NDArray[np.int8]        # (M,)
+    depth: npt.NDArray[np.float64]            # (M,)
+    point_journal: npt.NDArray[np.float64]    # (M, 3)
+    point_bearing: npt.NDArray[np.float64]    # (M, 3)
+    normal: npt.NDArray[np.float64]           # (M, 3)
+    crossing_count: npt.NDArray[np.int8]      # (M,)
+    crossing_angle: npt.NDArray[np.float64]   # (M, 2)
+    crossing_angle_error: npt.NDArray[np.float64]  # (M, 2)
+    crossing_point: npt.NDArray[np.float64]   # (M, 2, 3)
+    crossing_point_error: npt.NDArray[np.float64]  # (M, 2)
+    crossing_multiplicity: npt.NDArray[np.int8]    # (M, 2)
+    contact_certificate: npt.NDArray[np.int8]  # (M,)
+    def scenarios(self) -> List[ContactScenario]: ...
+    def slot(self) -> npt.NDArray[np.int64]: ...
+    def padded(self, field: str) -> npt.NDArray[Any]: ...
+
+class CirclePlaneBatch(ArrayResult):
+    topology: npt.NDArray[np.int8]
+    side: npt.NDArray[np.int8]
+    crossing_count: npt.NDArray[np.int8]
+    crossing_angle: npt.NDArray[np.float64]
+    crossing_angle_error: npt.NDArray[np.float64]
+    crossing_point: npt.NDArray[np.float64]
+    crossing_point_error: npt.NDArray[np.float64]
+    crossing_multiplicity: npt.NDArray[np.int8]
+    has_penetration: npt.NDArray[np.bool_]
+    penetration_begin: npt.NDArray[np.float64]
+    penetration_end: npt.NDArray[np.float64]
+    penetration_full: npt.NDArray[np.bool_]
+    max_signed_distance: npt.NDArray[np.float64]
+    max_signed_distance_error: npt.NDArray[np.float64]
+    certificate: npt.NDArray[np.int8]
+
+class CircleCylinderBatch(ArrayResult):
+    topology: npt.NDArray[np.int8]
+    crossing_count: npt.NDArray[np.int8]
+    crossing_angle: npt.NDArray[np.float64]
+    crossing_angle_error: npt.NDArray[np.float64]
+    crossing_point: npt.NDArray[np.float64]
+    crossing_point_error: npt.NDArray[np.float64]
+    crossing_multiplicity: npt.NDArray[np.int8]
+    arc_count: npt.NDArray[np.int8]
+    arc_begin: npt.NDArray[np.float64]
+    arc_end: npt.NDArray[np.float64]
+    arc_full: npt.NDArray[np.bool_]
+    certificate: npt.NDArray[np.int8]
+
+@overload
+def detect(dims: JointDimensions, bearing_center: _Vector, bearing_axis: _Vector,
+           journal_center: _Vector, journal_axis: _Vector, *, certify: bool = ...,
+           parallel_angle_tolerance: float = ..., threads: Optional[int] = ...) -> JointContacts: ...
+@overload
+def detect(dims: JointDimensions, bearing_center: _Vectors, bearing_axis: _Vectors,
+           journal_center: _Vectors, journal_axis: _Vectors, *, certify: bool = ...,
+           parallel_angle_tolerance: float = ...,
+           threads: Optional[int] = ...) -> Union[JointContacts, DetectionBatch]: ...
+def intersect_circle_plane(circle_center: _Vectors, circle_normal: _Vectors, circle_radius: _Scalars,
+                           plane_point: _Vectors, plane_normal: _Vectors, *, certify: bool = ...,
+                           exact_fallback: bool = ..., threads: Optional[int] = ...
+                           ) -> Union[CirclePlaneIntersection, CirclePlaneBatch]: ...
+def intersect_circle_cylinder(circle_center: _Vectors, circle_normal: _Vectors,
+                              circle_radius: _Scalars, cylinder_point: _Vectors,
+                              cylinder_axis: _Vectors, cylinder_radius: _Scalars, *,
+                              certify: bool = ..., exact_fallback: bool = ...,
+                              threads: Optional[int] = ...
+                              ) -> Union[CircleCylinderIntersection, CircleCylinderBatch]: ...
+
+@dataclass(frozen=True)
+class SimulationResult:
+    tables: Dict[str, Dict[str, npt.NDArray[np.float64]]]
+    summary: Dict[str, Any]
+    def __getitem__(self, table: str) -> Dict[str, npt.NDArray[np.float64]]: ...
+
+def simulate(model: Union[str, os.PathLike[str], Mapping[str, Any]], *,
+             progress: Union[bool, None, Callable[[float], None]] = ...) -> SimulationResult: ...

@@ -1,0 +1,66 @@
+# SPDX-License-Identifier: BSD-3-Clause
+"""The package as a whole: docs/python.md's code runs as written, every public name is documented
+and typed in the stub, and the version is the library's."""
+import ast
+import os
+import pathlib
+import re
+import subprocess
+import sys
+
+import clearjoint
+
+ROOT = pathlib.Path(__file__).resolve().parents[3]
+GUIDE = ROOT / "docs" / "python.md"
+STUB = pathlib.Path(clearjoint.__file__).with_name("__init__.pyi")
+
+
+def python_blocks(text):
+    return re.findall(r"```python\n(.*?)```", text, flags=re.S)
+
+
+def test_the_guides_code_runs_as_written_and_draws_its_figure(tmp_path):
+    # Run every block in order, as a reader would, from a directory laid out like the repository
+    # (models/, docs/figures/) so that the figure is written there and not into the source tree.
+    (tmp_path / "docs" / "figures").mkdir(parents=True)
+    (tmp_path / "models").symlink_to(ROOT / "models")
+    script = tmp_path / "guide.py"
+    script.write_text("\n".join(python_blocks(GUIDE.read_text())))
+    run = subprocess.run([sys.executable, str(script)], cwd=tmp_path, capture_output=True,
+                         text=True, env=dict(os.environ))
+    assert run.returncode == 0, run.stderr
+    assert (tmp_path / "docs" / "figures" / "python-scenario-map.png").stat().st_size > 10_000
+    # Twelve scenarios: all but (c) and (d), which need other clearances than Table 2's.
+    assert run.stdout.strip().splitlines()[-1] == (
+        "271803 poses, scenarios found: none, (a) single radial, (b) single axial, "
+        "(e) radial and axial at the same base, (f) radial and axial at opposite bases, "
+        "(g) two radial, one axial, (h) one radial, two axial, (i) all four, (j) line, (k) face, "
+        "(l) line and face, beyond model")
+
+
+def test_the_guides_figure_is_in_the_repository():
+    assert (ROOT / "docs" / "figures" / "python-scenario-map.png").is_file()
+
+
+def test_every_public_name_has_a_docstring():
+    for name in clearjoint.__all__:
+        if name.startswith("__") or name == "MAX_CONTACTS":
+            continue
+        doc = getattr(clearjoint, name).__doc__
+        assert doc and len(doc.strip()) > 20, name
+
+
+def test_every_public_name_is_in_the_type_stub():
+    tree = ast.parse(STUB.read_text())
+    stubbed = set()
+    for node in tree.body:
+        if isinstance(node, (ast.ClassDef, ast.FunctionDef)):
+            stubbed.add(node.name)
+        elif isinstance(node, ast.AnnAssign) and isinstance(node.target, ast.Name):
+            stubbed.add(node.target.id)
+    assert set(clearjoint.__all__) <= stubbed, set(clearjoint.__all__) - stubbed
+
+
+def test_the_version_is_the_projects():
+    cmake = (ROOT / "CMakeLists.txt").read_text()
+    assert clearjoint.__version__ == re.search(r"project\(clearjoint VERSION ([0-9.]+)", cmake).group(1)
