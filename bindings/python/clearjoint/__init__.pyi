@@ -23,6 +23,26 @@ class Certainty(enum.IntEnum):
     certified = 1
     uncertain = 2
 
+class CertificateReason(enum.IntEnum):
+    none = 0
+    not_decided = 1
+    certificate_switched_off = 2
+    plane_filter_undecided = 3
+    plane_filter_undecided_exact_fallback_off = 4
+    plane_results_not_representable = 5
+    subdivision_budget_exhausted = 6
+    more_than_four_roots = 7
+    interval_proof_failed_near_multiple_root = 8
+    coefficient_overflow = 9
+    cylinder_points_not_representable = 10
+    exact_root_isolation_budget_exhausted = 11
+    exact_coefficients_too_large = 12
+    exact_intermediate_beyond_double_range = 13
+    contact_not_representable_in_world = 14
+    axes_parallel_within_tolerance = 15
+
+def certificate_reason_text(reason: CertificateReason) -> str: ...
+
 class ContactScenario(enum.IntEnum):
     none = 0
     single_radial = 1
@@ -82,7 +102,9 @@ class Certificate:
     @property
     def level(self) -> Certainty: ...
     @property
-    def reason(self) -> str: ...
+    def reason(self) -> CertificateReason: ...
+    @property
+    def reason_text(self) -> str: ...
 
 class RimCrossing:
     @property
@@ -116,9 +138,15 @@ class Contact:
     @property
     def depth(self) -> float: ...
     @property
+    def depth_error(self) -> float: ...
+    @property
     def point_journal(self) -> npt.NDArray[np.float64]: ...
     @property
+    def point_journal_error(self) -> float: ...
+    @property
     def point_bearing(self) -> npt.NDArray[np.float64]: ...
+    @property
+    def point_bearing_error(self) -> float: ...
     @property
     def normal(self) -> npt.NDArray[np.float64]: ...
     @property
@@ -175,14 +203,18 @@ class DetectionBatch(ArrayResult):
     scenario: npt.NDArray[np.int8]            # (N,)
     aligned: npt.NDArray[np.bool_]            # (N,)
     certificate: npt.NDArray[np.int8]         # (N,)
+    certificate_reason: npt.NDArray[np.int8]  # (N,)
     contact_count: npt.NDArray[np.int8]       # (N,)
     contact_start: npt.NDArray[np.int64]      # (N + 1,)
     contact_pose: npt.NDArray[np.int64]       # (M,)
     contact_type: npt.NDArray[np.int8]        # (M,)
     contact_base: npt.NDArray[np.int8]        # (M,)
     depth: npt.NDArray[np.float64]            # (M,)
+    depth_error: npt.NDArray[np.float64]      # (M,)
     point_journal: npt.NDArray[np.float64]    # (M, 3)
+    point_journal_error: npt.NDArray[np.float64]  # (M,)
     point_bearing: npt.NDArray[np.float64]    # (M, 3)
+    point_bearing_error: npt.NDArray[np.float64]  # (M,)
     normal: npt.NDArray[np.float64]           # (M, 3)
     crossing_count: npt.NDArray[np.int8]      # (M,)
     crossing_angle: npt.NDArray[np.float64]   # (M, 2)
@@ -191,6 +223,7 @@ class DetectionBatch(ArrayResult):
     crossing_point_error: npt.NDArray[np.float64]  # (M, 2)
     crossing_multiplicity: npt.NDArray[np.int8]    # (M, 2)
     contact_certificate: npt.NDArray[np.int8]  # (M,)
+    contact_certificate_reason: npt.NDArray[np.int8]  # (M,)
     def scenarios(self) -> List[ContactScenario]: ...
     def slot(self) -> npt.NDArray[np.int64]: ...
     def padded(self, field: str) -> npt.NDArray[Any]: ...
@@ -211,6 +244,7 @@ class CirclePlaneBatch(ArrayResult):
     max_signed_distance: npt.NDArray[np.float64]
     max_signed_distance_error: npt.NDArray[np.float64]
     certificate: npt.NDArray[np.int8]
+    certificate_reason: npt.NDArray[np.int8]
 
 class CircleCylinderBatch(ArrayResult):
     topology: npt.NDArray[np.int8]
@@ -225,6 +259,7 @@ class CircleCylinderBatch(ArrayResult):
     arc_end: npt.NDArray[np.float64]
     arc_full: npt.NDArray[np.bool_]
     certificate: npt.NDArray[np.int8]
+    certificate_reason: npt.NDArray[np.int8]
 
 @overload
 def detect(dims: JointDimensions, bearing_center: _Vector, bearing_axis: _Vector,

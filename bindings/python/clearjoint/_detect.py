@@ -27,7 +27,8 @@ class DetectionBatch(ArrayResult):
       (a)-(i) 1-9, (j)-(l) 10-12, ``beyond_model`` 13. ``scenarios()`` gives the enum values.
     - ``aligned`` (bool): axes parallel, exactly (eq. 5) or within ``parallel_angle_tolerance``.
     - ``certificate`` (int8): a :class:`Certainty` code (exact 0, certified 1, uncertain 2), the
-      weakest over every decision for that pose, "no contact" included.
+      weakest over every decision for that pose, "no contact" included; ``certificate_reason``
+      (int8): its :class:`CertificateReason` code (none 0 when certified).
     - ``contact_count`` (int8): 0 to 6.
 
     The contacts of all poses, packed in pose order, shape (M, ...) with M = contact_count.sum();
@@ -36,16 +37,20 @@ class DetectionBatch(ArrayResult):
 
     - ``contact_type`` (int8): :class:`ContactType` (radial 0, axial 1);
     - ``contact_base`` (int8): :class:`ContactBase` (a 0, b 1, mid 2);
-    - ``depth`` (M,): penetration depth >= 0, the input's length unit (eq. 23);
+    - ``depth`` (M,): penetration depth >= 0, the input's length unit (eq. 23), and
+      ``depth_error`` (M,): the true depth lies within it (certified unless the contact is
+      uncertain, then inf);
     - ``point_journal``, ``point_bearing``, ``normal`` (M, 3): C_j, C_i and the unit normal, out
       of the bearing, world frame: point_journal - point_bearing = depth * normal up to rounding
-      (eqs. 7-10, 14-15, 19-22);
+      (eqs. 7-10, 14-15, 19-22); ``point_journal_error``, ``point_bearing_error`` (M,): bounds
+      on the points' errors (Euclidean), as for depth_error;
     - ``crossing_count`` (int8, M,): rim crossings bounding the penetration arc (0 for line and
       face contacts); ``crossing_angle``, ``crossing_angle_error`` (M, 2) radians,
       ``crossing_point`` (M, 2, 3), ``crossing_point_error`` (M, 2) length: a certified or exact
       crossing lies within its error of the value; NaN in unused slots;
       ``crossing_multiplicity`` (int8, M, 2): 1 crossing, 2 tangency, 0 unused;
-    - ``contact_certificate`` (int8, M,): the contact's :class:`Certainty` code.
+    - ``contact_certificate`` (int8, M,): the contact's :class:`Certainty` code, and
+      ``contact_certificate_reason`` its :class:`CertificateReason` code.
 
     Packed rather than padded to (N, 6, ...): a padded batch writes about a kilobyte a pose, as
     much time as the detection of a realistic pose itself. ``padded(field)`` gives the (N, 6, ...)
@@ -86,7 +91,8 @@ class CirclePlaneBatch(ArrayResult):
     ``has_penetration`` (bool), ``penetration_begin``, ``penetration_end`` (rim angles, radians,
     NaN when no penetration), ``penetration_full`` (bool); ``max_signed_distance`` and its
     ``max_signed_distance_error`` (length; positive on the normal's side); ``certificate``
-    (int8 :class:`Certainty`). Shape (N, 2): ``crossing_angle``, ``crossing_angle_error``,
+    (int8 :class:`Certainty`) and ``certificate_reason`` (int8 :class:`CertificateReason`).
+    Shape (N, 2): ``crossing_angle``, ``crossing_angle_error``,
     ``crossing_point_error``, ``crossing_multiplicity`` (0 unused); ``crossing_point`` (N, 2, 3).
     Unused crossing slots hold NaN.
     """
@@ -98,7 +104,8 @@ class CircleCylinderBatch(ArrayResult):
     """Circle-cylinder answers for N pairs (a rim against the bearing wall, eqs. 16-21).
 
     Shape (N,): ``topology`` (int8, :class:`CircleCylinderTopology`: inside 0, outside 1,
-    crossing 2, on_surface 3), ``crossing_count`` (0-4), ``arc_count`` (0-2), ``certificate``.
+    crossing 2, on_surface 3), ``crossing_count`` (0-4), ``arc_count`` (0-2), ``certificate``,
+    ``certificate_reason``.
     Shape (N, 4): ``crossing_angle``, ``crossing_angle_error``, ``crossing_point_error``,
     ``crossing_multiplicity``; ``crossing_point`` (N, 4, 3); sorted by angle, NaN when unused.
     Shape (N, 2): ``arc_begin``, ``arc_end`` (radians, NaN when unused), ``arc_full`` (bool): the

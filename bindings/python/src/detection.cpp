@@ -64,6 +64,35 @@ void bind_enums(py::module_& m) {
              "proved in floating point with rigorous error bounds")
       .value("uncertain", geo::Certainty::uncertain, "not proved; the certificate's reason says why");
 
+  // Every CertificateReason, in declaration order (array results hold the codes as int8).
+  py::enum_<geo::CertificateReason> reason(
+      m, "CertificateReason",
+      "Why an answer is uncertain, or, for an exact one, why the floating-point tiers did not "
+      "decide it; none for certified answers. Array results hold these codes as int8 (none 0). "
+      "certificate_reason_text(code) gives the sentence.");
+  reason.value("none", geo::CertificateReason::none)
+      .value("not_decided", geo::CertificateReason::not_decided)
+      .value("certificate_switched_off", geo::CertificateReason::certificate_switched_off)
+      .value("plane_filter_undecided", geo::CertificateReason::plane_filter_undecided)
+      .value("plane_filter_undecided_exact_fallback_off",
+             geo::CertificateReason::plane_filter_undecided_exact_fallback_off)
+      .value("plane_results_not_representable", geo::CertificateReason::plane_results_not_representable)
+      .value("subdivision_budget_exhausted", geo::CertificateReason::subdivision_budget_exhausted)
+      .value("more_than_four_roots", geo::CertificateReason::more_than_four_roots)
+      .value("interval_proof_failed_near_multiple_root",
+             geo::CertificateReason::interval_proof_failed_near_multiple_root)
+      .value("coefficient_overflow", geo::CertificateReason::coefficient_overflow)
+      .value("cylinder_points_not_representable", geo::CertificateReason::cylinder_points_not_representable)
+      .value("exact_root_isolation_budget_exhausted",
+             geo::CertificateReason::exact_root_isolation_budget_exhausted)
+      .value("exact_coefficients_too_large", geo::CertificateReason::exact_coefficients_too_large)
+      .value("exact_intermediate_beyond_double_range",
+             geo::CertificateReason::exact_intermediate_beyond_double_range)
+      .value("contact_not_representable_in_world", geo::CertificateReason::contact_not_representable_in_world)
+      .value("axes_parallel_within_tolerance", geo::CertificateReason::axes_parallel_within_tolerance);
+  m.def("certificate_reason_text", [](geo::CertificateReason r) { return std::string(geo::to_string(r)); },
+        py::arg("reason"), "The reason as a sentence (\"certificate switched off\", ...); empty for none.");
+
   py::enum_<geo::ContactScenario>(
       m, "ContactScenario",
       "The contact scenarios of the paper's Fig. 2: (a)-(i) misaligned axes, (j)-(l) parallel "
@@ -149,8 +178,10 @@ void bind_dimensions(py::module_& m) {
 void bind_results(py::module_& m) {
   py::class_<geo::Certificate>(m, "Certificate", "A trust level and, unless certified, why.")
       .def_property_readonly("level", [](const geo::Certificate& c) { return c.level; })
-      .def_property_readonly("reason", [](const geo::Certificate& c) { return std::string(c.reason_text()); },
-                             "Text for humans; empty for certified answers.")
+      .def_property_readonly("reason", [](const geo::Certificate& c) { return c.reason; },
+                             "A CertificateReason to branch on; none for certified answers.")
+      .def_property_readonly("reason_text", [](const geo::Certificate& c) { return std::string(c.reason_text()); },
+                             "The reason as a sentence for humans; empty for certified answers.")
       .def("__repr__", [](const geo::Certificate& c) { return "Certificate(" + repr_certificate(c) + ")"; });
 
   py::class_<geo::RimCrossing>(

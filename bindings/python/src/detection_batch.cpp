@@ -23,6 +23,7 @@
 
 #include "bindings.hpp"
 #include "clearjoint/geometry/detect_contacts.hpp"
+#include "array_block.hpp"
 #include "numpy_views.hpp"
 #include "parallel_chunks.hpp"
 
@@ -70,85 +71,103 @@ std::string python_message(const RowError& error, const PoseRows& poses) {
   throw std::runtime_error(message);
 }
 
-template <typename T>
-py::array_t<T> array_of(std::initializer_list<py::ssize_t> shape) {
-  return py::array_t<T>(std::vector<py::ssize_t>(shape));
-}
-
-/// Per-pose outputs, written by the workers through raw pointers (disjoint rows).
+/// Per-pose outputs in one block, written by the workers through raw pointers (disjoint rows).
 struct PoseColumns {
-  py::array_t<std::int8_t> scenario, certificate, contact_count;
-  py::array_t<bool> aligned;
+  ArrayBlock block;
+  std::size_t scenario, certificate, reason, contact_count, aligned;
   std::int8_t* scenario_out;
   std::int8_t* certificate_out;
+  std::int8_t* reason_out;
   std::int8_t* count_out;
   bool* aligned_out;
 
-  explicit PoseColumns(std::size_t rows)
-      : scenario(array_of<std::int8_t>({py::ssize_t(rows)})),
-        certificate(array_of<std::int8_t>({py::ssize_t(rows)})),
-        contact_count(array_of<std::int8_t>({py::ssize_t(rows)})),
-        aligned(array_of<bool>({py::ssize_t(rows)})),
-        scenario_out(scenario.mutable_data()),
-        certificate_out(certificate.mutable_data()),
-        count_out(contact_count.mutable_data()),
-        aligned_out(aligned.mutable_data()) {}
+  explicit PoseColumns(std::size_t rows) {
+    const auto n = static_cast<py::ssize_t>(rows);
+    scenario = block.plan<std::int8_t>({n});
+    aligned = block.plan<bool>({n});
+    certificate = block.plan<std::int8_t>({n});
+    reason = block.plan<std::int8_t>({n});
+    contact_count = block.plan<std::int8_t>({n});
+    block.allocate();
+    scenario_out = block.data<std::int8_t>(scenario);
+    certificate_out = block.data<std::int8_t>(certificate);
+    reason_out = block.data<std::int8_t>(reason);
+    count_out = block.data<std::int8_t>(contact_count);
+    aligned_out = block.data<bool>(aligned);
+  }
 
   void write(std::size_t n, const geo::JointContacts& r) const {
     scenario_out[n] = static_cast<std::int8_t>(r.scenario);
     certificate_out[n] = static_cast<std::int8_t>(r.certificate.level);
+    reason_out[n] = static_cast<std::int8_t>(r.certificate.reason);
     count_out[n] = static_cast<std::int8_t>(r.contact_count);
     aligned_out[n] = r.aligned;
   }
+
+  void put(py::dict& out) const {
+    out["scenario"] = block.array<std::int8_t>(scenario);
+    out["aligned"] = block.array<bool>(aligned);
+    out["certificate"] = block.array<std::int8_t>(certificate);
+    out["certificate_reason"] = block.array<std::int8_t>(reason);
+    out["contact_count"] = block.array<std::int8_t>(contact_count);
+  }
 };
 
-/// The packed contact arrays, filled after the workers from their per-chunk lists.
-py::dict contact_columns(const std::vector<std::vector<geo::Contact>>& chunk_contacts,
-                         const py::array_t<std::int8_t>& contact_count) {
+/// The packed contact arrays, in one block, filled after the workers from their per-chunk lists.
+void put_contact_columns(const std::vector<std::vector<geo::Contact>>& chunk_contacts,
+                         const PoseColumns& columns, std::size_t rows, py::dict& out) {
   std::size_t total = 0;
   for (const auto& list : chunk_contacts) total += list.size();
-  const py::ssize_t m = static_cast<py::ssize_t>(total);
-  const py::ssize_t rows = contact_count.shape(0);
+  const auto m = static_cast<py::ssize_t>(total);
+  const auto n = static_cast<py::ssize_t>(rows);
 
-  auto start = array_of<std::int64_t>({rows + 1});
-  auto pose = array_of<std::int64_t>({m});
+  ArrayBlock block;
+  // Widest elements first; each array starts on its own cache line anyway.
+  const std::size_t depth = block.plan<double>({m}), depth_error = block.plan<double>({m}),
+                    point_journal_error = block.plan<double>({m}),
+                    point_bearing_error = block.plan<double>({m}),
+                    point_journal = block.plan<double>({m, 3}),
+                    point_bearing = block.plan<double>({m, 3}), normal = block.plan<double>({m, 3}),
+                    angle = block.plan<double>({m, 2}), angle_error = block.plan<double>({m, 2}),
+                    crossing_point = block.plan<double>({m, 2, 3}), point_error = block.plan<double>({m, 2}),
+                    start = block.plan<std::int64_t>({n + 1}), pose = block.plan<std::int64_t>({m}),
+                    type = block.plan<std::int8_t>({m}), base = block.plan<std::int8_t>({m}),
+                    crossing_count = block.plan<std::int8_t>({m}),
+                    multiplicity = block.plan<std::int8_t>({m, 2}),
+                    certificate = block.plan<std::int8_t>({m}),
+                    reason = block.plan<std::int8_t>({m});
+  block.allocate();
   {
-    std::int64_t* s = start.mutable_data();
-    std::int64_t* p = pose.mutable_data();
-    const std::int8_t* count = contact_count.data();
+    std::int64_t* s = block.data<std::int64_t>(start);
+    std::int64_t* p = block.data<std::int64_t>(pose);
+    const std::int8_t* count = columns.count_out;
     s[0] = 0;
-    for (py::ssize_t n = 0; n < rows; ++n) {
-      s[n + 1] = s[n] + count[n];
-      for (std::int64_t k = s[n]; k < s[n + 1]; ++k) p[k] = n;
+    for (py::ssize_t r = 0; r < n; ++r) {
+      s[r + 1] = s[r] + count[r];
+      for (std::int64_t k = s[r]; k < s[r + 1]; ++k) p[k] = r;
     }
   }
-  auto type = array_of<std::int8_t>({m});
-  auto base = array_of<std::int8_t>({m});
-  auto certificate = array_of<std::int8_t>({m});
-  auto crossing_count = array_of<std::int8_t>({m});
-  auto multiplicity = array_of<std::int8_t>({m, 2});
-  auto depth = array_of<double>({m});
-  auto point_journal = array_of<double>({m, 3});
-  auto point_bearing = array_of<double>({m, 3});
-  auto normal = array_of<double>({m, 3});
-  auto angle = array_of<double>({m, 2});
-  auto angle_error = array_of<double>({m, 2});
-  auto crossing_point = array_of<double>({m, 2, 3});
-  auto point_error = array_of<double>({m, 2});
-  std::int8_t *t = type.mutable_data(), *b = base.mutable_data(), *c = certificate.mutable_data(),
-              *cc = crossing_count.mutable_data(), *mu = multiplicity.mutable_data();
-  double *d = depth.mutable_data(), *pj = point_journal.mutable_data(),
-         *pi = point_bearing.mutable_data(), *nw = normal.mutable_data(), *a = angle.mutable_data(),
-         *ae = angle_error.mutable_data(), *xp = crossing_point.mutable_data(),
-         *pe = point_error.mutable_data();
+  std::int8_t *t = block.data<std::int8_t>(type), *b = block.data<std::int8_t>(base),
+              *c = block.data<std::int8_t>(certificate), *cr = block.data<std::int8_t>(reason), *cc = block.data<std::int8_t>(crossing_count),
+              *mu = block.data<std::int8_t>(multiplicity);
+  double *d = block.data<double>(depth), *de = block.data<double>(depth_error),
+         *pje = block.data<double>(point_journal_error), *pie = block.data<double>(point_bearing_error),
+         *pj = block.data<double>(point_journal),
+         *pi = block.data<double>(point_bearing), *nw = block.data<double>(normal),
+         *a = block.data<double>(angle), *ae = block.data<double>(angle_error),
+         *xp = block.data<double>(crossing_point), *pe = block.data<double>(point_error);
   std::size_t k = 0;
   for (const auto& list : chunk_contacts) {
     for (const geo::Contact& contact : list) {
       t[k] = static_cast<std::int8_t>(contact.type);
       b[k] = static_cast<std::int8_t>(contact.base);
       c[k] = static_cast<std::int8_t>(contact.certificate.level);
+      cr[k] = static_cast<std::int8_t>(contact.certificate.reason);
       cc[k] = static_cast<std::int8_t>(contact.crossing_count);
       d[k] = contact.depth;
+      de[k] = contact.depth_error;
+      pje[k] = contact.p_WCj_error;
+      pie[k] = contact.p_WCi_error;
       for (int i = 0; i < 3; ++i) {
         pj[3 * k + i] = contact.p_WCj[i];
         pi[3 * k + i] = contact.p_WCi[i];
@@ -166,23 +185,25 @@ py::dict contact_columns(const std::vector<std::vector<geo::Contact>>& chunk_con
       ++k;
     }
   }
-  py::dict out;
-  out["contact_start"] = start;
-  out["contact_pose"] = pose;
-  out["contact_type"] = type;
-  out["contact_base"] = base;
-  out["depth"] = depth;
-  out["point_journal"] = point_journal;
-  out["point_bearing"] = point_bearing;
-  out["normal"] = normal;
-  out["crossing_count"] = crossing_count;
-  out["crossing_angle"] = angle;
-  out["crossing_angle_error"] = angle_error;
-  out["crossing_point"] = crossing_point;
-  out["crossing_point_error"] = point_error;
-  out["crossing_multiplicity"] = multiplicity;
-  out["contact_certificate"] = certificate;
-  return out;
+  out["contact_start"] = block.array<std::int64_t>(start);
+  out["contact_pose"] = block.array<std::int64_t>(pose);
+  out["contact_type"] = block.array<std::int8_t>(type);
+  out["contact_base"] = block.array<std::int8_t>(base);
+  out["depth"] = block.array<double>(depth);
+  out["depth_error"] = block.array<double>(depth_error);
+  out["point_journal"] = block.array<double>(point_journal);
+  out["point_journal_error"] = block.array<double>(point_journal_error);
+  out["point_bearing"] = block.array<double>(point_bearing);
+  out["point_bearing_error"] = block.array<double>(point_bearing_error);
+  out["normal"] = block.array<double>(normal);
+  out["crossing_count"] = block.array<std::int8_t>(crossing_count);
+  out["crossing_angle"] = block.array<double>(angle);
+  out["crossing_angle_error"] = block.array<double>(angle_error);
+  out["crossing_point"] = block.array<double>(crossing_point);
+  out["crossing_point_error"] = block.array<double>(point_error);
+  out["crossing_multiplicity"] = block.array<std::int8_t>(multiplicity);
+  out["contact_certificate"] = block.array<std::int8_t>(certificate);
+  out["contact_certificate_reason"] = block.array<std::int8_t>(reason);
 }
 
 /// The per-chunk contact lists, kept from one batch to the next: a batch of 100,000 realistic
@@ -256,11 +277,8 @@ py::dict detect_batch(const geo::JointDimensions& dimensions, const PoseRows& po
     if (error) raise(*error, poses);
   }
   py::dict out;
-  out["scenario"] = columns.scenario;
-  out["aligned"] = columns.aligned;
-  out["certificate"] = columns.certificate;
-  out["contact_count"] = columns.contact_count;
-  out.attr("update")(contact_columns(chunk_contacts, columns.contact_count));
+  columns.put(out);
+  put_contact_columns(chunk_contacts, columns, rows, out);
   return out;
 }
 

@@ -21,7 +21,8 @@ CLI_CASES = [c for c in CASES if c.command_line]
 
 
 def bits(x):
-    return struct.pack("<d", float(x))
+    """The double's bit pattern; the command line writes an unknown bound (inf) as null."""
+    return struct.pack("<d", math.inf if x is None else float(x))
 
 
 def same_vector(a, b):
@@ -64,21 +65,26 @@ def test_every_scenario_case_equals_the_command_lines_answer_bit_for_bit(case, c
     result = detect_case(case)
     assert result.aligned == expected["aligned"]
     assert str(result.certificate.level).split(".")[1] == expected["certificate"]
-    assert result.certificate.reason == expected["certificate_reason"]
+    assert result.certificate.reason_text == expected["certificate_reason"]
+    assert (result.certificate.reason == clearjoint.CertificateReason.none) == (expected["certificate_reason"] == "")
     assert len(result.contacts) == len(expected["contacts"])
     for contact, want in zip(result.contacts, expected["contacts"]):
         assert TYPE_NAMES[contact.type] == want["type"]
         assert BASE_NAMES[contact.base] == want["base"]
         assert bits(contact.depth) == bits(want["depth"])
+        assert bits(contact.depth_error) == bits(want["depth_error"])
         assert same_vector(contact.point_journal, want["point_journal"])
+        assert bits(contact.point_journal_error) == bits(want["point_journal_error"])
         assert same_vector(contact.point_bearing, want["point_bearing"])
+        assert bits(contact.point_bearing_error) == bits(want["point_bearing_error"])
         assert same_vector(contact.normal, want["normal"])
         assert len(contact.crossings) == len(want["crossings"])
         for crossing, point, error in zip(contact.crossings, want["crossings"],
                                           want["crossing_errors"]):
             assert same_vector(crossing.point, point)
-            assert bits(crossing.point_error) == bits(math.inf if error is None else error)
+            assert bits(crossing.point_error) == bits(error)
         assert str(contact.certificate.level).split(".")[1] == want["certificate"]
+        assert contact.certificate.reason_text == want["certificate_reason"]
 
 
 def assert_row_equals_single(batch, n, single):
@@ -86,6 +92,7 @@ def assert_row_equals_single(batch, n, single):
     assert batch.scenario[n] == int(single.scenario)
     assert batch.aligned[n] == single.aligned
     assert batch.certificate[n] == int(single.certificate.level)
+    assert batch.certificate_reason[n] == int(single.certificate.reason)
     assert batch.contact_count[n] == single.contact_count
     rows = range(batch.contact_start[n], batch.contact_start[n + 1])
     assert len(rows) == single.contact_count
@@ -94,10 +101,14 @@ def assert_row_equals_single(batch, n, single):
         assert batch.contact_type[k] == int(contact.type)
         assert batch.contact_base[k] == int(contact.base)
         assert bits(batch.depth[k]) == bits(contact.depth)
+        assert bits(batch.depth_error[k]) == bits(contact.depth_error)
+        assert bits(batch.point_journal_error[k]) == bits(contact.point_journal_error)
+        assert bits(batch.point_bearing_error[k]) == bits(contact.point_bearing_error)
         assert same_vector(batch.point_journal[k], contact.point_journal)
         assert same_vector(batch.point_bearing[k], contact.point_bearing)
         assert same_vector(batch.normal[k], contact.normal)
         assert batch.contact_certificate[k] == int(contact.certificate.level)
+        assert batch.contact_certificate_reason[k] == int(contact.certificate.reason)
         assert batch.crossing_count[k] == len(contact.crossings)
         for x, crossing in enumerate(contact.crossings):
             assert bits(batch.crossing_angle[k, x]) == bits(crossing.angle)
@@ -227,6 +238,9 @@ def test_certify_false_gives_the_same_contacts_marked_uncertain():
     proved = clearjoint.detect(METRES, *poses)
     plain = clearjoint.detect(METRES, *poses, certify=False)
     assert np.all(plain.certificate == int(clearjoint.Certainty.uncertain))
+    assert np.all(plain.certificate_reason == int(clearjoint.CertificateReason.certificate_switched_off))
+    assert clearjoint.certificate_reason_text(clearjoint.CertificateReason.certificate_switched_off) == \
+        "certificate switched off"
     assert np.array_equal(plain.scenario, proved.scenario)
 
 
@@ -245,7 +259,7 @@ def test_results_read_well():
     assert repr(dims(TABLE2)) == ("JointDimensions(bearing_radius=10.0, bearing_length=20.0, "
                                   "journal_radius=9.9, journal_length=19.8)")
     batch = clearjoint.detect(METRES, *realistic_poses(3, seed=9))
-    assert repr(batch).startswith("DetectionBatch(3 rows: scenario, aligned, certificate")
+    assert repr(batch).startswith("DetectionBatch(3 rows: scenario, aligned, certificate, certificate_reason")
 
 
 # ---- bad inputs ----------------------------------------------------------------------------------

@@ -66,7 +66,7 @@ def test_every_shipped_example_equals_the_command_lines_answer_bit_for_bit(examp
     result = query(example)
     assert result.topology.name == want["topology"]
     assert result.certificate.level.name == want["certificate"]["level"]
-    assert result.certificate.reason == want["certificate"]["reason"]
+    assert result.certificate.reason_text == want["certificate"]["reason"]
     assert_crossings_equal(result.crossings, want["crossings"])
     arcs = ([result.penetration] if result.penetration is not None else []) \
         if "plane" in example else result.penetration_arcs
@@ -96,6 +96,7 @@ def test_a_batch_of_the_plane_examples_equals_the_single_answers_row_by_row():
         assert batch.topology[n] == int(single.topology)
         assert batch.side[n] == single.side
         assert batch.certificate[n] == int(single.certificate.level)
+        assert batch.certificate_reason[n] == int(single.certificate.reason)
         assert bits(batch.max_signed_distance[n]) == bits(single.max_signed_distance)
         assert bits(batch.max_signed_distance_error[n]) == bits(single.max_signed_distance_error)
         assert batch.has_penetration[n] == (single.penetration is not None)
@@ -121,6 +122,7 @@ def test_a_batch_of_the_cylinder_examples_equals_the_single_answers_row_by_row()
         single = query(example)
         assert batch.topology[n] == int(single.topology)
         assert batch.certificate[n] == int(single.certificate.level)
+        assert batch.certificate_reason[n] == int(single.certificate.reason)
         assert batch.arc_count[n] == len(single.penetration_arcs)
         for k, arc in enumerate(single.penetration_arcs):
             assert bits(batch.arc_begin[n, k]) == bits(arc.begin)
