@@ -5,6 +5,7 @@ import os
 import pickle
 import signal
 import subprocess
+import sys
 import threading
 import time
 
@@ -122,6 +123,18 @@ def test_a_progress_callable_sees_the_simulated_fraction_grow_from_zero_to_one(s
 def test_progress_true_draws_a_bar_on_standard_error(short_model, capsys):
     clearjoint.simulate(short_model, progress=True)
     assert "100%" in capsys.readouterr().err
+
+
+def test_progress_true_without_tqdm_draws_a_text_bar(short_model, capsys, monkeypatch):
+    monkeypatch.setitem(sys.modules, "tqdm", None)  # import tqdm now raises ImportError
+    clearjoint.simulate(short_model, progress=True)
+    err = capsys.readouterr().err
+    assert err.endswith("] 100%\n") and err.startswith("\r[")
+
+
+def test_progress_of_another_kind_raises_type_error(short_model):
+    with pytest.raises(TypeError, match="progress = 'yes': must be True, False, None or a callable"):
+        clearjoint.simulate(short_model, progress="yes")
 
 
 def test_an_exception_in_the_progress_callable_stops_the_run_and_propagates(short_model):
