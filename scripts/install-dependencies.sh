@@ -17,6 +17,7 @@ packages=(
   octave octave-dev                     # MATLAB/Octave binding: octave-cli, mkoctfile (Debian 12's
                                         # liboctave-dev is only a transitional name for octave-dev)
   gfortran                              # Fortran binding
+  python3-distributed python3-h5py python3-jsonschema python3-scipy python3-tqdm  # clearjoint.study
 )
 
 missing=()

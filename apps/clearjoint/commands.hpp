@@ -18,5 +18,10 @@ int run_detect(Arguments args);
 /// clearjoint simulate MODEL --out DIR: multibody simulation (dynamics/).
 int run_simulate(Arguments args);
 #endif
+#ifdef CLEARJOINT_WITH_STUDY
+/// clearjoint study run|plot|summary STUDY: parameter studies on Dask, in Python
+/// (python3 -m clearjoint.study; docs/studies.md). Replaces this process with the interpreter.
+int run_study(Arguments args);
+#endif
 
 }  // namespace clearjoint::app

@@ -24,6 +24,9 @@ constexpr Command kCommands[] = {
 #ifdef CLEARJOINT_WITH_DYNAMICS
     {"simulate", clearjoint::app::run_simulate, "simulate a multibody model file"},
 #endif
+#ifdef CLEARJOINT_WITH_STUDY
+    {"study", clearjoint::app::run_study, "parameter studies on Dask: run, plot (python3 -m clearjoint.study)"},
+#endif
 };
 
 int print_usage(std::FILE* to) {

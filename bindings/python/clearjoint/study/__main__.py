@@ -1,0 +1,82 @@
+# SPDX-License-Identifier: BSD-3-Clause
+"""python3 -m clearjoint.study run|plot|summary STUDY (also `clearjoint study ...`)."""
+import argparse
+import os
+import sys
+
+from .study_file import StudyError, load_study
+
+USAGE = """python3 -m clearjoint.study COMMAND STUDY [options]
+  run STUDY      run every run the store does not hold yet (resumes an interrupted study),
+                 then write the summary tables
+  plot STUDY     draw the study's figures from the store (PNG)
+  summary STUDY  rewrite the summary tables from the store and print where they are"""
+
+
+def _parser():
+    parser = argparse.ArgumentParser(prog="clearjoint study", usage=USAGE,
+                                     description="Parameter studies of clearjoint models on Dask distributed "
+                                                 "(docs/studies.md).")
+    sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
+    run = sub.add_parser("run", help="run the study")
+    run.add_argument("study")
+    run.add_argument("--scheduler", help="an existing Dask scheduler (tcp://host:8786); default: a local "
+                     "cluster with one worker process per core")
+    run.add_argument("--workers", type=int, help="local cluster: worker processes (default: one per core)")
+    run.add_argument("--force", action="store_true", help="run again runs the store already holds")
+    run.add_argument("--no-progress", action="store_true", help="no progress bar")
+    run.add_argument("--no-plot", action="store_true", help="do not draw the figures afterwards")
+    plot = sub.add_parser("plot", help="draw the study's figures from the store")
+    plot.add_argument("study")
+    plot.add_argument("--out", help="directory for the figures (default: as the study file says, or STORE/figures)")
+    summary = sub.add_parser("summary", help="rewrite the summary tables from the store")
+    summary.add_argument("study")
+    return parser
+
+
+def _summary(study):
+    from .expand import expand_study
+    from .store import Store
+    from .summary import summarise
+    points, _, membership = expand_study(study)
+    return summarise(study, Store(study.store_path), points, membership)
+
+
+def main(argv=None):
+    args = _parser().parse_args(argv)
+    try:
+        study = load_study(args.study)
+        if args.command == "run":
+            if args.workers is not None and args.workers < 1:
+                raise StudyError("--workers %d: must be at least 1" % args.workers)
+            if args.workers is not None and args.scheduler:
+                raise StudyError("--workers %d: only for the local cluster, not with --scheduler" % args.workers)
+            from .runner import run_study
+            report = run_study(study, scheduler=args.scheduler, workers=args.workers,
+                               progress=not args.no_progress and sys.stderr.isatty(), force=args.force)
+            print("study %s: %d runs stored now, %d reused, %d failed, %.1f s; summary in %s" % (
+                study.name, len(report.computed), report.reused, len(report.failed), report.seconds,
+                os.path.join(study.store_path, "summary")), file=sys.stderr)
+            if report.failed:
+                for run_id, error in report.failed.items():
+                    print("  run %s failed: %s" % (run_id, error), file=sys.stderr)
+                return 1
+            if not args.no_plot:
+                from .plot import draw_all
+                for path in draw_all(study, _summary(study)):
+                    print("figure %s" % path, file=sys.stderr)
+        elif args.command == "plot":
+            from .plot import draw_all
+            for path in draw_all(study, _summary(study), args.out):
+                print("figure %s" % path, file=sys.stderr)
+        else:
+            _summary(study)
+            print(os.path.join(study.store_path, "summary"))
+        return 0
+    except StudyError as error:
+        print("clearjoint study: %s" % error, file=sys.stderr)
+        return 2
+
+
+if __name__ == "__main__":
+    sys.exit(main())

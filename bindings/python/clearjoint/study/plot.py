@@ -1,0 +1,108 @@
+# SPDX-License-Identifier: BSD-3-Clause
+"""The standard figure of a study: each statistic against the design's x parameter, one line per
+design, the median of the members with bars from their minimum to their maximum and every member
+as a dot (docs/figures/section6/ensemble_vs_clearance.png is one)."""
+import math
+import os
+
+import numpy as np
+
+COLOURS = ("tab:blue", "tab:orange", "tab:green", "tab:red", "tab:purple", "tab:brown")
+# Neighbouring designs' bars are shifted apart by this share of the x range.
+SHIFT_SHARE = 0.0178
+
+
+def _pyplot():
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    return plt
+
+
+def default_plots(study):
+    designs = [d["name"] for d in study.spec["designs"] if "x" in d]
+    statistics = [r["name"] for r in study.reductions]
+    if not designs or not statistics:
+        return []
+    return [{"file": "statistics.png", "designs": designs, "statistics": statistics}]
+
+
+def _series(study, summary, design, statistic):
+    """(x, medians, minima, maxima, members) along one design, complete points only."""
+    rows = []
+    for point_id, stats in summary["points"].items():
+        entry = stats.get(statistic)
+        if entry is None or not entry["complete"] or design["name"] not in _designs_of(summary, point_id):
+            continue
+        rows.append((_value(summary, point_id, design["x"]), entry))
+    rows.sort(key=lambda r: r[0])
+    return ([r[0] for r in rows], [r[1]["median"] for r in rows], [r[1]["min"] for r in rows],
+            [r[1]["max"] for r in rows], [r[1]["values"] for r in rows])
+
+
+def _designs_of(summary, point_id):
+    for row in summary["runs"]:
+        if row["point_id"] == point_id:
+            return row["designs"].split(" ")
+    return []
+
+
+def _value(summary, point_id, parameter):
+    for row in summary["runs"]:
+        if row["point_id"] == point_id:
+            return row[parameter]
+    raise KeyError(point_id)
+
+
+def draw(study, summary, plot, directory):
+    """Draws one plot of the study into directory/plot['file']; returns the path."""
+    plt = _pyplot()
+    statistics = plot["statistics"]
+    columns = 1 if len(statistics) == 1 else 2
+    rows = math.ceil(len(statistics) / columns)
+    fig, axes = plt.subplots(rows, columns, figsize=(6 * columns, 4.25 * rows), squeeze=False)
+    designs = [study.design(name) for name in plot["designs"]]
+    xs = [x for d in designs for x in _series(study, summary, d, statistics[0])[0]]
+    span = (max(xs) - min(xs)) if xs else 1.0
+    reductions = {r["name"]: r for r in study.reductions}
+    for ax, statistic in zip(axes.flat, statistics):
+        for k, design in enumerate(designs):
+            x, med, low, high, values = _series(study, summary, design, statistic)
+            if not x:
+                continue
+            colour = COLOURS[k % len(COLOURS)]
+            shifted = np.asarray(x) + (k - (len(designs) - 1) / 2) * SHIFT_SHARE * span
+            med = np.asarray(med)
+            ax.errorbar(shifted, med, yerr=[med - np.asarray(low), np.asarray(high) - med], color=colour,
+                        marker="o", capsize=3, linewidth=1.2,
+                        label=design.get("label", design["name"]) + " (median, min-max)")
+            for xi, v in zip(shifted, values):
+                ax.plot(np.full(len(v), xi), v, ".", color=colour, markersize=3, alpha=0.5)
+        r = reductions[statistic]
+        unit = " [%s]" % r["unit"] if "unit" in r else ""
+        ax.set_ylabel(r.get("label", statistic) + unit)
+        ax.set_xlabel(plot.get("x_label", designs[0]["x"]))
+        ax.grid(alpha=0.3)
+    for ax in list(axes.flat)[len(statistics):]:
+        ax.set_visible(False)
+    axes.flat[0].legend(fontsize=7)
+    if "title" in plot:
+        fig.suptitle(plot["title"], fontsize=10)
+    fig.tight_layout()
+    os.makedirs(directory, exist_ok=True)
+    path = os.path.join(directory, plot["file"])
+    partial = path + ".partial.png"
+    fig.savefig(partial, dpi=110)
+    plt.close(fig)
+    os.replace(partial, path)
+    return path
+
+
+def draw_all(study, summary, directory=None):
+    """Every plot the study file lists (or the default one); returns the paths written."""
+    paths = []
+    for plot in study.spec.get("plots") or default_plots(study):
+        target = directory or (study.resolve(plot["directory"]) if "directory" in plot
+                               else os.path.join(study.store_path, "figures"))
+        paths.append(draw(study, summary, plot, target))
+    return paths

@@ -1,0 +1,186 @@
+# SPDX-License-Identifier: BSD-3-Clause
+"""Reading a study file: JSON Schema validation (docs/schema/study-v1.schema.json), then the
+checks a schema cannot express (names that must refer to each other). Every error names the file,
+the field and the value."""
+import copy
+import json
+import os
+from dataclasses import dataclass, field
+
+import jsonschema
+
+SCHEMA_FILE = "study-v1.schema.json"
+
+
+class StudyError(ValueError):
+    """A study file, a model or a store that cannot be used as given; the message names the field."""
+
+
+def _schema_path():
+    """The schema ships inside the package (copied there by the build); in a source checkout it
+    is read from docs/schema/ directly."""
+    here = os.path.dirname(os.path.abspath(__file__))
+    candidates = [os.path.join(here, SCHEMA_FILE),
+                  os.path.join(here, "..", "..", "..", "..", "docs", "schema", SCHEMA_FILE)]
+    for path in candidates:
+        if os.path.exists(path):
+            return path
+    raise StudyError("the study schema %s is missing from %s (a broken install)" % (SCHEMA_FILE, here))
+
+
+def schema():
+    with open(_schema_path()) as f:
+        return json.load(f)
+
+
+def _field_name(path):
+    """jsonschema's error path as designs[2].grid.radial."""
+    text = ""
+    for part in path:
+        text += "[%d]" % part if isinstance(part, int) else ("." if text else "") + str(part)
+    return text or "(top level)"
+
+
+@dataclass
+class Study:
+    """A validated study file: its fields as read, the directory relative paths start from, and
+    the base models loaded (key "" is the study's model, others are design names)."""
+    path: str
+    spec: dict
+    base_models: dict = field(default_factory=dict)
+
+    @property
+    def name(self):
+        return self.spec["name"]
+
+    @property
+    def directory(self):
+        return os.path.dirname(os.path.abspath(self.path))
+
+    def resolve(self, relative):
+        return os.path.normpath(os.path.join(self.directory, relative))
+
+    @property
+    def store_path(self):
+        return self.resolve(self.spec["store"])
+
+    @property
+    def parameters(self):
+        return self.spec.get("parameters", {})
+
+    @property
+    def reductions(self):
+        return self.spec["outputs"].get("reductions", [])
+
+    def design(self, name):
+        for d in self.spec["designs"]:
+            if d["name"] == name:
+                return d
+        raise StudyError("%s: no design called %r (designs: %s)" % (
+            self.path, name, ", ".join(d["name"] for d in self.spec["designs"])))
+
+
+def _load_model(study_path, where, model):
+    """A model given inline or as a path relative to the study file."""
+    if isinstance(model, dict):
+        return copy.deepcopy(model)
+    path = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(study_path)), model))
+    try:
+        with open(path) as f:
+            return json.load(f)
+    except OSError as error:
+        raise StudyError("%s: %s = %r: cannot read %s (%s)" % (study_path, where, model, path, error.strerror))
+    except json.JSONDecodeError as error:
+        raise StudyError("%s: %s = %r: %s is not JSON (%s)" % (study_path, where, model, path, error))
+
+
+REDUCTION_NEEDS = {  # quantity -> fields it needs
+    "peak_abs": ("table", "column"),
+    "percentile_abs": ("table", "column", "percentile"),
+    "rms": ("table", "column"),
+    "energy_loss": (),
+    "impacts": ("table",),
+    "max_depth": ("table",),
+}
+
+
+def _check_references(path, spec):
+    """What the schema cannot say: designs name declared parameters, names are unique, members
+    above 1 have an ensemble to draw them from, plots name designs and reductions that exist."""
+    parameters = spec.get("parameters", {})
+    names = [d["name"] for d in spec["designs"]]
+    duplicates = sorted({n for n in names if names.count(n) > 1})
+    if duplicates:
+        raise StudyError("%s: designs: the name %r is used twice" % (path, duplicates[0]))
+    for i, design in enumerate(spec["designs"]):
+        where = "%s: designs[%d] (%r)" % (path, i, design["name"])
+        kinds = [k for k in ("grid", "zip", "random") if k in design]
+        if len(kinds) > 1:
+            raise StudyError("%s: give one of grid, zip, random, not %s" % (where, " and ".join(kinds)))
+        used = []
+        for kind in kinds:
+            block = design[kind]["distributions"] if kind == "random" else design[kind]
+            used += [(kind, name) for name in block]
+        used += [("fixed", name) for name in design.get("fixed", {})]
+        for kind, name in used:
+            if name not in parameters:
+                raise StudyError("%s: %s.%s: no such parameter (parameters: %s)" % (
+                    where, kind, name, ", ".join(parameters) or "none"))
+        seen = [name for _, name in used]
+        twice = sorted({n for n in seen if seen.count(n) > 1})
+        if twice:
+            raise StudyError("%s: parameter %r is given twice" % (where, twice[0]))
+        if "zip" in design:
+            lengths = {name: len(values) for name, values in design["zip"].items()}
+            if len(set(lengths.values())) > 1:
+                raise StudyError("%s: zip: the lists differ in length (%s)" % (
+                    where, ", ".join("%s: %d" % item for item in lengths.items())))
+        if design.get("members", 1) > 1 and "ensemble" not in spec:
+            raise StudyError("%s: members = %d needs the study's ensemble (how members differ)" % (
+                where, design["members"]))
+        if "x" in design and design["x"] not in seen:
+            raise StudyError("%s: x = %r is not a parameter the design varies or fixes" % (where, design["x"]))
+    reductions = spec["outputs"].get("reductions", [])
+    rnames = [r["name"] for r in reductions]
+    for i, r in enumerate(reductions):
+        if rnames.count(r["name"]) > 1:
+            raise StudyError("%s: outputs.reductions[%d]: the name %r is used twice" % (path, i, r["name"]))
+        for needed in REDUCTION_NEEDS[r["quantity"]]:
+            if needed not in r:
+                raise StudyError("%s: outputs.reductions[%d] (%r): quantity %r needs %r" % (
+                    path, i, r["name"], r["quantity"], needed))
+    for i, plot in enumerate(spec.get("plots", [])):
+        for name in plot["designs"]:
+            if name not in names:
+                raise StudyError("%s: plots[%d].designs: no design called %r" % (path, i, name))
+            if "x" not in next(d for d in spec["designs"] if d["name"] == name):
+                raise StudyError("%s: plots[%d].designs: design %r has no x (the parameter to plot against)" % (
+                    path, i, name))
+        for name in plot["statistics"]:
+            if name not in rnames:
+                raise StudyError("%s: plots[%d].statistics: no reduction called %r (reductions: %s)" % (
+                    path, i, name, ", ".join(rnames) or "none"))
+
+
+def load_study(path):
+    """Reads and checks a study file; raises StudyError naming the field and value at fault."""
+    try:
+        with open(path) as f:
+            spec = json.load(f)
+    except OSError as error:
+        raise StudyError("%s: cannot read the study file (%s)" % (path, error.strerror))
+    except json.JSONDecodeError as error:
+        raise StudyError("%s: not JSON (%s)" % (path, error))
+    validator = jsonschema.Draft202012Validator(schema())
+    errors = sorted(validator.iter_errors(spec), key=lambda e: list(e.absolute_path))
+    if errors:
+        e = jsonschema.exceptions.best_match(errors)
+        raise StudyError("%s: %s: %s" % (path, _field_name(e.absolute_path), e.message))
+    _check_references(path, spec)
+    study = Study(path=path, spec=spec)
+    study.base_models[""] = _load_model(path, "model", spec["model"])
+    for design in spec["designs"]:
+        if "model" in design:
+            study.base_models[design["name"]] = _load_model(path, "designs.%s.model" % design["name"],
+                                                            design["model"])
+    return study

@@ -1,0 +1,117 @@
+# SPDX-License-Identifier: BSD-3-Clause
+"""Study files: schema and reference errors name the field and value; designs expand to the
+expected points; ensemble members and parameters write the expected model values."""
+import json
+
+import numpy as np
+import pytest
+
+from clearjoint.study import StudyError, expand_study, load_study
+from clearjoint.study.expand import member_offsets
+from study_fixtures import write_study
+
+
+def edited(tmp_path, models_dir, edit):
+    path = write_study(tmp_path, models_dir)
+    with open(path) as f:
+        spec = json.load(f)
+    edit(spec)
+    with open(path, "w") as f:
+        json.dump(spec, f)
+    return path
+
+
+def journal(model):
+    return model["forces"][0]["journal"]
+
+
+def test_a_grid_with_members_expands_to_points_times_members(tmp_path, models_dir):
+    study = load_study(write_study(tmp_path, models_dir, radial=(0.05, 0.1, 0.3), members=3))
+    points, runs, membership = expand_study(study)
+    assert len(points) == 3 and len(runs) == 9 and len(membership) == 9
+    assert [p.point_id for p in points] == ["axial_clearance_mm=0.1,radial_clearance_mm=0.05",
+                                            "axial_clearance_mm=0.1,radial_clearance_mm=0.1",
+                                            "axial_clearance_mm=0.1,radial_clearance_mm=0.3"]
+
+
+def test_parameters_write_offset_plus_scale_times_value(tmp_path, models_dir):
+    study = load_study(write_study(tmp_path, models_dir, radial=(0.3,), members=1))
+    (_, [run], _) = expand_study(study)
+    assert journal(run.model)["radius"] == 0.01 + -0.001 * 0.3
+    assert journal(run.model)["length"] == 0.02 + -0.002 * 0.1
+    assert run.model["solver"]["end_time"] == study.spec["set"]["/solver/end_time"]
+
+
+def test_member_zero_is_the_point_unchanged_and_others_scale_the_crank_speed(tmp_path, models_dir):
+    study = load_study(write_study(tmp_path, models_dir, radial=(0.1,), members=3))
+    _, runs, membership = expand_study(study)
+    by_member = {r.member: r.model for r in runs}
+    assert member_offsets(3) == [-1, 0, 1] and member_offsets(9)[0] == -4 and member_offsets(1) == [0]
+    base = study.base_models[""]
+    wy = [h for h in base["initial_conditions"]["hold_velocities"] if h["component"] == "wy"][0]["value"]
+    for k, model in by_member.items():
+        held = [h for h in model["initial_conditions"]["hold_velocities"] if h["component"] == "wy"][0]
+        assert held["value"] == wy * (1.0 + k * 1e-9)
+        assert model["bodies"][0]["angular_velocity"][1] == base["bodies"][0]["angular_velocity"][1] * (1.0 + k * 1e-9)
+    assert by_member[0]["initial_conditions"] == base["initial_conditions"]
+
+
+def test_a_point_named_by_two_designs_is_one_point_with_the_larger_member_count(tmp_path, models_dir):
+    def add_design(spec):
+        spec["designs"].append({"name": "single", "grid": {"radial_clearance_mm": [0.1, 0.5]},
+                                "fixed": {"axial_clearance_mm": 0.1}})
+    study = load_study(edited(tmp_path, models_dir, add_design))
+    points, runs, _ = expand_study(study)
+    shared = [p for p in points if p.point_id.endswith("radial_clearance_mm=0.1")][0]
+    assert shared.designs == ("radial", "single") and shared.members == 3
+    assert len(points) == 4 and len(runs) == 3 * 3 + 1
+
+
+def test_seeded_random_draws_are_reproducible_and_inside_their_distribution(tmp_path, models_dir):
+    def random_design(spec):
+        spec["designs"] = [{"name": "draws", "random": {"draws": 50, "seed": 11, "distributions": {
+            "radial_clearance_mm": {"uniform": [0.05, 0.5]}, "axial_clearance_mm": {"loguniform": [0.01, 1.0]}}}}]
+    path = edited(tmp_path, models_dir, random_design)
+    first, second = expand_study(load_study(path))[0], expand_study(load_study(path))[0]
+    assert [p.values for p in first] == [p.values for p in second]
+    radial = np.array([p.value("radial_clearance_mm") for p in first])
+    axial = np.array([p.value("axial_clearance_mm") for p in first])
+    assert radial.min() >= 0.05 and radial.max() < 0.5 and axial.min() >= 0.01 and axial.max() < 1.0
+    assert len(set(radial)) == 50
+
+
+def test_zip_pairs_values_element_by_element(tmp_path, models_dir):
+    def diagonal(spec):
+        spec["designs"] = [{"name": "diagonal", "zip": {"radial_clearance_mm": [0.05, 0.5],
+                                                        "axial_clearance_mm": [0.05, 0.5]}}]
+    points, _, _ = expand_study(load_study(edited(tmp_path, models_dir, diagonal)))
+    assert [(p.value("radial_clearance_mm"), p.value("axial_clearance_mm")) for p in points] == [(0.05, 0.05), (0.5, 0.5)]
+
+
+@pytest.mark.parametrize("edit, message", [
+    (lambda s: s.update(study_format=2), "study_format"),
+    (lambda s: s["designs"][0]["grid"].update(radial_clearance_mm=["wide"]), "designs[0].grid.radial_clearance_mm[0]: 'wide'"),
+    (lambda s: s["designs"][0]["grid"].update(diameter=[1.0]), "grid.diameter: no such parameter"),
+    (lambda s: s["designs"][0].update(zip={"axial_clearance_mm": [0.1]}), "give one of grid, zip, random"),
+    (lambda s: s.pop("ensemble"), "members = 3 needs the study's ensemble"),
+    (lambda s: s["outputs"]["reductions"][0].pop("column"), "quantity 'peak_abs' needs 'column'"),
+    (lambda s: s["outputs"]["reductions"].append(dict(s["outputs"]["reductions"][0])), "the name 'peak' is used twice"),
+    (lambda s: s["parameters"]["radial_clearance_mm"]["set"][0].update(path="/forces/0/journal/radios"),
+     "/forces/0/journal/radios: no member 'radios'"),
+    (lambda s: s.update(model="no_such_model.json"), "model = 'no_such_model.json': cannot read"),
+    (lambda s: s.update(plots=[{"file": "a.png", "designs": ["radial"], "statistics": ["peek"]}]),
+     "plots[0].statistics: no reduction called 'peek'"),
+])
+def test_a_bad_study_file_is_an_error_naming_the_field(tmp_path, models_dir, edit, message):
+    with pytest.raises(StudyError, match=None) as error:
+        study = load_study(edited(tmp_path, models_dir, edit))
+        expand_study(study)
+    assert message in str(error.value)
+
+
+def test_a_missing_or_malformed_study_file_is_an_error_naming_the_file(tmp_path):
+    with pytest.raises(StudyError, match="cannot read the study file"):
+        load_study(str(tmp_path / "absent.json"))
+    (tmp_path / "bad.json").write_text("{not json")
+    with pytest.raises(StudyError, match="bad.json: not JSON"):
+        load_study(str(tmp_path / "bad.json"))
