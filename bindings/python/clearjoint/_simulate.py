@@ -105,6 +105,16 @@ def _progress_bar(progress: Progress) -> Any:
     raise TypeError(f"progress = {progress!r}: must be True, False, None or a callable(fraction)")
 
 
+def _json_value(value: Any) -> Any:
+    """NumPy scalars and arrays in a model dict, as JSON numbers and lists (parameter studies
+    build models from arrays)."""
+    if isinstance(value, np.ndarray):
+        return value.tolist()
+    if isinstance(value, np.generic):
+        return value.item()
+    raise TypeError(f"model: a value of type {type(value).__name__} is not a JSON value")
+
+
 def simulate(model: Model, *, progress: Progress = False) -> SimulationResult:
     """Run a multibody model in process and return its time series as NumPy arrays.
 
@@ -113,7 +123,7 @@ def simulate(model: Model, *, progress: Progress = False) -> SimulationResult:
     model:
         A path to a model file (str or os.PathLike), or a dict in the same JSON model-file format
         (docs/dynamics.md; models/ has examples), e.g. ``json.load(open(path))`` with some values
-        changed.
+        changed; NumPy numbers and arrays in it are read as numbers and lists.
     progress:
         False (default) or None: silent. True: a progress bar over simulated time, tqdm's when
         tqdm is installed, else a one-line bar on standard error. A callable: called as
@@ -141,7 +151,8 @@ def simulate(model: Model, *, progress: Progress = False) -> SimulationResult:
     bar = _progress_bar(progress)
     try:
         if isinstance(model, Mapping):
-            tables, summary = _core.simulate_text(json.dumps(model), "<dict>", bar)
+            text = json.dumps(model, default=_json_value)
+            tables, summary = _core.simulate_text(text, "<dict>", bar)
         elif isinstance(model, (str, os.PathLike)):
             tables, summary = _core.simulate_file(os.fspath(model), bar)
         else:

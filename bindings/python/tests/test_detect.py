@@ -185,6 +185,19 @@ def test_mixed_shapes_broadcast_the_single_rows_over_the_batched_ones(batched):
         assert_row_equals_single(batch, n, clearjoint.detect(METRES, *(a[n] for a in tiled)))
 
 
+def test_strided_fortran_ordered_and_float32_arrays_give_the_answers_of_contiguous_float64():
+    poses = realistic_poses(200, seed=12)
+    contiguous = clearjoint.detect(METRES, *poses)
+    wide = [np.repeat(p, 2, axis=0)[::2] for p in poses]  # every other row of a larger array
+    assert not wide[0].flags.c_contiguous
+    assert clearjoint.detect(METRES, *wide) == contiguous
+    fortran = [np.asfortranarray(p) for p in poses]
+    assert clearjoint.detect(METRES, *fortran) == contiguous
+    single = [p.astype(np.float32) for p in poses]
+    assert clearjoint.detect(METRES, *single) == clearjoint.detect(
+        METRES, *(p.astype(np.float64) for p in single))
+
+
 def test_a_fixed_bearing_broadcasts_over_journal_poses_given_as_lists_and_integers():
     batch = clearjoint.detect(dims(TABLE2), [0, 0, 0], [0, 0, 1],
                               [[0, 0, 0], [0, 0.15, 0.02], [0.03, 0.04, 0.13]], [0, 0, 1])

@@ -78,6 +78,20 @@ def test_a_dict_and_the_file_it_was_written_to_give_the_same_arrays(short_model,
     assert from_dict.summary == from_file.summary
 
 
+def test_numpy_values_in_a_dict_are_read_as_numbers_and_lists(short_model):
+    from_numpy = json.loads(json.dumps(short_model))
+    from_numpy["solver"]["end_time"] = np.float64(SHORT_RUN_END_TIME)
+    from_numpy["gravity"] = np.array(short_model["gravity"])
+    a, b = clearjoint.simulate(short_model), clearjoint.simulate(from_numpy)
+    assert same_bits(a["energy"]["total"], b["energy"]["total"])
+
+
+def test_a_value_json_cannot_hold_raises_type_error(short_model):
+    short_model["solver"]["end_time"] = object()
+    with pytest.raises(TypeError, match="model: a value of type object is not a JSON value"):
+        clearjoint.simulate(short_model)
+
+
 def test_the_summary_reports_the_run(short_model):
     summary = clearjoint.simulate(short_model).summary
     assert summary["steps"] > 0
