@@ -43,7 +43,14 @@ Vector3 unit_axis(const PartPose& pose) {
   if (detail::in_safe_square_range(squared)) {
     return pose.axis_W / std::sqrt(squared);
   }
-  return pose.axis_W.stableNormalized();
+  // Rescaled by a power of two (exact) so that the largest component is in [1, 2), then
+  // normalised. Not Eigen's stableNormalized: it divides by sqrt(z) max|a_i|, a product that is
+  // subnormal for a subnormal axis and keeps only its few significant bits (2e-5 off for
+  // 0.36 2^-1060).
+  const int exponent = std::ilogb(pose.axis_W.cwiseAbs().maxCoeff());
+  const Vector3 scaled(std::ldexp(pose.axis_W.x(), -exponent), std::ldexp(pose.axis_W.y(), -exponent),
+                       std::ldexp(pose.axis_W.z(), -exponent));
+  return scaled / scaled.norm();
 }
 
 BaseCenters base_centers(const PartPose& pose, double length) {

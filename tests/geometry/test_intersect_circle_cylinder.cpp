@@ -424,7 +424,9 @@ TEST(CircleCylinder, NeverCertifiesAWrongAnswerWithoutTheExactFallback) {
     EXPECT_EQ(r.root_count(), c.roots);
     EXPECT_EQ(r.arc_count, c.arcs);
   }
-  RecordProperty("proved_without_exact_fallback", proved);
+  // Proved without the exact fallback: 6 of the 35 measured (the others are tangencies or within
+  // ulps of one). Floor 5 (margin 1): the soundness loop above must have checked something.
+  EXPECT_GE(proved, 5);
 }
 
 // ---- swapped conventions -----------------------------------------------------------------------

@@ -283,6 +283,7 @@ TEST(CirclePlane, DecidesEveryUlpPerturbationOfTheDegenerateCasesCorrectly) {
 TEST(CirclePlane, NeverCertifiesAWrongAnswerWithoutTheExactFallback) {
   IntersectionOptions options;
   options.exact_fallback = false;
+  int proved = 0;
   for (const Perturbed& c : perturbations_of_the_tangency()) {
     SCOPED_TRACE(c.what);
     const CirclePlaneIntersection r = intersect_circle_plane(c.rim, c.plane, options);
@@ -290,9 +291,13 @@ TEST(CirclePlane, NeverCertifiesAWrongAnswerWithoutTheExactFallback) {
       EXPECT_NE(r.certificate.reason, CertificateReason::none);
       continue;
     }
+    ++proved;
     EXPECT_EQ(r.topology, c.expected);
     EXPECT_EQ(static_cast<int>(r.side), c.expected_side);
   }
+  // Proved without the exact fallback: 2 of the 13 measured (the rest are within an ulp or two of
+  // the tangency, where only the exact tier decides). Floor 1: a margin of 1, and never vacuous.
+  EXPECT_GE(proved, 1);
 }
 
 TEST(CirclePlane, EnclosesBothCrossingsJustPastTheTangency) {

@@ -213,6 +213,7 @@ TEST(CertifiedRimRoots, NeverProvesADoubleRoot) {
 TEST(CertifiedRimRoots, IsNeverWrongOneUlpAwayFromADoubleRoot) {
   // k0 + cos t with k0 = 1 +- a few ulps: no root above 1, two roots pi +- acos(k0)... below.
   double up = 1.0, down = 1.0;
+  int proved = 0;
   for (int step = 0; step < 64; ++step) {
     up = std::nextafter(up, 2.0);
     down = std::nextafter(down, 0.0);
@@ -223,7 +224,11 @@ TEST(CertifiedRimRoots, IsNeverWrongOneUlpAwayFromADoubleRoot) {
     const RimRoots two = certified_rim_roots(below);
     const Real beta = acos(-Real(down));  // cos t = -down
     if (two.proved) expect_proved_roots_match(two, {beta, it::two_pi() - beta}, exact(below));
+    proved += none.proved + two.proved;
   }
+  // Proved: 106 of the 128 measured (the few ulps nearest the double root are declined). The
+  // floor leaves a margin of 16 for a tier that declines a little more.
+  EXPECT_GE(proved, 90);
 }
 
 TEST(CertifiedRimRoots, NeverProvesWhenTheCoefficientErrorsAllowBothAnswers) {
@@ -335,8 +340,9 @@ TEST(CertifiedRimRoots, IsNeverWrongOneUlpAwayFromTheDoubleRootAtTheTopOfACap) {
       expect_proved_roots_match(result, cap_family_roots(k0, kCapSecondHarmonic), exact(g));
     }
   }
-  // Nothing to require of how many: a few ulps from a double root any honest tier may decline.
-  RecordProperty("proved", proved);
+  // Proved: 105 of the 128 measured; a few ulps from a double root any honest tier may decline
+  // some. The floor leaves a margin of 15 and keeps the loop from passing on nothing.
+  EXPECT_GE(proved, 90);
 }
 
 TEST(CertifiedRimRoots, MatchesTheExactRootsOfShallowCrossingsAndNearMisses) {

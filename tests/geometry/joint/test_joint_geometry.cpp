@@ -103,5 +103,66 @@ TEST(BaseCenters, TinyAndHugeAxesGiveTheSameCentres) {
   }
 }
 
+TEST(UnitAxis, IsTheAxisOverItsLengthWithinAnUlpOfEachComponent) {
+  // a / |a| in long double (64-bit significand) rounded once to double against unit_axis: the
+  // library's a / sqrt(a . a) rounds three times (a . a, sqrt, the division), each half an ulp of
+  // its result, so the two differ by at most 2 ulps of a component of magnitude <= 1.
+  constexpr double kTwoUlpsOfOne = 2 * std::numeric_limits<double>::epsilon();
+  const Vector3 axes[] = {Vector3(3, 4, 0),          Vector3(1, 2, 2),        Vector3(-0.3, 1e-3, 7.1),
+                          Vector3(1e-5, -2e-5, 4e-6), Vector3(123.0, 456.0, -789.0)};
+  for (const Vector3& a : axes) {
+    const Vector3 u = unit_axis(PartPose{Vector3::Zero(), a});
+    const long double length = std::sqrt(static_cast<long double>(a.x()) * a.x() +
+                                         static_cast<long double>(a.y()) * a.y() +
+                                         static_cast<long double>(a.z()) * a.z());
+    for (int i = 0; i < 3; ++i) {
+      EXPECT_NEAR(u[i], static_cast<double>(a[i] / length), kTwoUlpsOfOne) << a.transpose();
+    }
+  }
+  // Exact cases: a coordinate axis of any length gives the unit coordinate axis exactly.
+  EXPECT_EQ(unit_axis(PartPose{Vector3::Zero(), Vector3(0, 0, 7)}), Vector3(0, 0, 1));
+  EXPECT_EQ(unit_axis(PartPose{Vector3::Zero(), Vector3(-0.25, 0, 0)}), Vector3(-1, 0, 0));
+}
+
+TEST(UnitAxis, NormalisesAxesWhoseSquaredLengthWouldUnderOrOverflowInDouble) {
+  // Beyond |a|^2 in [2^-1000, 2^1000] unit_axis rescales before normalising (unit_axis_range.hpp).
+  // The reference b / |b| of the axis b as stored (a subnormal b has lost bits of a: the
+  // reference is taken of b, not of a) in long double, whose exponent range holds |b|^2 for every
+  // double b. Rescaling by a power of two is exact; the normalisation then rounds as above.
+  constexpr double kTwoUlpsOfOne = 2 * std::numeric_limits<double>::epsilon();
+  const Vector3 a(0.36, -0.48, 0.8);
+  for (const double scale : {0x1p-1060, 0x1p-520, 0x1p-490, 0x1p490, 0x1p520, 0x1p1000}) {
+    const Vector3 b = a * scale;
+    const Vector3 u = unit_axis(PartPose{Vector3::Zero(), b});
+    const long double length = std::sqrt(static_cast<long double>(b.x()) * b.x() +
+                                         static_cast<long double>(b.y()) * b.y() +
+                                         static_cast<long double>(b.z()) * b.z());
+    ASSERT_GT(length, 0.0L) << scale;
+    for (int i = 0; i < 3; ++i) {
+      EXPECT_NEAR(u[i], static_cast<double>(b[i] / length), kTwoUlpsOfOne) << scale;
+    }
+  }
+}
+
+TEST(BaseCenters, FromAGivenUnitAxisArePlusAndMinusHalfTheLengthAlongIt) {
+  // The three-argument form uses the axis as given (the caller has normalised it): with (0, 0, 2)
+  // the centres are a length, not half a length, from P. Products and sums of small integers:
+  // exact.
+  const BaseCenters doubled = base_centers(Vector3(1, 2, 3), Vector3(0, 0, 2), 1.0);
+  EXPECT_EQ(doubled.p_WA, Vector3(1, 2, 4));
+  EXPECT_EQ(doubled.p_WB, Vector3(1, 2, 2));
+  const BaseCenters table2 = base_centers(Vector3(0.5, -1, 0), Vector3(0, 1, 0), 19.8);
+  EXPECT_EQ(table2.p_WA, Vector3(0.5, 8.9, 0));   // -1 + 9.9, rounded once
+  EXPECT_EQ(table2.p_WB, Vector3(0.5, -10.9, 0));
+  // And the two-argument form is the three-argument one at unit_axis(pose), bit for bit.
+  for (const PartPose& pose : {PartPose{Vector3(1, 2, 3), Vector3(3, 4, 0)},
+                               PartPose{Vector3(-7, 0.1, 2), Vector3(1, 2, 2)}}) {
+    const BaseCenters two = base_centers(pose, 19.8);
+    const BaseCenters three = base_centers(pose.p_WP, unit_axis(pose), 19.8);
+    EXPECT_EQ(two.p_WA, three.p_WA);
+    EXPECT_EQ(two.p_WB, three.p_WB);
+  }
+}
+
 }  // namespace
 }  // namespace clearjoint::geometry
