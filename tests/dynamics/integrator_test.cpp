@@ -201,13 +201,21 @@ TEST(Integrator, RetriesAShorterStepWhenATrialStageCannotBeEvaluated) {
   settings.end_time = 0.2;
   settings.report_step = 0.01;
   settings.initial_step = 0.1;  // its stages reach x = 0.55
+  settings.relative_tolerance = settings.absolute_tolerance = 1e-10;
   double largest_x = 0.0;
   const IntegrationStatistics stats = integrate(system, y, settings, [&](double, std::span<const double> state) {
     largest_x = std::max(largest_x, state[0]);
   });
   EXPECT_GE(stats.failed_attempts, 1);
-  EXPECT_LT(largest_x, 0.502);                 // the solution never goes near the undefined region
-  EXPECT_NEAR(y[7], -1.0, 1e-5);               // and comes back elastically at 1 m/s (x velocity)
+  // The linear wall (omega = 1000 rad/s) stops the ball at 0.5 + v / omega = 0.501 m: the solution
+  // never goes near the undefined region.
+  EXPECT_LT(largest_x, 0.502);
+  // And comes back elastically at 1 m/s (x velocity). The wall force's derivative jumps at
+  // x = 0.5, which the steps straddling it do not resolve to the integrator's order; the error
+  // then follows the tolerance less than linearly: measured 6.4e-6 m/s at 1e-7 and 1.1e-9 at the
+  // 1e-10 used here. The bound leaves a margin of 9.
+  constexpr double kReboundTolerance = 1e-8;
+  EXPECT_NEAR(y[7], -1.0, kReboundTolerance);
 }
 
 TEST(IntegratorSettings, RejectNonPositiveToleranceNamingTheField) {

@@ -1,12 +1,14 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// Every joint type's Jacobian and gamma against finite differences of Phi along a motion with
-// constant rdot and constant body-frame omega' (so dv/dt = 0 and d2Phi/dt2 = -gamma exactly).
+// Every joint type's Phi against values derived by hand at assembled and displaced poses, and its
+// Jacobian and gamma against finite differences of Phi along a motion with constant rdot and
+// constant body-frame omega' (so dv/dt = 0 and d2Phi/dt2 = -gamma exactly).
 
 #include "clearjoint/dynamics/joint_equations.hpp"
 
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
+#include <numbers>
 #include <random>
 
 namespace clearjoint::dynamics {
@@ -137,6 +139,136 @@ TEST(RevoluteJoint, IsSatisfiedWhenPointsCoincideAndAxesAlign) {
   ConstraintRows rows;
   JointEquations::build(j, 0, 1, k).evaluate(0.0, k, rows);
   EXPECT_LT(rows.value.head(rows.count).cwiseAbs().maxCoeff(), 1e-15);
+}
+
+// ---- Phi's value at assembled and displaced poses, derived by hand -----------------------------
+//
+// Body i at r_i = (1, 2, 3) turned 90 degrees about z (A_i (a, b, c) = (-b, a, c)); its joint point
+// (0.5, 0, 0) is at P_i = (1, 2.5, 3). Its axis z' stays z; the perpendiculars the equations use
+// are u' = unit_perpendicular(z) = z x x = y and v' = z x u' = -x, in the world u_i = (-1, 0, 0),
+// v_i = (0, -1, 0). Body j's joint point is (0, 0, -0.4) on its z axis; assembled, body j is
+// unrotated at r_j = P_i - (0, 0, -0.4) = (1, 2.5, 3.4). Displacements of body j below give each
+// row's value from those vectors.
+
+// Rotations of unit-size vectors and sums of metre-scale positions: a few ulps of 1.
+constexpr double kPhiValueTolerance = 1e-14;
+
+const Vector3 kPointI_B(0.5, 0.0, 0.0), kPointJ_B(0.0, 0.0, -0.4);
+const Vector3 kJointPointI_W(1.0, 2.5, 3.0);
+
+BodyState body_i_pose() {
+  BodyState i;
+  i.position_W = Vector3(1, 2, 3);
+  i.euler_parameters = euler_parameters_from_axis_angle(Vector3::UnitZ(), std::numbers::pi / 2);
+  return i;
+}
+
+/// Body j turned by `turn` (a rotation as Euler parameters), its joint point at P_i + offset_W.
+BodyState body_j_pose(const Vector4& turn, const Vector3& offset_W = Vector3::Zero()) {
+  BodyState j;
+  j.euler_parameters = turn;
+  j.position_W = kJointPointI_W + offset_W - rotation_from_euler_parameters(turn) * kPointJ_B;
+  return j;
+}
+
+const Vector4 kUnturned(1.0, 0.0, 0.0, 0.0);
+
+Vector4 turn_about(const Vector3& axis, double angle) { return euler_parameters_from_axis_angle(axis, angle); }
+
+/// Phi of `type` (its axes z on both bodies unless given) built at the assembled pose, evaluated
+/// with body j at `j` and time t.
+Eigen::VectorXd phi_at(JointType type, const BodyState& j, double t = 0.0, const Vector3& axis_i_B = Vector3::UnitZ(),
+                       const Vector3& axis_j_B = Vector3::UnitZ()) {
+  JointDescription d = description(type);
+  d.point_i_B = kPointI_B;
+  d.point_j_B = kPointJ_B;
+  d.axis_i_B = axis_i_B;
+  d.axis_j_B = axis_j_B;
+  SystemKinematics assembled(2), displaced(2);
+  assembled.set(0, body_i_pose());
+  assembled.set(1, body_j_pose(kUnturned));
+  displaced.set(0, body_i_pose());
+  displaced.set(1, j);
+  ConstraintRows rows;
+  JointEquations::build(d, 0, 1, assembled).evaluate(t, displaced, rows);
+  return rows.value.head(rows.count);
+}
+
+void expect_rows(const Eigen::VectorXd& actual, std::initializer_list<double> expected) {
+  ASSERT_EQ(actual.size(), static_cast<Eigen::Index>(expected.size()));
+  int k = 0;
+  for (const double e : expected) {
+    EXPECT_NEAR(actual[k], e, kPhiValueTolerance) << "row " << k;
+    ++k;
+  }
+}
+
+TEST(JointPhi, SphericalIsTheGapBetweenTheTwoPoints) {
+  expect_rows(phi_at(JointType::spherical, body_j_pose(turn_about(Vector3(1, 2, 2), 0.7))), {0, 0, 0});
+  expect_rows(phi_at(JointType::spherical, body_j_pose(kUnturned, Vector3(0.01, -0.02, 0.03))), {0.01, -0.02, 0.03});
+}
+
+TEST(JointPhi, RevoluteIsZeroWhenTurnedAboutItsAxisAndSinAlphaWhenTilted) {
+  expect_rows(phi_at(JointType::revolute, body_j_pose(turn_about(Vector3::UnitZ(), 1.1))), {0, 0, 0, 0, 0});
+  // Tilted by alpha about x: h_j = (0, -sin alpha, cos alpha); u_i . h_j = 0, v_i . h_j = sin alpha.
+  const double alpha = 0.3;
+  expect_rows(phi_at(JointType::revolute, body_j_pose(turn_about(Vector3::UnitX(), alpha))),
+              {0, 0, 0, 0, std::sin(alpha)});
+  expect_rows(phi_at(JointType::revolute, body_j_pose(kUnturned, Vector3(0, 0, 0.05))), {0, 0, 0.05, 0, 0});
+}
+
+TEST(JointPhi, UniversalIsTheCosineBetweenItsCrossAxes) {
+  // Axis x' on body i (world (0, 1, 0)), x' on body j (world x): perpendicular when assembled.
+  // Body j turned by beta about z: h_j = (cos beta, sin beta, 0), h_i . h_j = sin beta. Turned
+  // about its own x axis (the cross's freedom) or about y (the other), nothing.
+  const double beta = 0.2;
+  expect_rows(phi_at(JointType::universal, body_j_pose(turn_about(Vector3::UnitZ(), beta)), 0.0, Vector3::UnitX(),
+                     Vector3::UnitX()),
+              {0, 0, 0, std::sin(beta)});
+  expect_rows(phi_at(JointType::universal, body_j_pose(turn_about(Vector3::UnitX(), 0.9)), 0.0, Vector3::UnitX(),
+                     Vector3::UnitX()),
+              {0, 0, 0, 0});
+  expect_rows(phi_at(JointType::universal, body_j_pose(turn_about(Vector3::UnitY(), 0.9)), 0.0, Vector3::UnitX(),
+                     Vector3::UnitX()),
+              {0, 0, 0, 0});
+}
+
+TEST(JointPhi, CylindricalIsZeroAlongAndAboutItsAxisAndTheOffsetAcrossIt) {
+  expect_rows(phi_at(JointType::cylindrical, body_j_pose(turn_about(Vector3::UnitZ(), -2.0), Vector3(0, 0, 0.7))),
+              {0, 0, 0, 0});
+  // Moved across the axis by d = (0.02, 0.03, 0): u_i . d = -0.02, v_i . d = -0.03.
+  expect_rows(phi_at(JointType::cylindrical, body_j_pose(kUnturned, Vector3(0.02, 0.03, 0))), {0, 0, -0.02, -0.03});
+  const double alpha = 0.3;
+  expect_rows(phi_at(JointType::cylindrical, body_j_pose(turn_about(Vector3::UnitX(), alpha))),
+              {0, std::sin(alpha), 0, 0});
+}
+
+TEST(JointPhi, TranslationalIsZeroAlongItsAxisAndMinusSinGammaWhenTurnedAboutIt) {
+  expect_rows(phi_at(JointType::translational, body_j_pose(kUnturned, Vector3(0, 0, -0.3))), {0, 0, 0, 0, 0});
+  // Turned by gamma about z: u_i . A_j (0, -1, 0) = (-1, 0, 0) . (sin gamma, -cos gamma, 0).
+  const double gamma = 0.4;
+  // Rows: the two axis pairs, the turn pair, then the two offsets (evaluate() orders pairs first).
+  expect_rows(phi_at(JointType::translational, body_j_pose(turn_about(Vector3::UnitZ(), gamma))),
+              {0, 0, -std::sin(gamma), 0, 0});
+  expect_rows(phi_at(JointType::translational, body_j_pose(kUnturned, Vector3(0.02, 0.03, 0))),
+              {0, 0, 0, -0.02, -0.03});
+}
+
+TEST(JointPhi, FixedIsThePointGapAndTheSinesOfTheRelativeTurn) {
+  // Rows x_i . A_j A_i y', x_i . A_j A_i z', y_i . A_j A_i z' (x_i = (0, 1, 0), y_i = (-1, 0, 0)).
+  const double gamma = 0.4, alpha = 0.3;
+  expect_rows(phi_at(JointType::fixed, body_j_pose(turn_about(Vector3::UnitZ(), gamma))),
+              {0, 0, 0, -std::sin(gamma), 0, 0});
+  expect_rows(phi_at(JointType::fixed, body_j_pose(turn_about(Vector3::UnitX(), alpha))),
+              {0, 0, 0, 0, -std::sin(alpha), 0});
+  expect_rows(phi_at(JointType::fixed, body_j_pose(kUnturned, Vector3(0.01, 0, -0.02))), {0.01, 0, -0.02, 0, 0, 0});
+}
+
+TEST(JointPhi, AngleDriverIsTheSineOfThePrescribedAngleLessTheActualOne) {
+  // description(): angle law 1.7 t - 0.8 t^2 / 2, at t = 0.5: 0.75 rad. Turned by 0.5 rad: sin 0.25.
+  expect_rows(phi_at(JointType::angle_driver, body_j_pose(turn_about(Vector3::UnitZ(), 0.5)), 0.5), {std::sin(0.25)});
+  expect_rows(phi_at(JointType::angle_driver, body_j_pose(turn_about(Vector3::UnitZ(), 0.75), Vector3(0.1, 0, 0)), 0.5),
+              {0});
 }
 
 }  // namespace

@@ -118,6 +118,66 @@ TEST(ModelFile, RejectsAnUnknownContactLawAndAMisspeltFrictionKey) {
             "m.json: forces[0].friction.coeficient: unknown key (a typo?)");
 }
 
+TEST(ModelFile, ReadsASpringDamperAndAPointLoadWithEveryField) {
+  const ModelDescription m = parse_model(R"({
+    "bodies": [{"name": "a", "mass": 1, "inertia": [1,1,1], "position": [0,0,0]}],
+    "forces": [
+      {"type": "spring_damper", "name": "s", "body_i": "ground", "body_j": "a", "point_i": [1,2,3],
+       "point_j": [4,5,6], "stiffness": 7, "damping": 8, "free_length": 9},
+      {"type": "point_load", "name": "p", "body": "a", "point": [0.5,0,0], "force": [0,-2,0],
+       "moment": [0,0,3]},
+      {"type": "spring_damper", "name": "undamped", "body_i": "a", "body_j": "ground",
+       "stiffness": 1, "free_length": 0},
+      {"type": "point_load", "name": "pure couple", "body": "a", "moment": [1,0,0]}]})",
+                                         "m.json");
+  ASSERT_EQ(m.forces.size(), 4u);
+  const auto& s = std::get<SpringDamperDescription>(m.forces[0]);
+  EXPECT_EQ(s.name, "s");
+  EXPECT_EQ(s.body_i, "ground");
+  EXPECT_EQ(s.body_j, "a");
+  EXPECT_EQ(s.point_i_B, Vector3(1, 2, 3));
+  EXPECT_EQ(s.point_j_B, Vector3(4, 5, 6));
+  EXPECT_EQ(s.parameters.stiffness, 7.0);
+  EXPECT_EQ(s.parameters.damping, 8.0);
+  EXPECT_EQ(s.parameters.free_length, 9.0);
+  const auto& p = std::get<PointLoadDescription>(m.forces[1]);
+  EXPECT_EQ(p.name, "p");
+  EXPECT_EQ(p.body, "a");
+  EXPECT_EQ(p.point_B, Vector3(0.5, 0, 0));
+  EXPECT_EQ(p.force_W, Vector3(0, -2, 0));
+  EXPECT_EQ(p.moment_W, Vector3(0, 0, 3));
+  // What they omit: damping 0, points at the frame origins, no force or moment.
+  const auto& undamped = std::get<SpringDamperDescription>(m.forces[2]);
+  EXPECT_EQ(undamped.parameters.damping, 0.0);
+  EXPECT_EQ(undamped.point_i_B, Vector3::Zero());
+  const auto& couple = std::get<PointLoadDescription>(m.forces[3]);
+  EXPECT_EQ(couple.force_W, Vector3::Zero());
+  EXPECT_EQ(couple.point_B, Vector3::Zero());
+  EXPECT_EQ(couple.moment_W, Vector3(1, 0, 0));
+}
+
+TEST(ModelFile, NamesTheMissingStiffnessOfASpringAndAnUnknownForceType) {
+  const std::string missing = error_of(R"({"bodies": [], "forces": [{"type": "spring_damper", "name": "s",
+      "body_i": "a", "body_j": "b", "free_length": 1}]})");
+  EXPECT_NE(missing.find("forces[0].stiffness"), std::string::npos) << missing;
+  const std::string unknown = error_of(R"({"bodies": [], "forces": [{"type": "torsion_spring", "name": "t"}]})");
+  EXPECT_NE(unknown.find("forces[0].type = \"torsion_spring\": unknown force type"), std::string::npos) << unknown;
+  EXPECT_EQ(error_of(R"({"bodies": [], "forces": [{"type": "point_load", "name": "p", "body": "a", "force": [1,2]}]})"),
+            "m.json: forces[0].force = [1,2]: must be an array of 3 numbers");
+}
+
+TEST(ModelFile, ReadsACylindricalJoint) {
+  const ModelDescription m = parse_model(R"({
+    "bodies": [{"name": "a", "mass": 1, "inertia": [1,1,1], "position": [0,0,0]}],
+    "joints": [{"name": "c", "type": "cylindrical", "body_i": "ground", "body_j": "a",
+                "point_i": [0,0,1], "point_j": [0,0,0], "axis_i": [0,1,0], "axis_j": [0,2,0]}]})",
+                                         "m.json");
+  ASSERT_EQ(m.joints.size(), 1u);
+  EXPECT_EQ(m.joints[0].type, JointType::cylindrical);
+  EXPECT_EQ(m.joints[0].point_i_B, Vector3(0, 0, 1));
+  EXPECT_EQ(m.joints[0].axis_j_B, Vector3(0, 2, 0));
+}
+
 TEST(ModelFile, ReadsTheShippedModels) {
   for (const char* file : {"slider_crank_planar_ideal.json", "slider_crank_spatial_ideal.json"}) {
     const ModelDescription m = read_model_file(std::string(CLEARJOINT_MODELS_DIR) + "/" + file);

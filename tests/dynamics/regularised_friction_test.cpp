@@ -23,6 +23,31 @@ TEST(RegularisedFriction, HasCoulombMagnitudeTimesTanhAlongTheSlidingVelocity) {
   EXPECT_NEAR(f.normalized().dot(slip.normalized()), 1.0, kFewUlps);
 }
 
+TEST(RegularisedFriction, MatchesEquation32AtSeveralSpeedsCoefficientsAndDirections) {
+  // Eq. (32) written out in long double with tanh x = -expm1(-2x) / (2 + expm1(-2x)) (exact
+  // identity, a second formulation of tanh), against the library's vector, component by component.
+  int compared = 0;
+  for (const FrictionParameters p : {FrictionParameters{0.1, 1000.0}, FrictionParameters{0.35, 20.0}}) {
+    for (const double normal_force : {3.0, 2.5e4}) {
+      for (const double speed : {1e-7, 1e-4, 2e-3, 0.05, 3.0}) {
+        for (const Vector3& direction : {Vector3(1, 0, 0), Vector3(0.36, -0.48, 0.8), Vector3(0, -0.6, -0.8)}) {
+          const Vector3 slip = speed * direction;
+          const long double x = static_cast<long double>(p.velocity_coefficient) * speed;
+          const long double m = std::expm1(-2 * x);
+          const long double magnitude = p.coefficient * static_cast<long double>(normal_force) * (-m / (2 + m));
+          const Vector3 f = regularised_friction_force(p, normal_force, slip);
+          for (int i = 0; i < 3; ++i) {
+            EXPECT_NEAR(f[i], static_cast<double>(magnitude * direction[i]), kFewUlps * static_cast<double>(magnitude))
+                << "mu " << p.coefficient << " k " << p.velocity_coefficient << " F " << normal_force << " v " << speed;
+          }
+          ++compared;
+        }
+      }
+    }
+  }
+  EXPECT_EQ(compared, 2 * 2 * 5 * 3);
+}
+
 TEST(RegularisedFriction, NeverExceedsTheCoulombForce) {
   const FrictionParameters table2;
   for (double speed : {1e-6, 1e-3, 1.0, 1e3}) {

@@ -7,7 +7,9 @@
 
 #include <cmath>
 #include <fstream>
+#include <map>
 #include <sstream>
+#include <variant>
 
 #include "dynamics_test_support.hpp"
 
@@ -55,8 +57,8 @@ TEST(SpatialSliderCrank, ConservesMechanicalEnergyWithIdealJoints) {
 
 TEST(SpatialSliderCrankWithClearance, WritesTheJointsContactTimeSeriesUnlessAskedNotTo) {
   ModelDescription model = test::shipped_model("slider_crank_spatial_clearance.json");
-  model.solver.end_time = 0.02;
-  model.solver.report_step = 1e-3;
+  model.solver.end_time = 0.1;
+  model.solver.report_step = 1e-4;
   const auto dir = std::filesystem::temp_directory_path() / "clearjoint_spatial_clearance_test";
   std::filesystem::remove_all(dir);
   const SimulationSummary summary = simulate(model, dir);
@@ -67,8 +69,49 @@ TEST(SpatialSliderCrankWithClearance, WritesTheJointsContactTimeSeriesUnlessAske
   std::getline(csv, header);
   EXPECT_EQ(header.rfind("time,scenario,aligned,certainty,contact_count,axis_angle,", 0), 0u) << header;
   EXPECT_NE(header.find("line.impact_speed"), std::string::npos);
-  const auto rows = std::count(std::istreambuf_iterator<char>(csv), {}, '\n');
-  EXPECT_EQ(rows, 21);
+  // The values, not only the layout: every row's normal force is the joint's law (Lankarani-
+  // Nikravesh, eq. 29, written out here) at the depth, approach speed and impact speed of the
+  // same row, and its friction force at most mu F_N (eqs. 31-32).
+  const NormalForceParameters law = std::get<ClearanceRevoluteDescription>(model.forces[0]).parameters.normal;
+  const double mu = std::get<ClearanceRevoluteDescription>(model.forces[0]).parameters.friction.coefficient;
+  ASSERT_EQ(law.model, NormalForceModel::lankarani_nikravesh);
+  std::vector<std::string> names;
+  {
+    std::stringstream fields(header);
+    for (std::string name; std::getline(fields, name, ',');) names.push_back(name);
+  }
+  // Rounding of the printed values (shortest round-trip: none) and of the law's few operations.
+  constexpr double kLawRounding = 1e-13;
+  int rows = 0, active_slots = 0;
+  for (std::string line; std::getline(csv, line); ++rows) {
+    std::stringstream fields(line);
+    std::map<std::string, double> row;
+    for (const std::string& name : names) {
+      std::string cell;
+      std::getline(fields, cell, ',');
+      row[name] = std::stod(cell);
+    }
+    for (const char* slot : {"radial_a", "radial_b", "line", "axial_a", "axial_b"}) {
+      const std::string s(slot);
+      ASSERT_EQ(row.count(s + ".depth"), 1u) << s;
+      const double depth = row[s + ".depth"], force = row[s + ".normal_force"];
+      if (std::isnan(depth)) {
+        EXPECT_EQ(force, 0.0) << s << " at t = " << row["time"];
+        continue;
+      }
+      ++active_slots;
+      const double impact = std::max(row[s + ".impact_speed"], law.minimum_impact_speed);
+      const double expected = std::max(0.0, law.stiffness * std::pow(depth, law.exponent) *
+                                                (1 + 0.75 * (1 - law.restitution * law.restitution) *
+                                                         row[s + ".approach_speed"] / impact));
+      EXPECT_NEAR(force, expected, kLawRounding * std::max(1.0, expected)) << s << " at t = " << row["time"];
+      EXPECT_LE(std::abs(row[s + ".friction_force"]), mu * force * (1 + kLawRounding)) << s;
+    }
+  }
+  EXPECT_EQ(rows, 1001);  // t = 0 and 1000 report steps
+  // Contacts at report times over the 0.1 s: 426 measured (the law check is about them); the
+  // floor leaves a margin of 76.
+  EXPECT_GE(active_slots, 350);
   ASSERT_EQ(summary.element_statistics.size(), 1u);
   EXPECT_NE(summary.element_statistics[0].find("contact detections"), std::string::npos);
 
