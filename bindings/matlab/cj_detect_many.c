@@ -10,11 +10,13 @@
  * one by one); this answers with a fixed set of arrays whatever N is, for large batches:
  *   scenario_code, aligned, certificate_level, certificate_reason, contact_count: N x 1
  *   type, base, depth, depth_error_bound, p_WCj_error_bound, p_WCi_error_bound,
- *     crossing_count, certificate_level_of_contact, certificate_reason_of_contact: N x 6
- *   p_WCj, p_WCi, normal_W: N x 3 x 6 (r.p_WCj(i, :, k) is pose i's contact k)
+ *     crossing_count, certificate_level_of_contact, certificate_reason_of_contact: N x K
+ *   p_WCj, p_WCi, normal_W: N x 3 x K (r.p_WCj(i, :, k) is pose i's contact k)
  *   crossing_angle, crossing_angle_error_bound, crossing_point_error_bound,
- *     crossing_multiplicity: N x 2 x 6
- *   crossing_point: N x 3 x 2 x 6
+ *     crossing_multiplicity: N x 2 x K
+ *   crossing_point: N x 3 x 2 x K
+ * with K = max(contact_count) over the batch (at most 6; 0 when no pose has a contact, so the
+ * arrays are empty).
  * Codes are the C API's enum values (cj_scenario, cj_certainty, cj_reason, cj_contact_type,
  * cj_base); slots past a pose's contact_count (or a contact's crossing_count) are NaN. */
 
@@ -73,12 +75,16 @@ static void field_shape(int f, mwSize n, mwSize* dims, mwSize* ndims) {
 struct arrays {
   double* out[FIELD_COUNT];
   mwSize n;
+  int most_contacts; /* over the poses so far */
 };
 
 static void store(void* context, size_t index, const cj_result* r) {
   double* const* out = ((struct arrays*)context)->out;
   const mwSize n = ((struct arrays*)context)->n, i = (mwSize)index;
   int k, m, c;
+  if (r->contact_count > ((struct arrays*)context)->most_contacts) {
+    ((struct arrays*)context)->most_contacts = r->contact_count;
+  }
   out[SCENARIO_CODE][i] = r->scenario;
   out[ALIGNED][i] = r->aligned;
   out[CERTIFICATE_LEVEL][i] = r->certificate.level;
@@ -135,7 +141,20 @@ void mexFunction(int nlhs, mxArray* plhs[], int nrhs, const mxArray* prhs[]) {
     for (d = 0; d < total; ++d) arrays.out[f][d] = NAN;
     mxSetFieldByNumber(result, 0, f, array);
   }
+  arrays.most_contacts = 0;
   mex_detect_all(&in.dims, &in.bearings, &in.journals, in.count, &in.options, store, &arrays);
+  /* The contact slot is every field's last dimension: dropping the slots no pose uses keeps the
+   * data as it is and spares Octave/MATLAB copying them (a batch rarely has more than two
+   * contacts a pose, and 6 slots are ~1.6 KB a pose). */
+  for (f = TYPE; f < FIELD_COUNT; ++f) {
+    mxArray* array = mxGetFieldByNumber(result, 0, f);
+    mwSize shape[4];
+    const mwSize ndims = mxGetNumberOfDimensions(array);
+    mwSize d;
+    for (d = 0; d < ndims; ++d) shape[d] = mxGetDimensions(array)[d];
+    shape[ndims - 1] = arrays.most_contacts;
+    mxSetDimensions(array, shape, ndims);
+  }
   /* The aligned flags as logicals, as in cj_detect. */
   logicals = mxCreateLogicalMatrix(arrays.n, 1);
   aligned = mxGetLogicals(logicals);

@@ -18,7 +18,8 @@ geo::PartPose pose_at(const cj_pose_array& poses, size_t k) {
   for (int c = 0; c < 6; ++c) {
     std::memcpy(&v[c], reinterpret_cast<const char*>(poses.component[c]) + offset, sizeof(double));
   }
-  return {{v[0], v[1], v[2]}, {v[3], v[4], v[5]}};
+  // Through Eigen::Map, as pose_of (conversions.hpp), for the same reason.
+  return {Eigen::Map<const geo::Vector3>(v), Eigen::Map<const geo::Vector3>(v + 3)};
 }
 
 void require_components(const cj_pose_array* poses, const char* name) {
@@ -48,9 +49,13 @@ extern "C" cj_status cj_detect_many(const cj_dimensions* dimensions, const cj_po
     geo::validate(joint);  // before the loop: not a pose's fault, so not named after one
     const geo::DetectionOptions detection = detection_options_of(options);
     geo::JointContacts found;  // reused, as in cj_detect
+    // A pose repeated for every k (stride 0, often the bearing) is read once.
+    const bool fixed_bearing = bearings->stride == 0, fixed_journal = journals->stride == 0;
+    const geo::PartPose first_bearing = pose_at(*bearings, 0), first_journal = pose_at(*journals, 0);
     for (; done < count; ++done) {
       try {
-        geo::detect_contacts(joint, pose_at(*bearings, done), pose_at(*journals, done), found, detection);
+        geo::detect_contacts(joint, fixed_bearing ? first_bearing : pose_at(*bearings, done),
+                             fixed_journal ? first_journal : pose_at(*journals, done), found, detection);
       } catch (const geo::InvalidInput& e) {
         throw geo::InvalidInput("poses[" + std::to_string(done) + "]: " + e.what());
       }

@@ -28,9 +28,9 @@
  *  - Structs never grow. Room for later fields is reserved inside them: `reserved` members in the
  *    structs a caller fills in must be zero (cj_default_options() and zero-initialisation give
  *    that), and a call rejects a nonzero reserved field, so a program written for a later version
- *    fails loudly against an older library instead of being silently ignored. `reserved` members
- *    of the structs the library fills in are written as zero; callers must not rely on them.
- *    Such a reserved field is given a meaning only where zero keeps the old behaviour.
+ *    fails loudly against an older library instead of being silently ignored; such a field is
+ *    given a meaning only where zero keeps the old behaviour. `reserved` members of the structs
+ *    the library fills in hold unspecified values: callers must not read them.
  *  - Enums may gain values at the end (a new scenario, a new certificate reason). Callers must
  *    handle values they do not know; the to-string functions return "unknown" for them.
  *  - New functions may be added at any version.
