@@ -10,19 +10,21 @@
 #   cmake-consumer CONSUMER_SOURCE       build the consumer project with find_package(clearjoint)
 #                                         against SCRATCH/prefix and run its programs
 #   pkg-config-consumer CONSUMER_SOURCE  compile the consumer's sources with the flags of
-#                                         clearjoint-geometry.pc / clearjoint-dynamics.pc and run
+#                                         clearjoint-geometry.pc / clearjoint-dynamics.pc /
+#                                         clearjoint-c.pc and run
 #   installed-program SOURCE_DIR BUILD_PROGRAM
 #                                         run SCRATCH/prefix/bin/clearjoint with an empty
 #                                         environment and compare it with the build's program
 #   exported-interface                   every entry of the exported link interface is a target
 #                                         (Namespace::name), never a bare library name or path
-# Environment: CXX, the compiler the consumers are built with; CLEARJOINT_VERSION, the version
+# Environment: CXX and CC, the compilers the consumers are built with; CLEARJOINT_VERSION, the version
 # the package must report.
 set -euo pipefail
 step=$1 scratch=$2
 shift 2
 prefix=$scratch/prefix
 cxx=${CXX:-c++}
+cc=${CC:-cc}
 fail() { echo "FAIL: $*" >&2; exit 1; }
 
 case $step in
@@ -51,12 +53,13 @@ cmake-consumer)
   consumer=$1
   rm -rf "$scratch/cmake-consumer"
   cmake -S "$consumer" -B "$scratch/cmake-consumer" -DCMAKE_BUILD_TYPE=Release \
-        -DCMAKE_CXX_COMPILER="$cxx" -DCMAKE_PREFIX_PATH="$prefix"
+        -DCMAKE_CXX_COMPILER="$cxx" -DCMAKE_C_COMPILER="$cc" -DCMAKE_PREFIX_PATH="$prefix"
   cmake --build "$scratch/cmake-consumer" -j2
   # Shared: the libraries are found through the consumer's build RPATH, and the dynamics library
   # finds the geometry library beside it through its own RUNPATH.
   "$scratch/cmake-consumer/consumer"
   "$scratch/cmake-consumer/dynamics_consumer"
+  "$scratch/cmake-consumer/c_consumer"
   ;;
 pkg-config-consumer)
   consumer=$1
@@ -66,7 +69,7 @@ pkg-config-consumer)
   PKG_CONFIG_PATH=$(echo "$prefix"/lib*/pkgconfig)
   static=()
   if ls "$prefix"/lib*/libclearjoint_geometry.a > /dev/null 2>&1; then static=(--static); fi
-  for module in clearjoint-geometry clearjoint-dynamics; do
+  for module in clearjoint-geometry clearjoint-dynamics clearjoint-c; do
     pkg-config --exists --print-errors "$module"
     [[ $(pkg-config --modversion "$module") == "$CLEARJOINT_VERSION" ]] ||
       fail "$module.pc says version $(pkg-config --modversion "$module"), the project $CLEARJOINT_VERSION"
@@ -78,9 +81,15 @@ pkg-config-consumer)
   # shellcheck disable=SC2046
   "$cxx" -std=c++20 -o "$out/dynamics_consumer" "$consumer/dynamics_main.cpp" \
     $(pkg-config "${static[@]}" --cflags --libs clearjoint-dynamics) -Wl,-rpath,"$libdir"
+  # The C API from C, compiled by the C compiler.
+  # shellcheck disable=SC2046
+  "$cc" -std=c99 -o "$out/c_consumer" "$consumer/c_main.c" \
+    $(pkg-config "${static[@]}" --cflags --libs clearjoint-c) -lm -Wl,-rpath,"$libdir"
   echo "pkg-config ${static[*]} --libs clearjoint-dynamics: $(pkg-config "${static[@]}" --libs clearjoint-dynamics)"
+  echo "pkg-config ${static[*]} --libs clearjoint-c: $(pkg-config "${static[@]}" --libs clearjoint-c)"
   "$out/consumer"
   "$out/dynamics_consumer"
+  "$out/c_consumer"
   ;;
 installed-program)
   source_dir=$1 build_program=$2

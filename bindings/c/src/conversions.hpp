@@ -100,12 +100,57 @@ inline int32_t code_of(geo::ContactBase base) {
   return CJ_BASE_MID;
 }
 
+inline int32_t code_of(geo::CertificateReason reason) {
+  using R = geo::CertificateReason;
+  switch (reason) {
+    case R::none: return CJ_REASON_NONE;
+    case R::not_decided: return CJ_REASON_NOT_DECIDED;
+    case R::certificate_switched_off: return CJ_REASON_CERTIFICATE_SWITCHED_OFF;
+    case R::plane_filter_undecided: return CJ_REASON_PLANE_FILTER_UNDECIDED;
+    case R::plane_filter_undecided_exact_fallback_off: return CJ_REASON_PLANE_FILTER_UNDECIDED_EXACT_FALLBACK_OFF;
+    case R::plane_results_not_representable: return CJ_REASON_PLANE_RESULTS_NOT_REPRESENTABLE;
+    case R::subdivision_budget_exhausted: return CJ_REASON_SUBDIVISION_BUDGET_EXHAUSTED;
+    case R::more_than_four_roots: return CJ_REASON_MORE_THAN_FOUR_ROOTS;
+    case R::interval_proof_failed_near_multiple_root: return CJ_REASON_INTERVAL_PROOF_FAILED_NEAR_MULTIPLE_ROOT;
+    case R::coefficient_overflow: return CJ_REASON_COEFFICIENT_OVERFLOW;
+    case R::cylinder_points_not_representable: return CJ_REASON_CYLINDER_POINTS_NOT_REPRESENTABLE;
+    case R::exact_root_isolation_budget_exhausted: return CJ_REASON_EXACT_ROOT_ISOLATION_BUDGET_EXHAUSTED;
+    case R::exact_coefficients_too_large: return CJ_REASON_EXACT_COEFFICIENTS_TOO_LARGE;
+    case R::exact_intermediate_beyond_double_range: return CJ_REASON_EXACT_INTERMEDIATE_BEYOND_DOUBLE_RANGE;
+    case R::contact_not_representable_in_world: return CJ_REASON_CONTACT_NOT_REPRESENTABLE_IN_WORLD;
+    case R::axes_parallel_within_tolerance: return CJ_REASON_AXES_PARALLEL_WITHIN_TOLERANCE;
+  }
+  return CJ_REASON_NOT_DECIDED;
+}
+
+/// The reasons C++ has, in order: cj_reason_string finds a code's text through code_of.
+inline constexpr geo::CertificateReason kAllReasons[] = {
+    geo::CertificateReason::none,
+    geo::CertificateReason::not_decided,
+    geo::CertificateReason::certificate_switched_off,
+    geo::CertificateReason::plane_filter_undecided,
+    geo::CertificateReason::plane_filter_undecided_exact_fallback_off,
+    geo::CertificateReason::plane_results_not_representable,
+    geo::CertificateReason::subdivision_budget_exhausted,
+    geo::CertificateReason::more_than_four_roots,
+    geo::CertificateReason::interval_proof_failed_near_multiple_root,
+    geo::CertificateReason::coefficient_overflow,
+    geo::CertificateReason::cylinder_points_not_representable,
+    geo::CertificateReason::exact_root_isolation_budget_exhausted,
+    geo::CertificateReason::exact_coefficients_too_large,
+    geo::CertificateReason::exact_intermediate_beyond_double_range,
+    geo::CertificateReason::contact_not_representable_in_world,
+    geo::CertificateReason::axes_parallel_within_tolerance,
+};
+
+/// The sentence of each C reason code (the C++ to_string, a NUL-terminated literal), looked up
+/// once when the library loads: asking the kernel library for it on every certificate was an
+/// out-of-line call across libraries, ~2 ns of a free-flight cj_detect.
+extern const char* const* const kReasonTexts;
+
 inline cj_certificate certificate_of(const geo::Certificate& c) {
-  // Every uncertain answer carries a reason; its text (a string literal, so NUL-terminated)
-  // names it. geo::CertificateReason lists them all, should the codes name them one day.
-  const bool has_reason = c.level == geo::Certainty::uncertain;
-  return {code_of(c.level), has_reason ? CJ_REASON_UNSPECIFIED : CJ_REASON_NONE,
-          has_reason ? c.reason_text().data() : ""};
+  const int32_t reason = code_of(c.reason);
+  return {code_of(c.level), reason, kReasonTexts[reason]};
 }
 
 inline void copy_crossing(const geo::RimCrossing& from, cj_crossing& to) {
@@ -125,10 +170,9 @@ inline void copy_contact(const geo::Contact& from, cj_contact& to) {
   copy_vector(from.p_WCi, to.p_WCi);
   copy_vector(from.normal_W, to.normal_W);
   to.depth = from.depth;
-  // The kernel does not report these bounds yet: "no bound known".
-  to.depth_error_bound = geo::kNoErrorBound;
-  to.p_WCj_error_bound = geo::kNoErrorBound;
-  to.p_WCi_error_bound = geo::kNoErrorBound;
+  to.depth_error_bound = from.depth_error;
+  to.p_WCj_error_bound = from.p_WCj_error;
+  to.p_WCi_error_bound = from.p_WCi_error;
   // Both, as the kernel sets both (those past crossing_count hold its default crossing).
   copy_crossing(from.crossings[0], to.crossings[0]);
   copy_crossing(from.crossings[1], to.crossings[1]);

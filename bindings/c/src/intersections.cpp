@@ -49,7 +49,7 @@ extern "C" cj_status cj_intersect_circle_plane(const cj_circle* circle, const cj
         circle_of(*circle), {vector_of(plane->point), vector_of(plane->normal)}, intersection_options_of(options));
     cj_circle_plane_result out{};
     out.topology = code_of(found.topology);
-    out.side = static_cast<int32_t>(found.side);  // PlaneSide: -1, 0, +1
+    out.side = static_cast<int32_t>(found.side);  // PlaneSide's values are -1, 0, +1
     for (int k = 0; k < 2; ++k) copy_crossing(found.crossings[k], out.crossings[k]);
     out.crossing_count = found.crossing_count;
     out.has_penetration = found.has_penetration ? 1 : 0;

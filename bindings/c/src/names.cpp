@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The C API's static strings: versions, status and enum names. The names the C++ API has are
 // taken from it (one spelling for both); the others are written here.
+#include <array>
+#include <iterator>
 #include <string_view>
 
 #include "clearjoint/version.hpp"
@@ -13,7 +15,21 @@ namespace geo = clearjoint::geometry;
 /// The C++ to_string functions return views of static, NUL-terminated literals.
 const char* c_string(std::string_view literal) { return literal.data(); }
 
+/// kReasonTexts' storage: entry code_of(r) holds to_string(r), for every reason r.
+std::array<const char*, std::size(clearjoint::c_api::kAllReasons)> reason_texts() {
+  std::array<const char*, std::size(clearjoint::c_api::kAllReasons)> texts{};
+  for (geo::CertificateReason r : clearjoint::c_api::kAllReasons) {
+    texts.at(static_cast<std::size_t>(clearjoint::c_api::code_of(r))) = c_string(geo::to_string(r));
+  }
+  return texts;
+}
+
+const std::array<const char*, std::size(clearjoint::c_api::kAllReasons)> kReasonTextStorage = reason_texts();
+
 }  // namespace
+
+// The C codes run from 0 to the number of reasons - 1 (clearjoint.h), one per C++ reason.
+const char* const* const clearjoint::c_api::kReasonTexts = kReasonTextStorage.data();
 
 extern "C" {
 
@@ -52,11 +68,8 @@ const char* cj_certainty_string(int certainty) {
 }
 
 const char* cj_reason_string(int reason) {
-  switch (reason) {
-    case CJ_REASON_NONE: return "none";
-    case CJ_REASON_UNSPECIFIED: return "unspecified";
-    default: return "unknown";
-  }
+  if (reason < 0 || reason >= static_cast<int>(std::size(clearjoint::c_api::kAllReasons))) return "unknown";
+  return clearjoint::c_api::kReasonTexts[reason];
 }
 
 const char* cj_contact_type_string(int type) {

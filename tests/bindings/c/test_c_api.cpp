@@ -72,6 +72,7 @@ void expect_same_answer(const cj_result& c, const geo::JointContacts& cpp) {
   EXPECT_EQ(c.aligned != 0, cpp.aligned);
   EXPECT_STREQ(cj_certainty_string(c.certificate.level), geo::to_string(cpp.certificate.level).data());
   EXPECT_STREQ(c.certificate.reason_text, cpp.certificate.reason_text().data());
+  EXPECT_STREQ(cj_reason_string(c.certificate.reason), cpp.certificate.reason_text().data());
   ASSERT_EQ(c.contact_count, cpp.contact_count);
   for (int k = 0; k < c.contact_count; ++k) {
     const cj_contact& x = c.contacts[k];
@@ -79,6 +80,9 @@ void expect_same_answer(const cj_result& c, const geo::JointContacts& cpp) {
     EXPECT_EQ(x.type, y.type == geo::ContactType::radial ? CJ_CONTACT_RADIAL : CJ_CONTACT_AXIAL);
     EXPECT_EQ(x.base, y.base == geo::ContactBase::a ? CJ_BASE_A : y.base == geo::ContactBase::b ? CJ_BASE_B : CJ_BASE_MID);
     EXPECT_EQ(x.depth, y.depth);
+    EXPECT_EQ(x.depth_error_bound, y.depth_error);
+    EXPECT_EQ(x.p_WCj_error_bound, y.p_WCj_error);
+    EXPECT_EQ(x.p_WCi_error_bound, y.p_WCi_error);
     expect_same_vector(x.p_WCj, y.p_WCj);
     expect_same_vector(x.p_WCi, y.p_WCi);
     expect_same_vector(x.normal_W, y.normal_W);
@@ -119,13 +123,15 @@ TEST(CApi, PassesItsOptionsToTheKernel) {
   ASSERT_EQ(cj_detect(&dims, &kBearing, &journal, &options, &relaxed, nullptr, 0), CJ_OK);
   EXPECT_EQ(relaxed.scenario, CJ_SCENARIO_LINE);
   EXPECT_EQ(relaxed.certificate.level, CJ_CERTAINTY_UNCERTAIN);
-  EXPECT_EQ(relaxed.certificate.reason, CJ_REASON_UNSPECIFIED);
+  EXPECT_EQ(relaxed.certificate.reason, CJ_REASON_AXES_PARALLEL_WITHIN_TOLERANCE);
   EXPECT_STRNE(relaxed.certificate.reason_text, "");
   options = cj_default_options();
   options.certify = 0;
   ASSERT_EQ(cj_detect(&dims, &kBearing, &journal, &options, &uncertified, nullptr, 0), CJ_OK);
   EXPECT_EQ(uncertified.scenario, CJ_SCENARIO_RADIAL_AT_BOTH_BASES);
   EXPECT_EQ(uncertified.certificate.level, CJ_CERTAINTY_UNCERTAIN);
+  EXPECT_EQ(uncertified.certificate.reason, CJ_REASON_CERTIFICATE_SWITCHED_OFF);
+  EXPECT_STREQ(uncertified.certificate.reason_text, "certificate switched off");
   geo::DetectionOptions cpp_options;
   cpp_options.intersection.certify = false;
   expect_same_answer(uncertified, geo::detect_contacts(geo::testing::kTable2, {Vector3::Zero(), Vector3::UnitZ()},
@@ -348,7 +354,13 @@ TEST(CApi, NamesEveryEnumValueAndSaysUnknownForOthers) {
   EXPECT_STREQ(cj_scenario_string(-1), "unknown");
   EXPECT_STREQ(cj_certainty_string(CJ_CERTAINTY_CERTIFIED), "certified");
   EXPECT_STREQ(cj_certainty_string(7), "unknown");
-  EXPECT_STREQ(cj_reason_string(CJ_REASON_NONE), "none");
+  // Every reason C++ has, with its sentence; none has the empty one.
+  for (int r = CJ_REASON_NONE; r <= CJ_REASON_AXES_PARALLEL_WITHIN_TOLERANCE; ++r) {
+    EXPECT_STREQ(cj_reason_string(r), geo::to_string(static_cast<geo::CertificateReason>(r)).data()) << r;
+  }
+  EXPECT_STREQ(cj_reason_string(CJ_REASON_NONE), "");
+  EXPECT_STREQ(cj_reason_string(CJ_REASON_CERTIFICATE_SWITCHED_OFF), "certificate switched off");
+  EXPECT_STREQ(cj_reason_string(CJ_REASON_AXES_PARALLEL_WITHIN_TOLERANCE + 1), "unknown");
   EXPECT_STREQ(cj_contact_type_string(CJ_CONTACT_AXIAL), "axial");
   EXPECT_STREQ(cj_base_string(CJ_BASE_MID), "mid");
   EXPECT_STREQ(cj_base_string(3), "unknown");

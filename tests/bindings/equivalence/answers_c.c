@@ -54,6 +54,9 @@ static void format_result(char* line, char tag, size_t index, const cj_result* r
     add_vector(line, c->p_WCj);
     add_vector(line, c->p_WCi);
     add_vector(line, c->normal_W);
+    add_hex(line, c->depth_error_bound);
+    add_hex(line, c->p_WCj_error_bound);
+    add_hex(line, c->p_WCi_error_bound);
     add(line, " %d", c->crossing_count);
     for (m = 0; m < c->crossing_count; ++m) {
       const cj_crossing* x = &c->crossings[m];

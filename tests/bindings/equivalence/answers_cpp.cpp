@@ -65,7 +65,26 @@ int code(geo::Certainty c) {
 }
 
 int reason_code(const geo::Certificate& c) {
-  return c.level == geo::Certainty::uncertain ? CJ_REASON_UNSPECIFIED : CJ_REASON_NONE;
+  using R = geo::CertificateReason;
+  switch (c.reason) {
+    case R::none: return CJ_REASON_NONE;
+    case R::not_decided: return CJ_REASON_NOT_DECIDED;
+    case R::certificate_switched_off: return CJ_REASON_CERTIFICATE_SWITCHED_OFF;
+    case R::plane_filter_undecided: return CJ_REASON_PLANE_FILTER_UNDECIDED;
+    case R::plane_filter_undecided_exact_fallback_off: return CJ_REASON_PLANE_FILTER_UNDECIDED_EXACT_FALLBACK_OFF;
+    case R::plane_results_not_representable: return CJ_REASON_PLANE_RESULTS_NOT_REPRESENTABLE;
+    case R::subdivision_budget_exhausted: return CJ_REASON_SUBDIVISION_BUDGET_EXHAUSTED;
+    case R::more_than_four_roots: return CJ_REASON_MORE_THAN_FOUR_ROOTS;
+    case R::interval_proof_failed_near_multiple_root: return CJ_REASON_INTERVAL_PROOF_FAILED_NEAR_MULTIPLE_ROOT;
+    case R::coefficient_overflow: return CJ_REASON_COEFFICIENT_OVERFLOW;
+    case R::cylinder_points_not_representable: return CJ_REASON_CYLINDER_POINTS_NOT_REPRESENTABLE;
+    case R::exact_root_isolation_budget_exhausted: return CJ_REASON_EXACT_ROOT_ISOLATION_BUDGET_EXHAUSTED;
+    case R::exact_coefficients_too_large: return CJ_REASON_EXACT_COEFFICIENTS_TOO_LARGE;
+    case R::exact_intermediate_beyond_double_range: return CJ_REASON_EXACT_INTERMEDIATE_BEYOND_DOUBLE_RANGE;
+    case R::contact_not_representable_in_world: return CJ_REASON_CONTACT_NOT_REPRESENTABLE_IN_WORLD;
+    case R::axes_parallel_within_tolerance: return CJ_REASON_AXES_PARALLEL_WITHIN_TOLERANCE;
+  }
+  return -1;
 }
 
 int code(geo::ContactType t) { return t == geo::ContactType::radial ? CJ_CONTACT_RADIAL : CJ_CONTACT_AXIAL; }
@@ -84,19 +103,20 @@ std::string line_of(char tag, std::size_t index, const geo::JointContacts& r) {
   std::string line = std::string(1, tag) + ' ' + std::to_string(index) + " ok " + std::to_string(code(r.scenario)) +
                      ' ' + std::to_string(r.aligned ? 1 : 0) + ' ' + std::to_string(code(r.certificate.level)) +
                      ' ' + std::to_string(reason_code(r.certificate));
-  if (text) line += std::string(" \"") + std::string(r.certificate.reason_text()) + '"';
+  if (text) line += " \"" + std::string(r.certificate.reason_text()) + '"';
   line += ' ' + std::to_string(r.contact_count);
   for (int k = 0; k < r.contact_count; ++k) {
     const geo::Contact& c = r.contacts[k];
     line += " | " + std::to_string(code(c.type)) + ' ' + std::to_string(code(c.base)) + hex(c.depth) + hex(c.p_WCj) +
-            hex(c.p_WCi) + hex(c.normal_W) + ' ' + std::to_string(c.crossing_count);
+            hex(c.p_WCi) + hex(c.normal_W) + hex(c.depth_error) + hex(c.p_WCj_error) + hex(c.p_WCi_error) + ' ' +
+            std::to_string(c.crossing_count);
     for (int m = 0; m < c.crossing_count; ++m) {
       const geo::RimCrossing& x = c.crossings[m];
       line += hex(x.angle) + hex(x.angle_error) + hex(x.point) + hex(x.point_error) + ' ' +
               std::to_string(x.multiplicity);
     }
     line += ' ' + std::to_string(code(c.certificate.level)) + ' ' + std::to_string(reason_code(c.certificate));
-    if (text) line += std::string(" \"") + std::string(c.certificate.reason_text()) + '"';
+    if (text) line += " \"" + std::string(c.certificate.reason_text()) + '"';
   }
   return line;
 }

@@ -111,7 +111,8 @@ contains
     do k = 1, r%contact_count
       associate (c => r%contacts(k))
         line = line//' | '//decimal(c%type)//' '//decimal(c%base)//hex(c%depth)//hex3(c%p_WCj)// &
-               hex3(c%p_WCi)//hex3(c%normal_W)//' '//decimal(c%crossing_count)
+               hex3(c%p_WCi)//hex3(c%normal_W)//hex(c%depth_error_bound)//hex(c%p_WCj_error_bound)// &
+               hex(c%p_WCi_error_bound)//' '//decimal(c%crossing_count)
         do m = 1, c%crossing_count
           associate (x => c%crossings(m))
             line = line//hex(x%angle)//hex(x%angle_error_bound)//hex3(x%point)// &

@@ -23,8 +23,9 @@
  * in the world frame W; `p_WX` names point X measured from W's origin.
  *
  * ABI rules (what may change, and how):
- *  - The library's soname carries MAJOR.MINOR while the version is below 1.0 and MAJOR from 1.0
- *    on. Within one soname, no function signature, struct layout or enum value changes.
+ *  - The library's soname (libclearjoint_c.so.MAJOR.MINOR) changes whenever the ABI does; within
+ *    one soname no function signature, struct layout or enum value changes, and CJ_ABI_VERSION
+ *    stays the same.
  *  - Structs never grow. Room for later fields is reserved inside them: `reserved` members in the
  *    structs a caller fills in must be zero (cj_default_options() and zero-initialisation give
  *    that), and a call rejects a nonzero reserved field, so a program written for a later version
@@ -112,11 +113,26 @@ typedef enum cj_certainty {
   CJ_CERTAINTY_UNCERTAIN = 2  /**< not proved; the reason says why */
 } cj_certainty;
 
-/** Why an answer is not proved. CJ_REASON_NONE for exact and certified answers. */
+/** Why an answer is `uncertain`, or for an `exact` one why the floating-point tiers did not
+ * decide it; CJ_REASON_NONE for certified answers (C++: CertificateReason, whose comments say
+ * more). `reason_text` and cj_reason_string() give the sentence. */
 typedef enum cj_reason {
   CJ_REASON_NONE = 0,
-  /** Uncertain for a reason this version cannot name by a code: read `reason_text`. */
-  CJ_REASON_UNSPECIFIED = 1
+  CJ_REASON_NOT_DECIDED = 1,
+  CJ_REASON_CERTIFICATE_SWITCHED_OFF = 2,
+  CJ_REASON_PLANE_FILTER_UNDECIDED = 3,
+  CJ_REASON_PLANE_FILTER_UNDECIDED_EXACT_FALLBACK_OFF = 4,
+  CJ_REASON_PLANE_RESULTS_NOT_REPRESENTABLE = 5,
+  CJ_REASON_SUBDIVISION_BUDGET_EXHAUSTED = 6,
+  CJ_REASON_MORE_THAN_FOUR_ROOTS = 7,
+  CJ_REASON_INTERVAL_PROOF_FAILED_NEAR_MULTIPLE_ROOT = 8,
+  CJ_REASON_COEFFICIENT_OVERFLOW = 9,
+  CJ_REASON_CYLINDER_POINTS_NOT_REPRESENTABLE = 10,
+  CJ_REASON_EXACT_ROOT_ISOLATION_BUDGET_EXHAUSTED = 11,
+  CJ_REASON_EXACT_COEFFICIENTS_TOO_LARGE = 12,
+  CJ_REASON_EXACT_INTERMEDIATE_BEYOND_DOUBLE_RANGE = 13,
+  CJ_REASON_CONTACT_NOT_REPRESENTABLE_IN_WORLD = 14,
+  CJ_REASON_AXES_PARALLEL_WITHIN_TOLERANCE = 15
 } cj_reason;
 
 typedef enum cj_contact_type {
@@ -144,8 +160,10 @@ typedef enum cj_circle_cylinder_topology {
   CJ_CIRCLE_CYLINDER_ON_SURFACE = 3
 } cj_circle_cylinder_topology;
 
-/** Static strings; "unknown" for a value this version does not know. The scenario's text is the
- * C++ to_string ("(a) single radial", "(j) line", "none", "beyond model"). */
+/** Static strings; "unknown" for a value this version does not know. The texts are the C++
+ * to_string ones where C++ has one: "(a) single radial", "(j) line", "none", "beyond model" for
+ * scenarios; "exact", "certified", "uncertain"; a reason's sentence ("certificate switched off";
+ * "" for CJ_REASON_NONE). */
 CJ_API const char* cj_scenario_string(int scenario);
 CJ_API const char* cj_certainty_string(int certainty);
 CJ_API const char* cj_reason_string(int reason);
@@ -190,14 +208,13 @@ CJ_API cj_options cj_default_options(void);
 
 /* ---- Results ---------------------------------------------------------------------------------- */
 
-/** "No error bound known" in the *_error_bound fields is +infinity (uncertain answers, and
- * quantities whose bound this version does not compute). */
+/** "No error bound known" in the *_error_bound fields is +infinity (uncertain answers). */
 
 /** A trust level and why it is not stronger. */
 typedef struct cj_certificate {
   int32_t level;           /**< cj_certainty */
   int32_t reason;          /**< cj_reason */
-  const char* reason_text; /**< static string, "" for exact and certified answers */
+  const char* reason_text; /**< static string: cj_reason_string(reason) */
 } cj_certificate;
 
 /** A point where a journal rim meets a bearing surface. When the answer is certified or exact,
@@ -214,7 +231,10 @@ typedef struct cj_crossing {
 
 /** One contact (C++: Contact). normal_W points out of the bearing, in the direction the journal
  * penetrates; depth = |p_WCj - p_WCi| >= 0, so p_WCj - p_WCi = depth * normal_W up to rounding
- * (eqs. 22-23). */
+ * (eqs. 22-23). The error bounds: the contact of the joint as given has its journal point within
+ * p_WCj_error_bound of p_WCj (Euclidean), its bearing point within p_WCi_error_bound of p_WCi and
+ * its depth within depth_error_bound of depth; certified enclosures unless the contact is
+ * uncertain. */
 typedef struct cj_contact {
   int32_t type; /**< cj_contact_type */
   int32_t base; /**< cj_base */
