@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <numbers>
 
@@ -107,26 +108,45 @@ ClearanceRevoluteJoint::ClearanceRevoluteJoint(std::string name, const Clearance
   bearing_v_B_ = bearing_axis_hat_B_.cross(bearing_u_B_);
 }
 
-geometry::JointContacts ClearanceRevoluteJoint::detect(double time,
-                                                       const SystemKinematics& kinematics) const {
+void ClearanceRevoluteJoint::detect(double time, const SystemKinematics& kinematics,
+                                    geometry::JointContacts& contacts) const {
   const BodyKinematics& bi = kinematics.body(bearing_.body);
   const BodyKinematics& bj = kinematics.body(journal_.body);
   const geometry::PartPose bearing_pose{bi.point_W(bearing_.point_B), bi.rotation * bearing_.axis_B};
   const geometry::PartPose journal_pose{bj.point_W(journal_.point_B), bj.rotation * journal_.axis_B};
+  const std::array<Vector3, 4> poses{bearing_pose.p_WP, bearing_pose.axis_W, journal_pose.p_WP,
+                                     journal_pose.axis_W};
+  const bool into_scratch = &contacts == &scratch_.contacts;
+  // The detection is a function of the poses alone: the same poses, bit for bit, give the same
+  // answer. The last stage of a Dormand-Prince step is evaluated at the accepted state (FSAL),
+  // where begins_event and update_extra_state detect again: they find the answer in place.
+  if (into_scratch && scratch_holds_poses_ &&
+      std::memcmp(poses.data(), scratch_poses_.data(), sizeof poses) == 0) {
+    return;
+  }
   ++statistics_.detection_calls;
+  if (into_scratch) scratch_holds_poses_ = false;  // until the detection below succeeds
   try {
-    return geometry::detect_contacts(parameters_.dimensions, bearing_pose, journal_pose,
-                                     parameters_.detection);
+    // In place: a fresh JointContacts is 1.4 KB of default values (detect_contacts.hpp).
+    geometry::detect_contacts(parameters_.dimensions, bearing_pose, journal_pose, contacts,
+                              parameters_.detection);
   } catch (const geometry::InvalidInput& e) {
     throw SolverError("clearance joint '" + name_ + "' at t = " + format_number(time) +
                       ": the contact detection rejected the poses (" + e.what() + ")");
   }
+  if (into_scratch) {
+    scratch_poses_ = poses;
+    scratch_holds_poses_ = true;
+  }
 }
 
-ClearanceJointState ClearanceRevoluteJoint::evaluate(double time, const SystemKinematics& kinematics,
-                                                     std::span<const double> impact_memory) const {
-  ClearanceJointState state;
-  state.contacts = detect(time, kinematics);
+void ClearanceRevoluteJoint::evaluate_forces(double time, const SystemKinematics& kinematics,
+                                             std::span<const double> impact_memory,
+                                             ClearanceJointState& state) const {
+  detect(time, kinematics, state.contacts);
+  state.slots = {};
+  state.force_on_journal_W.setZero();
+  state.moment_on_journal_W.setZero();
   const BodyKinematics& bi = kinematics.body(bearing_.body);
   const BodyKinematics& bj = kinematics.body(journal_.body);
   const geometry::BodyMotion bearing_motion = motion_of(bi);
@@ -165,6 +185,15 @@ ClearanceJointState ClearanceRevoluteJoint::evaluate(double time, const SystemKi
     s.normal_force += normal_force;
     s.friction_force += friction.norm();
   }
+}
+
+ClearanceJointState ClearanceRevoluteJoint::evaluate(double time, const SystemKinematics& kinematics,
+                                                     std::span<const double> impact_memory) const {
+  ClearanceJointState state;
+  evaluate_forces(time, kinematics, impact_memory, state);
+  const BodyKinematics& bi = kinematics.body(bearing_.body);
+  const BodyKinematics& bj = kinematics.body(journal_.body);
+  const Vector3 p_WPj = bj.point_W(journal_.point_B);
 
   const Vector3 bearing_axis_W = bi.rotation * bearing_axis_hat_B_;
   const Vector3 journal_axis_W = bj.rotation * journal_.axis_B;
@@ -185,7 +214,8 @@ ClearanceJointState ClearanceRevoluteJoint::evaluate(double time, const SystemKi
 }
 
 void ClearanceRevoluteJoint::add_forces(const ForceContext& context, GeneralisedForces& forces) const {
-  const ClearanceJointState state = evaluate(context.time, context.kinematics, context.extra_state);
+  ClearanceJointState& state = scratch_;
+  evaluate_forces(context.time, context.kinematics, context.extra_state, state);
   for (int c = 0; c < state.contacts.contact_count; ++c) {
     const Contact& contact = state.contacts.contacts[c];
     const Vector3& force = state.contact_force_on_journal_W[c];
@@ -196,7 +226,8 @@ void ClearanceRevoluteJoint::add_forces(const ForceContext& context, Generalised
 }
 
 double ClearanceRevoluteJoint::potential_energy(const SystemKinematics& kinematics) const {
-  const geometry::JointContacts contacts = detect(kinematics.time(), kinematics);
+  geometry::JointContacts& contacts = scratch_.contacts;
+  detect(kinematics.time(), kinematics, contacts);
   double energy = 0.0;
   for (int c = 0; c < contacts.contact_count; ++c) {
     energy += contact_elastic_energy(parameters_.normal, contacts.contacts[c].depth);
@@ -210,7 +241,8 @@ void ClearanceRevoluteJoint::initial_extra_state(std::span<double> state) const 
 
 bool ClearanceRevoluteJoint::update_extra_state(double time, const SystemKinematics& kinematics,
                                                 std::span<double> state) const {
-  const ClearanceJointState now = evaluate(time, kinematics, state);
+  ClearanceJointState& now = scratch_;
+  evaluate_forces(time, kinematics, state, now);
   if (now.contacts.scenario == geometry::ContactScenario::beyond_model) {
     ++statistics_.beyond_model_updates;
   }
@@ -232,7 +264,8 @@ bool ClearanceRevoluteJoint::update_extra_state(double time, const SystemKinemat
 
 bool ClearanceRevoluteJoint::begins_event(const SystemKinematics& kinematics,
                                           std::span<const double> state) const {
-  const geometry::JointContacts contacts = detect(kinematics.time(), kinematics);
+  geometry::JointContacts& contacts = scratch_.contacts;
+  detect(kinematics.time(), kinematics, contacts);
   for (int c = 0; c < contacts.contact_count; ++c) {
     if (state[index_of(slot_of(contacts.contacts[c]))] == 0.0) return true;
   }

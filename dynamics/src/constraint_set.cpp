@@ -23,7 +23,7 @@ int rank_of(const Eigen::MatrixXd& rows) {
 }  // namespace
 
 ConstraintSet::ConstraintSet(std::vector<JointEquations> joints, int body_count)
-    : joints_(std::move(joints)), body_count_(body_count) {
+    : joints_(std::move(joints)), body_count_(body_count), joint_rows_(joints_.size()) {
   for (const JointEquations& joint : joints_) {
     first_rows_.push_back(equation_count_);
     equation_count_ += joint.equation_count();
@@ -37,19 +37,20 @@ ConstraintSet::ConstraintSet(std::vector<JointEquations> joints, int body_count)
 void ConstraintSet::evaluate(double time, const SystemKinematics& kinematics) {
   for (size_t k = 0; k < joints_.size(); ++k) {
     const JointEquations& joint = joints_[k];
-    joint.evaluate(time, kinematics, rows_);
+    ConstraintRows& rows = joint_rows_[k];
+    joint.evaluate(time, kinematics, rows);
     const int row = first_rows_[k];
-    const int n = rows_.count;
-    value_.segment(row, n) = rows_.value.head(n);
-    time_derivative_.segment(row, n) = rows_.time_derivative.head(n);
-    gamma_.segment(row, n) = rows_.gamma.head(n);
+    const int n = rows.count;
+    value_.segment(row, n) = rows.value.head(n);
+    time_derivative_.segment(row, n) = rows.time_derivative.head(n);
+    gamma_.segment(row, n) = rows.gamma.head(n);
     // Only the columns of bodies i and j are ever non-zero in these rows; they were zeroed at
     // construction and no other joint writes to them.
     if (joint.body_i() != kGround) {
-      jacobian_.block(row, 6 * joint.body_i(), n, 6) = rows_.jacobian_i.topRows(n);
+      jacobian_.block(row, 6 * joint.body_i(), n, 6) = rows.jacobian_i.topRows(n);
     }
     if (joint.body_j() != kGround) {
-      jacobian_.block(row, 6 * joint.body_j(), n, 6) = rows_.jacobian_j.topRows(n);
+      jacobian_.block(row, 6 * joint.body_j(), n, 6) = rows.jacobian_j.topRows(n);
     }
   }
 }

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "clearjoint/dynamics/errors.hpp"
+#include "small_cholesky.hpp"
 
 namespace clearjoint::dynamics {
 
@@ -40,11 +41,27 @@ MultibodySystem::MultibodySystem(std::vector<BodyProperties> bodies,
   g_ = Eigen::VectorXd::Zero(6 * n);
   accelerations_ = Eigen::VectorXd::Zero(6 * n);
   multipliers_ = Eigen::VectorXd::Zero(m);
-  stabilised_gamma_ = Eigen::VectorXd::Zero(m);
   schur_rhs_ = Eigen::VectorXd::Zero(m);
-  jacobian_times_inverse_mass_ = Eigen::MatrixXd::Zero(m, 6 * n);
   schur_ = Eigen::MatrixXd::Zero(m, m);
-  schur_factor_ = Eigen::LDLT<Eigen::MatrixXd>(m);
+  // Pairs of joint sides on the same (moving) body: the non-zero blocks of the Schur matrix.
+  const std::span<const JointEquations> equations = constraints_.joints();
+  const int joint_count = static_cast<int>(equations.size());
+  auto body_of = [&](int k, int side) {
+    return side == 0 ? equations[k].body_i() : equations[k].body_j();
+  };
+  for (int later = 0; later < joint_count; ++later) {
+    for (int earlier = 0; earlier <= later; ++earlier) {
+      for (int later_side = 0; later_side < 2; ++later_side) {
+        for (int earlier_side = 0; earlier_side < 2; ++earlier_side) {
+          const BodyIndex b = body_of(later, later_side);
+          if (b != kGround && b == body_of(earlier, earlier_side)) {
+            shared_bodies_.push_back({later, later_side, earlier, earlier_side});
+          }
+        }
+      }
+    }
+  }
+  scaled_jacobians_.assign(equations.size(), {ConstraintRows::Block::Zero(), ConstraintRows::Block::Zero()});
 }
 
 BodyIndex MultibodySystem::body_index(std::string_view name, std::string_view field) const {
@@ -118,40 +135,86 @@ void MultibodySystem::derivative(double time, std::span<const double> y, std::sp
                                w.cross(bodies_[b].principal_inertia.cwiseProduct(w));  // eq. (35)
   }
 
-  const Eigen::Map<const Eigen::VectorXd> v(y.data() + layout_.velocity_offset(0),
-                                            layout_.velocity_size());
   if (constraints_.equation_count() == 0) {
     accelerations_ = inverse_mass_.cwiseProduct(g_);
   } else {
-    constraints_.evaluate(time, kinematics_);
-    const Eigen::MatrixXd& J = constraints_.jacobian();
-    // eq. (38): gamma - 2 alpha dPhi/dt - beta^2 Phi, with dPhi/dt = Phi_q v + Phi_t.
-    stabilised_gamma_.noalias() = J * v;
-    stabilised_gamma_ += constraints_.time_derivative();
-    stabilised_gamma_ *= -2.0 * baumgarte_.alpha;
-    stabilised_gamma_ += constraints_.gamma();
-    stabilised_gamma_ -= (baumgarte_.beta * baumgarte_.beta) * constraints_.value();
-
-    jacobian_times_inverse_mass_.noalias() = J * inverse_mass_.asDiagonal();
-    schur_.noalias() = jacobian_times_inverse_mass_ * J.transpose();
-    schur_rhs_.noalias() = jacobian_times_inverse_mass_ * g_;
-    schur_rhs_ -= stabilised_gamma_;
-    schur_factor_.compute(schur_);
-    const auto pivots = schur_factor_.vectorD().cwiseAbs();
-    if (schur_factor_.info() != Eigen::Success ||
-        !(pivots.minCoeff() > kRelativePivotTolerance * pivots.maxCoeff())) {
-      throw SolverError("the constraint Jacobian lost rank at t = " + format_number(time) +
-                        " (smallest/largest pivot of Phi_q M^-1 Phi_q^T = " +
-                        format_number(pivots.minCoeff() / pivots.maxCoeff()) +
-                        "): redundant joints or a singular configuration of the mechanism");
-    }
-    multipliers_ = schur_factor_.solve(schur_rhs_);
-    accelerations_ = g_;
-    accelerations_.noalias() -= J.transpose() * multipliers_;  // eq. (36): M dv/dt = g - Phi_q^T lambda
-    accelerations_.array() *= inverse_mass_.array();
+    solve_constrained_accelerations(time, y);
   }
   Eigen::Map<Eigen::VectorXd>(dydt.data() + layout_.velocity_offset(0), layout_.velocity_size()) =
       accelerations_;
+}
+
+void MultibodySystem::solve_constrained_accelerations(double time, std::span<const double> y) {
+  using Block = ConstraintRows::Block;
+  using Column = ConstraintRows::Column;
+  using Vector6 = Eigen::Matrix<double, 6, 1>;
+  constraints_.evaluate(time, kinematics_);
+  const std::span<const JointEquations> joints = constraints_.joints();
+  const int joint_count = static_cast<int>(joints.size());
+  const double* v = y.data() + layout_.velocity_offset(0);
+  auto body_of = [&](int k, int side) { return side == 0 ? joints[k].body_i() : joints[k].body_j(); };
+  auto jacobian_of = [&](int k, int side) -> const Block& {
+    const ConstraintRows& rows = constraints_.joint_rows(k);
+    return side == 0 ? rows.jacobian_i : rows.jacobian_j;
+  };
+
+  // Per joint: Phi_q M^-1 on each body, and the Schur right-hand side
+  // Phi_q M^-1 g - (gamma - 2 alpha dPhi/dt - beta^2 Phi), eq. (38), dPhi/dt = Phi_q v + Phi_t.
+  for (int k = 0; k < joint_count; ++k) {
+    const ConstraintRows& rows = constraints_.joint_rows(k);
+    Column velocity_rows = rows.time_derivative;
+    Column scaled_force_rows = Column::Zero();
+    for (int side = 0; side < 2; ++side) {
+      const BodyIndex b = body_of(k, side);
+      if (b == kGround) continue;
+      const Block& jacobian = jacobian_of(k, side);
+      Block& scaled = scaled_jacobians_[k][side];
+      scaled.noalias() = jacobian * inverse_mass_.segment<6>(6 * b).asDiagonal();
+      velocity_rows.noalias() += jacobian * Eigen::Map<const Vector6>(v + 6 * b);
+      scaled_force_rows.noalias() += scaled * g_.segment<6>(6 * b);
+    }
+    const Column stabilised_gamma = rows.gamma - (2.0 * baumgarte_.alpha) * velocity_rows -
+                                    (baumgarte_.beta * baumgarte_.beta) * rows.value;
+    schur_rhs_.segment(constraints_.first_row(k), rows.count) =
+        (scaled_force_rows - stabilised_gamma).head(rows.count);
+  }
+
+  // Phi_q M^-1 Phi_q^T: one block per pair of joints on a shared body (lower triangle).
+  schur_.setZero();
+  for (const SharedBody& pair : shared_bodies_) {
+    const Block product =
+        scaled_jacobians_[pair.later][pair.later_side] *
+        jacobian_of(pair.earlier, pair.earlier_side).transpose();
+    schur_.block(constraints_.first_row(pair.later), constraints_.first_row(pair.earlier),
+                 constraints_.joint_rows(pair.later).count,
+                 constraints_.joint_rows(pair.earlier).count) +=
+        product.topLeftCorner(constraints_.joint_rows(pair.later).count,
+                              constraints_.joint_rows(pair.earlier).count);
+  }
+  detail::CholeskyPivots pivots;
+  const bool factored = detail::factor_cholesky_in_place(schur_, pivots);
+  if (!factored || !(pivots.smallest > kRelativePivotTolerance * pivots.largest)) {
+    throw SolverError("the constraint Jacobian lost rank at t = " + format_number(time) +
+                      " (smallest/largest pivot of Phi_q M^-1 Phi_q^T = " +
+                      format_number(pivots.largest > 0.0 ? pivots.smallest / pivots.largest : 0.0) +
+                      "): redundant joints or a singular configuration of the mechanism");
+  }
+  multipliers_ = schur_rhs_;
+  detail::solve_cholesky_in_place(schur_, multipliers_);
+
+  // eq. (36): M dv/dt = g - Phi_q^T lambda, body by body.
+  accelerations_ = g_;
+  for (int k = 0; k < joint_count; ++k) {
+    const int count = constraints_.joint_rows(k).count;
+    Column lambda = Column::Zero();
+    lambda.head(count) = multipliers_.segment(constraints_.first_row(k), count);
+    for (int side = 0; side < 2; ++side) {
+      const BodyIndex b = body_of(k, side);
+      if (b == kGround) continue;
+      accelerations_.segment<6>(6 * b).noalias() -= jacobian_of(k, side).transpose() * lambda;
+    }
+  }
+  accelerations_.array() *= inverse_mass_.array();
 }
 
 bool MultibodySystem::update_extra_states(double time, std::span<double> y) {

@@ -95,7 +95,9 @@ struct ClearanceJointState {
 
 /// Counters for benchmarks and run summaries.
 struct ClearanceJointStatistics {
-  long detection_calls = 0;       ///< detect_contacts calls (forces, updates, outputs, energy)
+  /// detect_contacts calls (forces, updates, outputs, energy); a repeated query at the same
+  /// poses (the accepted state after its last stage) reuses the answer and is not counted.
+  long detection_calls = 0;
   long impacts = 0;               ///< impact velocities recorded (contact starts, accepted steps)
   long beyond_model_updates = 0;  ///< accepted steps whose state was beyond the paper's model
 };
@@ -149,7 +151,12 @@ class ClearanceRevoluteJoint final : public ForceElement {
   const Vector3& bearing_frame_v_B() const { return bearing_v_B_; }
 
  private:
-  geometry::JointContacts detect(double time, const SystemKinematics& kinematics) const;
+  /// The certified detection at the bodies' poses, written into `contacts` (in place).
+  void detect(double time, const SystemKinematics& kinematics, geometry::JointContacts& contacts) const;
+  /// Detection, contact kinematics and forces into `state` (contacts, per-contact forces, slots,
+  /// totals); not the geometry only the outputs need (axis angle, rim centres).
+  void evaluate_forces(double time, const SystemKinematics& kinematics,
+                       std::span<const double> impact_memory, ClearanceJointState& state) const;
 
   std::string name_;
   ClearanceJointPart bearing_;
@@ -160,6 +167,12 @@ class ClearanceRevoluteJoint final : public ForceElement {
   Vector3 bearing_v_B_;
   mutable ClearanceJointStatistics statistics_;  // counters only; the physics is const
   mutable std::vector<RecordedImpact> recorded_impacts_;
+  /// Work space of add_forces, update_extra_state, begins_event and potential_energy, reused so
+  /// that no evaluation builds a fresh result. Makes the joint non-reentrant, like the system.
+  mutable ClearanceJointState scratch_;
+  /// The poses (P_i, a_i, P_j, a_j, world) whose detection scratch_.contacts holds, if any.
+  mutable std::array<Vector3, 4> scratch_poses_{};
+  mutable bool scratch_holds_poses_ = false;
 };
 
 }  // namespace clearjoint::dynamics

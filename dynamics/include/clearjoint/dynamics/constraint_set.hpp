@@ -2,7 +2,9 @@
 #pragma once
 /// \file
 /// All joints of a system stacked into eq. (33) Phi(q, t) = 0 and eq. (34) Phi_q dv/dt = gamma,
-/// with the Jacobian Phi_q as a dense m x 6n matrix (columns [rdot_b; omega'_b] per body b).
+/// with the Jacobian Phi_q as a dense m x 6n matrix (columns [rdot_b; omega'_b] per body b), and
+/// joint by joint as its non-zero blocks (each joint's rows touch the columns of two bodies only),
+/// which the right-hand side uses.
 
 #include <Eigen/Core>
 #include <span>
@@ -34,6 +36,9 @@ class ConstraintSet {
   const Eigen::VectorXd& time_derivative() const { return time_derivative_; }
   const Eigen::MatrixXd& jacobian() const { return jacobian_; }
   const Eigen::VectorXd& gamma() const { return gamma_; }
+  /// Joint k's rows at the last evaluate(): Phi_q's blocks for the columns of bodies i and j
+  /// (rows beyond the joint's equation count are zero).
+  const ConstraintRows& joint_rows(int k) const { return joint_rows_[k]; }
 
   /// Throw SolverError if the evaluated Phi_q has dependent rows, naming the first joint whose
   /// equations add nothing to those before it (a redundant joint, or a singular configuration).
@@ -47,7 +52,7 @@ class ConstraintSet {
   std::vector<int> first_rows_;
   int body_count_ = 0;
   int equation_count_ = 0;
-  ConstraintRows rows_;
+  std::vector<ConstraintRows> joint_rows_;
   Eigen::VectorXd value_;
   Eigen::VectorXd time_derivative_;
   Eigen::MatrixXd jacobian_;

@@ -72,8 +72,8 @@ using Observer = std::function<void(double time, std::span<const double> state)>
 /// Trial stages and rejected steps never reach that hook. When an accepted step ends with a new
 /// event (MultibodySystem::begins_event), settings.onset says where it is recorded: the earliest
 /// instant of the step where begins_event turns true is bracketed by bisection on the stepper's
-/// dense output to relative_tolerance times the step, and the hook is called at the bracket's
-/// upper end (the first probed instant with the event present).
+/// dense output to sqrt(relative_tolerance) times the step, and the hook is called at the
+/// bracket's upper end (the first probed instant with the event present).
 /// A right-hand side that throws SolverError at a trial stage rejects that step: it is retried
 /// with a quarter of the step size; only a failure that persists below minimum_step stops the run.
 /// Throws SolverError if the step collapses, max_steps is exceeded, the state stops being finite,

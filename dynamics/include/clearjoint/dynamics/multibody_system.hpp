@@ -4,8 +4,8 @@
 /// Bodies, ideal joints and force elements, and the right-hand side of the equations of motion:
 /// Newton-Euler (eq. 35) with Lagrange multipliers (eq. 36) and Baumgarte stabilisation (eq. 38).
 
-#include <Eigen/Cholesky>
 #include <Eigen/Core>
+#include <array>
 #include <memory>
 #include <span>
 #include <string_view>
@@ -22,8 +22,9 @@ struct BaumgarteParameters {
   double beta = 5.0;   ///< [1/s], position feedback
 };
 
-/// LDLT pivots of Phi_q M^-1 Phi_q^T below this fraction of the largest mean the constraint
-/// Jacobian lost rank. Legitimate pivot ratios are bounded by cond(Phi_q)^2 cond(M); for the
+/// Cholesky pivots (squared diagonal of L) of Phi_q M^-1 Phi_q^T below this fraction of the
+/// largest mean the constraint Jacobian lost rank. Each pivot lies between the smallest and the
+/// largest eigenvalue, so their ratio is at least 1 / cond(Phi_q M^-1 Phi_q^T). Legitimate pivot ratios are bounded by cond(Phi_q)^2 cond(M); for the
 /// models here that is below 1e8, rounding-level dependence shows up near 1e-16: 1e-12 is between.
 inline constexpr double kRelativePivotTolerance = 1e-12;
 
@@ -60,7 +61,9 @@ class MultibodySystem {
   /// dy/dt at (t, y): r' = rdot, p' = L(p)^T omega' / 2, and dv/dt, lambda from eq. (38) solved
   /// by the Schur complement (Phi_q M^-1 Phi_q^T) lambda = Phi_q M^-1 g - gamma_stabilised,
   /// dv/dt = M^-1 (g - Phi_q^T lambda). M is diagonal in these coordinates (principal axes).
-  /// Throws SolverError if Phi_q loses rank. No heap allocation.
+  /// The products use Phi_q's block structure (a joint's rows touch two bodies' columns), the
+  /// Schur matrix is assembled from joint-pair blocks that share a body and factored once
+  /// (Cholesky, in place). Throws SolverError if Phi_q loses rank. No heap allocation.
   void derivative(double time, std::span<const double> y, std::span<double> dydt);
 
   /// Let the force elements change their extra state discretely at (t, y), an accepted state
@@ -85,6 +88,9 @@ class MultibodySystem {
   ConstraintViolation constraint_violation(double time, std::span<const double> y);
 
  private:
+  /// dv/dt and lambda of eq. (38) from kinematics_ and g_ (derivative()'s constrained part).
+  void solve_constrained_accelerations(double time, std::span<const double> y);
+
   std::vector<BodyProperties> bodies_;
   std::vector<std::unique_ptr<ForceElement>> forces_;
   std::vector<int> extra_offsets_;
@@ -97,11 +103,19 @@ class MultibodySystem {
   Eigen::VectorXd g_;
   Eigen::VectorXd accelerations_;
   Eigen::VectorXd multipliers_;
-  Eigen::VectorXd stabilised_gamma_;
+  /// Two joints' Jacobian blocks on one shared body: their product is a block of the Schur
+  /// matrix (rows of `later`, columns of `earlier`, on or below the diagonal).
+  struct SharedBody {
+    int later = 0;
+    int later_side = 0;  ///< 0: the joint's body i, 1: its body j
+    int earlier = 0;
+    int earlier_side = 0;
+  };
+  std::vector<SharedBody> shared_bodies_;
+  /// Phi_q M^-1 per joint and side (0: body i, 1: body j), zero for the ground.
+  std::vector<std::array<ConstraintRows::Block, 2>> scaled_jacobians_;
   Eigen::VectorXd schur_rhs_;
-  Eigen::MatrixXd jacobian_times_inverse_mass_;
-  Eigen::MatrixXd schur_;
-  Eigen::LDLT<Eigen::MatrixXd> schur_factor_;
+  Eigen::MatrixXd schur_;  ///< lower triangle assembled, then factored in place (L)
 };
 
 }  // namespace clearjoint::dynamics
