@@ -120,8 +120,9 @@ void ClearanceRevoluteJoint::detect(double time, const SystemKinematics& kinemat
   // The detection is a function of the poses alone: the same poses, bit for bit, give the same
   // answer. The last stage of a Dormand-Prince step is evaluated at the accepted state (FSAL),
   // where begins_event and update_extra_state detect again: they find the answer in place.
-  if (into_scratch && scratch_holds_poses_ &&
-      std::memcmp(poses.data(), scratch_poses_.data(), sizeof poses) == 0) {
+  // Outputs at a report time follow the right-hand side at the same state: they copy.
+  if (scratch_holds_poses_ && std::memcmp(poses.data(), scratch_poses_.data(), sizeof poses) == 0) {
+    if (!into_scratch) contacts = scratch_.contacts;
     return;
   }
   ++statistics_.detection_calls;
