@@ -258,6 +258,11 @@ contains
       if (present(message)) message = 'bearings and journals: must have shape (6, size(results)) or (6, 1)'
       return
     end if
+    if (size(results) == 0) then
+      status = CJ_OK  ! nothing to read: the arrays may be empty
+      if (present(message)) message = ''
+      return
+    end if
     bearing_array = columns_of(bearings)
     journal_array = columns_of(journals)
     status = c_detect_many(dimensions, bearing_array, journal_array, int(size(results), c_size_t), &
