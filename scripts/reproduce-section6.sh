@@ -1,31 +1,33 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: BSD-3-Clause
-# Reproduce Section 6 of Marques et al. (2017): build the clearjoint program, run the slider-crank
-# models (planar and spatial, ideal and with the clearance joint, the 4 x 4 clearance study and
-# ensembles of 9 slightly perturbed runs per point of its three sweeps (and of the radial and axial
-# sweeps at tolerance 1e-8), in parallel on all cores)
-# and draw Figs. 7-11 and 13-19 and the ensemble statistics into docs/figures/section6/.
+# Reproduce Section 6 of Marques et al. (2017) with the study runner: build the clearjoint program
+# and its Python package, run the two Section 6 studies (studies/section6_mechanisms.json: the
+# planar and spatial slider-cranks and the 4 x 4 clearance study at two tolerances, 37 runs;
+# studies/section6_clearance.json: ensembles of 9 runs per point of the radial, axial and diagonal
+# sweeps, 153 runs) on a local Dask cluster (one worker per core) or an existing one, then draw
+# Figs. 7-11 and 13-19 and the ensemble figures into docs/figures/section6/ and regenerate the
+# tables of docs/reproduction.md from the stores.
 #
-#   bash scripts/reproduce-section6.sh            # resumes: finished runs are not redone
-#   bash scripts/reproduce-section6.sh --force    # redo every run (after changing the code)
+#   bash scripts/reproduce-section6.sh                 # resumes: stored runs are not redone
+#   bash scripts/reproduce-section6.sh --force         # redo every run (after changing the code)
+#   bash scripts/reproduce-section6.sh --scheduler tcp://host:8786
 #   BUILD_DIR=build-mine JOBS=1 bash scripts/reproduce-section6.sh
 #
-# Results (reduced time series, one .npz per run, written atomically) go to results/section6/,
-# the numbers quoted in docs/reproduction.md to results/section6/summary.json. Measured at af1c323:
-# 1.8-7.8 s per run on one core of a 2-core machine, about 6 min for all 190 runs with 2 jobs.
+# Stores: results/section6_mechanisms/, results/section6_clearance/ (docs/studies.md); the numbers
+# quoted in docs/reproduction.md also go to results/section6/summary.json.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 BUILD_DIR=${BUILD_DIR:-build}
-JOBS=${JOBS:-$(nproc)}
+run_options=("$@")
+if [[ -n ${JOBS:-} && " $* " != *" --scheduler "* ]]; then run_options+=(--workers "$JOBS"); fi
 
-cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build "$BUILD_DIR" -j2 --target clearjoint
+cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release -DCLEARJOINT_BUILD_PYTHON=ON >/dev/null
+cmake --build "$BUILD_DIR" -j2 --target clearjoint clearjoint_python_core
 
-# numpy and matplotlib come from Debian (python3-matplotlib); another python3 earlier on PATH
-# (pyenv, a virtualenv) may not have them.
-PYTHON=${PYTHON:-python3}
-if ! "$PYTHON" -c "import matplotlib, numpy" 2>/dev/null; then
-  PYTHON=/usr/bin/python3
-fi
-exec "$PYTHON" scripts/reproduce_section6.py --clearjoint "$BUILD_DIR/apps/clearjoint/clearjoint" \
-  --jobs "$JOBS" "$@"
+clearjoint="$BUILD_DIR/apps/clearjoint/clearjoint"
+"$clearjoint" study run studies/section6_mechanisms.json --no-plot "${run_options[@]}"
+"$clearjoint" study run studies/section6_clearance.json --no-plot "${run_options[@]}"
+# The figures of both studies and the page's tables, by the interpreter the package was built for.
+python=$(sed -n 's/^Python3_EXECUTABLE:FILEPATH=//p' "$BUILD_DIR/CMakeCache.txt")
+PYTHONPATH="$BUILD_DIR/bindings/python${PYTHONPATH:+:$PYTHONPATH}" \
+  exec "${python:-/usr/bin/python3}" scripts/reproduce_section6.py --update-docs
