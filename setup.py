@@ -21,6 +21,7 @@ import sys
 
 from setuptools import Extension, setup
 from setuptools.command.build_ext import build_ext
+from setuptools.command.build_py import build_py
 
 ROOT = pathlib.Path(__file__).resolve().parent
 
@@ -61,16 +62,27 @@ class CMakeBuild(build_ext):
         shutil.copyfile(built, destination)
 
 
+class BuildPy(build_py):
+    """The Python files, and the study schema, which lives in docs/schema/, beside the study
+    runner (as bindings/python/study.cmake puts it)."""
+
+    def run(self) -> None:
+        super().run()
+        study = pathlib.Path(self.build_lib) / "clearjoint" / "study"
+        study.mkdir(parents=True, exist_ok=True)
+        shutil.copyfile(ROOT / "docs" / "schema" / "study-v1.schema.json", study / "study-v1.schema.json")
+
+
 setup(
     name="clearjoint",
     version=project_version(),
     description="Certified contact detection for spatial revolute joints with clearance",
     license="BSD-3-Clause",
-    packages=["clearjoint"],
+    packages=["clearjoint", "clearjoint.study"],
     package_dir={"clearjoint": "bindings/python/clearjoint"},
     package_data={"clearjoint": ["py.typed", "__init__.pyi"]},
     ext_modules=[CMakeExtension()],
-    cmdclass={"build_ext": CMakeBuild},
+    cmdclass={"build_ext": CMakeBuild, "build_py": BuildPy},
     python_requires=">=3.8",
     install_requires=["numpy"],
     zip_safe=False,

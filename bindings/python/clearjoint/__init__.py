@@ -14,19 +14,20 @@ axial clearances", Mechanism and Machine Theory 116 (2017) 123-144. docs/python.
 Lengths are in one unit of the caller's choice (metres in the shipped models), angles in radians,
 vectors in the world frame.
 """
-from ._core import (Certainty, Certificate, CertificateReason, CircleCylinderIntersection, CircleCylinderTopology,
-                    CirclePlaneIntersection, CirclePlaneTopology, Contact, ContactBase,
-                    ContactScenario, ContactType, JointContacts, JointDimensions, RimArc,
-                    RimCrossing, SolverError, __version__, certificate_reason_text,
+from ._core import (Certainty, Certificate, CertificateReason, CircleCylinderIntersection,
+                    CircleCylinderTopology, CirclePlaneIntersection, CirclePlaneTopology, Contact,
+                    ContactBase, ContactScenario, ContactType, JointContacts, JointDimensions,
+                    RimArc, RimCrossing, SolverError, __version__, certificate_reason_text,
                     scenario_label)
 from ._detect import (MAX_CONTACTS, CircleCylinderBatch, CirclePlaneBatch, DetectionBatch, detect,
                       intersect_circle_cylinder, intersect_circle_plane)
 from ._simulate import SimulationResult, simulate
 
 __all__ = [
-    "MAX_CONTACTS", "Certainty", "Certificate", "CertificateReason", "CircleCylinderBatch", "CircleCylinderIntersection",
-    "CircleCylinderTopology", "CirclePlaneBatch", "CirclePlaneIntersection", "CirclePlaneTopology",
-    "Contact", "ContactBase", "ContactScenario", "ContactType", "DetectionBatch", "JointContacts",
-    "JointDimensions", "RimArc", "RimCrossing", "SimulationResult", "SolverError", "__version__",
-    "certificate_reason_text", "detect", "intersect_circle_cylinder", "intersect_circle_plane", "scenario_label", "simulate",
+    "MAX_CONTACTS", "Certainty", "Certificate", "CertificateReason", "CircleCylinderBatch",
+    "CircleCylinderIntersection", "CircleCylinderTopology", "CirclePlaneBatch",
+    "CirclePlaneIntersection", "CirclePlaneTopology", "Contact", "ContactBase", "ContactScenario",
+    "ContactType", "DetectionBatch", "JointContacts", "JointDimensions", "RimArc", "RimCrossing",
+    "SimulationResult", "SolverError", "__version__", "certificate_reason_text", "detect",
+    "intersect_circle_cylinder", "intersect_circle_plane", "scenario_label", "simulate",
 ]
