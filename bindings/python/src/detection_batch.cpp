@@ -12,6 +12,7 @@
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <cstdint>
@@ -113,11 +114,16 @@ struct PoseColumns {
   }
 };
 
-/// The packed contact arrays, in one block, filled after the workers from their per-chunk lists.
+/// The packed contact arrays, in one block, filled after the workers from their per-chunk lists:
+/// chunk by chunk on up to `threads` threads without the GIL (a serial copy would bound the
+/// speed-up of a batch on several threads). `chunk` is the detection's rows per chunk.
 void put_contact_columns(const std::vector<std::vector<geo::Contact>>& chunk_contacts,
-                         const PoseColumns& columns, std::size_t rows, py::dict& out) {
-  std::size_t total = 0;
-  for (const auto& list : chunk_contacts) total += list.size();
+                         const PoseColumns& columns, std::size_t rows, std::size_t chunk,
+                         unsigned threads, py::dict& out) {
+  // First contact row of each chunk.
+  std::vector<std::size_t> first(chunk_contacts.size() + 1, 0);
+  for (std::size_t c = 0; c < chunk_contacts.size(); ++c) first[c + 1] = first[c] + chunk_contacts[c].size();
+  const std::size_t total = first.back();
   const auto m = static_cast<py::ssize_t>(total);
   const auto n = static_cast<py::ssize_t>(rows);
 
@@ -137,53 +143,57 @@ void put_contact_columns(const std::vector<std::vector<geo::Contact>>& chunk_con
                     certificate = block.plan<std::int8_t>({m}),
                     reason = block.plan<std::int8_t>({m});
   block.allocate();
-  {
-    std::int64_t* s = block.data<std::int64_t>(start);
-    std::int64_t* p = block.data<std::int64_t>(pose);
-    const std::int8_t* count = columns.count_out;
-    s[0] = 0;
-    for (py::ssize_t r = 0; r < n; ++r) {
-      s[r + 1] = s[r] + count[r];
-      for (std::int64_t k = s[r]; k < s[r + 1]; ++k) p[k] = r;
-    }
-  }
+  std::int64_t* s = block.data<std::int64_t>(start);
+  std::int64_t* p = block.data<std::int64_t>(pose);
+  const std::int8_t* count = columns.count_out;
   std::int8_t *t = block.data<std::int8_t>(type), *b = block.data<std::int8_t>(base),
-              *c = block.data<std::int8_t>(certificate), *cr = block.data<std::int8_t>(reason), *cc = block.data<std::int8_t>(crossing_count),
-              *mu = block.data<std::int8_t>(multiplicity);
+              *c = block.data<std::int8_t>(certificate), *cr = block.data<std::int8_t>(reason),
+              *cc = block.data<std::int8_t>(crossing_count), *mu = block.data<std::int8_t>(multiplicity);
   double *d = block.data<double>(depth), *de = block.data<double>(depth_error),
          *pje = block.data<double>(point_journal_error), *pie = block.data<double>(point_bearing_error),
-         *pj = block.data<double>(point_journal),
-         *pi = block.data<double>(point_bearing), *nw = block.data<double>(normal),
-         *a = block.data<double>(angle), *ae = block.data<double>(angle_error),
-         *xp = block.data<double>(crossing_point), *pe = block.data<double>(point_error);
-  std::size_t k = 0;
-  for (const auto& list : chunk_contacts) {
-    for (const geo::Contact& contact : list) {
-      t[k] = static_cast<std::int8_t>(contact.type);
-      b[k] = static_cast<std::int8_t>(contact.base);
-      c[k] = static_cast<std::int8_t>(contact.certificate.level);
-      cr[k] = static_cast<std::int8_t>(contact.certificate.reason);
-      cc[k] = static_cast<std::int8_t>(contact.crossing_count);
-      d[k] = contact.depth;
-      de[k] = contact.depth_error;
-      pje[k] = contact.p_WCj_error;
-      pie[k] = contact.p_WCi_error;
-      for (int i = 0; i < 3; ++i) {
-        pj[3 * k + i] = contact.p_WCj[i];
-        pi[3 * k + i] = contact.p_WCi[i];
-        nw[3 * k + i] = contact.normal_W[i];
+         *pj = block.data<double>(point_journal), *pi = block.data<double>(point_bearing),
+         *nw = block.data<double>(normal), *a = block.data<double>(angle),
+         *ae = block.data<double>(angle_error), *xp = block.data<double>(crossing_point),
+         *pe = block.data<double>(point_error);
+  s[0] = 0;
+  {
+    py::gil_scoped_release release;
+    std::atomic<bool> never{false};
+    for_each_chunk(chunk_contacts.size(), 1, threads, never, [&](std::size_t h, std::size_t, std::size_t) {
+      // This chunk's poses, rows [h * chunk, ...), own contact rows [first[h], first[h + 1]).
+      std::size_t k = first[h];
+      for (std::size_t r = h * chunk; r < std::min(rows, (h + 1) * chunk); ++r) {
+        for (int j = 0; j < count[r]; ++j) p[k++] = static_cast<std::int64_t>(r);
+        s[r + 1] = static_cast<std::int64_t>(k);
       }
-      for (int x = 0; x < 2; ++x) {
-        const bool used = x < contact.crossing_count;
-        const geo::RimCrossing& crossing = contact.crossings[x];
-        mu[2 * k + x] = used ? static_cast<std::int8_t>(crossing.multiplicity) : 0;
-        a[2 * k + x] = used ? crossing.angle : kNaN;
-        ae[2 * k + x] = used ? crossing.angle_error : kNaN;
-        pe[2 * k + x] = used ? crossing.point_error : kNaN;
-        for (int i = 0; i < 3; ++i) xp[6 * k + 3 * x + i] = used ? crossing.point[i] : kNaN;
+      k = first[h];
+      for (const geo::Contact& contact : chunk_contacts[h]) {
+        t[k] = static_cast<std::int8_t>(contact.type);
+        b[k] = static_cast<std::int8_t>(contact.base);
+        c[k] = static_cast<std::int8_t>(contact.certificate.level);
+        cr[k] = static_cast<std::int8_t>(contact.certificate.reason);
+        cc[k] = static_cast<std::int8_t>(contact.crossing_count);
+        d[k] = contact.depth;
+        de[k] = contact.depth_error;
+        pje[k] = contact.p_WCj_error;
+        pie[k] = contact.p_WCi_error;
+        for (int i = 0; i < 3; ++i) {
+          pj[3 * k + i] = contact.p_WCj[i];
+          pi[3 * k + i] = contact.p_WCi[i];
+          nw[3 * k + i] = contact.normal_W[i];
+        }
+        for (int x = 0; x < 2; ++x) {
+          const bool used = x < contact.crossing_count;
+          const geo::RimCrossing& crossing = contact.crossings[x];
+          mu[2 * k + x] = used ? static_cast<std::int8_t>(crossing.multiplicity) : 0;
+          a[2 * k + x] = used ? crossing.angle : kNaN;
+          ae[2 * k + x] = used ? crossing.angle_error : kNaN;
+          pe[2 * k + x] = used ? crossing.point_error : kNaN;
+          for (int i = 0; i < 3; ++i) xp[6 * k + 3 * x + i] = used ? crossing.point[i] : kNaN;
+        }
+        ++k;
       }
-      ++k;
-    }
+    });
   }
   out["contact_start"] = block.array<std::int64_t>(start);
   out["contact_pose"] = block.array<std::int64_t>(pose);
@@ -278,7 +288,7 @@ py::dict detect_batch(const geo::JointDimensions& dimensions, const PoseRows& po
   }
   py::dict out;
   columns.put(out);
-  put_contact_columns(chunk_contacts, columns, rows, out);
+  put_contact_columns(chunk_contacts, columns, rows, chunk, threads, out);
   return out;
 }
 
