@@ -36,14 +36,19 @@ constexpr const char* kUsage =
     "and \"options\": {\"certify\": bool, \"exact_fallback\": bool,\n"
     "                \"parallel_angle_tolerance\": radians}.\n"
     "Writes one JSON line per joint line, in order (empty lines are skipped):\n"
-    "  {\"id\", \"scenario\": \"none\"|\"a\"..\"l\"|\"beyond_model\", \"aligned\",\n"
+    "  {\"v\": 1, \"id\", \"scenario\": \"none\"|\"a\"..\"l\"|\"beyond_model\", \"aligned\",\n"
     "   \"certificate\", \"certificate_reason\", \"contacts\": [{\"type\", \"base\", \"depth\",\n"
     "   \"depth_error\", \"point_journal\", \"point_bearing\", \"point_journal_error\",\n"
     "   \"point_bearing_error\", \"normal\", \"crossings\", \"crossing_errors\",\n"
     "   \"certificate\", \"certificate_reason\", \"approach_velocity\",\n"
     "   \"tangential_velocity\"}]}\n"
-    "(velocities only with motions), or {\"id\": ..., \"error\": \"...\"}. Any consistent units\n"
-    "(SI: metres, m/s, rad/s). See docs/command-line.md and docs/contact-detection.md.\n"
+    "(velocities only with motions), or {\"v\": 1, \"id\": ..., \"error\": \"...\"}; \"v\" is the\n"
+    "version of these formats. Any consistent units (SI: metres, m/s, rad/s).\n"
+    "See docs/command-line.md and docs/contact-detection.md.\n"
+    "\n"
+    "Formats (JSON Schema 2020-12, in docs/schema/ and installed in share/clearjoint/schema/):\n"
+    "  input  detect-query.schema.json\n"
+    "  output detect-answer.schema.json (answers and error lines)\n"
     "\n"
     "Exit status: 0 all lines answered, 1 some line failed, 2 usage error or unreadable FILE.\n";
 
@@ -105,28 +110,6 @@ geo::DetectionOptions read_options(const Json& query) {
     options.parallel_angle_tolerance = read_number(*tolerance, path + ".parallel_angle_tolerance");
   }
   return options;
-}
-
-/// The scenario's label in Fig. 2 of the paper ("a".."l"), "none" or "beyond_model".
-const char* label(geo::ContactScenario scenario) {
-  using S = geo::ContactScenario;
-  switch (scenario) {
-    case S::none: return "none";
-    case S::single_radial: return "a";
-    case S::single_axial: return "b";
-    case S::radial_at_both_bases: return "c";
-    case S::axial_at_both_bases: return "d";
-    case S::radial_and_axial_same_base: return "e";
-    case S::radial_and_axial_opposite_bases: return "f";
-    case S::two_radial_one_axial: return "g";
-    case S::one_radial_two_axial: return "h";
-    case S::all_four: return "i";
-    case S::line: return "j";
-    case S::face: return "k";
-    case S::line_and_face: return "l";
-    case S::beyond_model: return "beyond_model";
-  }
-  throw std::logic_error("unknown ContactScenario");
 }
 
 const char* label(geo::ContactType type) {
@@ -237,7 +220,7 @@ void answer_query(const Json& query, Json& answer) {
     }
     contacts.push_back(std::move(entry));
   }
-  answer["scenario"] = label(result.scenario);
+  answer["scenario"] = std::string(geo::to_string(result.scenario));
   answer["aligned"] = result.aligned;
   answer["certificate"] = std::string(geo::to_string(result.certificate.level));
   answer["certificate_reason"] = reason(result.certificate);

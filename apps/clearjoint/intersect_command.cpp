@@ -31,8 +31,13 @@ constexpr const char* kUsage =
     "or with \"cylinder\": {\"axis_point\": [x,y,z], \"axis\": [x,y,z], \"radius\": R} instead of\n"
     "\"plane\"; optional \"options\": {\"certify\": bool, \"exact_fallback\": bool}.\n"
     "Writes one JSON line per query line, in order (empty lines are skipped): the intersection\n"
-    "with its certificate, or {\"id\": ..., \"error\": \"...\"}. Error bounds that are not known\n"
-    "are written as null. See docs/command-line.md.\n"
+    "with its certificate, or {\"v\": 1, \"id\": ..., \"error\": \"...\"}. Every output line\n"
+    "starts with \"v\": 1, the version of these formats. Error bounds that are not known are\n"
+    "written as null. See docs/command-line.md.\n"
+    "\n"
+    "Formats (JSON Schema 2020-12, in docs/schema/ and installed in share/clearjoint/schema/):\n"
+    "  input  intersect-query.schema.json\n"
+    "  output intersect-answer.schema.json (answers and error lines)\n"
     "\n"
     "Exit status: 0 all lines answered, 1 some line failed, 2 usage error or unreadable FILE.\n";
 

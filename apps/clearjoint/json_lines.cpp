@@ -40,6 +40,7 @@ std::string parse_message(const char* what) {
 Json answer_line(const JsonLinesCommand& command, const std::string& line, long line_number,
                  bool& failed) {
   Json answer = Json::object();
+  answer["v"] = kFormatVersion;
   answer["id"] = nullptr;
   std::string error;
   try {
@@ -65,6 +66,7 @@ Json answer_line(const JsonLinesCommand& command, const std::string& line, long 
   }
   // An error line carries only the id and the message.
   Json error_line = Json::object();
+  error_line["v"] = kFormatVersion;
   error_line["id"] = answer["id"];
   error_line["error"] = "line " + std::to_string(line_number) + ": " + error;
   failed = true;

@@ -24,6 +24,12 @@ namespace clearjoint::app {
 // writes non-finite values as null (JSON has neither NaN nor infinity).
 using Json = nlohmann::ordered_json;
 
+/// The version of the JSON Lines formats that every output line states in its first field,
+/// "v". The formats are specified by the JSON Schemas in docs/schema/ (installed under
+/// share/clearjoint/schema/), whose $id ends in this number; a change that can break a reader
+/// of the output (a field removed, renamed or retyped) increases it.
+inline constexpr int kFormatVersion = 1;
+
 /// A query line that cannot be answered; what() names the field and the offending value.
 class LineError : public std::runtime_error {
  public:

@@ -32,6 +32,11 @@ constexpr Command kCommands[] = {
 int print_usage(std::FILE* to) {
   std::fprintf(to, "usage: clearjoint COMMAND [ARGS...]\n       clearjoint --version\ncommands:\n");
   for (const Command& c : kCommands) std::fprintf(to, "  %-10s %s\n", c.name, c.summary);
+  std::fprintf(to,
+               "'clearjoint COMMAND --help' describes a command. The formats it reads and writes are\n"
+               "JSON Schemas (draft 2020-12) in docs/schema/, installed in share/clearjoint/schema/:\n"
+               "intersect-query, intersect-answer, detect-query, detect-answer, error-line and\n"
+               "model (simulate's model files), each NAME.schema.json.\n");
   return to == stdout ? 0 : 2;
 }
 

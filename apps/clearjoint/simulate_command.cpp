@@ -20,7 +20,9 @@ constexpr const char* kUsage =
     "usage: clearjoint simulate MODEL.json --out DIR\n"
     "  Integrates the model and writes body_<name>.csv, energy.csv, reactions.csv and, for force\n"
     "  elements with outputs (clearance joints), force_<name>.csv into DIR.\n"
-    "  A progress bar is drawn on standard error when it is a terminal.\n";
+    "  A progress bar is drawn on standard error when it is a terminal.\n"
+    "  Model file format: model.schema.json (JSON Schema 2020-12, in docs/schema/ and installed\n"
+    "  in share/clearjoint/schema/); examples in models/; docs/dynamics.md.\n";
 
 /// A one-line bar redrawn in place; only on a terminal, so logs and pipes stay clean.
 class ProgressBar {

@@ -99,8 +99,8 @@ InputScore score_answer(const geometry::JointContacts& answer, const ReferenceAn
   score.level = answer.certificate.level;
   if (answer.scenario != reference.scenario) {
     score.wrong_scenario = true;
-    score.problems.push_back("scenario " + std::string(geometry::to_string(answer.scenario)) +
-                             ", reference " + std::string(geometry::to_string(reference.scenario)));
+    score.problems.push_back("scenario " + std::string(geometry::label(answer.scenario)) +
+                             ", reference " + std::string(geometry::label(reference.scenario)));
   }
   std::vector<bool> used(reference.contacts.size(), false);
   for (int k = 0; k < answer.contact_count; ++k) {

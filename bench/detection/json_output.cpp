@@ -30,23 +30,8 @@ Json part_line(double radius, double length, const geometry::PartPose& pose) {
 }  // namespace
 
 const char* scenario_label(ContactScenario scenario) {
-  switch (scenario) {
-    case ContactScenario::none: return "none";
-    case ContactScenario::single_radial: return "a";
-    case ContactScenario::single_axial: return "b";
-    case ContactScenario::radial_at_both_bases: return "c";
-    case ContactScenario::axial_at_both_bases: return "d";
-    case ContactScenario::radial_and_axial_same_base: return "e";
-    case ContactScenario::radial_and_axial_opposite_bases: return "f";
-    case ContactScenario::two_radial_one_axial: return "g";
-    case ContactScenario::one_radial_two_axial: return "h";
-    case ContactScenario::all_four: return "i";
-    case ContactScenario::line: return "j";
-    case ContactScenario::face: return "k";
-    case ContactScenario::line_and_face: return "l";
-    case ContactScenario::beyond_model: return "beyond_model";
-  }
-  return "";
+  // The key is static text, NUL-terminated.
+  return geometry::to_string(scenario).data();
 }
 
 Json detect_input_line(const DetectionInput& input) {

@@ -4,7 +4,7 @@
 /* The MEX gateway's output: C API results written as MATLAB structs.
  *
  * One result is a struct with fields
- *   scenario (char, "(a) single radial", ...), scenario_code (cj_scenario), aligned (logical),
+ *   scenario (char, "none", "a" ... "l", "beyond_model"), scenario_code (cj_scenario), aligned (logical),
  *   certificate (struct: level, level_code, reason, reason_code), contact_count, contacts;
  * contacts is a contact_count x 1 struct array with fields
  *   type ("radial"/"axial"), base ("A"/"B"/"mid"), depth, depth_error_bound,

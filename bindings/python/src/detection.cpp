@@ -121,8 +121,10 @@ void bind_enums(py::module_& m) {
       .value("beyond_model", geo::ContactScenario::beyond_model,
              "a configuration the paper's model does not cover (four wall crossings on a rim, a "
              "rim wholly beyond a surface, a penetration deeper than the clearance)");
-  m.def("scenario_label", [](geo::ContactScenario s) { return std::string(geo::to_string(s)); },
-        py::arg("scenario"), "The scenario's label: \"(a) single radial\", \"none\", ...");
+  m.def("scenario_label", [](geo::ContactScenario s) { return std::string(geo::label(s)); },
+        py::arg("scenario"),
+        "The scenario's label for people: \"(a) single radial\", \"none\", ...; clearjoint detect "
+        "writes its key (\"a\").");
 
   py::enum_<geo::ContactType>(m, "ContactType", "radial 0: against the lateral wall; axial 1: against a base.")
       .value("radial", geo::ContactType::radial, "against the lateral wall (eqs. 16-21; line: eqs. 6-8)")
@@ -254,7 +256,7 @@ void bind_results(py::module_& m) {
       .def_readonly("certificate", &geo::JointContacts::certificate,
                     "the weakest over every decision taken, including 'no contact'")
       .def("__repr__", [](const geo::JointContacts& r) {
-        std::string text = "JointContacts(" + std::string(geo::to_string(r.scenario)) +
+        std::string text = "JointContacts(" + std::string(geo::label(r.scenario)) +
                            (r.aligned ? ", aligned" : "") + ", " + repr_certificate(r.certificate);
         for (int k = 0; k < r.contact_count; ++k) {
           const geo::Contact& c = r.contacts[k];

@@ -349,7 +349,7 @@ TEST(CApi, ThreadsDetectingAtOnceGetTheirOwnAnswers) {
 
 TEST(CApi, NamesEveryEnumValueAndSaysUnknownForOthers) {
   for (int s = CJ_SCENARIO_NONE; s <= CJ_SCENARIO_BEYOND_MODEL; ++s) EXPECT_STRNE(cj_scenario_string(s), "unknown");
-  EXPECT_STREQ(cj_scenario_string(CJ_SCENARIO_LINE), "(j) line");
+  EXPECT_STREQ(cj_scenario_string(CJ_SCENARIO_LINE), "j");
   EXPECT_STREQ(cj_scenario_string(CJ_SCENARIO_BEYOND_MODEL + 1), "unknown");
   EXPECT_STREQ(cj_scenario_string(-1), "unknown");
   EXPECT_STREQ(cj_certainty_string(CJ_CERTAINTY_CERTIFIED), "certified");

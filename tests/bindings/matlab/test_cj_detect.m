@@ -22,7 +22,7 @@ function test_cj_detect()
 
   % Aligned journal pushed along +y: the line contact (j), depth e - cr = 0.05.
   r = cj_detect(table2, bearing, [0 0.15 0.02 0 0 1]);
-  assert(strcmp(r.scenario, '(j) line') && r.aligned && strcmp(r.contacts(1).base, 'mid'));
+  assert(strcmp(r.scenario, 'j') && r.aligned && strcmp(r.contacts(1).base, 'mid'));
   assert(abs(r.contacts(1).depth - 0.05) < 1e-12);
   % Free flight: an empty contact array.
   r = cj_detect(table2, bearing, tilted(0, 0, 0.005));

@@ -71,15 +71,29 @@ TEST(ClassifyScenario, BeyondModelWinsAndImpossiblePatternsAreBeyondModel) {
   EXPECT_EQ(classify_scenario(line_misaligned), S::beyond_model);
 }
 
-TEST(ContactScenarioToString, GivesDistinctNamesWithTheFigureLetter) {
+TEST(ContactScenarioToString, GivesDistinctKeysThatAreTheFigureLetters) {
   std::set<std::string> names;
   for (int k = 0; k <= int(ContactScenario::beyond_model); ++k) {
     names.insert(std::string(to_string(ContactScenario(k))));
   }
   EXPECT_EQ(names.size(), 14u);
-  EXPECT_EQ(to_string(ContactScenario::single_radial), "(a) single radial");
-  EXPECT_EQ(to_string(ContactScenario::line_and_face), "(l) line and face");
+  EXPECT_EQ(to_string(ContactScenario::single_radial), "a");
+  EXPECT_EQ(to_string(ContactScenario::line_and_face), "l");
   EXPECT_EQ(to_string(ContactScenario::none), "none");
+  EXPECT_EQ(to_string(ContactScenario::beyond_model), "beyond_model");
+}
+
+TEST(ContactScenarioLabel, StartsWithTheKeyInParenthesesForEveryLetteredScenario) {
+  std::set<std::string> labels;
+  for (int k = 0; k <= int(ContactScenario::beyond_model); ++k) {
+    const auto scenario = ContactScenario(k);
+    labels.insert(std::string(label(scenario)));
+    const std::string key(to_string(scenario));
+    if (key.size() == 1) EXPECT_EQ(std::string(label(scenario)).substr(0, 4), "(" + key + ") ");
+  }
+  EXPECT_EQ(labels.size(), 14u);
+  EXPECT_EQ(label(ContactScenario::single_radial), "(a) single radial");
+  EXPECT_EQ(label(ContactScenario::beyond_model), "beyond the model");
 }
 
 }  // namespace

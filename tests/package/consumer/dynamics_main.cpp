@@ -24,7 +24,7 @@ int main() {
   const bool ok = force == 0.5 && found.scenario == geometry::ContactScenario::line &&
                   found.contact_count == 1 && std::fabs(found.contacts[0].depth - 0.05e-3) < 1e-15;
   std::printf("dynamics consumer: Hertz force %.17g, scenario %s, %d contact(s), %s\n", force,
-              std::string(geometry::to_string(found.scenario)).c_str(), found.contact_count,
+              std::string(geometry::label(found.scenario)).c_str(), found.contact_count,
               ok ? "as expected" : "UNEXPECTED");
   return ok ? 0 : 1;
 }

@@ -160,10 +160,10 @@ typedef enum cj_circle_cylinder_topology {
   CJ_CIRCLE_CYLINDER_ON_SURFACE = 3
 } cj_circle_cylinder_topology;
 
-/** Static strings; "unknown" for a value this version does not know. The texts are the C++
- * to_string ones where C++ has one: "(a) single radial", "(j) line", "none", "beyond model" for
- * scenarios; "exact", "certified", "uncertain"; a reason's sentence ("certificate switched off";
- * "" for CJ_REASON_NONE). */
+/** Static strings; "unknown" for a value this version does not know. A scenario's text is its
+ * key, as C++ to_string and `clearjoint detect` write it: "none", "a" ... "l" (the letters of the
+ * paper's Fig. 2), "beyond_model". The others are the C++ to_string ones: "exact", "certified",
+ * "uncertain"; a reason's sentence ("certificate switched off"; "" for CJ_REASON_NONE). */
 CJ_API const char* cj_scenario_string(int scenario);
 CJ_API const char* cj_certainty_string(int certainty);
 CJ_API const char* cj_reason_string(int reason);

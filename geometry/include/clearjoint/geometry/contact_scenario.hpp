@@ -29,8 +29,12 @@ enum class ContactScenario {
   beyond_model,
 };
 
-/// "(a) single radial", "(j) line", "none", "beyond model", ...
+/// The scenario's key, the one spelling used by the command line's output, the C API and the
+/// docs: "none", the letter of the paper's Fig. 2 ("a" ... "l"), or "beyond_model".
 std::string_view to_string(ContactScenario scenario) noexcept;
+
+/// A label for people: "(a) single radial", "(j) line", "none", "beyond the model", ...
+std::string_view label(ContactScenario scenario) noexcept;
 
 /// Which of the candidate contacts exist. Misaligned: radial_at_a/b (rim vs wall) and
 /// axial_at_a/b (rim vs base plane). Parallel axes: line (radial at mid-length) and
