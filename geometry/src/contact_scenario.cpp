@@ -39,7 +39,7 @@ std::string_view label(ContactScenario scenario) noexcept {
     case ContactScenario::line: return "(j) line";
     case ContactScenario::face: return "(k) face";
     case ContactScenario::line_and_face: return "(l) line and face";
-    case ContactScenario::beyond_model: return "beyond the model";
+    case ContactScenario::beyond_model: return "beyond model";
   }
   return "unknown";
 }

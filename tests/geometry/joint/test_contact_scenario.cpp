@@ -89,11 +89,13 @@ TEST(ContactScenarioLabel, StartsWithTheKeyInParenthesesForEveryLetteredScenario
     const auto scenario = ContactScenario(k);
     labels.insert(std::string(label(scenario)));
     const std::string key(to_string(scenario));
-    if (key.size() == 1) EXPECT_EQ(std::string(label(scenario)).substr(0, 4), "(" + key + ") ");
+    if (key.size() == 1) {
+      EXPECT_EQ(std::string(label(scenario)).substr(0, 4), "(" + key + ") ");
+    }
   }
   EXPECT_EQ(labels.size(), 14u);
   EXPECT_EQ(label(ContactScenario::single_radial), "(a) single radial");
-  EXPECT_EQ(label(ContactScenario::beyond_model), "beyond the model");
+  EXPECT_EQ(label(ContactScenario::beyond_model), "beyond model");
 }
 
 }  // namespace

@@ -33,7 +33,7 @@ enum class ContactScenario {
 /// docs: "none", the letter of the paper's Fig. 2 ("a" ... "l"), or "beyond_model".
 std::string_view to_string(ContactScenario scenario) noexcept;
 
-/// A label for people: "(a) single radial", "(j) line", "none", "beyond the model", ...
+/// A label for people: "(a) single radial", "(j) line", "none", "beyond model", ...
 std::string_view label(ContactScenario scenario) noexcept;
 
 /// Which of the candidate contacts exist. Misaligned: radial_at_a/b (rim vs wall) and
