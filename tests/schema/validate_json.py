@@ -15,6 +15,7 @@ those references resolve. Uses Debian's python3-jsonschema (Draft 2020-12).
 """
 import json
 import pathlib
+import re
 import subprocess
 import sys
 
@@ -65,8 +66,9 @@ def main(argv):
             jsonschema.Draft202012Validator.check_schema(schema)
             if schema.get("$schema") != "https://json-schema.org/draft/2020-12/schema":
                 sys.exit(f"FAIL {name}: $schema is not draft 2020-12")
-            if not schema.get("$id", "").endswith(f":v1:{name}"):
-                sys.exit(f"FAIL {name}: $id {schema.get('$id')!r} does not end in ':v1:{name}'")
+            # The format version is part of the id: urn:clearjoint:schema:v1:NAME, .../study-v1...
+            if not re.search(r"(^|[:/-])v[0-9]+([:./]|$)", schema.get("$id", "")):
+                sys.exit(f"FAIL {name}: $id {schema.get('$id')!r} carries no format version (v1, ...)")
             ids.add(schema["$id"])
         if len(ids) != len(schemas) or not schemas:
             sys.exit("FAIL: schema ids are not distinct, or there are no schemas")
