@@ -416,8 +416,8 @@ normalised exactly are printed but do not fail the test.
 ## Input families
 
 Metres throughout except the unit variants of `extreme` (micrometres and kilometres: lengths in the
-tables are then in the input's unit). Joint of the paper's Table 2 (Ri = 10 mm, Rj = 9.9 mm,
-Li = 20 mm, Lj = 19.8 mm, cr = ca = 0.1 mm) unless stated. Each family has a fixed seed
+tables are then in the input's unit). Joint of the paper's Table 2 (Ri = 10 mm, Li = 20 mm,
+Rj = 9.9 mm, Lj = 19.8 mm, cr = ca = 0.1 mm) unless stated. Each family has a fixed seed
 (`std::mt19937_64` with an explicit 53-bit conversion); `bench/detection/input_families.hpp`
 documents each generator.
 

@@ -23,7 +23,7 @@ enum class NormalForceModel {
 
 /// "hertz", "lankarani_nikravesh", "hunt_crossley", "flores" (the model-file spellings).
 std::string_view to_string(NormalForceModel model) noexcept;
-/// The inverse of to_string; throws ModelError "<field> = "<name>": unknown ..." listing the names.
+/// The inverse of to_string; throws ModelError `<field> = "<name>": unknown ...` listing the names.
 NormalForceModel normal_force_model_from_string(std::string_view name, std::string_view field);
 
 /// Paper Table 2 values as defaults.

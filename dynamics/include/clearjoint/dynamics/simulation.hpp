@@ -9,7 +9,7 @@
 ///                    alphax, alphay, alphaz (world) for every output body
 ///   energy.csv       time, kinetic, potential, total, position_violation (max |Phi|),
 ///                    velocity_violation (max |Phi_q v + Phi_t|), euler_norm_drift (max ||p|-1|)
-///   reactions.csv    time, then per joint <joint>.fx .. <joint>.mz: the reaction (eq. 37) on
+///   reactions.csv    time, then per joint `<joint>.fx` .. `<joint>.mz`: the reaction (eq. 37) on
 ///                    body j (body i for joints to ground), moment about the joint point, world frame
 ///   force_<name>.csv time, then the columns a force element records (ForceElement::output_columns;
 ///                    e.g. a clearance joint's contact depths, forces, scenario), for every element
