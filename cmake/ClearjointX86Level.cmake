@@ -2,16 +2,16 @@
 # CLEARJOINT_X86_64_V2: compile the geometry kernel for the x86-64-v2 level (SSE4.1, SSE4.2,
 # SSSE3, POPCNT; every x86-64 processor of the last fifteen years or so, and the baseline of
 # RHEL 9), not the original x86-64 that Debian's compilers target by default. With it GCC 12
-# writes the kernel's lane selects (pair_lanes.hpp) as SSE4.1 blends, and the in-contact
-# detection measured 3 % faster, certified roots 7 % (docs/benchmarks-kernel.md, 2026-11-25).
-# The level has no fused multiply-add (that is x86-64-v3), so every result is the same bit for
-# bit (scripts/compare-answers.sh: identical on its 192,000 lines).
-#   AUTO (default): on when the compiler takes -march=x86-64-v2 and a program built with it
-#                   runs on the build machine and finds SSE4.2, SSSE3 and POPCNT there;
+# writes the kernel's lane selects (pair_lanes.hpp) as SSE4.1 blends, a few per cent faster in
+# the contact cases (docs/benchmarks-kernel.md). The level has no fused multiply-add (that is
+# x86-64-v3), and the kernel is compiled with -ffp-contract=off anyway, so every result is the
+# same bit for bit (scripts/compare-answers.sh).
+#   OFF (default):  the compiler's default target, so that an installed library runs anywhere;
 #   ON:             on (a library built so stops with an illegal instruction on an older x86-64);
-#   OFF:            the compiler's default target.
-set(CLEARJOINT_X86_64_V2 AUTO CACHE STRING
-    "Compile the geometry kernel for x86-64-v2 (SSE4.2, SSSE3, POPCNT): AUTO, ON or OFF")
+#   AUTO:           on when the compiler takes -march=x86-64-v2 and a program built with it
+#                   runs on the build machine and finds SSE4.2, SSSE3 and POPCNT there.
+set(CLEARJOINT_X86_64_V2 OFF CACHE STRING
+    "Compile the geometry kernel for x86-64-v2 (SSE4.2, SSSE3, POPCNT): OFF, ON or AUTO")
 set_property(CACHE CLEARJOINT_X86_64_V2 PROPERTY STRINGS AUTO ON OFF)
 
 # Sets `out` to the compile options that CLEARJOINT_X86_64_V2 asks for (empty or -march=x86-64-v2).

@@ -26,12 +26,12 @@ namespace {
 /// A subtracted product's factor enters as {x, -|x|}: a - (-|x|) y is a + |x| y exactly (negation
 /// is exact, and so is that of a rounded product).
 Pair with_twin(double x) {
-  const PairMask kAllButLane1Sign = ~reinterpret_cast<PairMask>(Pair{0.0, -0.0});
-  return reinterpret_cast<Pair>(reinterpret_cast<PairMask>(Pair{x, x}) & kAllButLane1Sign);
+  const PairMask kAllButLane1Sign = ~bits_of(Pair{0.0, -0.0});
+  return pair_of_bits(bits_of(Pair{x, x}) & kAllButLane1Sign);
 }
 Pair with_negated_twin(double x) {
-  const PairMask kLane1Sign = reinterpret_cast<PairMask>(Pair{0.0, -0.0});
-  return reinterpret_cast<Pair>(reinterpret_cast<PairMask>(Pair{x, x}) | kLane1Sign);
+  const PairMask kLane1Sign = bits_of(Pair{0.0, -0.0});
+  return pair_of_bits(bits_of(Pair{x, x}) | kLane1Sign);
 }
 
 /// The a priori computation in plain double, each value beside its absolute-value twin

@@ -111,8 +111,7 @@ struct RimDistancePolynomial {
 /// rounded constants 1/6, 1/120, ..., 1/40320 add < u x^2). 4u covers both. Estrin's form, not
 /// Horner's (2u and 3u |x|): this heads every Halley step's chain (certified_rim_roots.hpp), and
 /// after x^2 its longest chain is x^4 and three dependent multiply-adds where Horner's was four
-/// (certified roots ~6 ns faster a crossing rim, measured side by side; the accuracy suite's
-/// family figures unchanged). The innermost terms multiply by the rounded reciprocals instead
+/// (a shorter chain; the accuracy suite's family figures unchanged). The innermost terms multiply by the rounded reciprocals instead
 /// of dividing by 5040 and 40320: one rounding more (the constant's), of a term below
 /// x^6 / 5040 < 2^-36, so far below the 4u; and the divisions were the longest latencies on the
 /// iteration step's chain.

@@ -23,9 +23,8 @@
 namespace clearjoint::geometry::detail {
 
 /// Lane 0 base A's value, lane 1 base B's (or, in rim_distance_polynomial.cpp, a value and its
-/// twin). The GCC vector Pair (pair_lanes.hpp), not Eigen's Array2d, which these lanes were
-/// until 2026-11-24: GCC built an Array2d from two doubles by two 8-byte stores and one 16-byte
-/// load, which the store buffer cannot forward (a stall of ~10 cycles each time, on the
+/// twin). The Pair of pair_lanes.hpp, not Eigen's Array2d: GCC builds an Array2d from two
+/// doubles by two 8-byte stores and one 16-byte load, which the store buffer cannot forward (a stall of ~10 cycles each time, on the
 /// critical path of the prefilter and of the a priori polynomial); a Pair it builds in registers.
 using Lanes = Pair;
 using LaneFlags = PairMask;

@@ -6,8 +6,6 @@
 #include <numbers>
 #include <sstream>
 
-#include <CGAL/Gmpq.h>
-
 #include "clearjoint/geometry/intersect_circle_cylinder.hpp"
 #include "clearjoint/geometry/intersect_circle_plane.hpp"
 #include "a_priori_bounds.hpp"
@@ -15,6 +13,7 @@
 #include "candidate_prefilter_lanes.hpp"
 #include "contact_error_bounds.hpp"
 #include "error_bounded.hpp"
+#include "parallel_axes_exact.hpp"
 #include "primitives_detail.hpp"
 #include "rim_distance_polynomial.hpp"
 #include "rim_plane_quantities.hpp"
@@ -28,14 +27,14 @@ namespace {
 constexpr CertificateReason kNotRepresentableInWorld = CertificateReason::contact_not_representable_in_world;
 constexpr CertificateReason kToleranceReason = CertificateReason::axes_parallel_within_tolerance;
 
-/// a*b == c*d in real arithmetic: Dekker's two-product in range, CGAL rationals otherwise.
+/// a*b == c*d in real arithmetic: Dekker's two-product in range, rationals otherwise.
 bool products_equal(double a, double b, double c, double d) {
   using detail::in_two_product_range;
   if (in_two_product_range(a) && in_two_product_range(b) && in_two_product_range(c) &&
       in_two_product_range(d)) {
     return detail::exactly_equal_products(a, b, c, d);
   }
-  return CGAL::Gmpq(a) * CGAL::Gmpq(b) == CGAL::Gmpq(c) * CGAL::Gmpq(d);
+  return detail::exact_products_equal(a, b, c, d);
 }
 
 /// The floating-point filter of eq. (5): a component of the cross product computed in double is

@@ -98,8 +98,8 @@ PairMask encloses(const SlopeBounds& b, const Pair& half_width) {
 /// The planned half-width: kPlannedWidth times value's error bound over the last Halley
 /// iterate's |g'| (HalleyRuns::slope), known before g at the final iterate is, so that the bound
 /// the crossings carry does not wait for that evaluation (only the branch on the proof does, and
-/// it is predicted). With the half-width 2 V / S from g at the final iterate the in-contact
-/// detection measured slower (531 -> 558 ns, side by side, 2026-11-24). The factor 2.2 leaves
+/// it is predicted). The half-width 2 V / S from g at the final iterate put that evaluation on
+/// the critical path, and the in-contact detection measured slower. The factor 2.2 leaves
 /// room for |g(x)| (about an ulp of the angle times |g'|, far below the error bound) and for the
 /// change of slope over the last step: the accuracy suite's near-tangent families fall back to
 /// the sign change on 39 rims at 2.2, 37 at 2.5 and 149 at 2.1, the benchmark's poses on none;
@@ -149,7 +149,7 @@ bool enclose_by_sign_change(const RimDistancePolynomial& g, const HalleyRuns& ru
 /// The proofs of tier 1's two simple roots where the Halley runs stopped, root i in lane i (g
 /// changes sign as directions[i] there), into result.roots[0, 1], wrapped and sorted by angle.
 /// Always inlined: with the cap proof as its second caller GCC kept it out of line, and tier 1's
-/// common path measured 7 ns slower a crossing rim (115 -> 122 ns).
+/// common path measured slower.
 [[gnu::always_inline]] inline bool enclose_after_iteration(const RimDistancePolynomial& g, const HalleyRuns& runs,
                                                            RimRoots& result) {
   const int directions[2] = {+1, -1};
@@ -224,7 +224,7 @@ void sort_and_wrap(RimRoots& result) {
 // (docs/circle-cylinder.md, section 2.1.) When the rim's deepest reach lies within the second
 // harmonic's size of the wall (a contact just beginning or just missed: the prefilters pass it,
 // and 15 of the benchmark's 4,096 in-contact poses have such a rim), first_harmonic_proof cannot
-// sign the end arc around psi = 0, and tier 2's subdivision took ~3 us for it (~25 times tier 1).
+// sign the end arc around psi = 0, and tier 2's subdivision costs some 25 times tier 1 for it.
 // With |h''| <= Hdd, g'' = -A cos(psi) + h'' < 0 on the cap |psi| <= gamma, A cos(gamma) = 2 Hdd:
 // g is strictly concave there, so it has at most two roots there, and if it is negative at the
 // cap's ends, it is negative everywhere else: for gamma >= alpha the ends lie on the monotone

@@ -61,9 +61,8 @@ struct AngleWithTrig {
 /// acos(x / L) or asin(y / L), whichever argument is at most 1/sqrt(2) in magnitude, where either
 /// has slope below 1.5: the quotient's relative error (2 ulps of L, one rounding) is under 8u of
 /// an argument at most 1, so 12u of angle, and kLibmAngleError covers the call; pi - a adds the
-/// rounding of pi and of the difference. Not std::atan2: glibc's costs 13-15 ns on the benchmark
-/// machine against 4 ns for acos or asin (measured side by side, 2026-11-23), and the cosine
-/// and sine are wanted for the crossing points anyway.
+/// rounding of pi and of the difference. Not std::atan2: glibc's costs three times acos or asin,
+/// and the cosine and sine are wanted for the crossing points anyway.
 AngleWithTrig angle_of(const Bounded& x, const Bounded& y) {
   constexpr double kQuotientAngleError = 12 * detail::kUnitRoundoff;
   constexpr double kReflectionError = 4 * detail::kUnitRoundoff * std::numbers::pi;

@@ -61,8 +61,8 @@ inline constexpr double kHalleyLastStep = 0x1p-20;
 /// every iterate is reached by angle addition (approximate_near). Halley, not Newton: from the
 /// first-harmonic guesses (about 1e-3 rad off) it settles in two steps where Newton took three,
 /// and each step is one division either way (the step is 2 g g' / (2 g'^2 - g g''), whose
-/// g'' costs a few multiplications beside g and g'): a shorter chain by a third (certified roots
-/// 173 -> 162 ns a crossing rim, measured side by side, 2026-11-24). Tier 1's two runs
+/// g'' costs a few multiplications beside g and g'): a shorter dependency chain by a third.
+/// Tier 1's two runs
 /// (first_harmonic_proof in certified_rim_roots.cpp; declared here for its test) side by side,
 /// run i in lane i (pair_lanes.hpp): each run is a chain of dependent divisions and polynomial
 /// evaluations, and one chain of packed operations does the work of both. Each lane's arithmetic
