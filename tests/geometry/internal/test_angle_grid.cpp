@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// Tests of geometry/src/angle_grid.hpp: every table entry is the double nearest to the exact
+// Tests of geometry/src/arithmetic/angle_grid.hpp: every table entry is the double nearest to the exact
 // cosine and sine of its grid angle (256-bit MPFR), and grid_angle splits every angle exactly.
 
 #include "angle_grid.hpp"

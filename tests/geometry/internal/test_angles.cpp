@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// Tests of geometry/src/angles.hpp: wrap_angle maps every finite angle into [0, 2 pi).
+// Tests of geometry/src/arithmetic/angles.hpp: wrap_angle maps every finite angle into [0, 2 pi).
 
 #include "angles.hpp"
 

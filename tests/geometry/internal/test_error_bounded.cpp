@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// Tests of geometry/src/error_bounded.hpp: every operation on Bounded must enclose the exact
+// Tests of geometry/src/arithmetic/error_bounded.hpp: every operation on Bounded must enclose the exact
 // result of the exact operands (any real within value +- error), checked against 256-bit MPFR
 // on random and adversarial inputs; sign() is 0 when undecided and never wrong.
 

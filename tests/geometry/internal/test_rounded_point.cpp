@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// Tests of geometry/src/rounded_point.hpp (and the exact rebuild of exact_rational_point.hpp):
+// Tests of geometry/src/arithmetic/rounded_point.hpp (and the exact rebuild of exact_rational_point.hpp):
 // the error bound of a rounded base or rim centre must hold against the exact point, computed
 // in rationals, on ordinary, far-from-origin, tiny and huge inputs.
 
