@@ -12,6 +12,8 @@
 #include <optional>
 #include <thread>
 
+#include <mpfr.h>
+
 #include "accuracy_scoring.hpp"
 #include "detection_methods.hpp"
 #include "joint_reference.hpp"
@@ -118,6 +120,9 @@ std::vector<InputOutcome> evaluate_all(const std::vector<DetectionInput>& inputs
                      finished, inputs.size(), seconds);
       }
     }
+    // MPFR keeps its constant caches (pi, log 2, ...) per thread and frees a thread's only when
+    // asked from that thread: Boost frees the main thread's at exit, the workers free theirs here.
+    mpfr_free_cache();
   };
   std::vector<std::thread> pool;
   for (int t = 1; t < std::max(1, threads); ++t) pool.emplace_back(worker);

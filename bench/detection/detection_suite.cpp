@@ -19,6 +19,8 @@
 #include <thread>
 #include <vector>
 
+#include <mpfr.h>
+
 #include "accuracy_run.hpp"
 #include "input_families.hpp"
 #include "joint_reference.hpp"
@@ -162,6 +164,9 @@ int run_export(const Arguments& a) {
             bench::reference_detect(bench::joint_as_given(input.dimensions, input.bearing, input.journal));
         reference_lines[i] = bench::reference_answer_line(input, answer).dump();
       }
+      // MPFR keeps its constant caches (pi, log 2, ...) per thread and frees a thread's only when
+      // asked from that thread: Boost frees the main thread's at exit, the workers free theirs here.
+      mpfr_free_cache();
     };
     std::vector<std::thread> pool;
     for (int t = 1; t < a.threads; ++t) pool.emplace_back(worker);
