@@ -50,7 +50,8 @@ constexpr const char* kUsage =
     "  input  detect-query.schema.json\n"
     "  output detect-answer.schema.json (answers and error lines)\n"
     "\n"
-    "Exit status: 0 all lines answered, 1 some line failed, 2 usage error or unreadable FILE.\n";
+    "Exit status: 0 all lines answered, 1 some line failed, 2 usage error, unreadable FILE\n"
+    "or unwritable standard output.\n";
 
 /// A number that must be positive, e.g. a radius.
 double read_positive(const Json& object, const std::string& path, const char* key) {
@@ -229,6 +230,11 @@ void answer_query(const Json& query, Json& answer) {
 
 }  // namespace
 
-int run_detect(Arguments args) { return run_json_lines({"detect", kUsage, answer_query}, args); }
+const JsonLinesCommand& detect_command() {
+  static const JsonLinesCommand command{"detect", kUsage, answer_query};
+  return command;
+}
+
+int run_detect(Arguments args) { return run_json_lines(detect_command(), args); }
 
 }  // namespace clearjoint::app

@@ -39,7 +39,8 @@ constexpr const char* kUsage =
     "  input  intersect-query.schema.json\n"
     "  output intersect-answer.schema.json (answers and error lines)\n"
     "\n"
-    "Exit status: 0 all lines answered, 1 some line failed, 2 usage error or unreadable FILE.\n";
+    "Exit status: 0 all lines answered, 1 some line failed, 2 usage error, unreadable FILE\n"
+    "or unwritable standard output.\n";
 
 geo::Circle3 read_circle(const Json& value) {
   const std::string path = "circle";
@@ -172,8 +173,11 @@ void answer_query(const Json& query, Json& answer) {
 
 }  // namespace
 
-int run_intersect(Arguments args) {
-  return run_json_lines({"intersect", kUsage, answer_query}, args);
+const JsonLinesCommand& intersect_command() {
+  static const JsonLinesCommand command{"intersect", kUsage, answer_query};
+  return command;
 }
+
+int run_intersect(Arguments args) { return run_json_lines(intersect_command(), args); }
 
 }  // namespace clearjoint::app

@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "json_lines.hpp"
 
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -11,14 +14,12 @@
 #include <istream>
 
 #include "clearjoint/geometry/primitives.hpp"
+#include "json/bounded_json.hpp"
 
 namespace clearjoint::app {
 namespace {
 
 namespace geo = clearjoint::geometry;
-
-// Longest excerpt of an offending value quoted in an error message (characters).
-constexpr std::size_t kMaxQuotedValue = 60;
 
 /// nlohmann's "[json.exception.parse_error.101] parse error at line 1, column 52: ..." as
 /// "parse error at column 52: ...": the tag says nothing to a user, and "line 1" is the parser's
@@ -36,7 +37,38 @@ std::string parse_message(const char* what) {
   return text;
 }
 
-/// The answer to one non-empty line; sets `failed` when it is an error line.
+/// What read_line found.
+enum class LineRead { line, too_long, end };
+
+/// The next line of `input` without its '\n' (and '\r' of CRLF files), reading at most
+/// kMaxLineBytes of it: a longer line is skipped to its end and reported, so that one huge line
+/// can neither exhaust memory nor stop the answers to the lines after it. std::getline has no
+/// such bound, hence the loop over the stream buffer.
+LineRead read_line(std::streambuf& input, std::string& line) {
+  line.clear();
+  bool too_long = false;
+  for (;;) {
+    const int c = input.sbumpc();
+    if (c == std::char_traits<char>::eof()) {
+      if (line.empty() && !too_long) return LineRead::end;
+      break;
+    }
+    if (c == '\n') break;
+    if (too_long) continue;
+    if (line.size() == kMaxLineBytes) {
+      too_long = true;
+      line.clear();
+      continue;
+    }
+    line.push_back(static_cast<char>(c));
+  }
+  if (too_long) return LineRead::too_long;
+  if (!line.empty() && line.back() == '\r') line.pop_back();  // CRLF files
+  return LineRead::line;
+}
+
+}  // namespace
+
 Json answer_line(const JsonLinesCommand& command, const std::string& line, long line_number,
                  bool& failed) {
   Json answer = Json::object();
@@ -46,9 +78,11 @@ Json answer_line(const JsonLinesCommand& command, const std::string& line, long 
   try {
     Json query;
     try {
-      query = Json::parse(line);
+      query = json::parse_bounded<Json>(line);
     } catch (const Json::exception& e) {
       throw LineError("malformed JSON: " + parse_message(e.what()));
+    } catch (const json::JsonLimitError& e) {
+      throw LineError(e.what());
     }
     if (query.is_object()) {
       if (const auto id = query.find("id"); id != query.end()) answer["id"] = *id;
@@ -73,23 +107,48 @@ Json answer_line(const JsonLinesCommand& command, const std::string& line, long 
   return error_line;
 }
 
+namespace {
+
+/// The message and exit status of a failed write to standard output (a full disk, /dev/full, a
+/// closed pipe): answers that cannot be delivered must not end with status 0.
+int write_error(const JsonLinesCommand& command, long line_number, int error_number) {
+  std::fprintf(stderr, "clearjoint %s: cannot write the answers to standard output after line %ld: %s\n",
+               command.name, line_number,
+               error_number != 0 ? std::strerror(error_number) : "write error");
+  return 2;
+}
+
 /// Answers every line of `input`; returns the exit status.
 int answer_all(const JsonLinesCommand& command, std::istream& input, const std::string& input_name,
                bool flush_each_line) {
   std::string line;
   long line_number = 0;
   long failures = 0;
-  while (std::getline(input, line)) {
+  errno = 0;
+  for (;;) {
+    const LineRead read = read_line(*input.rdbuf(), line);
+    if (read == LineRead::end) break;
     ++line_number;
-    if (!line.empty() && line.back() == '\r') line.pop_back();  // CRLF files
-    if (line.find_first_not_of(" \t") == std::string::npos) continue;
-    bool failed = false;
-    const Json answer = answer_line(command, line, line_number, failed);
+    bool failed = true;
+    Json answer;
+    if (read == LineRead::too_long) {
+      answer = Json::object();
+      answer["id"] = nullptr;
+      answer["error"] = "line " + std::to_string(line_number) + ": longer than " +
+                        std::to_string(kMaxLineBytes) + " bytes, the limit for one line";
+    } else {
+      if (line.find_first_not_of(" \t") == std::string::npos) continue;
+      answer = answer_line(command, line, line_number, failed);
+    }
     if (failed) ++failures;
     std::cout << answer.dump(-1, ' ', false, Json::error_handler_t::replace) << '\n';
     if (flush_each_line) std::cout.flush();
+    if (!std::cout) return write_error(command, line_number, errno);
   }
   std::cout.flush();
+  if (!std::cout || std::fflush(stdout) != 0 || std::ferror(stdout)) {
+    return write_error(command, line_number, errno);
+  }
   if (input.bad()) {
     std::fprintf(stderr, "clearjoint %s: error reading %s after line %ld\n", command.name,
                  input_name.c_str(), line_number);
@@ -110,11 +169,7 @@ int usage_error(const JsonLinesCommand& command, const std::string& message) {
 
 }  // namespace
 
-std::string quote(const Json& value) {
-  std::string text = value.dump(-1, ' ', false, Json::error_handler_t::replace);
-  if (text.size() > kMaxQuotedValue) text = text.substr(0, kMaxQuotedValue) + "...";
-  return text;
-}
+std::string quote(const Json& value) { return json::quote(value); }
 
 std::string field(const std::string& path, std::string_view key) {
   return path.empty() ? std::string(key) : path + "." + std::string(key);
@@ -210,6 +265,14 @@ int run_json_lines(const JsonLinesCommand& command, Arguments args) {
   }
 
   if (path == nullptr || std::string_view(path) == "-") {
+    // A directory as standard input (`< /tmp`) reads as an empty file on some systems and fails
+    // with EISDIR on others: refuse it either way rather than answer nothing with status 0.
+    struct stat input_status {};
+    if (::fstat(STDIN_FILENO, &input_status) == 0 && S_ISDIR(input_status.st_mode)) {
+      std::fprintf(stderr, "clearjoint %s: cannot read standard input: is a directory\n",
+                   command.name);
+      return 2;
+    }
     // A program at the other end of a pipe waits for each answer: flush line by line.
     return answer_all(command, std::cin, "standard input", /*flush_each_line=*/true);
   }

@@ -36,6 +36,11 @@ class LineError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// Longest query line read (bytes, without its newline). A longer line gets an error line and the
+/// lines after it are still answered. Real queries are a few hundred bytes; the limit keeps one
+/// hostile line from taking the memory. Nesting and number limits: support/json/bounded_json.hpp.
+inline constexpr std::size_t kMaxLineBytes = std::size_t{1} << 20;
+
 /// `value` as JSON text for an error message, shortened when long.
 std::string quote(const Json& value);
 
@@ -90,6 +95,16 @@ struct JsonLinesCommand {
   const char* usage;
   std::function<void(const Json& query, Json& answer)> answer;
 };
+
+/// The two JSON Lines commands (intersect_command.cpp, detect_command.cpp); the fuzz targets in
+/// fuzz/ call them without the process around.
+const JsonLinesCommand& intersect_command();
+const JsonLinesCommand& detect_command();
+
+/// The answer to one non-empty line (the query, or an error line holding only the id and the
+/// error); sets `failed` for an error line. Never throws for any input text.
+Json answer_line(const JsonLinesCommand& command, const std::string& line, long line_number,
+                 bool& failed);
 
 /// `clearjoint <name> [FILE]`: answers every line of FILE (or standard input, flushed line by
 /// line), in order. Returns the exit status: 0 every line answered, 1 some line got an error

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // clearjoint: the command-line front of the library, so that any language can call it.
 
+#include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <exception>
@@ -40,9 +41,17 @@ int print_usage(std::FILE* to) {
   return to == stdout ? 0 : 2;
 }
 
-}  // namespace
+/// Every command's status, unless standard output could not be written: a full disk or
+/// /dev/full must not end with status 0 and nothing said.
+int checked_exit(int status) {
+  if (std::fflush(stdout) != 0 || std::ferror(stdout) != 0) {
+    std::fprintf(stderr, "clearjoint: cannot write to standard output: %s\n", std::strerror(errno));
+    return status == 0 || status == 1 ? 2 : status;
+  }
+  return status;
+}
 
-int main(int argc, char** argv) {
+int run(int argc, char** argv) {
   if (argc < 2) return print_usage(stderr);
   if (std::strcmp(argv[1], "--help") == 0 || std::strcmp(argv[1], "-h") == 0) {
     return print_usage(stdout);
@@ -64,3 +73,7 @@ int main(int argc, char** argv) {
   std::fprintf(stderr, "clearjoint: unknown command '%s'\n", argv[1]);
   return print_usage(stderr);
 }
+
+}  // namespace
+
+int main(int argc, char** argv) { return checked_exit(run(argc, argv)); }

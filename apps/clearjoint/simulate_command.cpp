@@ -9,7 +9,10 @@
 #include <string>
 
 #include "clearjoint/dynamics/model_file.hpp"
+#include "clearjoint/dynamics/output_folder.hpp"
+#include "clearjoint/dynamics/run_size.hpp"
 #include "clearjoint/dynamics/simulation.hpp"
+#include "json/bounded_json.hpp"
 #include "commands.hpp"
 
 namespace clearjoint::app {
@@ -17,9 +20,14 @@ namespace clearjoint::app {
 namespace {
 
 constexpr const char* kUsage =
-    "usage: clearjoint simulate MODEL.json --out DIR\n"
+    "usage: clearjoint simulate MODEL.json --out DIR [--force] [--allow-large]\n"
     "  Integrates the model and writes body_<name>.csv, energy.csv, reactions.csv and, for force\n"
     "  elements with outputs (clearance joints), force_<name>.csv into DIR.\n"
+    "  DIR appears as one unit when the run succeeds (written in a staging folder next to it,\n"
+    "  then renamed); a failed or killed run leaves an earlier DIR as it was.\n"
+    "  --force        replace DIR if it exists and is not empty (otherwise an error)\n"
+    "  --allow-large  run beyond the size guard (1000 s simulated, 1e7 report times, 4 GB of\n"
+    "                 CSV files)\n"
     "  A progress bar is drawn on standard error when it is a terminal.\n"
     "  Model file format: model.schema.json (JSON Schema 2020-12, in docs/schema/ and installed\n"
     "  in share/clearjoint/schema/); examples in models/; docs/dynamics.md.\n";
@@ -53,6 +61,8 @@ class ProgressBar {
 int run_simulate(Arguments args) {
   const char* model_path = nullptr;
   const char* out_dir = nullptr;
+  bool force = false;
+  bool allow_large = false;
   for (size_t k = 0; k < args.size(); ++k) {
     if (std::strcmp(args[k], "--help") == 0 || std::strcmp(args[k], "-h") == 0) {
       std::fputs(kUsage, stdout);
@@ -64,6 +74,10 @@ int run_simulate(Arguments args) {
         return 2;
       }
       out_dir = args[++k];
+    } else if (std::strcmp(args[k], "--force") == 0) {
+      force = true;
+    } else if (std::strcmp(args[k], "--allow-large") == 0) {
+      allow_large = true;
     } else if (model_path == nullptr && args[k][0] != '-') {
       model_path = args[k];
     } else {
@@ -77,16 +91,22 @@ int run_simulate(Arguments args) {
   }
 
   const dynamics::ModelDescription model = dynamics::read_model_file(model_path);
+  // Every check that can fail before the run: the size guard builds the model (all model
+  // checks), and simulate() checks the output file names before integrating.
+  const dynamics::RunSize size = dynamics::estimate_run_size(model);
+  if (!allow_large) dynamics::check_run_size(size);
+  dynamics::OutputFolder folder(out_dir, force);
   ProgressBar bar;
   dynamics::SimulationSummary summary;
   try {
-    summary = dynamics::simulate(model, out_dir, [&bar](double f) { bar.update(f); });
+    summary = dynamics::simulate(model, folder.staging(), [&bar](double f) { bar.update(f); });
+    folder.publish();
   } catch (...) {
     bar.finish();
     throw;
   }
   bar.finish();
-  std::printf("model: %s\n", model.name.c_str());
+  std::printf("model: %s\n", json::excerpt(model.name, 200).c_str());
   std::printf("simulated %g s to %g s: %ld steps, %ld right-hand-side evaluations, steps %.3g s to %.3g s\n",
               model.solver.start_time, model.solver.end_time, summary.integration.steps,
               summary.integration.derivative_calls, summary.integration.smallest_step,

@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "clearjoint/dynamics/csv_writer.hpp"
 
+#include <cerrno>
 #include <charconv>
+#include <cstring>
 #include <stdexcept>
 #include <system_error>
 #include <unistd.h>
@@ -14,12 +16,24 @@ CsvWriter::CsvWriter(std::filesystem::path destination, const std::vector<std::s
   temporary_ += ".tmp-" + std::to_string(::getpid());
   file_ = std::fopen(temporary_.c_str(), "wb");
   if (file_ == nullptr) {
-    throw std::runtime_error(temporary_.string() + ": cannot create the output file");
+    throw std::runtime_error(temporary_.string() + ": cannot create the output file (" +
+                             std::strerror(errno) + ")");
   }
   std::string line;
   for (size_t k = 0; k < header.size(); ++k) line += (k ? "," : "") + header[k];
   line += '\n';
   std::fputs(line.c_str(), file_);
+  check_written();
+}
+
+void CsvWriter::check_written() {
+  // A full disk shows as a stream error at the next buffer flush: stop the run there, with the
+  // reason, rather than integrate on and fail at commit() (or not at all).
+  if (std::ferror(file_) != 0) {
+    const int error_number = errno;
+    throw std::runtime_error(temporary_.string() + ": cannot write the output file (" +
+                             std::string(error_number != 0 ? std::strerror(error_number) : "write error") + ")");
+  }
 }
 
 CsvWriter::~CsvWriter() {
@@ -44,6 +58,7 @@ void CsvWriter::write_row(std::span<const double> values) {
     std::fwrite(buffer, 1, static_cast<size_t>(end - buffer), file_);
   }
   std::fputc('\n', file_);
+  check_written();
 }
 
 void CsvWriter::commit() {

@@ -17,6 +17,10 @@ namespace {
 /// relative slack keeps a rounding excess from adding a report time a few ulps before end_time.
 constexpr double kReportCountSlack = 1e-9;
 
+/// Most report times counted: beyond it std::lround of the count overflows (2^63) or loses
+/// integers (2^53), and the reports stop or never end.
+constexpr double kMaxReportCount = 1e15;
+
 bool all_finite(const std::vector<double>& y) {
   return std::all_of(y.begin(), y.end(), [](double x) { return std::isfinite(x); });
 }
@@ -60,6 +64,12 @@ void validate(const IntegratorSettings& s) {
                      ": must be after solver.start_time = " + format_number(s.start_time));
   }
   require_positive("solver.report_step", s.report_step);
+  if (!((s.end_time - s.start_time) / s.report_step <= kMaxReportCount)) {
+    throw ModelError("solver.report_step = " + format_number(s.report_step) + ": gives " +
+                     format_number((s.end_time - s.start_time) / s.report_step) +
+                     " report times, more than " + format_number(kMaxReportCount) +
+                     ", the most the integrator counts");
+  }
   require_positive("solver.relative_tolerance", s.relative_tolerance);
   require_positive("solver.absolute_tolerance", s.absolute_tolerance);
   require_positive("solver.initial_step", s.initial_step);

@@ -105,8 +105,15 @@ BuiltModel build_model(const ModelDescription& model) {
     for (const BodyProperties& p : properties) masses.push_back(p.mass);
     forces.push_back(std::make_unique<Gravity>(std::move(masses), model.gravity_W));
   }
+  const size_t first_described_force = forces.size();  // after gravity, which has no name of the model's
   for (size_t k = 0; k < model.forces.size(); ++k) {
     forces.push_back(std::visit(ForceBuilder{model, "forces[" + std::to_string(k) + "]"}, model.forces[k]));
+    for (size_t other = 0; other < k; ++other) {
+      if (forces[first_described_force + other]->name() == forces.back()->name()) {
+        throw ModelError("forces[" + std::to_string(k) + "].name = \"" + std::string(forces.back()->name()) +
+                         "\": used by forces[" + std::to_string(other) + "] already");
+      }
+    }
   }
 
   std::vector<HeldCoordinate> held_positions;
@@ -116,6 +123,12 @@ BuiltModel build_model(const ModelDescription& model) {
     const BodyIndex body = find_body(model, h.body, field + ".body");
     if (body == kGround) throw ModelError(field + ".body = \"ground\": the ground is always held");
     held_positions.push_back({body, held_component_index(h.component, false, field + ".components")});
+    for (size_t other = 0; other < k; ++other) {
+      if (model.held_positions[other].body == h.body && model.held_positions[other].component == h.component) {
+        throw ModelError(field + " = (\"" + h.body + "\", \"" + h.component +
+                         "\"): held already by hold_positions[" + std::to_string(other) + "]");
+      }
+    }
   }
   std::vector<HeldVelocity> held_velocities;
   for (size_t k = 0; k < model.held_velocities.size(); ++k) {
@@ -124,10 +137,24 @@ BuiltModel build_model(const ModelDescription& model) {
     const BodyIndex body = find_body(model, h.body, field + ".body");
     if (body == kGround) throw ModelError(field + ".body = \"ground\": the ground is always at rest");
     held_velocities.push_back({body, held_component_index(h.component, true, field + ".component"), h.value});
+    // Two values for one component cannot both hold; the later one must not win silently.
+    for (size_t other = 0; other < k; ++other) {
+      if (model.held_velocities[other].body == h.body && model.held_velocities[other].component == h.component) {
+        throw ModelError(field + " = (\"" + h.body + "\", \"" + h.component + "\", " +
+                         format_number(h.value) + "): the same component is held by hold_velocities[" +
+                         std::to_string(other) + "] = " + format_number(model.held_velocities[other].value));
+      }
+    }
   }
   for (size_t k = 0; k < model.output_bodies.size(); ++k) {
     const BodyIndex body = find_body(model, model.output_bodies[k], "output.bodies[" + std::to_string(k) + "]");
     if (body == kGround) throw ModelError("output.bodies[" + std::to_string(k) + "] = \"ground\": the ground does not move");
+    for (size_t other = 0; other < k; ++other) {
+      if (model.output_bodies[other] == model.output_bodies[k]) {
+        throw ModelError("output.bodies[" + std::to_string(k) + "] = \"" + model.output_bodies[k] +
+                         "\": listed already as output.bodies[" + std::to_string(other) + "]");
+      }
+    }
   }
 
   if (!model.output_all_force_elements) {

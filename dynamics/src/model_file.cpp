@@ -1,18 +1,37 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "clearjoint/dynamics/model_file.hpp"
 
+#include <charconv>
 #include <fstream>
 #include <initializer_list>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "clearjoint/dynamics/errors.hpp"
+#include "json/bounded_json.hpp"
 
 namespace clearjoint::dynamics {
 
 namespace {
 
 using Json = nlohmann::json;
+using json::quote;  // a JSON value for a message, shortened when long
+
+/// Relative slack of the inertia triangle inequality: a flat plate's Izz = Ixx + Iyy written
+/// with 6 significant digits can fall short by a few parts in 1e7.
+constexpr double kInertiaTriangleSlack = 1e-6;
+
+/// `value` in the shortest form that reads back to it (1e-12, not format_number's
+/// 9.9999999999999998e-13): the limits and values of the range messages below read as written.
+std::string shortest(double value) {
+  char buffer[32];
+  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
+  return std::string(buffer, result.ptr);
+}
+
+std::string shortest(const Vector3& v) {
+  return "[" + shortest(v[0]) + ", " + shortest(v[1]) + ", " + shortest(v[2]) + "]";
+}
 
 /// A JSON object together with its path in the file, for messages like "bodies[1].mass".
 class Node {
@@ -44,7 +63,7 @@ class Node {
 
   double number(std::string_view key) const {
     const Json& j = get(key);
-    if (!j.is_number()) throw ModelError(field(key) + " = " + j.dump() + ": must be a number");
+    if (!j.is_number()) throw ModelError(field(key) + " = " + quote(j) + ": must be a number");
     const double value = j.get<double>();
     require_finite(field(key), value);
     return value;
@@ -55,9 +74,21 @@ class Node {
 
   std::string text(std::string_view key) const {
     const Json& j = get(key);
-    if (!j.is_string()) throw ModelError(field(key) + " = " + j.dump() + ": must be a string");
+    if (!j.is_string()) throw ModelError(field(key) + " = " + quote(j) + ": must be a string");
     return j.get<std::string>();
   }
+  /// A name (of a body, joint or force element): non-empty, at most kMaxNameBytes, since names
+  /// become file names (body_<name>.csv) and CSV column headers.
+  std::string name(std::string_view key) const {
+    std::string value = text(key);
+    if (value.empty()) throw ModelError(field(key) + " = \"\": must not be empty");
+    if (value.size() > kMaxNameBytes) {
+      throw ModelError(field(key) + " = \"" + json::excerpt(value) + "\": longer than " +
+                       std::to_string(kMaxNameBytes) + " bytes, the limit for a name");
+    }
+    return value;
+  }
+
   std::string text(std::string_view key, std::string fallback) const {
     return has(key) ? text(key) : fallback;
   }
@@ -66,13 +97,13 @@ class Node {
   Eigen::Matrix<double, N, 1> vector(std::string_view key) const {
     const Json& j = get(key);
     if (!j.is_array() || j.size() != N) {
-      throw ModelError(field(key) + " = " + j.dump() + ": must be an array of " +
+      throw ModelError(field(key) + " = " + quote(j) + ": must be an array of " +
                        std::to_string(N) + " numbers");
     }
     Eigen::Matrix<double, N, 1> v;
     for (int k = 0; k < N; ++k) {
       const std::string entry = field(key) + "[" + std::to_string(k) + "]";
-      if (!j[k].is_number()) throw ModelError(entry + " = " + j[k].dump() + ": must be a number");
+      if (!j[k].is_number()) throw ModelError(entry + " = " + quote(j[k]) + ": must be a number");
       v[k] = j[k].get<double>();
       require_finite(entry, v[k]);
     }
@@ -98,7 +129,7 @@ class Node {
     std::vector<std::string> result;
     for (size_t k = 0; k < j.size(); ++k) {
       if (!j[k].is_string()) {
-        throw ModelError(field(key) + "[" + std::to_string(k) + "] = " + j[k].dump() + ": must be " +
+        throw ModelError(field(key) + "[" + std::to_string(k) + "] = " + quote(j[k]) + ": must be " +
                          std::string(what));
       }
       result.push_back(j[k].get<std::string>());
@@ -116,11 +147,35 @@ class Node {
   std::string path_;
 };
 
+/// Principal moments of a real body obey I1 + I2 >= I3 (each is a sum of two of the three
+/// second moments of the mass distribution). A model that breaks it has a typo or swapped
+/// values; the equations would run, with motions no body can have.
+void check_inertia(const Vector3& inertia, const std::string& field) {
+  for (int k = 0; k < 3; ++k) {
+    const double others = inertia[(k + 1) % 3] + inertia[(k + 2) % 3];
+    if (others < inertia[k] * (1.0 - kInertiaTriangleSlack)) {
+      throw ModelError(field + " = " + shortest(inertia) + ": inertia[" + std::to_string(k) +
+                       "] is larger than the sum of the other two, which no body has (principal "
+                       "moments obey the triangle inequality)");
+    }
+  }
+}
+
+/// Throws unless `value` (already known positive) is within [smallest, largest].
+void check_range(const std::string& field, double value, double smallest, double largest,
+                 const char* unit) {
+  if (value < smallest || value > largest) {
+    throw ModelError(field + " = " + shortest(value) + ": outside [" + shortest(smallest) + ", " +
+                     shortest(largest) + "] " + unit +
+                     ", the range accepted (check the units)");
+  }
+}
+
 BodyDescription parse_body(const Node& n) {
   n.require_object({"name", "mass", "inertia", "position", "euler_parameters", "velocity",
                     "angular_velocity"});
   BodyDescription b;
-  b.properties.name = n.text("name");
+  b.properties.name = n.name("name");
   b.properties.mass = n.number("mass");
   b.properties.principal_inertia = n.vector<3>("inertia");
   b.initial.position_W = n.vector<3>("position");
@@ -129,6 +184,12 @@ BodyDescription parse_body(const Node& n) {
   b.initial.angular_velocity_B = n.vector<3>("angular_velocity", Vector3::Zero());
   validate(b.properties, n.path());
   validate(b.initial, n.path());
+  check_range(n.field("mass"), b.properties.mass, kSmallestMass, kLargestMass, "kg");
+  for (int k = 0; k < 3; ++k) {
+    check_range(n.field("inertia") + "[" + std::to_string(k) + "]", b.properties.principal_inertia[k],
+                kSmallestInertia, kLargestInertia, "kg m^2");
+  }
+  check_inertia(b.properties.principal_inertia, n.field("inertia"));
   return b;
 }
 
@@ -136,7 +197,7 @@ JointDescription parse_joint(const Node& n) {
   n.require_object({"name", "type", "body_i", "body_j", "point_i", "point_j", "axis_i", "axis_j",
                     "angle_rate", "angle_acceleration"});
   JointDescription j;
-  j.name = n.text("name");
+  j.name = n.name("name");
   j.type = joint_type_from_string(n.text("type"), n.field("type"));
   j.body_i = n.text("body_i");
   j.body_j = n.text("body_j");
@@ -161,7 +222,7 @@ ClearancePartDescription parse_clearance_part(const Node& n, double& radius, dou
 ClearanceRevoluteDescription parse_clearance_revolute(const Node& n) {
   n.require_object({"type", "name", "bearing", "journal", "normal_force", "friction", "detection"});
   ClearanceRevoluteDescription d;
-  d.name = n.text("name");
+  d.name = n.name("name");
   geometry::JointDimensions& dims = d.parameters.dimensions;
   d.bearing = parse_clearance_part(n.child("bearing"), dims.bearing_radius, dims.bearing_length);
   d.journal = parse_clearance_part(n.child("journal"), dims.journal_radius, dims.journal_length);
@@ -201,7 +262,7 @@ ForceDescription parse_force(const Node& n) {
   const std::string type = n.text("type");
   if (type == "point_load") {
     n.require_object({"type", "name", "body", "point", "force", "moment"});
-    return PointLoadDescription{n.text("name"), n.text("body"), n.vector<3>("point", Vector3::Zero()),
+    return PointLoadDescription{n.name("name"), n.text("body"), n.vector<3>("point", Vector3::Zero()),
                                 n.vector<3>("force", Vector3::Zero()),
                                 n.vector<3>("moment", Vector3::Zero())};
   }
@@ -209,12 +270,12 @@ ForceDescription parse_force(const Node& n) {
     n.require_object({"type", "name", "body_i", "body_j", "point_i", "point_j", "stiffness",
                       "damping", "free_length"});
     return SpringDamperDescription{
-        n.text("name"), n.text("body_i"), n.text("body_j"), n.vector<3>("point_i", Vector3::Zero()),
+        n.name("name"), n.text("body_i"), n.text("body_j"), n.vector<3>("point_i", Vector3::Zero()),
         n.vector<3>("point_j", Vector3::Zero()),
         {n.number("stiffness"), n.number("damping", 0.0), n.number("free_length")}};
   }
   if (type == "clearance_revolute") return parse_clearance_revolute(n);
-  throw ModelError(n.field("type") + " = \"" + type +
+  throw ModelError(n.field("type") + " = \"" + json::excerpt(type) +
                    "\": unknown force type (known: point_load, spring_damper, clearance_revolute; "
                    "gravity is the top-level \"gravity\" vector)");
 }
@@ -226,13 +287,13 @@ void parse_initial_conditions(const Node& n, ModelDescription& model) {
     const std::string body = h.text("body");
     const Json& components = h.get("components");
     if (!components.is_array()) {
-      throw ModelError(h.field("components") + " = " + components.dump() +
+      throw ModelError(h.field("components") + " = " + quote(components) +
                        ": must be an array such as [\"x\", \"y\", \"z\", \"rx\", \"ry\", \"rz\"]");
     }
     for (size_t k = 0; k < components.size(); ++k) {
       if (!components[k].is_string()) {
         throw ModelError(h.field("components") + "[" + std::to_string(k) + "] = " +
-                         components[k].dump() + ": must be a string");
+                         quote(components[k]) + ": must be a string");
       }
       model.held_positions.push_back({body, components[k].get<std::string>()});
     }
@@ -269,11 +330,17 @@ void parse_solver(const Node& n, ModelDescription& model) {
 
 ModelDescription parse_model(std::string_view json_text, std::string_view source) {
   const std::string prefix = std::string(source) + ": ";
+  if (json_text.size() > kMaxModelFileBytes) {
+    throw ModelError(prefix + std::to_string(json_text.size()) + " bytes, more than " +
+                     std::to_string(kMaxModelFileBytes) + ", the limit for a model file");
+  }
   Json json;
   try {
-    json = Json::parse(json_text);
+    json = json::parse_bounded<Json>(json_text);
   } catch (const Json::parse_error& e) {
     throw ModelError(prefix + "not valid JSON: " + e.what());
+  } catch (const json::JsonLimitError& e) {
+    throw ModelError(prefix + e.what());
   }
   try {
     const Node root(json, "");
@@ -283,6 +350,10 @@ ModelDescription parse_model(std::string_view json_text, std::string_view source
     model.name = root.text("name", std::string(source));
     model.notes = root.text("notes", "");
     model.gravity_W = root.vector<3>("gravity", Vector3::Zero());
+    if (!(model.gravity_W.norm() <= kLargestGravity)) {
+      throw ModelError("gravity = " + shortest(model.gravity_W) + ": magnitude above " +
+                       shortest(kLargestGravity) + " m/s^2, the largest accepted (check the units)");
+    }
     for (const Node& b : root.array("bodies")) model.bodies.push_back(parse_body(b));
     for (const Node& j : root.array_or_empty("joints")) model.joints.push_back(parse_joint(j));
     for (const Node& f : root.array_or_empty("forces")) model.forces.push_back(parse_force(f));
@@ -311,12 +382,18 @@ ModelDescription parse_model(std::string_view json_text, std::string_view source
 }
 
 ModelDescription read_model_file(const std::filesystem::path& path) {
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error)) {
+    throw ModelError(path.string() + ": is a directory, not a model file");
+  }
   std::ifstream file(path, std::ios::binary);
   if (!file) throw ModelError(path.string() + ": cannot open the model file");
-  std::ostringstream text;
-  text << file.rdbuf();
+  // Read at most one byte past the limit: a huge file (or /dev/zero) is refused, not slurped.
+  std::string text(kMaxModelFileBytes + 1, '\0');
+  file.read(text.data(), static_cast<std::streamsize>(text.size()));
   if (file.bad()) throw ModelError(path.string() + ": cannot read the model file");
-  return parse_model(text.str(), path.string());
+  text.resize(static_cast<size_t>(file.gcount()));
+  return parse_model(text, path.string());
 }
 
 }  // namespace clearjoint::dynamics

@@ -2,6 +2,7 @@
 #include "clearjoint/dynamics/simulation.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <memory>
 
@@ -27,16 +28,48 @@ std::vector<std::string> reaction_header(const ConstraintSet& constraints) {
   return header;
 }
 
-/// A force element's name as a file-name part: letters, digits, '-' and '_' kept, others '_'.
-std::string file_name_part(std::string_view name) {
-  std::string part(name);
-  for (char& c : part) {
+/// The one way a name from the model becomes a table name, and so a file name (<table>.csv):
+/// `prefix` + the name with letters, digits, '-' and '_' kept and every other byte '_' (no '/',
+/// no "..", no control characters). Model files keep names to kMaxNameBytes (model_file.hpp), so
+/// the file name fits any file system.
+std::string table_name(std::string_view prefix, std::string_view name) {
+  std::string table(prefix);
+  for (char c : name) {
     const bool keep = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
                       c == '-' || c == '_';
-    if (!keep) c = '_';
+    table.push_back(keep ? c : '_');
   }
-  return part;
+  return table;
 }
+
+/// The tables of a run, each with what it is for ("output.bodies[1] \"crank\""), checked before
+/// any is declared: no two share a name, also when compared without case (files that differ
+/// only in case are one file on macOS and Windows).
+class TableNames {
+ public:
+  TableNames() {
+    add("energy", "energy.csv");
+    add("reactions", "reactions.csv");
+  }
+
+  /// `name`; throws ModelError if an earlier table has it.
+  std::string add(std::string name, const std::string& what) {
+    std::string folded = name;
+    for (char& c : folded) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    for (const auto& [other_folded, other_what] : names_) {
+      if (other_folded == folded) {
+        throw ModelError(what + ": its output file " + name + ".csv has the name of " +
+                         other_what + "'s (names are compared after characters other than "
+                         "letters, digits, - and _ become _, and without case); rename one of them");
+      }
+    }
+    names_.emplace_back(std::move(folded), what);
+    return name;
+  }
+
+ private:
+  std::vector<std::pair<std::string, std::string>> names_;  // folded name, what it is for
+};
 
 /// A force element that records outputs, and its table.
 struct ElementOutput {
@@ -57,6 +90,11 @@ class CsvDirectory final : public SimulationOutput {
     }
   }
   size_t add_table(const std::string& name, const std::vector<std::string>& header) override {
+    // table_name() never makes such names; checked here so that no later change can write
+    // outside the directory.
+    if (name.empty() || name == "." || name == ".." || name.find('/') != std::string::npos) {
+      throw std::logic_error(name + ": a table name that is no file name inside the directory");
+    }
     files_.push_back(std::make_unique<CsvWriter>(directory_ / (name + ".csv"), header));
     return files_.size() - 1;
   }
@@ -78,29 +116,43 @@ SimulationSummary run(const ModelDescription& model, BuiltModel built, Simulatio
                       const ProgressCallback& progress) {
   MultibodySystem& system = *built.system;
 
+  // Every table name first, so that a collision stops the run before any table (file) exists.
+  TableNames names;
+  std::vector<std::string> body_names;
+  for (size_t k = 0; k < model.output_bodies.size(); ++k) {
+    body_names.push_back(names.add(table_name("body_", model.output_bodies[k]),
+                                   "output.bodies[" + std::to_string(k) + "] \"" +
+                                       model.output_bodies[k] + "\""));
+  }
+  std::vector<std::pair<size_t, std::string>> element_names;
+  for (size_t e = 0; e < system.force_elements().size(); ++e) {
+    const ForceElement& element = *system.force_elements()[e];
+    const auto& wanted = model.output_force_elements;
+    if (element.output_columns().empty() ||
+        (!model.output_all_force_elements &&
+         std::find(wanted.begin(), wanted.end(), element.name()) == wanted.end())) {
+      continue;
+    }
+    element_names.emplace_back(e, names.add(table_name("force_", element.name()),
+                                            "force element \"" + std::string(element.name()) + "\""));
+  }
+
   std::vector<BodyIndex> output_bodies;
   std::vector<size_t> body_tables;
-  for (const std::string& name : model.output_bodies) {
-    output_bodies.push_back(system.body_index(name, "output.bodies"));
-    body_tables.push_back(output.add_table("body_" + name, body_header()));
+  for (size_t k = 0; k < model.output_bodies.size(); ++k) {
+    output_bodies.push_back(system.body_index(model.output_bodies[k], "output.bodies"));
+    body_tables.push_back(output.add_table(body_names[k], body_header()));
   }
   const size_t energy_table =
       output.add_table("energy", {"time", "kinetic", "potential", "total", "position_violation",
                                   "velocity_violation", "euler_norm_drift"});
   const size_t reaction_table = output.add_table("reactions", reaction_header(system.constraints()));
   std::vector<ElementOutput> element_outputs;
-  for (size_t e = 0; e < system.force_elements().size(); ++e) {
-    const ForceElement& element = *system.force_elements()[e];
-    std::vector<std::string> header = element.output_columns();
-    const auto& wanted = model.output_force_elements;
-    if (header.empty() || (!model.output_all_force_elements &&
-                           std::find(wanted.begin(), wanted.end(), element.name()) == wanted.end())) {
-      continue;
-    }
+  for (const auto& [e, name] : element_names) {
+    std::vector<std::string> header = system.force_elements()[e]->output_columns();
     const size_t width = header.size();
     header.insert(header.begin(), "time");
-    element_outputs.push_back(
-        {e, width, output.add_table("force_" + file_name_part(element.name()), header)});
+    element_outputs.push_back({e, width, output.add_table(name, header)});
   }
 
   SimulationSummary summary;

@@ -5,12 +5,14 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <map>
 #include <sstream>
 #include <variant>
 
+#include "clearjoint/dynamics/errors.hpp"
 #include "dynamics_test_support.hpp"
 
 namespace clearjoint::dynamics {
@@ -189,6 +191,59 @@ TEST(SpatialSliderCrankWithClearance, StopsWithoutCommittingWhenTheProgressCallb
                }),
                Interrupted);
   EXPECT_TRUE(std::filesystem::is_empty(dir));  // neither results nor temporary files are left
+}
+
+TEST(SpatialSliderCrankWithClearance, RefusesTwoForceElementsWhoseFileNamesCollideBeforeTheRun) {
+  // "ground-crank clearance" and "ground-crank/clearance" both become
+  // force_ground-crank_clearance.csv: the two joints once wrote one file together.
+  ModelDescription model = test::shipped_model("slider_crank_spatial_clearance.json");
+  auto clearance = std::find_if(model.forces.begin(), model.forces.end(), [](const auto& f) {
+    return std::holds_alternative<ClearanceRevoluteDescription>(f);
+  });
+  ASSERT_NE(clearance, model.forces.end());
+  ClearanceRevoluteDescription twin = std::get<ClearanceRevoluteDescription>(*clearance);
+  std::get<ClearanceRevoluteDescription>(*clearance).name = "ground-crank clearance";
+  twin.name = "ground-crank/clearance";
+  model.forces.push_back(twin);
+  TablesInMemory tables;
+  int reports = 0;
+  try {
+    simulate(model, tables, [&reports](double) { ++reports; });
+    FAIL() << "the collision was not refused";
+  } catch (const ModelError& e) {
+    EXPECT_NE(std::string(e.what()).find("force element \"ground-crank/clearance\": its output file "
+                                         "force_ground-crank_clearance.csv has the name of force "
+                                         "element \"ground-crank clearance\"'s"),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_EQ(reports, 0);  // refused before the first report time
+  EXPECT_TRUE(tables.tables().empty());
+}
+
+TEST(SimulationOutputNames, SanitiseBodyNamesLikeForceElementNames) {
+  // A body called "../../escaped" once wrote body_../../escaped.csv, outside the folder.
+  ModelDescription model = test::shipped_model("slider_crank_spatial_ideal.json");
+  model.solver.end_time = 0.002;
+  model.solver.report_step = 1e-3;
+  for (BodyDescription& body : model.bodies) {
+    if (body.properties.name == "slider") body.properties.name = "../../slider";
+  }
+  for (auto& joint : model.joints) {
+    if (joint.body_i == "slider") joint.body_i = "../../slider";
+    if (joint.body_j == "slider") joint.body_j = "../../slider";
+  }
+  for (std::string& name : model.output_bodies) {
+    if (name == "slider") name = "../../slider";
+  }
+  TablesInMemory tables;
+  simulate(model, tables);
+  bool found = false;
+  for (const auto& table : tables.tables()) {
+    EXPECT_EQ(table.name.find('/'), std::string::npos) << table.name;
+    found = found || table.name == "body_______slider";
+  }
+  EXPECT_TRUE(found);
 }
 
 }  // namespace

@@ -18,7 +18,8 @@ inline constexpr std::string_view kGroundName = "ground";
 
 /// Mass and principal moments of inertia about the mass centre, in the body frame (whose axes are
 /// the principal axes). Preconditions (checked by validate()): finite, mass > 0, each moment > 0.
-/// Triangle inequalities on the moments are not required (models use point-like bodies).
+/// Triangle inequalities on the moments are not required here (tests use point-like bodies);
+/// model files must obey them (model_file.cpp).
 struct BodyProperties {
   std::string name;
   double mass = 0.0;

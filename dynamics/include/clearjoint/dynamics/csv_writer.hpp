@@ -29,6 +29,9 @@ class CsvWriter {
   const std::filesystem::path& destination() const { return destination_; }
 
  private:
+  /// Throws std::runtime_error if a write to the file failed (e.g. the disk is full).
+  void check_written();
+
   std::filesystem::path destination_;
   std::filesystem::path temporary_;
   std::FILE* file_ = nullptr;

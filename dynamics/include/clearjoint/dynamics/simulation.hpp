@@ -13,8 +13,10 @@
 ///                    body j (body i for joints to ground), moment about the joint point, world frame
 ///   force_<name>.csv time, then the columns a force element records (ForceElement::output_columns;
 ///                    e.g. a clearance joint's contact depths, forces, scenario), for every element
-///                    that records any; characters other than letters, digits, - and _ in the
-///                    name become _
+///                    that records any
+/// In body_<name> and force_<name>, characters other than letters, digits, - and _ of the name
+/// become _ (also in the table names of TablesInMemory); two files whose names then match, also
+/// without case, are refused before the run starts.
 
 #include <filesystem>
 #include <functional>
@@ -40,7 +42,8 @@ struct SimulationSummary {
 using ProgressCallback = std::function<void(double fraction)>;
 
 /// Run `model` and write the files above into `output_directory` (created if missing). Each file
-/// appears only when complete (CsvWriter). Throws ModelError, SolverError or std::runtime_error.
+/// appears only when complete (CsvWriter); OutputFolder (output_folder.hpp) publishes the whole
+/// folder as one unit. Throws ModelError, SolverError or std::runtime_error.
 SimulationSummary simulate(const ModelDescription& model,
                            const std::filesystem::path& output_directory,
                            const ProgressCallback& progress = {});

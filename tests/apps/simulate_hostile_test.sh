@@ -1,0 +1,219 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
+# `clearjoint simulate` against hostile models and faults: each case is one ctest test
+# (tests/apps/CMakeLists.txt). Every model check must fail before the run starts and leave no
+# output folder; file names from model names stay inside --out; the output folder is published
+# as one unit (docs/command-line.md, "Output folder").
+#   simulate_hostile_test.sh CLEARJOINT WORK_DIR CASE
+set -euo pipefail
+clearjoint=$1 work=$2 case=$3
+rm -rf "$work" && mkdir -p "$work/a/b" && cd "$work/a/b"
+
+fail() { echo "simulate_hostile_test [$case]: $*" >&2; exit 1; }
+run() { set +e; "$@" >out.txt 2>err.txt; rc=$?; set -e; }
+expect_rc() { [[ $rc == "$1" ]] || fail "exit status $rc, expected $1; stderr: $(head -c 600 err.txt)"; }
+expect_in() { grep -qF -- "$2" "$1" || fail "'$2' not in $1: $(head -c 600 "$1")"; }
+expect_no_output() { [[ ! -e out ]] || fail "an output folder was created: $(ls -A out)"; }
+
+# model BODIES FORCES INITIAL OUTPUT SOLVER [GRAVITY]: a model file on standard output. The
+# default is one free body falling for 0.1 s, which runs in milliseconds.
+model() {
+  local default_body='{"name": "ball", "mass": 1, "inertia": [1, 1, 1], "position": [0, 0, 0]}'
+  local default_solver='"end_time": 0.1, "report_step": 0.01'
+  local default_gravity='[0, 0, -9.81]'
+  cat <<JSON
+{"name": "hostile", "gravity": ${6:-$default_gravity},
+ "bodies": [${1:-$default_body}],
+ "forces": [${2:-}],
+ "initial_conditions": {${3:-}},
+ "output": {${4:-}},
+ "solver": {${5:-$default_solver}}}
+JSON
+}
+ball='{"name": "ball", "mass": 1, "inertia": [1, 1, 1], "position": [0, 0, 0]}'
+spring() {  # spring NAME: a spring from the ground to the ball
+  echo "{\"type\": \"spring_damper\", \"name\": \"$1\", \"body_i\": \"ground\", \"body_j\": \"ball\", \"stiffness\": 10, \"free_length\": 0}"
+}
+
+case $case in
+deep_model)
+  { printf '{"name": "deep", "comment": '; printf '%*s' 100000 '' | tr ' ' '['
+    printf '%*s' 100000 '' | tr ' ' ']'; echo '}'; } >m.json
+  run "$clearjoint" simulate m.json --out out
+  expect_rc 1
+  expect_in err.txt 'nesting deeper than 64 levels'
+  expect_no_output
+  ;;
+underflow_model)
+  model "$ball" "" "" "" '"end_time": 0.1, "report_step": 1e-400' >m.json
+  run "$clearjoint" simulate m.json --out out
+  expect_rc 1
+  expect_in err.txt 'solver.report_step = 1e-400: underflows'
+  ;;
+huge_value_message)
+  { printf '{"name": "x", "bodies": [{"name": "b", "mass": "'; printf '%*s' 1000000 '' | tr ' ' 9
+    echo '", "inertia": [1,1,1], "position": [0,0,0]}]}'; } >m.json
+  run "$clearjoint" simulate m.json --out out
+  expect_rc 1
+  expect_in err.txt 'bodies[0].mass = "999'
+  (($(wc -c <err.txt) < 400)) || fail "message of $(wc -c <err.txt) bytes"
+  ;;
+body_name_escape)
+  # A body named ../../escaped wrote body_../../escaped.csv outside --out.
+  model '{"name": "../../escaped_by_body_name", "mass": 1, "inertia": [1, 1, 1], "position": [0, 0, 0]}' >m.json
+  run "$clearjoint" simulate m.json --out out
+  expect_rc 0
+  [[ -f out/body_______escaped_by_body_name.csv ]] || fail "sanitised file missing: $(ls -A out)"
+  [[ -z $(find "$work" -name '*escaped_by_body_name*' ! -path "$work/a/b/out/*") ]] ||
+    fail "a file escaped --out: $(find "$work" -name '*escaped*')"
+  ;;
+force_name_collision)
+  # Two names that sanitise to one file wrote one file together (force elements and bodies go
+  # through the same function; dynamics_simulation_test has the clearance-joint case).
+  model '{"name": "crank arm", "mass": 1, "inertia": [1, 1, 1], "position": [0, 0, 0]},
+         {"name": "crank/arm", "mass": 1, "inertia": [1, 1, 1], "position": [1, 0, 0]}' >m.json
+  run "$clearjoint" simulate m.json --out out
+  expect_rc 1
+  expect_in err.txt 'output.bodies[1] "crank/arm": its output file body_crank_arm.csv has the name of output.bodies[0]'
+  expect_no_output
+  model '{"name": "Arm", "mass": 1, "inertia": [1, 1, 1], "position": [0, 0, 0]},
+         {"name": "arm", "mass": 1, "inertia": [1, 1, 1], "position": [1, 0, 0]}' >m.json
+  run "$clearjoint" simulate m.json --out out
+  expect_rc 1
+  expect_in err.txt 'without case'
+  expect_no_output
+  ;;
+identical_force_names)
+  model "$ball" "$(spring twin), $(spring twin)" >m.json
+  run "$clearjoint" simulate m.json --out out
+  expect_rc 1
+  expect_in err.txt 'forces[1].name = "twin": used by forces[0] already'
+  expect_no_output
+  ;;
+duplicate_output_body)
+  model "$ball" "" "" '"bodies": ["ball", "ball"]' >m.json
+  run "$clearjoint" simulate m.json --out out
+  expect_rc 1
+  expect_in err.txt 'output.bodies[1] = "ball": listed already as output.bodies[0]'
+  expect_no_output
+  ;;
+duplicate_held_velocity)
+  model "$ball" "" '"hold_velocities": [{"body": "ball", "component": "vx", "value": 1},
+                                         {"body": "ball", "component": "vx", "value": 2}]' >m.json
+  run "$clearjoint" simulate m.json --out out
+  expect_rc 1
+  expect_in err.txt 'hold_velocities[1] = ("ball", "vx", 2): the same component is held by hold_velocities[0] = 1'
+  expect_no_output
+  ;;
+inertia_triangle)
+  model '{"name": "ball", "mass": 1, "inertia": [1, 1, 3], "position": [0, 0, 0]}' >m.json
+  run "$clearjoint" simulate m.json --out out
+  expect_rc 1
+  expect_in err.txt 'bodies[0].inertia = [1, 1, 3]: inertia[2] is larger than the sum of the other two'
+  ;;
+absurd_scales)
+  model '{"name": "ball", "mass": 1e-300, "inertia": [1, 1, 1], "position": [0, 0, 0]}' >m.json
+  run "$clearjoint" simulate m.json --out out
+  expect_rc 1
+  expect_in err.txt 'bodies[0].mass = 1e-300: outside [1e-12, 1e+12] kg'
+  model "$ball" "" "" "" "" '[0, 0, 1e300]' >m.json
+  run "$clearjoint" simulate m.json --out out
+  expect_rc 1
+  expect_in err.txt 'gravity = [0, 0, 1e+300]: magnitude above 1e+06 m/s^2'
+  ;;
+tiny_report_step)
+  # 1e-21 gave only the rows at start and end; 1.1e-21 never ended (std::lround overflow).
+  for step in 1e-21 1.1e-21; do
+    model "$ball" "" "" "" "\"end_time\": 1, \"report_step\": $step" >m.json
+    run timeout 20 "$clearjoint" simulate m.json --out out --allow-large
+    expect_rc 1
+    expect_in err.txt "solver.report_step = "
+    expect_in err.txt "report times, more than 1000000000000000, the most the integrator counts"
+    expect_no_output
+  done
+  ;;
+size_guard)
+  model "$ball" "" "" "" '"end_time": 1e9, "report_step": 0.01' >m.json
+  run "$clearjoint" simulate m.json --out out
+  expect_rc 1
+  expect_in err.txt 'longer than 1000 s'
+  expect_in err.txt '--allow-large'
+  expect_no_output
+  model "$ball" "" "" "" '"end_time": 1, "report_step": 1e-8' >m.json
+  run "$clearjoint" simulate m.json --out out
+  expect_rc 1
+  expect_in err.txt 'report times, more than 10000000'
+  expect_no_output
+  # Past the guard on request: a free fall of 2000 s reported every 100 s runs in milliseconds.
+  model "$ball" "" "" "" '"end_time": 2000, "report_step": 100' >m.json
+  run "$clearjoint" simulate m.json --out out
+  expect_rc 1
+  run "$clearjoint" simulate m.json --out out --allow-large
+  expect_rc 0
+  [[ $(wc -l <out/energy.csv) == 22 ]] || fail "energy.csv has $(wc -l <out/energy.csv) lines"
+  ;;
+existing_folder)
+  model "$ball" >m.json
+  run "$clearjoint" simulate m.json --out out
+  expect_rc 0
+  echo stale >out/force_old.csv  # a file an earlier run with other outputs left
+  cp -r out before
+  run "$clearjoint" simulate m.json --out out
+  expect_rc 1
+  expect_in err.txt 'use --force to replace it'
+  diff -r before out >/dev/null || fail "the refused run changed the folder"
+  run "$clearjoint" simulate m.json --out out --force
+  expect_rc 0
+  [[ ! -e out/force_old.csv ]] || fail "a file of the earlier run stayed beside the new result"
+  [[ -f out/body_ball.csv ]] || fail "new result missing"
+  mkdir empty && run "$clearjoint" simulate m.json --out empty
+  expect_rc 0  # an empty folder is no result to protect
+  echo text >a_file && run "$clearjoint" simulate m.json --out a_file --force
+  expect_rc 1
+  expect_in err.txt 'exists and is not a folder'
+  ;;
+failed_run_keeps_previous)
+  model "$ball" >m.json
+  run "$clearjoint" simulate m.json --out out
+  expect_rc 0
+  cp -r out before
+  # Fails during integration: more than solver.max_steps steps.
+  model "$ball" "" "" "" '"end_time": 0.1, "report_step": 0.01, "max_steps": 3' >m.json
+  run "$clearjoint" simulate m.json --out out --force
+  expect_rc 1
+  diff -r before out >/dev/null || fail "a failed run changed the published folder"
+  [[ -z $(ls -A . | grep staging) ]] || fail "staging folder left: $(ls -A)"
+  ;;
+lock)
+  # Two runs into one --out both exited 0, the last overwriting the other. A run holding the
+  # lock is played by `flock` (util-linux) holding the lock file for 3 s.
+  model "$ball" >m.json
+  command -v flock >/dev/null || fail "flock (util-linux) is missing"
+  touch .out.lock
+  (flock .out.lock sleep 3) &
+  holder=$!
+  sleep 0.5
+  run "$clearjoint" simulate m.json --out out --force
+  wait "$holder"
+  expect_rc 1
+  expect_in err.txt 'another run is writing this output folder'
+  expect_no_output
+  run "$clearjoint" simulate m.json --out out  # the lock is free again
+  expect_rc 0
+  ;;
+stale_staging)
+  model "$ball" >m.json
+  mkdir -p .out.staging-999999-dead/ && echo partial >.out.staging-999999-dead/body_ball.csv
+  run "$clearjoint" simulate m.json --out out
+  expect_rc 0
+  [[ ! -e .out.staging-999999-dead ]] || fail "the dead run's staging folder stayed"
+  ;;
+full_disk)
+  model "$ball" >m.json
+  set +e; "$clearjoint" simulate m.json --out out >/dev/full 2>err.txt; rc=$?; set -e
+  expect_rc 2
+  expect_in err.txt 'cannot write to standard output'
+  ;;
+*) fail "unknown case" ;;
+esac
+echo "simulate_hostile_test [$case]: passed"
