@@ -1,0 +1,91 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// libFuzzer target: detect_contacts on raw doubles. The input is read as joints two ways: as
+// plain doubles (dimensions, centres, axes; most are rejected with InvalidInput) and as the
+// parameters of a joint near contact (joint_properties.hpp's generator, driven by the input's
+// bytes instead of a random engine), so that the fuzzer reaches every scenario. Invariants
+// (joint_properties.hpp): no exception but InvalidInput; counts, certificates, depths and points
+// consistent; the same answer after an A/B swap, a reversed journal axis and a power-of-two
+// change of units.
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <exception>
+#include <limits>
+#include <random>
+
+#include <fuzzer/FuzzedDataProvider.h>
+
+#include "clearjoint/geometry/primitives.hpp"
+#include "joint_properties.hpp"
+
+namespace {
+
+namespace geo = clearjoint::geometry;
+namespace props = clearjoint::geometry::properties;
+
+// Raw doubles beyond this magnitude range (0 aside) are skipped: detection is correct there too,
+// but vectors mixing magnitudes hundreds of orders apart take seconds in the exact fallback
+// (docs/command-line.md, "Limits"), which would stall the fuzzer rather than test anything new.
+constexpr double kSmallest = 1e-40;
+constexpr double kLargest = 1e40;
+
+bool in_range(double x) {
+  const double m = std::fabs(x);
+  return m == 0.0 || (m >= kSmallest && m <= kLargest);
+}
+
+/// A uniform random bit generator reading the fuzzer's bytes (zeros once they run out), so that
+/// the property generator explores what the fuzzer steers.
+class ByteEngine {
+ public:
+  using result_type = std::uint32_t;
+  explicit ByteEngine(FuzzedDataProvider& data) : data_(data) {}
+  static constexpr result_type min() { return 0; }
+  static constexpr result_type max() { return std::numeric_limits<result_type>::max(); }
+  result_type operator()() { return data_.ConsumeIntegral<result_type>(); }
+
+ private:
+  FuzzedDataProvider& data_;
+};
+
+void fail(const std::string& what) {
+  std::fprintf(stderr, "fuzz invariant broken: %s\n", what.c_str());
+  std::abort();
+}
+
+void check_joint(const props::Joint& joint, int unit_exponent) {
+  try {
+    const std::string violation = props::check_properties(joint, std::nullopt, unit_exponent);
+    if (!violation.empty()) fail(violation);
+  } catch (const geo::InvalidInput&) {
+  } catch (const std::exception& e) {
+    fail(std::string("unexpected exception: ") + e.what());
+  }
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* bytes, std::size_t size) {
+  FuzzedDataProvider data(bytes, size);
+  const bool raw = data.ConsumeBool();
+  const int unit_exponent = data.ConsumeIntegralInRange<int>(-60, 60);
+  if (raw) {
+    double v[16];
+    for (double& x : v) x = data.ConsumeFloatingPoint<double>();
+    for (double x : v) {
+      if (!in_range(x)) return 0;
+    }
+    const props::Joint joint{{v[0], v[1], v[2], v[3]},
+                             {{v[4], v[5], v[6]}, {v[7], v[8], v[9]}},
+                             {{v[10], v[11], v[12]}, {v[13], v[14], v[15]}}};
+    // The power-of-two scaling must stay exact: keep every length within the normal range.
+    if (props::joint_size(joint) * std::ldexp(1.0, unit_exponent) > 1e200) return 0;
+    check_joint(joint, unit_exponent);
+  } else {
+    ByteEngine engine(data);
+    check_joint(props::random_joint(engine), unit_exponent);
+  }
+  return 0;
+}

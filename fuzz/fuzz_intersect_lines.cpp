@@ -1,0 +1,8 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// libFuzzer target: the JSON Lines reader of `clearjoint intersect` (fuzz_json_lines.hpp).
+#include "fuzz_json_lines.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  clearjoint::fuzz::answer_lines(clearjoint::app::intersect_command(), data, size);
+  return 0;
+}

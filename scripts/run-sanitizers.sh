@@ -1,0 +1,59 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
+# Builds the test suite with AddressSanitizer (and LeakSanitizer) + UndefinedBehaviorSanitizer in
+# build-sanitize/ and runs it; any sanitizer report fails the test that triggered it
+# (-fno-sanitize-recover: UBSan findings abort; leaks fail at exit). With Clang 14 the build also
+# has the libFuzzer targets of fuzz/, and ctest runs each for a short time on its corpus.
+#
+#   scripts/run-sanitizers.sh [--reduced] [--fuzz-seconds N] [--jobs N]
+#     --reduced         the geometry and apps tests and the fuzz targets only (what CI runs)
+#     --fuzz-seconds N  seconds per fuzz target under ctest (default 20)
+# Uses clang++-14 when installed (scripts/install-dependencies.sh installs it), otherwise g++
+# (no fuzz targets then). The Python bindings are left out: an instrumented extension needs an
+# instrumented interpreter.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+reduced=0 fuzz_seconds=20 jobs=2
+while (($#)); do
+  case $1 in
+    --reduced) reduced=1 ;;
+    --fuzz-seconds) fuzz_seconds=$2; shift ;;
+    --jobs) jobs=$2; shift ;;
+    *) echo "run-sanitizers: unknown argument '$1'" >&2; exit 2 ;;
+  esac
+  shift
+done
+
+flags="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
+config=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DCLEARJOINT_BUILD_PYTHON=OFF)
+if command -v clang++-14 >/dev/null; then
+  config+=(-DCMAKE_CXX_COMPILER=clang++-14 -DCMAKE_C_COMPILER=clang-14 -DCLEARJOINT_BUILD_FUZZERS=ON
+           -DCLEARJOINT_FUZZ_SECONDS="$fuzz_seconds")
+else
+  echo "run-sanitizers: clang++-14 not found; building with g++ and without the fuzz targets" >&2
+fi
+if command -v ccache >/dev/null; then
+  config+=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache)
+fi
+((reduced)) && config+=(-DCLEARJOINT_BUILD_BENCHMARKS=OFF)
+
+mkdir -p build-sanitize
+cmake -S . -B build-sanitize "${config[@]}" -DCMAKE_CXX_FLAGS="$flags" \
+      -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" \
+      -DCMAKE_SHARED_LINKER_FLAGS="-fsanitize=address,undefined" >build-sanitize/configure.log 2>&1 ||
+  { cat build-sanitize/configure.log; exit 1; }
+
+export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:detect_stack_use_after_return=1
+export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+if ((reduced)); then
+  # The geometry tests (targets test_*), the program and its end-to-end tests, the fuzz targets.
+  targets=$(cmake --build build-sanitize --target help | sed -n 's/^\.\.\. \(test_[a-z0-9_]*\|clearjoint\|fuzz_[a-z_]*\)$/\1/p')
+  # shellcheck disable=SC2086
+  cmake --build build-sanitize -j"$jobs" --target $targets
+  cd build-sanitize
+  ctest --output-on-failure -j"$jobs" -L 'geometry|apps|fuzz'
+else
+  cmake --build build-sanitize -j"$jobs"
+  cd build-sanitize
+  ctest --output-on-failure -j"$jobs"
+fi
