@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// libFuzzer target: detect_contacts on raw doubles. The input is read as joints two ways: as
-// plain doubles (dimensions, centres, axes; most are rejected with InvalidInput) and as the
-// parameters of a joint near contact (joint_properties.hpp's generator, driven by the input's
+// libFuzzer target: detect_contacts on raw doubles. The input's first byte chooses how the rest
+// is read: as 16 plain doubles (dimensions, centres, axes; most are rejected with InvalidInput)
+// or as the parameters of a joint near contact (joint_properties.hpp's generator, driven by the input's
 // bytes instead of a random engine), so that the fuzzer reaches every scenario. Invariants
 // (joint_properties.hpp): no exception but InvalidInput; counts, certificates, depths and points
 // consistent; the same answer after an A/B swap, a reversed journal axis and a power-of-two
@@ -72,8 +72,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* bytes, std::size_t siz
   const bool raw = data.ConsumeBool();
   const int unit_exponent = data.ConsumeIntegralInRange<int>(-60, 60);
   if (raw) {
-    double v[16];
-    for (double& x : v) x = data.ConsumeFloatingPoint<double>();
+    // The bytes themselves (the seeds' layout, fuzz/make_seed_corpus.py), so that mutations of
+    // single bits, exponents and signs reach the detection as such; missing bytes read as 0.
+    double v[16] = {};
+    data.ConsumeData(v, sizeof v);
     for (double x : v) {
       if (!in_range(x)) return 0;
     }

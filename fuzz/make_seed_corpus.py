@@ -33,14 +33,14 @@ def jsonl_lines(*patterns: str):
 
 
 def raw_joint(query: dict) -> bytes:
-    """A joint's 16 doubles (bearing radius, length, journal radius, length, bearing centre and
-    axis, journal centre and axis). FuzzedDataProvider maps bytes to values its own way, so these
-    seeds are starting points with the bit patterns of real joints, not an exact encoding; the
-    target's structured mode makes a valid joint near contact from any bytes."""
+    """fuzz_detect_raw's raw mode: a joint's 16 doubles (bearing radius, length, journal radius,
+    length, bearing centre and axis, journal centre and axis), little-endian, then the two bytes
+    FuzzedDataProvider takes from the end (the unit exponent byte, 0x3c: no change of units,
+    and the mode byte, 1: raw)."""
     b, j = query["bearing"], query["journal"]
     values = [b["radius"], b["length"], j["radius"], j["length"],
               *b["center"], *b["axis"], *j["center"], *j["axis"]]
-    return struct.pack("<16d", *values)
+    return struct.pack("<16d", *values) + bytes([0x3C, 1])
 
 
 def main() -> None:
