@@ -16,6 +16,7 @@
 // distance from every scenario boundary, so rounding does not move them across one.
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <optional>
@@ -167,14 +168,25 @@ inline std::string compare(const JointContacts& first, const JointContacts& seco
         << " contacts) became " << static_cast<int>(second.scenario) << " (" << second.contact_count << ")";
     return out.str();
   }
+  // Beyond the model a rim can have two radial contacts (two penetration arcs) with one key:
+  // each contact is matched to the unmatched one of its key whose depth is closest.
+  std::array<bool, kMaxContacts> used{};
   for (int k = 0; k < first.contact_count; ++k) {
     const Contact& c = first.contacts[static_cast<std::size_t>(k)];
-    const auto* match = std::find_if(second.contacts.begin(), second.contacts.begin() + second.contact_count,
-                                     [&](const Contact& d) { return contact_key(d, false) == contact_key(c, swap_bases); });
-    if (match == second.contacts.begin() + second.contact_count) {
+    const Contact* match = nullptr;
+    for (int m = 0; m < second.contact_count; ++m) {
+      const Contact& d = second.contacts[static_cast<std::size_t>(m)];
+      if (used[static_cast<std::size_t>(m)] || contact_key(d, false) != contact_key(c, swap_bases)) continue;
+      if (match == nullptr || std::abs(d.depth - depth_factor * c.depth) <
+                                  std::abs(match->depth - depth_factor * c.depth)) {
+        match = &d;
+      }
+    }
+    if (match == nullptr) {
       out << "contact " << k << " has no counterpart";
       return out.str();
     }
+    used[static_cast<std::size_t>(match - second.contacts.data())] = true;
     if (!(std::abs(match->depth - depth_factor * c.depth) <= tolerance)) {
       out << "contact " << k << " depth " << c.depth * depth_factor << " became " << match->depth;
       return out.str();
@@ -223,12 +235,17 @@ inline std::string check_properties(const Joint& j, const std::optional<Eigen::I
     if (std::string e = compare(reference, result, false, 1.0, kMotionTolerance * moved_size); !e.empty()) {
       return "rigid motion: " + e;
     }
+    // Bearing points moved with the joint: each reference contact has a contact of its key at
+    // its moved point (two contacts of one key lie on two arcs, far apart).
     for (int k = 0; k < reference.contact_count && trusted(reference.certificate) && trusted(result.certificate); ++k) {
       const Contact& c = reference.contacts[static_cast<std::size_t>(k)];
-      const Contact& m = result.contacts[static_cast<std::size_t>(k)];  // same order: same set
-      if (!((*motion * c.p_WCi - m.p_WCi).norm() <= kMotionTolerance * moved_size)) {
-        return "rigid motion: contact " + std::to_string(k) + " bearing point moved wrongly";
+      bool found = false;
+      for (int m = 0; m < result.contact_count && !found; ++m) {
+        const Contact& d = result.contacts[static_cast<std::size_t>(m)];
+        found = contact_key(d, false) == contact_key(c, false) &&
+                (*motion * c.p_WCi - d.p_WCi).norm() <= kMotionTolerance * moved_size;
       }
+      if (!found) return "rigid motion: contact " + std::to_string(k) + " bearing point moved wrongly";
     }
   }
   return "";
