@@ -36,18 +36,32 @@ bool in_range(double x) {
   return m == 0.0 || (m >= kSmallest && m <= kLargest);
 }
 
-/// A uniform random bit generator reading the fuzzer's bytes (zeros once they run out), so that
-/// the property generator explores what the fuzzer steers.
+/// A uniform random bit generator reading the fuzzer's bytes, so that the property generator
+/// explores what the fuzzer steers. Once the bytes run out it continues with splitmix64 seeded
+/// by what it read: a constant stream (FuzzedDataProvider's zeros) would keep the standard
+/// distributions' rejection sampling looping forever.
 class ByteEngine {
  public:
   using result_type = std::uint32_t;
   explicit ByteEngine(FuzzedDataProvider& data) : data_(data) {}
   static constexpr result_type min() { return 0; }
   static constexpr result_type max() { return std::numeric_limits<result_type>::max(); }
-  result_type operator()() { return data_.ConsumeIntegral<result_type>(); }
+  result_type operator()() {
+    if (data_.remaining_bytes() >= sizeof(result_type)) {
+      const result_type value = data_.ConsumeIntegral<result_type>();
+      state_ = state_ * 31 + value;
+      return value;
+    }
+    state_ += 0x9E3779B97F4A7C15ULL;  // splitmix64
+    std::uint64_t z = state_;
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
+    return static_cast<result_type>((z ^ (z >> 31)) >> 32);
+  }
 
  private:
   FuzzedDataProvider& data_;
+  std::uint64_t state_ = 0;
 };
 
 void fail(const std::string& what) {

@@ -204,17 +204,23 @@ inline std::string check_properties(const Joint& j, const std::optional<Eigen::I
   const double size = joint_size(j);
   if (std::string e = check_answer(j, reference); !e.empty()) return "answer: " + e;
 
-  const PartPose bearing_swapped{j.bearing.p_WP, -j.bearing.axis_W};
-  if (std::string e = compare(reference, detect_contacts(j.dimensions, bearing_swapped, j.journal),
-                              true, 1.0, kExactTransformTolerance * size);
-      !e.empty()) {
-    return "A/B swap: " + e;
-  }
-  const PartPose journal_reversed{j.journal.p_WP, -j.journal.axis_W};
-  if (std::string e = compare(reference, detect_contacts(j.dimensions, j.bearing, journal_reversed),
-                              false, 1.0, kExactTransformTolerance * size);
-      !e.empty()) {
-    return "journal axis reversed: " + e;
+  // Rim A is the rim facing base A, by the sign of a_i . a_j; with the axes exactly
+  // perpendicular (a journal turned across its bearing, far beyond the model) the labels are a
+  // convention that neither transformation below changes, so they are not compared there.
+  const bool labels_defined = j.bearing.axis_W.dot(j.journal.axis_W) != 0.0;
+  if (labels_defined) {
+    const PartPose bearing_swapped{j.bearing.p_WP, -j.bearing.axis_W};
+    if (std::string e = compare(reference, detect_contacts(j.dimensions, bearing_swapped, j.journal),
+                                true, 1.0, kExactTransformTolerance * size);
+        !e.empty()) {
+      return "A/B swap: " + e;
+    }
+    const PartPose journal_reversed{j.journal.p_WP, -j.journal.axis_W};
+    if (std::string e = compare(reference, detect_contacts(j.dimensions, j.bearing, journal_reversed),
+                                false, 1.0, kExactTransformTolerance * size);
+        !e.empty()) {
+      return "journal axis reversed: " + e;
+    }
   }
   const double factor = std::ldexp(1.0, unit_exponent);
   const JointDimensions& d = j.dimensions;
