@@ -12,8 +12,8 @@
 //   - reversing the journal axis: same scenario and contacts (rim A is the rim facing base A);
 //   - a power-of-two change of units: same scenario, depths scaled exactly.
 // A random rigid motion rounds the inputs (a slightly different joint): same scenario and
-// contacts, depths and points moved, within kMotionTolerance; random joints lie a finite
-// distance from every scenario boundary, so rounding does not move them across one.
+// contacts, depths and points moved, within kMotionTolerance; only a contact within that
+// tolerance of touching may appear or vanish (and the scenario change with it).
 
 #include <algorithm>
 #include <array>
@@ -195,6 +195,27 @@ inline std::string compare(const JointContacts& first, const JointContacts& seco
   return "";
 }
 
+/// `r` without its contacts of depth at most `touch` (scenario left as it was).
+inline JointContacts without_touches(const JointContacts& r, double touch) {
+  JointContacts kept = r;
+  kept.contact_count = 0;
+  for (int k = 0; k < r.contact_count; ++k) {
+    const Contact& c = r.contacts[static_cast<std::size_t>(k)];
+    if (c.depth > touch) kept.contacts[static_cast<std::size_t>(kept.contact_count++)] = c;
+  }
+  return kept;
+}
+
+/// The contacts of two answers, matched by key and depth, within `tolerance` (trusted answers).
+inline std::string compare_contacts(const JointContacts& first, const JointContacts& second,
+                                    double tolerance) {
+  JointContacts a = first, b = second;
+  a.scenario = b.scenario = ContactScenario::beyond_model;  // compare the contacts only
+  a.aligned = b.aligned;
+  if (a.contact_count == 0 && b.contact_count == 0) return "";
+  return compare(a, b, false, 1.0, tolerance);
+}
+
 /// Every property of the header comment for one joint; `motion` is a random rigid motion (or
 /// none, for the fuzz target, whose inputs may lie exactly on a scenario boundary). Returns ""
 /// or the first violation. InvalidInput from detect_contacts propagates.
@@ -238,7 +259,20 @@ inline std::string check_properties(const Joint& j, const std::optional<Eigen::I
                       {*motion * j.journal.p_WP, motion->linear() * j.journal.axis_W}};
     const JointContacts result = detect_contacts(moved.dimensions, moved.bearing, moved.journal);
     const double moved_size = std::max(size, joint_size(moved));
-    if (std::string e = compare(reference, result, false, 1.0, kMotionTolerance * moved_size); !e.empty()) {
+    const double touch = kMotionTolerance * moved_size;
+    // The motion rounds the joint: a contact within `touch` of touching may appear or vanish
+    // (the 1e7 run met two, at clearances of ~2^-22 of the joint's size). The answers are
+    // compared without such contacts.
+    const JointContacts reference_kept = without_touches(reference, touch);
+    const JointContacts result_kept = without_touches(result, touch);
+    const bool touches = reference_kept.contact_count != reference.contact_count ||
+                         result_kept.contact_count != result.contact_count;
+    if (!touches) {
+      if (std::string e = compare(reference, result, false, 1.0, touch); !e.empty()) {
+        return "rigid motion: " + e;
+      }
+    }
+    if (std::string e = compare_contacts(reference_kept, result_kept, touch); !e.empty()) {
       return "rigid motion: " + e;
     }
     // Bearing points moved with the joint: each reference contact has a contact of its key at
