@@ -3,7 +3,8 @@
 // The body of the two JSON Lines fuzz targets (fuzz_intersect_lines.cpp, fuzz_detect_lines.cpp):
 // every line of the input goes through the command's line handler, exactly as `clearjoint
 // intersect` / `clearjoint detect` answer it. Invariants: answer_line never throws, every answer
-// is a JSON object with "id" and either "error" (a string) or the answer's fields, and its
+// is a JSON object with "id" and either "error" (a string, beside "v" and "id" only) or the
+// answer's fields, and its
 // text dumps and parses back (the line the program would print is valid JSON).
 
 #include <cstddef>
@@ -38,8 +39,8 @@ inline void answer_lines(const app::JsonLinesCommand& command, const std::uint8_
       bool failed = false;
       const app::Json answer = app::answer_line(command, line, line_number, failed);
       check(answer.is_object() && answer.contains("id"), "an answer is an object with an id");
-      check(!failed || (answer.size() == 2 && answer["error"].is_string()),
-            "an error line holds only the id and the error message");
+      check(!failed || (answer.size() == 3 && answer.contains("v") && answer["error"].is_string()),
+            "an error line holds only the format version, the id and the error message");
       const std::string text = answer.dump(-1, ' ', false, app::Json::error_handler_t::replace);
       check(app::Json::accept(text), "the printed answer is valid JSON");
     }

@@ -133,6 +133,7 @@ int answer_all(const JsonLinesCommand& command, std::istream& input, const std::
     Json answer;
     if (read == LineRead::too_long) {
       answer = Json::object();
+      answer["v"] = kFormatVersion;
       answer["id"] = nullptr;
       answer["error"] = "line " + std::to_string(line_number) + ": longer than " +
                         std::to_string(kMaxLineBytes) + " bytes, the limit for one line";
