@@ -337,7 +337,8 @@ ModelDescription parse_model(std::string_view json_text, std::string_view source
   Json json;
   try {
     json = json::parse_bounded<Json>(json_text);
-  } catch (const Json::parse_error& e) {
+  } catch (const Json::exception& e) {
+    // parse_error for malformed text, out_of_range for a number that overflows (1e400).
     throw ModelError(prefix + "not valid JSON: " + e.what());
   } catch (const json::JsonLimitError& e) {
     throw ModelError(prefix + e.what());

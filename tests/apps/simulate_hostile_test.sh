@@ -50,6 +50,14 @@ underflow_model)
   expect_rc 1
   expect_in err.txt 'solver.report_step = 1e-400: underflows'
   ;;
+overflow_model)
+  # A number that overflows escaped as a bare JSON library exception (found by fuzz_model_file).
+  model "$ball" "" "" "" '"end_time": 1e400, "report_step": 0.01' >m.json
+  run "$clearjoint" simulate m.json --out out
+  expect_rc 1
+  expect_in err.txt 'clearjoint simulate: m.json: not valid JSON: [json.exception.out_of_range.406] number overflow'
+  expect_no_output
+  ;;
 huge_value_message)
   { printf '{"name": "x", "bodies": [{"name": "b", "mass": "'; printf '%*s' 1000000 '' | tr ' ' 9
     echo '", "inertia": [1,1,1], "position": [0,0,0]}]}'; } >m.json

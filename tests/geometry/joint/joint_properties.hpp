@@ -277,11 +277,13 @@ inline std::string check_properties(const Joint& j, const std::optional<Eigen::I
     }
     // Bearing points moved with the joint: each reference contact has a contact of its key at
     // its moved point (two contacts of one key lie on two arcs, far apart).
-    for (int k = 0; k < reference.contact_count && trusted(reference.certificate) && trusted(result.certificate); ++k) {
-      const Contact& c = reference.contacts[static_cast<std::size_t>(k)];
+    for (int k = 0; k < reference_kept.contact_count && trusted(reference.certificate) &&
+                    trusted(result.certificate);
+         ++k) {
+      const Contact& c = reference_kept.contacts[static_cast<std::size_t>(k)];
       bool found = false;
-      for (int m = 0; m < result.contact_count && !found; ++m) {
-        const Contact& d = result.contacts[static_cast<std::size_t>(m)];
+      for (int m = 0; m < result_kept.contact_count && !found; ++m) {
+        const Contact& d = result_kept.contacts[static_cast<std::size_t>(m)];
         found = contact_key(d, false) == contact_key(c, false) &&
                 (*motion * c.p_WCi - d.p_WCi).norm() <= kMotionTolerance * moved_size;
       }
