@@ -7,9 +7,9 @@
 #
 #   scripts/run-sanitizers.sh [--reduced] [--fuzz-seconds N] [--jobs N]
 #     --reduced         only the joint-detection tests (tests/geometry/joint, with the property
-#                       test), the program's end-to-end tests and the fuzz targets: what CI runs
+#                       test), the program's end-to-end tests and the fuzz targets
 #     --fuzz-seconds N  seconds per fuzz target under ctest (default 20)
-# Uses clang++-14 when installed (scripts/install-dependencies.sh installs it), otherwise g++
+# Uses clang++-14 when installed (Debian clang-14, libclang-rt-14-dev), otherwise g++
 # (no fuzz targets then). The Python bindings are left out: an instrumented extension needs an
 # instrumented interpreter.
 set -euo pipefail
