@@ -31,29 +31,20 @@ std::string shape_text(const py::array& array) {
 
 }  // namespace
 
-VectorRows::VectorRows(const py::handle& value, const char* name)
-    : array_(as_doubles(value, name)), name_(name) {
-  if (array_.ndim() == 1 && array_.shape(0) == 3) {
+BroadcastRows::BroadcastRows(const py::handle& value, const char* name, std::size_t row_width)
+    : array_(as_doubles(value, name)), row_width_(row_width), name_(name) {
+  // A vector row has one axis of length 3; a scalar row has none.
+  const bool vector = row_width == 3;
+  const py::ssize_t row_axes = vector ? 1 : 0;
+  const auto row_fits = [&](py::ssize_t axis) { return !vector || array_.shape(axis) == 3; };
+  if (array_.ndim() == row_axes && row_fits(0)) {
     batched_ = false;
-  } else if (array_.ndim() == 2 && array_.shape(1) == 3) {
+  } else if (array_.ndim() == row_axes + 1 && row_fits(1)) {
     batched_ = true;
     rows_ = static_cast<std::size_t>(array_.shape(0));
   } else {
     throw py::value_error(std::string(name) + ": shape " + shape_text(array_) +
-                          " must be (3,) or (N, 3)");
-  }
-  data_ = array_.data();
-}
-
-ScalarRows::ScalarRows(const py::handle& value, const char* name)
-    : array_(as_doubles(value, name)), name_(name) {
-  if (array_.ndim() == 0) {
-    batched_ = false;
-  } else if (array_.ndim() == 1) {
-    batched_ = true;
-    rows_ = static_cast<std::size_t>(array_.shape(0));
-  } else {
-    throw py::value_error(std::string(name) + ": shape " + shape_text(array_) + " must be () or (N,)");
+                          (vector ? " must be (3,) or (N, 3)" : " must be () or (N,)"));
   }
   data_ = array_.data();
 }

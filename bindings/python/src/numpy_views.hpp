@@ -14,43 +14,46 @@
 
 namespace clearjoint::python {
 
-/// An argument of shape (3,) (one vector, broadcast over every row) or (N, 3) (one per row), held
-/// as a C-contiguous float64 array (converted from lists, integers, other dtypes on the way in).
-class VectorRows {
+/// What VectorRows and ScalarRows share: an argument held as a C-contiguous float64 array
+/// (converted from lists, integers, other dtypes on the way in) that is either one row, broadcast
+/// over every row of a batch, or N rows.
+class BroadcastRows {
  public:
-  /// Throws TypeError (not numbers) or ValueError (another shape) naming `name`.
-  VectorRows(const pybind11::handle& value, const char* name);
-  geometry::Vector3 operator[](std::size_t row) const {
-    const double* p = data_ + (batched_ ? 3 * row : 0);
-    return {p[0], p[1], p[2]};
-  }
   bool batched() const { return batched_; }
   std::size_t rows() const { return rows_; }
   const char* name() const { return name_; }
 
+ protected:
+  /// `row_width` 3: shape (3,) or (N, 3); `row_width` 1: shape () or (N,). Throws TypeError (not
+  /// numbers) or ValueError (another shape) naming `name`.
+  BroadcastRows(const pybind11::handle& value, const char* name, std::size_t row_width);
+  /// The first of the `row_width` numbers of `row` (of the one row when not batched).
+  const double* row_data(std::size_t row) const { return data_ + (batched_ ? row_width_ * row : 0); }
+
  private:
   pybind11::array_t<double, pybind11::array::c_style | pybind11::array::forcecast> array_;
   const double* data_ = nullptr;
+  std::size_t row_width_;
   std::size_t rows_ = 1;
   bool batched_ = false;
   const char* name_;
 };
 
-/// An argument of shape () (one number, broadcast) or (N,).
-class ScalarRows {
+/// An argument of shape (3,) (one vector, broadcast over every row) or (N, 3) (one per row).
+class VectorRows : public BroadcastRows {
  public:
-  ScalarRows(const pybind11::handle& value, const char* name);
-  double operator[](std::size_t row) const { return data_[batched_ ? row : 0]; }
-  bool batched() const { return batched_; }
-  std::size_t rows() const { return rows_; }
-  const char* name() const { return name_; }
+  VectorRows(const pybind11::handle& value, const char* name) : BroadcastRows(value, name, 3) {}
+  geometry::Vector3 operator[](std::size_t row) const {
+    const double* p = row_data(row);
+    return {p[0], p[1], p[2]};
+  }
+};
 
- private:
-  pybind11::array_t<double, pybind11::array::c_style | pybind11::array::forcecast> array_;
-  const double* data_ = nullptr;
-  std::size_t rows_ = 1;
-  bool batched_ = false;
-  const char* name_;
+/// An argument of shape () (one number, broadcast) or (N,).
+class ScalarRows : public BroadcastRows {
+ public:
+  ScalarRows(const pybind11::handle& value, const char* name) : BroadcastRows(value, name, 1) {}
+  double operator[](std::size_t row) const { return *row_data(row); }
 };
 
 /// What a list of arguments broadcasts to: `rows` (N) and whether any argument is batched (a
