@@ -88,7 +88,9 @@ Counted count_allocations(const char* file, const std::vector<std::vector<double
   }
   // update_extra_states may record an impact (one entry of recorded_impacts, amortised growth)
   // and nothing else: counted separately from the right-hand side.
-  if (joint != nullptr) EXPECT_GE(joint->statistics().impacts, impacts_before);
+  if (joint != nullptr) {
+    EXPECT_GE(joint->statistics().impacts, impacts_before);
+  }
   return counted;
 }
 
