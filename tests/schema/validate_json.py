@@ -66,9 +66,9 @@ def main(argv):
             jsonschema.Draft202012Validator.check_schema(schema)
             if schema.get("$schema") != "https://json-schema.org/draft/2020-12/schema":
                 sys.exit(f"FAIL {name}: $schema is not draft 2020-12")
-            # The format version is part of the id: urn:clearjoint:schema:v1:NAME, .../study-v1...
-            if not re.search(r"(^|[:/-])v[0-9]+([:./]|$)", schema.get("$id", "")):
-                sys.exit(f"FAIL {name}: $id {schema.get('$id')!r} carries no format version (v1, ...)")
+            # One id form for every schema, the format version part of it: urn:clearjoint:schema:v1:NAME.
+            if not re.fullmatch(r"urn:clearjoint:schema:v[0-9]+:[a-z][a-z-]*", schema.get("$id", "")):
+                sys.exit(f"FAIL {name}: $id {schema.get('$id')!r} is not urn:clearjoint:schema:vN:NAME")
             ids.add(schema["$id"])
         if len(ids) != len(schemas) or not schemas:
             sys.exit("FAIL: schema ids are not distinct, or there are no schemas")
