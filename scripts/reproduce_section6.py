@@ -5,9 +5,10 @@ docs/reproduction.md, from the stores of the two Section 6 studies:
 
     clearjoint study run studies/section6_mechanisms.json    # 37 runs: Figs. 7-19
     clearjoint study run studies/section6_clearance.json     # 153 runs: the ensembles (and their figures)
+    clearjoint study run studies/section6_settling.json      # 11 runs: the explanations' variants
     python3 scripts/reproduce_section6.py [--update-docs]
 
-(bash scripts/reproduce-section6.sh does all three.) Figures go to docs/figures/section6/, the
+(bash scripts/reproduce-section6.sh does all four.) Figures go to docs/figures/section6/, the
 measured numbers to results/section6/summary.json; --update-docs rewrites the generated tables of
 docs/reproduction.md (between its "generated" markers) from the stores.
 
@@ -83,11 +84,13 @@ def main():
                         help="rewrite the generated tables of docs/reproduction.md from the stores")
     args = parser.parse_args()
     import section6_figures  # noqa: E402 (matplotlib only when drawing)
+    import section6_settling  # noqa: E402
     import section6_tables  # noqa: E402
     from clearjoint.study.plot import draw_all
 
     mechanisms = StoreRuns(os.path.join(STUDIES, "section6_mechanisms.json"))
     clearance = StoreRuns(os.path.join(STUDIES, "section6_clearance.json"))
+    settling = StoreRuns(os.path.join(STUDIES, "section6_settling.json"))
     load = mechanism_loader(mechanisms)
     summary = section6_figures.draw_all(load, args.figures, STUDY_MM)
     from clearjoint.study.summary import summarise
@@ -96,9 +99,11 @@ def main():
     summary["ensembles"] = {"points": {pid: {s: {k: v for k, v in e.items()} for s, e in stats.items()}
                                        for pid, stats in ensembles["points"].items()},
                             "trends": ensembles["trends"]}
-    runs = [mechanisms.load(r) for r in sorted(set(mechanisms.membership.values()))]
-    summary["wall_seconds_per_run"] = sorted(float(r["wall_seconds"]) for r in runs)
-    summary["library_versions"] = sorted({str(r["source"]) for r in runs})
+    summary["settling"] = section6_settling.summarise(settling)
+    attrs = [study.store.read(r, series=False)["attrs"] for study in (mechanisms, clearance, settling)
+             for r in sorted(set(study.membership.values()))]
+    summary["wall_seconds_per_run"] = sorted(float(a["wall_seconds"]) for a in attrs)
+    summary["library_versions"] = sorted({str(a["library_version"]) for a in attrs})
     os.makedirs(os.path.dirname(args.summary), exist_ok=True)
     with open(args.summary + ".partial", "w") as f:
         json.dump(summary, f, indent=1, sort_keys=True)
@@ -106,7 +111,7 @@ def main():
     print("figures in %s, numbers in %s" % (args.figures, args.summary), file=sys.stderr)
     if args.update_docs:
         page = os.path.join(REPOSITORY, "docs", "reproduction.md")
-        section6_tables.update_page(page, load, ensembles, clearance.study, STUDY_MM)
+        section6_tables.update_page(page, load, ensembles, clearance.study, STUDY_MM, summary, len(attrs))
         print("tables of %s regenerated" % page, file=sys.stderr)
 
 
