@@ -6,9 +6,8 @@
 ///
 /// Hand-written rather than Eigen::LLT: for the 5-30 equations of the mechanisms here, Eigen's
 /// dynamic-size LLT runs its general kernels (a matrix-vector product per column, blocked
-/// triangular solves), whose set-up costs exceeded the arithmetic: LLT, its two triangular solves
-/// and their matrix-vector products were ~15 % of a clearance-joint simulation's time (perf), this
-/// is a few hundred multiply-adds in plain loops. Column-major, right-looking, so that every inner
+/// triangular solves), whose set-up costs exceed the arithmetic at these sizes (perf shows them
+/// in a clearance-joint simulation's profile); this is a few hundred multiply-adds in plain loops. Column-major, right-looking, so that every inner
 /// loop runs down a column.
 
 #include <Eigen/Core>
