@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: BSD-3-Clause
 """Run dynamics_slider_crank_bench from two builds side by side and print the ratio of their
-median times as a Markdown table (docs/dynamics.md, "Measured figures").
+median times as a Markdown table (docs/benchmarks-dynamics.md has one build's figures).
 
 Two programs cannot share one Google Benchmark process, so the interleaving is done here: each of
 `--rounds` rounds runs every benchmark once in each build (`--benchmark_repetitions=1`), the two
