@@ -144,10 +144,11 @@ of their medians.
 ## Figures
 
 Medians over the repetitions. "CPU per evaluation" divides a run's CPU time by its right-hand-side
-evaluations (the stepper's, the initial-condition corrector's and the restarts'), everything
-included: the integrator, the report interpolation, the located contact onsets. "Detections per
-impact beyond the evaluations" is (contact detections - evaluations) / impacts, the probes that
-locate each contact onset on the dense output (dynamics.md, "Contact onset located").
+evaluations (`IntegrationStatistics::derivative_calls`: the stepper's, restarts included),
+everything included: the integrator, the report interpolation, the located contact onsets.
+"Detections per impact beyond the evaluations" is (contact detections - evaluations) / impacts:
+mostly the probes that locate each contact onset on the dense output (dynamics.md, "Contact onset
+located"; a detection at the poses of the previous one is reused, not counted).
 
 {bench_table}
 
