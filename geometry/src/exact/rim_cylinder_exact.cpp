@@ -12,13 +12,10 @@
 
 #include "rim_cylinder_exact.hpp"
 
-#include <CGAL/Gmpq.h>
-#include <CGAL/Polynomial.h>
-#include <CGAL/Polynomial_traits_d.h>
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <numbers>
 #include <utility>
 #include <vector>
@@ -26,55 +23,21 @@
 #include "angles.hpp"
 #include "exact_rational_point.hpp"
 #include "primitives_detail.hpp"
+#include "real_root_isolation.hpp"
 
 namespace clearjoint::geometry::detail {
 namespace {
 
-using Rational = CGAL::Gmpq;
-using Polynomial = CGAL::Polynomial<Rational>;
+using Polynomial = RationalPolynomial;
 
-/// Isolating intervals are refined until their width is below this fraction of the root bound:
-/// well under one double ulp of the crossing coordinate, so the reported enclosure is limited by
-/// the final rounding to double, not by the isolation.
-constexpr int kRefinementBits = 64;
-/// Sign evaluations allowed per exact query (Sturm counts and bisection signs). A realistic
-/// query needs a few hundred; inputs whose magnitudes lie hundreds of orders apart make
-/// coefficients of thousands of bits and root clusters that bisection would chase for minutes.
-/// Past this budget the tier gives up and says so (the answer is then `uncertain`), never hangs.
-constexpr int kMaxSignEvaluations = 20000;
-
-/// Largest coefficient (numerator plus denominator bits) the tier isolates roots of. A sign
-/// evaluation's cost grows with the coefficients' size, and Sturm sequences multiply it, so the
-/// count budget alone let inputs whose magnitudes lie ~1e500 apart run for half a minute (27,000
-/// bits). The largest met by the test suite and the detection suite (1e-6 to 1e6 m, margins down
-/// to 1e-15 clearances, exact centres of detection) is 2,306 bits; this leaves 3.5 times that.
-/// A fuzz of 40,000 joints with magnitudes from 1e-300 to 1e300 mixed: slowest call 126 ms (45 s
-/// without the limit); 8 % of them `uncertain` (1 % without), all with magnitudes that far apart.
-constexpr std::size_t kMaxCoefficientBits = 8192;
-
-/// Thrown inside this file only, caught by exact_rim_roots: the tier cannot finish.
-struct GiveUp {
-  CertificateReason why;
-};
-constexpr CertificateReason kBudgetExhausted = CertificateReason::exact_root_isolation_budget_exhausted;
-constexpr CertificateReason kCoefficientsTooLarge = CertificateReason::exact_coefficients_too_large;
 constexpr CertificateReason kBeyondDoubleRange = CertificateReason::exact_intermediate_beyond_double_range;
 
 /// A double computed from rationals, about to become a rational or an angle: a Gmpq made from
 /// an infinity or a NaN aborts the process (GMP raises SIGFPE), so refuse it first.
 double finite_or_give_up(double x) {
-  if (!std::isfinite(x)) throw GiveUp{kBeyondDoubleRange};
+  if (!std::isfinite(x)) throw ExactTierGiveUp{kBeyondDoubleRange};
   return x;
 }
-
-/// Counts sign evaluations against kMaxSignEvaluations.
-struct EvaluationBudget {
-  int used = 0;
-  void spend(int n = 1) {
-    used += n;
-    if (used > kMaxSignEvaluations) throw GiveUp{kBudgetExhausted};
-  }
-};
 
 struct RationalVector {
   Rational x, y, z;
@@ -96,143 +59,6 @@ Bounded to_bounded(const Rational& x) {
   return {middle, std::max(middle - range.first, range.second - middle) * kErrorInflation};
 }
 
-// ---- Sturm sequences over the rationals --------------------------------------------------
-class SturmSequence {
- public:
-  explicit SturmSequence(const Polynomial& f) {
-    chain_.push_back(f);
-    chain_.push_back(CGAL::differentiate(f));
-    while (!chain_.back().is_zero() && chain_.back().degree() > 0) {
-      Polynomial quotient, remainder;
-      Polynomial::euclidean_division(chain_[chain_.size() - 2], chain_.back(), quotient, remainder);
-      if (remainder.is_zero()) break;
-      chain_.push_back(-remainder);
-    }
-  }
-  int variations(const Rational& x) const {
-    int count = 0, last = 0;
-    for (const Polynomial& p : chain_) {
-      const int s = static_cast<int>(p.sign_at(x));
-      if (s == 0) continue;
-      if (last != 0 && s != last) ++count;
-      last = s;
-    }
-    return count;
-  }
-  /// Distinct roots in (low, high].
-  int roots_in(const Rational& low, const Rational& high) const {
-    return variations(low) - variations(high);
-  }
-
- private:
-  std::vector<Polynomial> chain_;
-};
-
-struct RationalRoot {
-  Rational low, high;  ///< the root lies in [low, high]; low == high when it is rational
-  int multiplicity;
-  Polynomial factor;   ///< square-free factor whose only root in [low, high] this is
-};
-
-/// Shrinks an isolating interval (low, high] of a square-free f to a few ulps around a double
-/// Newton approximation, proved by two exact sign evaluations at double (hence rational)
-/// points. Exact bisection to the same width costs ~64 evaluations; this costs two.
-bool tighten_with_double_newton(const Polynomial& f, Rational& low, Rational& high) {
-  const int degree = f.degree();
-  double coefficient[5] = {0, 0, 0, 0, 0};
-  double scale = 0.0;
-  for (int i = 0; i <= degree && i < 5; ++i) scale = std::max(scale, std::fabs(CGAL::to_double(f[i])));
-  if (!(scale > 0.0) || !std::isfinite(scale) || degree > 4) return false;
-  for (int i = 0; i <= degree; ++i) coefficient[i] = CGAL::to_double(f[i]) / scale;
-  const double lo = CGAL::to_double(low), hi = CGAL::to_double(high);
-  if (!std::isfinite(lo) || !std::isfinite(hi)) return false;
-  double x = 0.5 * (lo + hi);
-  for (int step = 0; step < 60; ++step) {
-    double value = 0.0, slope = 0.0;
-    for (int i = degree; i >= 0; --i) {
-      slope = slope * x + value;
-      value = value * x + coefficient[i];
-    }
-    if (slope == 0.0) break;
-    const double next = std::clamp(x - value / slope, lo, hi);
-    if (next == x) break;
-    x = next;
-  }
-  const CGAL::Sign sign_high = f.sign_at(high);
-  for (double spread = 4; spread < 0x1p20; spread *= 16) {
-    const double delta = spread * std::numeric_limits<double>::epsilon() * std::max(std::fabs(x), 1e-300);
-    if (!std::isfinite(x - delta) || !std::isfinite(x + delta)) return false;  // Gmpq(inf) aborts
-    const Rational a(x - delta), b(x + delta);
-    if (a <= low || b > high) return false;
-    const CGAL::Sign sign_a = f.sign_at(a), sign_b = f.sign_at(b);
-    if (sign_a == CGAL::ZERO || sign_b == CGAL::ZERO) {
-      low = high = sign_a == CGAL::ZERO ? a : b;
-      return true;
-    }
-    if (sign_a != sign_b && sign_b == sign_high) {
-      // A sign change inside (low, high], which holds exactly one root: that root.
-      low = a;
-      high = b;
-      return true;
-    }
-  }
-  return false;
-}
-
-/// Real roots of f in (-bound, bound], isolated and refined, with multiplicities.
-/// Bits of a rational: numerator plus denominator.
-std::size_t bit_size(const Rational& x) {
-  return mpz_sizeinbase(mpq_numref(x.mpq()), 2) + mpz_sizeinbase(mpq_denref(x.mpq()), 2);
-}
-
-void real_roots(const Polynomial& f, const Rational& bound, std::vector<RationalRoot>& out,
-                EvaluationBudget& budget) {
-  if (f.is_zero() || f.degree() < 1) return;
-  std::size_t bits = 0;
-  for (int i = 0; i <= f.degree(); ++i) bits = std::max(bits, bit_size(f[i]));
-  if (bits > kMaxCoefficientBits) throw GiveUp{kCoefficientsTooLarge};
-  std::vector<std::pair<Polynomial, int>> factors;
-  CGAL::Polynomial_traits_d<Polynomial>::Square_free_factorize_up_to_constant_factor()(
-      f, std::back_inserter(factors));
-  const Rational width_goal = bound / Rational(std::ldexp(1.0, kRefinementBits));
-  for (const auto& [factor, multiplicity] : factors) {
-    if (factor.degree() < 1) continue;
-    const SturmSequence sturm(factor);
-    std::vector<std::pair<Rational, Rational>> pending{{-bound, bound}};
-    while (!pending.empty()) {
-      auto [low, high] = pending.back();
-      pending.pop_back();
-      budget.spend();
-      const int n = sturm.roots_in(low, high);
-      if (n == 0) continue;
-      if (n >= 2) {
-        const Rational middle = (low + high) / 2;
-        pending.push_back({low, middle});
-        pending.push_back({middle, high});
-        continue;
-      }
-      // One root in (low, high]: bisect on the sign of the square-free factor.
-      if (factor.sign_at(high) == CGAL::ZERO) {
-        out.push_back({high, high, multiplicity, factor});
-        continue;
-      }
-      if (!tighten_with_double_newton(factor, low, high)) {
-        while (high - low > width_goal) {
-          budget.spend();
-          const Rational middle = (low + high) / 2;
-          const CGAL::Sign at_middle = factor.sign_at(middle);
-          if (at_middle == CGAL::ZERO) {
-            low = high = middle;
-            break;
-          }
-          if (at_middle == factor.sign_at(high)) high = middle; else low = middle;
-        }
-      }
-      out.push_back({low, high, multiplicity, factor});
-    }
-  }
-}
-
 /// The exact problem in (X, Y) coordinates.
 struct RimConic {
   Rational a, b, r2;  // ellipse a X^2 + b Y^2 = r2
@@ -252,7 +78,7 @@ Bounded polynomial_value(const Polynomial& p, const Bounded& x) {
   return value;
 }
 
-Bounded bounded_x(const RationalRoot& root) {
+Bounded bounded_x(const IsolatedRoot& root) {
   const Bounded low = to_bounded(root.low), high = to_bounded(root.high);
   const double middle = 0.5 * (low.value + high.value);
   const double radius = std::max(high.value + high.error - middle, middle - low.value + low.error);
@@ -267,7 +93,7 @@ Bounded ellipse_height(const RimConic& conic, const Bounded& x) {
 
 /// Crossings on a vertical line X = root: both ellipse points, or the vertex (Y = 0, doubled
 /// multiplicity) when a X^2 = r2 exactly.
-void add_vertical_line_crossings(const RimConic& conic, const RationalRoot& root, int multiplicity,
+void add_vertical_line_crossings(const RimConic& conic, const IsolatedRoot& root, int multiplicity,
                                  std::vector<Crossing>& out) {
   const Polynomial vertex_test(-conic.r2, Rational(0), conic.a);  // a X^2 - r2
   const Bounded x = bounded_x(root);
@@ -280,7 +106,8 @@ void add_vertical_line_crossings(const RimConic& conic, const RationalRoot& root
     if (s == CGAL::POSITIVE) return;  // the line misses the ellipse
   } else {
     // Irrational root: it is a vertex exactly when the factor shares it with a X^2 - r2.
-    const Polynomial common = CGAL::gcd(root.factor, vertex_test);
+    const Polynomial factor = root.factor->monic();
+    const Polynomial common = CGAL::gcd(factor, vertex_test);
     if (common.degree() >= 1 && SturmSequence(common).roots_in(root.low, root.high) > 0 &&
         !(root.low == root.high)) {
       out.push_back({x, Bounded(0.0), 2 * multiplicity});
@@ -291,12 +118,12 @@ void add_vertical_line_crossings(const RimConic& conic, const RationalRoot& root
     const SturmSequence vertices(vertex_test);
     while (vertices.roots_in(low, high) > 0 || vertex_test.sign_at(high) == CGAL::ZERO) {
       const Rational middle = (low + high) / 2;
-      const CGAL::Sign at_middle = root.factor.sign_at(middle);
+      const CGAL::Sign at_middle = factor.sign_at(middle);
       if (at_middle == CGAL::ZERO) {
         low = high = middle;
         break;
       }
-      if (at_middle == root.factor.sign_at(high)) high = middle; else low = middle;
+      if (at_middle == factor.sign_at(high)) high = middle; else low = middle;
     }
     if (vertex_test.sign_at(high) == CGAL::POSITIVE) return;
   }
@@ -308,7 +135,7 @@ void add_vertical_line_crossings(const RimConic& conic, const RationalRoot& root
 /// Crossings where Y = -N(X) / m with N linear or quadratic and m a nonzero constant or a linear
 /// M without root on the isolating interval.
 void add_graph_crossings(const RimConic& conic, const Polynomial& numerator,
-                         const Polynomial& denominator, const RationalRoot& root,
+                         const Polynomial& denominator, const IsolatedRoot& root,
                          std::vector<Crossing>& out) {
   const Bounded x = bounded_x(root);
   Bounded y = -(polynomial_value(numerator, x) / polynomial_value(denominator, x));
@@ -381,11 +208,11 @@ RimRoots exact_rim_roots_within_budget(const Circle3& circle, const Cylinder3& c
   }
 
   std::vector<Crossing> crossings;
-  std::vector<RationalRoot> roots;
+  std::vector<IsolatedRoot> roots;
   if (conic.M.is_zero()) {
     // The cylinder meets E along vertical lines L(X) = 0.
-    real_roots(conic.L, conic.bound * 2, roots, budget);
-    for (const RationalRoot& root : roots)
+    isolate_real_roots(conic.L, conic.bound * 2, roots, budget);
+    for (const IsolatedRoot& root : roots)
       add_vertical_line_crossings(conic, root, root.multiplicity, crossings);
   } else {
     const bool shared_root = conic.M.degree() == 1 &&
@@ -393,8 +220,8 @@ RimRoots exact_rim_roots_within_budget(const Circle3& circle, const Cylinder3& c
     if (!shared_root) {
       const Polynomial ellipse(-conic.r2, Rational(0), conic.a);
       const Polynomial eliminated = ellipse * conic.M * conic.M + conic.b * conic.L * conic.L;
-      real_roots(eliminated, conic.bound, roots, budget);
-      for (const RationalRoot& root : roots)
+      isolate_real_roots(eliminated, conic.bound, roots, budget);
+      for (const IsolatedRoot& root : roots)
         add_graph_crossings(conic, conic.L, conic.M, root, crossings);
     } else {
       // L = (X - X0) L1, M = q11 (X - X0): the line X = X0 and the line L1 + q11 Y = 0.
@@ -403,11 +230,11 @@ RimRoots exact_rim_roots_within_budget(const Circle3& circle, const Cylinder3& c
       Polynomial::euclidean_division(conic.L, Polynomial(-x0, Rational(1)), l1, remainder);
       const Polynomial m1(conic.M[1]);
       std::vector<Crossing> on_lines;
-      add_vertical_line_crossings(conic, {x0, x0, 1, Polynomial(-x0, Rational(1))}, 1, on_lines);
+      add_vertical_line_crossings(conic, {x0, x0, 1, nullptr}, 1, on_lines);
       const Polynomial ellipse(-conic.r2, Rational(0), conic.a);
       const Polynomial second_line = ellipse * m1 * m1 + conic.b * l1 * l1;
-      real_roots(second_line, conic.bound, roots, budget);
-      for (const RationalRoot& root : roots) {
+      isolate_real_roots(second_line, conic.bound, roots, budget);
+      for (const IsolatedRoot& root : roots) {
         if (root.low <= x0 && x0 <= root.high && second_line.evaluate(x0) == Rational(0)) {
           // The two lines meet on E: that vertical-line point gains this multiplicity.
           const int y_sign = -static_cast<int>(l1.sign_at(x0)) * static_cast<int>(CGAL::sign(conic.M[1]));
@@ -428,7 +255,7 @@ RimRoots exact_rim_roots_within_budget(const Circle3& circle, const Cylinder3& c
   // (pi / 2) |delta| / r.
   const double u_norm = finite_or_give_up(std::sqrt(CGAL::to_double(conic.a)));
   const double v_norm = finite_or_give_up(std::sqrt(CGAL::to_double(conic.b)));
-  if (!(u_norm > 0.0 && v_norm > 0.0)) throw GiveUp{kBeyondDoubleRange};
+  if (!(u_norm > 0.0 && v_norm > 0.0)) throw ExactTierGiveUp{kBeyondDoubleRange};
   for (const Crossing& crossing : crossings) {
     if (result.count == 4) break;  // cannot happen for a proper rim (degree 4)
     RootEnclosure& root = result.roots[result.count++];
@@ -480,7 +307,7 @@ RimRoots exact_rim_roots(const Circle3& circle, const Cylinder3& cylinder,
   EvaluationBudget budget;
   try {
     return exact_rim_roots_within_budget(circle, cylinder, centre, scale_exponent, budget);
-  } catch (const GiveUp& gave_up) {
+  } catch (const ExactTierGiveUp& gave_up) {
     RimRoots result;
     result.proved = false;
     result.failure = gave_up.why;

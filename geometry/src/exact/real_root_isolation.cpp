@@ -1,0 +1,560 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "real_root_isolation.hpp"
+
+#include <gmpxx.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <utility>
+
+#include "error_bounded.hpp"
+
+namespace clearjoint::geometry::detail {
+
+/// Integer coefficients, constant term first, the last one nonzero (none: the zero polynomial),
+/// and the same coefficients as doubles scaled by one power of two, with rounding bounds, for
+/// the double filter of sign evaluations.
+class IntegerPolynomial {
+ public:
+  std::vector<mpz_class> c;
+  std::vector<Bounded> scaled;
+
+  int degree() const { return static_cast<int>(c.size()) - 1; }
+  bool is_zero() const { return c.empty(); }
+  const mpz_class& leading() const { return c.back(); }
+  void trim() {
+    while (!c.empty() && sgn(c.back()) == 0) c.pop_back();
+  }
+  /// Fills `scaled`: c[i] 2^-shift, shift the largest binary exponent of a coefficient (the
+  /// common positive scale leaves every sign as it is). mpz_get_d_2exp truncates to 53 bits (a
+  /// relative error below 2^-52); a coefficient far below the largest may round into the
+  /// subnormals or to zero (an absolute error below 2^-1074).
+  void prepare_filter() {
+    scaled.assign(c.size(), Bounded(0.0));
+    long largest = std::numeric_limits<long>::min();
+    std::vector<std::pair<double, long>> parts(c.size());
+    for (std::size_t i = 0; i < c.size(); ++i) {
+      if (sgn(c[i]) == 0) continue;
+      long exponent = 0;
+      const double mantissa = mpz_get_d_2exp(&exponent, c[i].get_mpz_t());
+      parts[i] = {mantissa, exponent};
+      largest = std::max(largest, exponent);
+    }
+    for (std::size_t i = 0; i < c.size(); ++i) {
+      if (sgn(c[i]) == 0) continue;
+      const long shift = std::max(parts[i].second - largest, -2000L);
+      const double value = std::ldexp(parts[i].first, static_cast<int>(shift));
+      // Truncation (2^-52 relative) and the rounding into the subnormals (2^-1075), with room.
+      scaled[i] = Bounded(value, std::fabs(value) * 0x1p-51 + kUnderflowError);
+    }
+  }
+};
+
+namespace {
+
+using Integer = mpz_class;
+
+IntegerPolynomial derivative(const IntegerPolynomial& p) {
+  IntegerPolynomial d;
+  for (int i = 1; i <= p.degree(); ++i) d.c.push_back(p.c[static_cast<std::size_t>(i)] * i);
+  d.trim();
+  return d;
+}
+
+/// Divides by the (positive) gcd of the coefficients and makes the leading coefficient positive
+/// when `positive_leading`; a constant becomes +-1 (only its sign is ever read).
+void make_primitive(IntegerPolynomial& p, bool positive_leading) {
+  if (p.is_zero()) return;
+  if (p.degree() == 0) {
+    p.c[0] = sgn(p.c[0]);
+    return;
+  }
+  Integer content = abs(p.c[0]);
+  for (std::size_t i = 1; i < p.c.size() && content != 1; ++i) mpz_gcd(content.get_mpz_t(), content.get_mpz_t(), p.c[i].get_mpz_t());
+  if (positive_leading && sgn(p.leading()) < 0) content = -content;
+  if (content != 1) {
+    for (Integer& x : p.c) mpz_divexact(x.get_mpz_t(), x.get_mpz_t(), content.get_mpz_t());
+  }
+}
+
+/// lc(b)^(deg a - deg b + 1) a = q b + r with deg r < deg b: returns r and the sign of the
+/// factor lc(b)^(...). deg a >= deg b >= 0.
+std::pair<IntegerPolynomial, int> pseudo_remainder(const IntegerPolynomial& a, const IntegerPolynomial& b) {
+  IntegerPolynomial r = a;
+  const int m = a.degree(), n = b.degree();
+  const Integer& lead = b.leading();
+  Integer top;
+  for (int k = m - n; k >= 0; --k) {
+    top = r.c[static_cast<std::size_t>(n + k)];
+    for (int i = 0; i <= n + k; ++i) r.c[static_cast<std::size_t>(i)] *= lead;
+    for (int j = 0; j <= n; ++j) r.c[static_cast<std::size_t>(j + k)] -= top * b.c[static_cast<std::size_t>(j)];
+  }
+  r.c.resize(static_cast<std::size_t>(n));
+  r.trim();
+  const int steps = m - n + 1;
+  return {std::move(r), sgn(lead) < 0 && steps % 2 == 1 ? -1 : 1};
+}
+
+/// a / b when b divides a in Q[x] and b is primitive: the quotient then has integer
+/// coefficients (Gauss's lemma), and long division stays in the integers.
+IntegerPolynomial exact_quotient(const IntegerPolynomial& a, const IntegerPolynomial& b) {
+  IntegerPolynomial r = a, q;
+  const int m = a.degree(), n = b.degree();
+  q.c.assign(static_cast<std::size_t>(m - n + 1), Integer(0));
+  for (int k = m - n; k >= 0; --k) {
+    Integer& top = q.c[static_cast<std::size_t>(k)];
+    mpz_divexact(top.get_mpz_t(), r.c[static_cast<std::size_t>(n + k)].get_mpz_t(), b.leading().get_mpz_t());
+    for (int j = 0; j <= n; ++j) r.c[static_cast<std::size_t>(j + k)] -= top * b.c[static_cast<std::size_t>(j)];
+  }
+  q.trim();
+  return q;
+}
+
+/// gcd in Z[x], primitive with a positive leading coefficient (primitive remainder sequence).
+IntegerPolynomial polynomial_gcd(IntegerPolynomial a, IntegerPolynomial b) {
+  if (a.degree() < b.degree()) std::swap(a, b);
+  make_primitive(a, true);
+  make_primitive(b, true);
+  while (!b.is_zero()) {
+    IntegerPolynomial r = pseudo_remainder(a, b).first;
+    make_primitive(r, true);
+    a = std::move(b);
+    b = std::move(r);
+  }
+  return a;
+}
+
+IntegerPolynomial difference(const IntegerPolynomial& a, const IntegerPolynomial& b) {
+  IntegerPolynomial d;
+  d.c.assign(std::max(a.c.size(), b.c.size()), Integer(0));
+  for (std::size_t i = 0; i < a.c.size(); ++i) d.c[i] += a.c[i];
+  for (std::size_t i = 0; i < b.c.size(); ++i) d.c[i] -= b.c[i];
+  d.trim();
+  return d;
+}
+
+/// A nonzero multiple of f with integer coefficients, primitive, its leading coefficient positive.
+IntegerPolynomial integer_multiple(const RationalPolynomial& f) {
+  IntegerPolynomial p;
+  if (f.is_zero()) return p;
+  Integer common = 1;
+  for (int i = 0; i <= f.degree(); ++i) mpz_lcm(common.get_mpz_t(), common.get_mpz_t(), mpq_denref(f[i].mpq()));
+  p.c.resize(static_cast<std::size_t>(f.degree() + 1));
+  Integer factor;
+  for (int i = 0; i <= f.degree(); ++i) {
+    mpz_divexact(factor.get_mpz_t(), common.get_mpz_t(), mpq_denref(f[i].mpq()));
+    mpz_mul(p.c[static_cast<std::size_t>(i)].get_mpz_t(), factor.get_mpz_t(), mpq_numref(f[i].mpq()));
+  }
+  p.trim();
+  make_primitive(p, true);
+  return p;
+}
+
+/// Bits of a rational: numerator plus denominator.
+std::size_t bit_size(const Rational& x) {
+  return mpz_sizeinbase(mpq_numref(x.mpq()), 2) + mpz_sizeinbase(mpq_denref(x.mpq()), 2);
+}
+
+// ---- Dyadic points ------------------------------------------------------------------------
+
+/// mantissa 2^exponent, the mantissa odd (or zero, with exponent 0): every point the isolation
+/// visits is one (the bound, midpoints, doubles), and sums and halvings of them need no gcd.
+struct Dyadic {
+  Integer mantissa;
+  long exponent = 0;
+
+  void normalise() {
+    if (sgn(mantissa) == 0) {
+      exponent = 0;
+      return;
+    }
+    const mp_bitcnt_t zeros = mpz_scan1(mantissa.get_mpz_t(), 0);
+    if (zeros > 0) {
+      mpz_tdiv_q_2exp(mantissa.get_mpz_t(), mantissa.get_mpz_t(), zeros);
+      exponent += static_cast<long>(zeros);
+    }
+  }
+  static Dyadic of_double(double x) {
+    // Exact: a finite double is an integer of at most 53 bits times a power of two.
+    int binary_exponent = 0;
+    const double fraction = std::frexp(x, &binary_exponent);
+    Dyadic d;
+    mpz_set_d(d.mantissa.get_mpz_t(), std::ldexp(fraction, 53));
+    d.exponent = binary_exponent - 53;
+    d.normalise();
+    return d;
+  }
+  static Dyadic of_rational(const Rational& x) {
+    const mpz_srcptr denominator = mpq_denref(x.mpq());
+    const mp_bitcnt_t power = mpz_scan1(denominator, 0);
+    if (mpz_sizeinbase(denominator, 2) != power + 1) throw std::invalid_argument("isolate_real_roots: bound must be dyadic (a power of two)");
+    Dyadic d;
+    d.mantissa = Integer(mpq_numref(x.mpq()));
+    d.exponent = -static_cast<long>(power);
+    d.normalise();
+    return d;
+  }
+  Rational to_rational() const {
+    Rational r;
+    mpq_set_z(r.mpq(), mantissa.get_mpz_t());
+    if (exponent > 0) mpq_mul_2exp(r.mpq(), r.mpq(), static_cast<mp_bitcnt_t>(exponent));
+    if (exponent < 0) mpq_div_2exp(r.mpq(), r.mpq(), static_cast<mp_bitcnt_t>(-exponent));
+    return r;
+  }
+  /// CGAL::to_double of the same rational (mpq_get_d: truncation).
+  double to_double() const { return CGAL::to_double(to_rational()); }
+};
+
+/// a and b with their mantissas brought to the smaller exponent.
+std::pair<Integer, Integer> aligned(const Dyadic& a, const Dyadic& b, long& exponent) {
+  exponent = std::min(a.exponent, b.exponent);
+  Integer x, y;
+  mpz_mul_2exp(x.get_mpz_t(), a.mantissa.get_mpz_t(), static_cast<mp_bitcnt_t>(a.exponent - exponent));
+  mpz_mul_2exp(y.get_mpz_t(), b.mantissa.get_mpz_t(), static_cast<mp_bitcnt_t>(b.exponent - exponent));
+  return {std::move(x), std::move(y)};
+}
+int compare(const Dyadic& a, const Dyadic& b) {
+  long exponent = 0;
+  const auto [x, y] = aligned(a, b, exponent);
+  return cmp(x, y);
+}
+bool operator<=(const Dyadic& a, const Dyadic& b) { return compare(a, b) <= 0; }
+bool operator>(const Dyadic& a, const Dyadic& b) { return compare(a, b) > 0; }
+Dyadic midpoint(const Dyadic& a, const Dyadic& b) {
+  Dyadic m;
+  const auto [x, y] = aligned(a, b, m.exponent);
+  m.mantissa = x + y;
+  m.exponent -= 1;
+  m.normalise();
+  return m;
+}
+Dyadic operator-(const Dyadic& a, const Dyadic& b) {
+  Dyadic d;
+  const auto [x, y] = aligned(a, b, d.exponent);
+  d.mantissa = x - y;
+  d.normalise();
+  return d;
+}
+Dyadic operator-(Dyadic a) {
+  a.mantissa = -a.mantissa;
+  return a;
+}
+
+// ---- Signs ----------------------------------------------------------------------------------
+
+/// The double filter's sign of p at x (0: not decided), from Horner in Bounded arithmetic. A
+/// point or a power of it out of the double range gives a non-finite bound, which decides
+/// nothing.
+int filtered_sign(const IntegerPolynomial& p, const Bounded& x) {
+  Bounded value = p.scaled.back();
+  for (int i = p.degree() - 1; i >= 0; --i) value = value * x + p.scaled[static_cast<std::size_t>(i)];
+  return value.sign();
+}
+
+/// x as a Bounded, or {NaN, NaN} (which decides no sign) beyond the range where the conversion
+/// is plainly safe.
+Bounded bounded(const Dyadic& x) {
+  if (sgn(x.mantissa) == 0) return Bounded(0.0);
+  long binary_exponent = 0;
+  const double mantissa = mpz_get_d_2exp(&binary_exponent, x.mantissa.get_mpz_t());
+  const long total = binary_exponent + x.exponent;
+  constexpr long kSafeExponent = 1000;
+  if (total > kSafeExponent || total < -kSafeExponent) {
+    return {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()};
+  }
+  const double value = std::ldexp(mantissa, static_cast<int>(total));
+  // mpz_get_d_2exp truncates to 53 bits: a relative error below 2^-52.
+  return {value, mpz_sizeinbase(x.mantissa.get_mpz_t(), 2) > 53 ? std::fabs(value) * 0x1p-52 : 0.0};
+}
+
+/// Exact sign of p at x = m 2^e: that of sum c_i m^i 2^(e i), or with k = -e > 0 of the integer
+/// sum c_i m^i 2^(k (d - i)) (the former times 2^(k d)).
+int exact_sign(const IntegerPolynomial& p, const Dyadic& x) {
+  const int d = p.degree();
+  Integer value = p.leading(), term;
+  if (x.exponent >= 0) {
+    Integer point;
+    mpz_mul_2exp(point.get_mpz_t(), x.mantissa.get_mpz_t(), static_cast<mp_bitcnt_t>(x.exponent));
+    for (int i = d - 1; i >= 0; --i) {
+      value *= point;
+      value += p.c[static_cast<std::size_t>(i)];
+    }
+  } else {
+    const auto k = static_cast<mp_bitcnt_t>(-x.exponent);
+    for (int i = d - 1; i >= 0; --i) {
+      value *= x.mantissa;
+      mpz_mul_2exp(term.get_mpz_t(), p.c[static_cast<std::size_t>(i)].get_mpz_t(), k * static_cast<mp_bitcnt_t>(d - i));
+      value += term;
+    }
+  }
+  return sgn(value);
+}
+
+/// Exact sign of p at the rational x = n / q (q > 0): that of sum c_i n^i q^(d - i).
+int exact_sign(const IntegerPolynomial& p, const Rational& x) {
+  const int d = p.degree();
+  const mpz_srcptr n = mpq_numref(x.mpq()), q = mpq_denref(x.mpq());
+  Integer value = p.leading(), power_of_q = 1, term;
+  for (int i = d - 1; i >= 0; --i) {
+    mpz_mul(value.get_mpz_t(), value.get_mpz_t(), n);
+    mpz_mul(power_of_q.get_mpz_t(), power_of_q.get_mpz_t(), q);
+    mpz_mul(term.get_mpz_t(), p.c[static_cast<std::size_t>(i)].get_mpz_t(), power_of_q.get_mpz_t());
+    value += term;
+  }
+  return sgn(value);
+}
+
+template <class Point>
+int sign_at(const IntegerPolynomial& p, const Point& x, const Bounded& approximate) {
+  if (p.is_zero()) return 0;
+  if (p.degree() == 0) return sgn(p.c[0]);
+  const int filtered = filtered_sign(p, approximate);
+  return filtered != 0 ? filtered : exact_sign(p, x);
+}
+
+Bounded bounded(const Rational& x) {
+  const std::pair<double, double> range = CGAL::to_interval(x);
+  const double middle = 0.5 * (range.first + range.second);
+  return {middle, std::max(middle - range.first, range.second - middle) * kErrorInflation};
+}
+
+// ---- Sturm sequences ---------------------------------------------------------------------------
+
+/// p, p', then -rem of the last two (times positive factors, which leave every sign as it is),
+/// until a constant or a zero remainder (the last member is then gcd(p, p')).
+std::vector<IntegerPolynomial> sturm_chain(const IntegerPolynomial& p) {
+  std::vector<IntegerPolynomial> chain{p, derivative(p)};
+  make_primitive(chain.back(), false);
+  while (!chain.back().is_zero() && chain.back().degree() > 0) {
+    auto [remainder, factor_sign] = pseudo_remainder(chain[chain.size() - 2], chain.back());
+    if (remainder.is_zero()) break;
+    if (factor_sign > 0) {
+      for (Integer& x : remainder.c) x = -x;
+    }
+    make_primitive(remainder, false);
+    chain.push_back(std::move(remainder));
+  }
+  for (IntegerPolynomial& member : chain) member.prepare_filter();
+  return chain;
+}
+
+/// Sign changes along the chain at x (zeros skipped), and the sign of its first member there.
+struct ChainSigns {
+  int variations = 0;
+  int first = 0;
+};
+template <class Point>
+ChainSigns chain_signs(const std::vector<IntegerPolynomial>& chain, const Point& x) {
+  const Bounded approximate = bounded(x);
+  ChainSigns out;
+  int last = 0;
+  for (std::size_t i = 0; i < chain.size(); ++i) {
+    const int s = sign_at(chain[i], x, approximate);
+    if (i == 0) out.first = s;
+    if (s == 0) continue;
+    if (last != 0 && s != last) ++out.variations;
+    last = s;
+  }
+  return out;
+}
+
+// ---- Isolation ---------------------------------------------------------------------------------
+
+/// A point of the isolation with the chain's signs there.
+struct Endpoint {
+  Dyadic x;
+  ChainSigns signs;
+};
+
+/// Shrinks an isolating interval (low, high] of the square-free factor f to a few ulps around a
+/// double Newton approximation, proved by two exact sign evaluations at double (hence dyadic)
+/// points. Exact bisection to the same width costs ~64 evaluations; this costs two.
+/// `monic` holds f's coefficients divided by its leading one, as doubles (CGAL::to_double).
+bool tighten_with_double_newton(const IntegerPolynomial& f, const std::vector<double>& monic, Dyadic& low,
+                                Dyadic& high, int sign_high) {
+  const int degree = f.degree();
+  double coefficient[5] = {0, 0, 0, 0, 0};
+  double scale = 0.0;
+  for (int i = 0; i <= degree && i < 5; ++i) scale = std::max(scale, std::fabs(monic[static_cast<std::size_t>(i)]));
+  if (!(scale > 0.0) || !std::isfinite(scale) || degree > 4) return false;
+  for (int i = 0; i <= degree; ++i) coefficient[i] = monic[static_cast<std::size_t>(i)] / scale;
+  const double lo = low.to_double(), hi = high.to_double();
+  if (!std::isfinite(lo) || !std::isfinite(hi)) return false;
+  double x = 0.5 * (lo + hi);
+  for (int step = 0; step < 60; ++step) {
+    double value = 0.0, slope = 0.0;
+    for (int i = degree; i >= 0; --i) {
+      slope = slope * x + value;
+      value = value * x + coefficient[i];
+    }
+    if (slope == 0.0) break;
+    const double next = std::clamp(x - value / slope, lo, hi);
+    if (next == x) break;
+    x = next;
+  }
+  for (double spread = 4; spread < 0x1p20; spread *= 16) {
+    const double delta = spread * std::numeric_limits<double>::epsilon() * std::max(std::fabs(x), 1e-300);
+    if (!std::isfinite(x - delta) || !std::isfinite(x + delta)) return false;
+    const Dyadic a = Dyadic::of_double(x - delta), b = Dyadic::of_double(x + delta);
+    if (a <= low || b > high) return false;
+    const int sign_a = sign_at(f, a, bounded(a)), sign_b = sign_at(f, b, bounded(b));
+    if (sign_a == 0 || sign_b == 0) {
+      low = high = sign_a == 0 ? a : b;
+      return true;
+    }
+    if (sign_a != sign_b && sign_b == sign_high) {
+      // A sign change inside (low, high], which holds exactly one root: that root.
+      low = a;
+      high = b;
+      return true;
+    }
+  }
+  return false;
+}
+
+/// f's coefficients over its leading one, each as CGAL::to_double gives that rational (mpq_get_d
+/// truncates the exact quotient, whatever the fraction's form, so no gcd is needed).
+std::vector<double> monic_doubles(const IntegerPolynomial& f) {
+  std::vector<double> out(f.c.size());
+  mpq_t quotient;
+  mpq_init(quotient);
+  for (std::size_t i = 0; i < f.c.size(); ++i) {
+    mpz_set(mpq_numref(quotient), f.c[i].get_mpz_t());
+    mpz_set(mpq_denref(quotient), f.leading().get_mpz_t());  // positive (square_free_factors)
+    out[i] = mpq_get_d(quotient);
+  }
+  mpq_clear(quotient);
+  return out;
+}
+
+void isolate_factor(const std::shared_ptr<const SquareFreeFactor>& factor, const IntegerPolynomial& f,
+                    const std::vector<IntegerPolynomial>& chain, const Dyadic& bound, std::vector<IsolatedRoot>& out,
+                    EvaluationBudget& budget) {
+  Dyadic width_goal = bound;
+  width_goal.exponent -= kRefinementBits;
+  const Dyadic lowest = -bound;
+  std::vector<std::pair<Endpoint, Endpoint>> pending;
+  pending.push_back({{lowest, chain_signs(chain, lowest)}, {bound, chain_signs(chain, bound)}});
+  std::vector<double> monic;
+  while (!pending.empty()) {
+    auto [low, high] = std::move(pending.back());
+    pending.pop_back();
+    budget.spend();
+    const int n = low.signs.variations - high.signs.variations;
+    if (n == 0) continue;
+    if (n >= 2) {
+      Dyadic middle = midpoint(low.x, high.x);
+      const ChainSigns at_middle = chain_signs(chain, middle);
+      pending.push_back({std::move(low), {middle, at_middle}});
+      pending.push_back({{std::move(middle), at_middle}, std::move(high)});
+      continue;
+    }
+    // One root in (low, high]: bisect on the sign of the square-free factor.
+    if (high.signs.first == 0) {
+      out.push_back({high.x.to_rational(), high.x.to_rational(), factor->multiplicity(), factor});
+      continue;
+    }
+    if (monic.empty()) monic = monic_doubles(f);
+    Dyadic a = low.x, b = high.x;
+    if (!tighten_with_double_newton(f, monic, a, b, high.signs.first)) {
+      // Only the sign at the upper end is compared, and it stays that of high: b moves to a
+      // point of the same sign.
+      const int sign_b = high.signs.first;
+      while (b - a > width_goal) {
+        budget.spend();
+        Dyadic middle = midpoint(a, b);
+        const int at_middle = sign_at(f, middle, bounded(middle));
+        if (at_middle == 0) {
+          a = middle;
+          b = std::move(middle);
+          break;
+        }
+        if (at_middle == sign_b) {
+          b = std::move(middle);
+        } else {
+          a = std::move(middle);
+        }
+      }
+    }
+    out.push_back({a.to_rational(), b.to_rational(), factor->multiplicity(), factor});
+  }
+}
+
+/// Yun's square-free factorisation of p (primitive, positive leading coefficient, deg >= 1) into primitive factors with
+/// positive leading coefficients, multiplicity 1 first, as CGAL's for the same polynomial up to
+/// constant factors; factors of degree 0 left out. `chain` is p's Sturm chain, whose last member
+/// is gcd(p, p').
+std::vector<std::pair<IntegerPolynomial, int>> square_free_factors(const IntegerPolynomial& p,
+                                                                   const std::vector<IntegerPolynomial>& chain) {
+  std::vector<std::pair<IntegerPolynomial, int>> factors;
+  IntegerPolynomial a = p;
+  if (chain.back().degree() == 0) {
+    factors.emplace_back(std::move(a), 1);
+    return factors;
+  }
+  IntegerPolynomial c = chain.back();
+  make_primitive(c, true);
+  IntegerPolynomial w = exact_quotient(a, c), y = exact_quotient(derivative(a), c);
+  IntegerPolynomial z = difference(y, derivative(w));
+  int i = 1;
+  while (!z.is_zero()) {
+    IntegerPolynomial g = polynomial_gcd(w, z);
+    if (g.degree() > 0) factors.emplace_back(g, i);
+    ++i;
+    w = exact_quotient(w, g);
+    y = exact_quotient(z, g);
+    z = difference(y, derivative(w));
+  }
+  make_primitive(w, true);
+  if (w.degree() > 0) factors.emplace_back(std::move(w), i);
+  return factors;
+}
+
+}  // namespace
+
+SquareFreeFactor::SquareFreeFactor(std::shared_ptr<const IntegerPolynomial> polynomial, int multiplicity)
+    : polynomial_(std::move(polynomial)), multiplicity_(multiplicity) {}
+
+RationalPolynomial SquareFreeFactor::monic() const {
+  std::vector<Rational> coefficients;
+  const CGAL::Gmpz leading(polynomial_->leading().get_mpz_t());
+  for (const Integer& x : polynomial_->c) coefficients.emplace_back(CGAL::Gmpz(x.get_mpz_t()), leading);
+  return RationalPolynomial(coefficients.begin(), coefficients.end());
+}
+
+void isolate_real_roots(const RationalPolynomial& f, const Rational& bound, std::vector<IsolatedRoot>& out,
+                        EvaluationBudget& budget) {
+  if (f.is_zero() || f.degree() < 1) return;
+  std::size_t bits = 0;
+  for (int i = 0; i <= f.degree(); ++i) bits = std::max(bits, bit_size(f[i]));
+  if (bits > kMaxCoefficientBits) throw ExactTierGiveUp{CertificateReason::exact_coefficients_too_large};
+  const Dyadic dyadic_bound = Dyadic::of_rational(bound);
+  IntegerPolynomial p = integer_multiple(f);
+  std::vector<IntegerPolynomial> chain = sturm_chain(p);
+  auto factors = square_free_factors(p, chain);
+  for (auto& [polynomial, multiplicity] : factors) {
+    polynomial.prepare_filter();
+    const bool whole = polynomial.degree() == p.degree();  // p was square-free: its chain serves
+    std::vector<IntegerPolynomial> own_chain;
+    if (!whole) own_chain = sturm_chain(polynomial);
+    const auto shared = std::make_shared<const IntegerPolynomial>(std::move(polynomial));
+    const auto factor = std::make_shared<const SquareFreeFactor>(shared, multiplicity);
+    isolate_factor(factor, *shared, whole ? chain : own_chain, dyadic_bound, out, budget);
+  }
+}
+
+SturmSequence::SturmSequence(const RationalPolynomial& f) {
+  const IntegerPolynomial p = integer_multiple(f);
+  if (!p.is_zero()) chain_ = sturm_chain(p);
+}
+SturmSequence::~SturmSequence() = default;
+SturmSequence::SturmSequence(SturmSequence&&) noexcept = default;
+
+int SturmSequence::roots_in(const Rational& low, const Rational& high) const {
+  if (chain_.empty()) return 0;
+  return chain_signs(chain_, low).variations - chain_signs(chain_, high).variations;
+}
+
+}  // namespace clearjoint::geometry::detail
