@@ -3,6 +3,8 @@
 
 #include <cmath>
 #include <string>
+#include <string_view>
+#include <utility>
 
 #include "input_checks.hpp"
 #include "unit_axis_range.hpp"
@@ -17,10 +19,12 @@ using detail::require_positive;
 }  // namespace
 
 void validate(const JointDimensions& dimensions, std::string_view name) {
-  require_positive(dimensions.bearing_radius, name, "bearing_radius");
-  require_positive(dimensions.bearing_length, name, "bearing_length");
-  require_positive(dimensions.journal_radius, name, "journal_radius");
-  require_positive(dimensions.journal_length, name, "journal_length");
+  // In this order, so that the first bad field is the one named.
+  const std::pair<double, std::string_view> sizes[] = {{dimensions.bearing_radius, "bearing_radius"},
+                                                       {dimensions.bearing_length, "bearing_length"},
+                                                       {dimensions.journal_radius, "journal_radius"},
+                                                       {dimensions.journal_length, "journal_length"}};
+  for (const auto& [value, field] : sizes) require_positive(value, name, field);
   // eqs. (1)-(2): the clearances must be positive.
   if (!(dimensions.journal_radius < dimensions.bearing_radius)) {
     reject(name, "journal_radius", format(dimensions.journal_radius),
