@@ -18,6 +18,7 @@ packages=(
   octave octave-dev                     # MATLAB/Octave binding: octave-cli, mkoctfile (Debian 12's
                                         # liboctave-dev is only a transitional name for octave-dev)
   gfortran                              # Fortran binding
+  clang-14 libclang-rt-14-dev           # run-sanitizers.sh, fuzz/: ASan, UBSan, libFuzzer
   python3-distributed python3-h5py python3-jsonschema python3-scipy python3-tqdm  # clearjoint.study
 )
 
