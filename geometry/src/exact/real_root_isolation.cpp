@@ -323,17 +323,41 @@ Bounded bounded(const Rational& x) {
 // ---- Sturm sequences ---------------------------------------------------------------------------
 
 /// p, p', then -rem of the last two (times positive factors, which leave every sign as it is),
-/// until a constant or a zero remainder (the last member is then gcd(p, p')).
+/// until a constant or a zero remainder (the last member is then a multiple of gcd(p, p')).
+/// The positive factors are those of the subresultant remainder sequence (Cohen, "A Course in
+/// Computational Algebraic Number Theory", algorithm 3.3.1): each pseudo-remainder is divided
+/// exactly by |g h^delta|, which keeps the coefficients' growth linear in the degree without the
+/// gcds a primitive sequence takes (a member's sign pattern only matters, and the subresultant
+/// members differ from the Euclidean remainders by nonzero constants; their magnitudes do not
+/// depend on the signs the Sturm sequence gives the members).
 std::vector<IntegerPolynomial> sturm_chain(const IntegerPolynomial& p) {
   std::vector<IntegerPolynomial> chain{p, derivative(p)};
-  make_primitive(chain.back(), false);
+  Integer g = 1, h = 1, divisor, power;
   while (!chain.back().is_zero() && chain.back().degree() > 0) {
-    auto [remainder, factor_sign] = pseudo_remainder(chain[chain.size() - 2], chain.back());
+    const IntegerPolynomial& a = chain[chain.size() - 2];
+    const IntegerPolynomial& b = chain.back();
+    const auto delta = static_cast<unsigned long>(a.degree() - b.degree());
+    auto [remainder, factor_sign] = pseudo_remainder(a, b);
     if (remainder.is_zero()) break;
+    mpz_pow_ui(power.get_mpz_t(), h.get_mpz_t(), delta);
+    divisor = g * power;
+    if (divisor != 1) {
+      for (Integer& x : remainder.c) mpz_divexact(x.get_mpz_t(), x.get_mpz_t(), divisor.get_mpz_t());
+    }
     if (factor_sign > 0) {
       for (Integer& x : remainder.c) x = -x;
     }
-    make_primitive(remainder, false);
+    // g = |lc(b)|, h = h^(1 - delta) g^delta: both magnitudes of the sequence's own.
+    g = abs(b.leading());
+    if (delta == 1) {
+      h = g;
+    } else {
+      mpz_pow_ui(power.get_mpz_t(), g.get_mpz_t(), delta);
+      Integer h_power;
+      mpz_pow_ui(h_power.get_mpz_t(), h.get_mpz_t(), delta - 1);
+      mpz_divexact(h.get_mpz_t(), power.get_mpz_t(), h_power.get_mpz_t());
+    }
+    if (remainder.degree() == 0) remainder.c[0] = sgn(remainder.c[0]);  // only its sign is read
     chain.push_back(std::move(remainder));
   }
   for (IntegerPolynomial& member : chain) member.prepare_filter();
@@ -414,6 +438,85 @@ bool tighten_with_double_newton(const IntegerPolynomial& f, const std::vector<do
   return false;
 }
 
+/// f about a dyadic centre c = m 2^-k (k >= 0): the integer polynomial G(s) = 2^(k d) f((m + s) / 2^k),
+/// whose sign at s = (x - c) 2^k is f's at x. Its coefficients are those of f's Taylor expansion at
+/// c (times powers of two), so the double filter's rounding is relative to |f(c)| and its first
+/// derivatives there, not to the sum of |f_i x^i|: near a root, where bisection evaluates, Horner
+/// at the point itself cancels to nothing, while the expansion decides down to |x - root| of about
+/// 2^-52 |c - root|. Decisions are exact either way (the exact sum decides where the filter cannot);
+/// the expansion only spares that sum.
+class LocalExpansion {
+ public:
+  LocalExpansion(const IntegerPolynomial& f, const Dyadic& centre) {
+    // c = m 2^-k with an integer m.
+    shift_ = centre.exponent < 0 ? static_cast<mp_bitcnt_t>(-centre.exponent) : 0;
+    mpz_mul_2exp(m_.mantissa.get_mpz_t(), centre.mantissa.get_mpz_t(),
+                 centre.exponent > 0 ? static_cast<mp_bitcnt_t>(centre.exponent) : 0);
+    m_.exponent = 0;
+    const int d = f.degree();
+    g_.c.resize(f.c.size());
+    for (int i = 0; i <= d; ++i) {
+      mpz_mul_2exp(g_.c[static_cast<std::size_t>(i)].get_mpz_t(), f.c[static_cast<std::size_t>(i)].get_mpz_t(),
+                   shift_ * static_cast<mp_bitcnt_t>(d - i));
+    }
+    // Taylor shift by m: H(s) -> H(s + m), Horner's scheme repeated (d (d + 1) / 2 steps).
+    for (int i = 0; i < d; ++i) {
+      for (int j = d - 1; j >= i; --j) {
+        mpz_addmul(g_.c[static_cast<std::size_t>(j)].get_mpz_t(), m_.mantissa.get_mpz_t(),
+                   g_.c[static_cast<std::size_t>(j + 1)].get_mpz_t());
+      }
+    }
+    g_.prepare_filter();
+  }
+  /// f's sign at x, or 0 where the double filter cannot decide it.
+  int filtered_sign_at(const Dyadic& x) const {
+    Dyadic scaled = x;
+    scaled.exponent += static_cast<long>(shift_);
+    return filtered_sign(g_, bounded(scaled - m_));
+  }
+
+ private:
+  Dyadic m_;
+  mp_bitcnt_t shift_ = 0;
+  IntegerPolynomial g_;
+};
+
+/// Bisection of (a, b], which holds exactly one root of f (simple: f is square-free), until it is
+/// at most `width_goal` wide or a midpoint is the root. Only the sign at the upper end is compared,
+/// and it stays sign_b: b only ever moves to a point of that sign. Signs come from a local
+/// expansion of f about the interval's middle, taken again about the current middle once the
+/// interval has shrunk by 2^20 and the expansion's filter no longer decides.
+void bisect(const IntegerPolynomial& f, Dyadic& a, Dyadic& b, int sign_b, const Dyadic& width_goal,
+            EvaluationBudget& budget) {
+  // The width halves exactly at each step: kept as a dyadic, it is compared without subtracting.
+  Dyadic width = b - a;
+  if (!(width > width_goal)) return;
+  LocalExpansion expansion(f, midpoint(a, b));
+  long expansion_exponent = width.exponent;  // the width's exponent when the expansion was taken
+  constexpr long kRecentreShrink = 20;
+  for (; width > width_goal; width.exponent -= 1) {
+    budget.spend();
+    Dyadic middle = midpoint(a, b);
+    int at_middle = expansion.filtered_sign_at(middle);
+    if (at_middle == 0 && width.exponent <= expansion_exponent - kRecentreShrink) {
+      expansion = LocalExpansion(f, middle);
+      expansion_exponent = width.exponent;
+      at_middle = expansion.filtered_sign_at(middle);
+    }
+    if (at_middle == 0) at_middle = exact_sign(f, middle);
+    if (at_middle == 0) {
+      a = middle;
+      b = std::move(middle);
+      return;
+    }
+    if (at_middle == sign_b) {
+      b = std::move(middle);
+    } else {
+      a = std::move(middle);
+    }
+  }
+}
+
 /// f's coefficients over its leading one, each as CGAL::to_double gives that rational (mpq_get_d
 /// truncates the exact quotient, whatever the fraction's form, so no gcd is needed).
 std::vector<double> monic_doubles(const IntegerPolynomial& f) {
@@ -459,24 +562,7 @@ void isolate_factor(const std::shared_ptr<const SquareFreeFactor>& factor, const
     if (monic.empty()) monic = monic_doubles(f);
     Dyadic a = low.x, b = high.x;
     if (!tighten_with_double_newton(f, monic, a, b, high.signs.first)) {
-      // Only the sign at the upper end is compared, and it stays that of high: b moves to a
-      // point of the same sign.
-      const int sign_b = high.signs.first;
-      while (b - a > width_goal) {
-        budget.spend();
-        Dyadic middle = midpoint(a, b);
-        const int at_middle = sign_at(f, middle, bounded(middle));
-        if (at_middle == 0) {
-          a = middle;
-          b = std::move(middle);
-          break;
-        }
-        if (at_middle == sign_b) {
-          b = std::move(middle);
-        } else {
-          a = std::move(middle);
-        }
-      }
+      bisect(f, a, b, high.signs.first, width_goal, budget);
     }
     out.push_back({a.to_rational(), b.to_rational(), factor->multiplicity(), factor});
   }
@@ -525,11 +611,15 @@ RationalPolynomial SquareFreeFactor::monic() const {
 }
 
 void isolate_real_roots(const RationalPolynomial& f, const Rational& bound, std::vector<IsolatedRoot>& out,
-                        EvaluationBudget& budget) {
+                        EvaluationBudget& budget, const Rational& divisor) {
   if (f.is_zero() || f.degree() < 1) return;
-  std::size_t bits = 0;
-  for (int i = 0; i <= f.degree(); ++i) bits = std::max(bits, bit_size(f[i]));
-  if (bits > kMaxCoefficientBits) throw ExactTierGiveUp{CertificateReason::exact_coefficients_too_large};
+  // The limit is on f / divisor in lowest terms. Its numerator and denominator divide those of
+  // the unreduced quotient, so the reduction (a gcd) is needed only where that one is too large.
+  const std::size_t divisor_bits = bit_size(divisor);
+  for (int i = 0; i <= f.degree(); ++i) {
+    if (bit_size(f[i]) + divisor_bits <= kMaxCoefficientBits) continue;
+    if (bit_size(f[i] / divisor) > kMaxCoefficientBits) throw ExactTierGiveUp{CertificateReason::exact_coefficients_too_large};
+  }
   const Dyadic dyadic_bound = Dyadic::of_rational(bound);
   IntegerPolynomial p = integer_multiple(f);
   std::vector<IntegerPolynomial> chain = sturm_chain(p);

@@ -84,10 +84,11 @@ inline constexpr int kRefinementBits = 64;
 /// appended to `out`: for each square-free factor (Yun's order: multiplicity 1 first) its roots,
 /// isolated by Sturm bisection from (-bound, bound] (the upper half of an interval first), then
 /// shrunk to a few ulps around a double Newton iterate proved by two exact signs, or else bisected
-/// to 2^-kRefinementBits bound. Throws ExactTierGiveUp when f's coefficients exceed
-/// kMaxCoefficientBits or the budget runs out.
+/// to 2^-kRefinementBits bound. Throws ExactTierGiveUp when the coefficients of f / divisor
+/// (divisor > 0: the polynomial the caller means, whose roots are f's) exceed kMaxCoefficientBits
+/// or the budget runs out.
 void isolate_real_roots(const RationalPolynomial& f, const Rational& bound, std::vector<IsolatedRoot>& out,
-                        EvaluationBudget& budget);
+                        EvaluationBudget& budget, const Rational& divisor = Rational(1));
 
 /// Sturm's theorem on one polynomial (square-free or not): counts its distinct real roots.
 class SturmSequence {

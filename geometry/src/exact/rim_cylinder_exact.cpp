@@ -190,7 +190,10 @@ RimRoots exact_rim_roots_within_budget(const Circle3& circle, const Cylinder3& c
   const Rational q00 = dot(A, A) - R * R * dot(d, d);
   const Rational q10 = 2 * dot(A, B), q01 = 2 * dot(A, C);
   const Rational q20 = dot(B, B), q11 = 2 * dot(B, C), q02 = dot(C, C);
-  conic.L = Polynomial(q00 + q02 * conic.r2 / conic.b, q10, q20 - q02 * conic.a / conic.b);
+  // b L, whose coefficients are dyadic like every quantity above (sums of products of doubles):
+  // L's own carry b's odd part in their denominators, and every product of them a gcd.
+  const Polynomial scaled_L(conic.b * q00 + q02 * conic.r2, conic.b * q10, conic.b * q20 - q02 * conic.a);
+  conic.L = Polynomial(scaled_L[0] / conic.b, q10, scaled_L.degree() == 2 ? scaled_L[2] / conic.b : Rational(0));
   conic.M = Polynomial(q01, q11);
   // |X| <= r / sqrt(a) on the ellipse; use a power of two above it. The first guess comes from
   // the binary exponents (r / sqrt(a) itself can overflow a double, and a Gmpq made from an
@@ -215,12 +218,18 @@ RimRoots exact_rim_roots_within_budget(const Circle3& circle, const Cylinder3& c
     for (const IsolatedRoot& root : roots)
       add_vertical_line_crossings(conic, root, root.multiplicity, crossings);
   } else {
-    const bool shared_root = conic.M.degree() == 1 &&
-                             conic.L.evaluate(-conic.M[0] / conic.M[1]) == Rational(0);
+    // L(-M0 / M1) = 0, times b M1^2 (nonzero): b L's homogeneous form at (-M0, M1), dyadic.
+    const auto scaled_L_at = [&](int i) { return i <= scaled_L.degree() ? scaled_L[i] : Rational(0); };
+    const bool shared_root =
+        conic.M.degree() == 1 && scaled_L_at(0) * conic.M[1] * conic.M[1] - scaled_L_at(1) * conic.M[0] * conic.M[1] +
+                                         scaled_L_at(2) * conic.M[0] * conic.M[0] ==
+                                     Rational(0);
     if (!shared_root) {
+      // b P = b (a X^2 - r^2) M^2 + (b L)^2: P's roots, from dyadic coefficients; the
+      // coefficient limit applies to P's own.
       const Polynomial ellipse(-conic.r2, Rational(0), conic.a);
-      const Polynomial eliminated = ellipse * conic.M * conic.M + conic.b * conic.L * conic.L;
-      isolate_real_roots(eliminated, conic.bound, roots, budget);
+      const Polynomial scaled_eliminated = conic.b * ellipse * conic.M * conic.M + scaled_L * scaled_L;
+      isolate_real_roots(scaled_eliminated, conic.bound, roots, budget, conic.b);
       for (const IsolatedRoot& root : roots)
         add_graph_crossings(conic, conic.L, conic.M, root, crossings);
     } else {
