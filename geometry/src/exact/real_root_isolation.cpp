@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <utility>
 
@@ -152,11 +153,6 @@ IntegerPolynomial integer_multiple(const RationalPolynomial& f) {
   return p;
 }
 
-/// Bits of a rational: numerator plus denominator.
-std::size_t bit_size(const Rational& x) {
-  return mpz_sizeinbase(mpq_numref(x.mpq()), 2) + mpz_sizeinbase(mpq_denref(x.mpq()), 2);
-}
-
 // ---- Dyadic points ------------------------------------------------------------------------
 
 /// mantissa 2^exponent, the mantissa odd (or zero, with exponent 0): every point the isolation
@@ -216,6 +212,13 @@ std::pair<Integer, Integer> aligned(const Dyadic& a, const Dyadic& b, long& expo
   return {std::move(x), std::move(y)};
 }
 int compare(const Dyadic& a, const Dyadic& b) {
+  // Different signs, or magnitudes in different binades, decide without aligning.
+  const int sa = sgn(a.mantissa), sb = sgn(b.mantissa);
+  if (sa != sb) return sa < sb ? -1 : 1;
+  if (sa == 0) return 0;
+  const long la = static_cast<long>(mpz_sizeinbase(a.mantissa.get_mpz_t(), 2)) + a.exponent;
+  const long lb = static_cast<long>(mpz_sizeinbase(b.mantissa.get_mpz_t(), 2)) + b.exponent;
+  if (la != lb) return (la < lb) == (sa > 0) ? -1 : 1;
   long exponent = 0;
   const auto [x, y] = aligned(a, b, exponent);
   return cmp(x, y);
@@ -234,6 +237,13 @@ Dyadic operator-(const Dyadic& a, const Dyadic& b) {
   Dyadic d;
   const auto [x, y] = aligned(a, b, d.exponent);
   d.mantissa = x - y;
+  d.normalise();
+  return d;
+}
+Dyadic operator+(const Dyadic& a, const Dyadic& b) {
+  Dyadic d;
+  const auto [x, y] = aligned(a, b, d.exponent);
+  d.mantissa = x + y;
   d.normalise();
   return d;
 }
@@ -392,52 +402,6 @@ struct Endpoint {
   ChainSigns signs;
 };
 
-/// Shrinks an isolating interval (low, high] of the square-free factor f to a few ulps around a
-/// double Newton approximation, proved by two exact sign evaluations at double (hence dyadic)
-/// points. Exact bisection to the same width costs ~64 evaluations; this costs two.
-/// `monic` holds f's coefficients divided by its leading one, as doubles (CGAL::to_double).
-bool tighten_with_double_newton(const IntegerPolynomial& f, const std::vector<double>& monic, Dyadic& low,
-                                Dyadic& high, int sign_high) {
-  const int degree = f.degree();
-  double coefficient[5] = {0, 0, 0, 0, 0};
-  double scale = 0.0;
-  for (int i = 0; i <= degree && i < 5; ++i) scale = std::max(scale, std::fabs(monic[static_cast<std::size_t>(i)]));
-  if (!(scale > 0.0) || !std::isfinite(scale) || degree > 4) return false;
-  for (int i = 0; i <= degree; ++i) coefficient[i] = monic[static_cast<std::size_t>(i)] / scale;
-  const double lo = low.to_double(), hi = high.to_double();
-  if (!std::isfinite(lo) || !std::isfinite(hi)) return false;
-  double x = 0.5 * (lo + hi);
-  for (int step = 0; step < 60; ++step) {
-    double value = 0.0, slope = 0.0;
-    for (int i = degree; i >= 0; --i) {
-      slope = slope * x + value;
-      value = value * x + coefficient[i];
-    }
-    if (slope == 0.0) break;
-    const double next = std::clamp(x - value / slope, lo, hi);
-    if (next == x) break;
-    x = next;
-  }
-  for (double spread = 4; spread < 0x1p20; spread *= 16) {
-    const double delta = spread * std::numeric_limits<double>::epsilon() * std::max(std::fabs(x), 1e-300);
-    if (!std::isfinite(x - delta) || !std::isfinite(x + delta)) return false;
-    const Dyadic a = Dyadic::of_double(x - delta), b = Dyadic::of_double(x + delta);
-    if (a <= low || b > high) return false;
-    const int sign_a = sign_at(f, a, bounded(a)), sign_b = sign_at(f, b, bounded(b));
-    if (sign_a == 0 || sign_b == 0) {
-      low = high = sign_a == 0 ? a : b;
-      return true;
-    }
-    if (sign_a != sign_b && sign_b == sign_high) {
-      // A sign change inside (low, high], which holds exactly one root: that root.
-      low = a;
-      high = b;
-      return true;
-    }
-  }
-  return false;
-}
-
 /// f about a dyadic centre c = m 2^-k (k >= 0): the integer polynomial G(s) = 2^(k d) f((m + s) / 2^k),
 /// whose sign at s = (x - c) 2^k is f's at x. Its coefficients are those of f's Taylor expansion at
 /// c (times powers of two), so the double filter's rounding is relative to |f(c)| and its first
@@ -468,12 +432,20 @@ class LocalExpansion {
     }
     g_.prepare_filter();
   }
-  /// f's sign at x, or 0 where the double filter cannot decide it.
-  int filtered_sign_at(const Dyadic& x) const {
+  /// (x - c) 2^k: the argument of G for the point x, as a Bounded.
+  Bounded offset(const Dyadic& x) const {
     Dyadic scaled = x;
     scaled.exponent += static_cast<long>(shift_);
-    return filtered_sign(g_, bounded(scaled - m_));
+    return bounded(scaled - m_);
   }
+  /// A length times 2^k, in G's units.
+  Bounded length(Dyadic x) const {
+    x.exponent += static_cast<long>(shift_);
+    return bounded(x);
+  }
+  /// f's sign at the point whose offset is s, or 0 where the double filter cannot decide it.
+  int filtered_sign_at_offset(const Bounded& s) const { return filtered_sign(g_, s); }
+  int filtered_sign_at(const Dyadic& x) const { return filtered_sign(g_, offset(x)); }
 
  private:
   Dyadic m_;
@@ -481,40 +453,123 @@ class LocalExpansion {
   IntegerPolynomial g_;
 };
 
-/// Bisection of (a, b], which holds exactly one root of f (simple: f is square-free), until it is
-/// at most `width_goal` wide or a midpoint is the root. Only the sign at the upper end is compared,
-/// and it stays sign_b: b only ever moves to a point of that sign. Signs come from a local
-/// expansion of f about the interval's middle, taken again about the current middle once the
-/// interval has shrunk by 2^20 and the expansion's filter no longer decides.
-void bisect(const IntegerPolynomial& f, Dyadic& a, Dyadic& b, int sign_b, const Dyadic& width_goal,
-            EvaluationBudget& budget) {
-  // The width halves exactly at each step: kept as a dyadic, it is compared without subtracting.
-  Dyadic width = b - a;
-  if (!(width > width_goal)) return;
-  LocalExpansion expansion(f, midpoint(a, b));
-  long expansion_exponent = width.exponent;  // the width's exponent when the expansion was taken
-  constexpr long kRecentreShrink = 20;
-  for (; width > width_goal; width.exponent -= 1) {
-    budget.spend();
-    Dyadic middle = midpoint(a, b);
-    int at_middle = expansion.filtered_sign_at(middle);
-    if (at_middle == 0 && width.exponent <= expansion_exponent - kRecentreShrink) {
-      expansion = LocalExpansion(f, middle);
-      expansion_exponent = width.exponent;
-      at_middle = expansion.filtered_sign_at(middle);
+/// Shrinks an isolating interval (low, high] of the square-free factor f to a few ulps around a
+/// double Newton approximation, proved by two exact sign evaluations at double (hence dyadic)
+/// points. Exact bisection to the same width costs ~64 evaluations; this costs two.
+/// `monic` holds f's coefficients divided by its leading one, as doubles (CGAL::to_double).
+bool tighten_with_double_newton(const IntegerPolynomial& f, const std::vector<double>& monic, Dyadic& low,
+                                Dyadic& high, int sign_high) {
+  const int degree = f.degree();
+  double coefficient[5] = {0, 0, 0, 0, 0};
+  double scale = 0.0;
+  for (int i = 0; i <= degree && i < 5; ++i) scale = std::max(scale, std::fabs(monic[static_cast<std::size_t>(i)]));
+  if (!(scale > 0.0) || !std::isfinite(scale) || degree > 4) return false;
+  for (int i = 0; i <= degree; ++i) coefficient[i] = monic[static_cast<std::size_t>(i)] / scale;
+  const double lo = low.to_double(), hi = high.to_double();
+  if (!std::isfinite(lo) || !std::isfinite(hi)) return false;
+  double x = 0.5 * (lo + hi);
+  for (int step = 0; step < 60; ++step) {
+    double value = 0.0, slope = 0.0;
+    for (int i = degree; i >= 0; --i) {
+      slope = slope * x + value;
+      value = value * x + coefficient[i];
     }
-    if (at_middle == 0) at_middle = exact_sign(f, middle);
-    if (at_middle == 0) {
-      a = middle;
-      b = std::move(middle);
-      return;
+    if (slope == 0.0) break;
+    const double next = std::clamp(x - value / slope, lo, hi);
+    if (next == x) break;
+    x = next;
+  }
+  // The signs near x from f expanded about x (LocalExpansion), taken at the first need.
+  std::optional<LocalExpansion> expansion;
+  const auto sign_near_x = [&](const Dyadic& point) {
+    if (!expansion) expansion.emplace(f, Dyadic::of_double(x));
+    const int filtered = expansion->filtered_sign_at(point);
+    return filtered != 0 ? filtered : exact_sign(f, point);
+  };
+  for (double spread = 4; spread < 0x1p20; spread *= 16) {
+    const double delta = spread * std::numeric_limits<double>::epsilon() * std::max(std::fabs(x), 1e-300);
+    if (!std::isfinite(x - delta) || !std::isfinite(x + delta)) return false;
+    const Dyadic a = Dyadic::of_double(x - delta), b = Dyadic::of_double(x + delta);
+    if (a <= low || b > high) return false;
+    const int sign_a = sign_near_x(a), sign_b = sign_near_x(b);
+    if (sign_a == 0 || sign_b == 0) {
+      low = high = sign_a == 0 ? a : b;
+      return true;
     }
-    if (at_middle == sign_b) {
-      b = std::move(middle);
-    } else {
-      a = std::move(middle);
+    if (sign_a != sign_b && sign_b == sign_high) {
+      // A sign change inside (low, high], which holds exactly one root: that root.
+      low = a;
+      high = b;
+      return true;
     }
   }
+  return false;
+}
+
+/// Bisection of (a, b], which holds exactly one root of f (simple: f is square-free), until it is
+/// at most `width_goal` wide or a midpoint is the root. Only the sign at the upper end is compared,
+/// and it stays sign_b: b only ever moves to a point of that sign. The points are a + j w 2^-i
+/// (w = b - a), kept as the integer j and the level i; their signs come from a local expansion of
+/// f about the interval's middle, whose argument for such a point is (a - c) 2^k + j w 2^(k - i),
+/// a Bounded sum, taken again about the current middle once the interval has shrunk by 2^20 and
+/// the expansion's filter no longer decides; the exact sum decides the rest.
+void bisect(const IntegerPolynomial& f, Dyadic& a, Dyadic& b, int sign_b, const Dyadic& width_goal,
+            EvaluationBudget& budget) {
+  const Dyadic width = b - a;
+  if (!(width > width_goal)) return;
+  const Dyadic origin = a;
+  const auto point = [&](const Integer& j, long level) {  // origin + j width 2^-level
+    Dyadic step;
+    step.mantissa = j * width.mantissa;
+    step.exponent = width.exponent - level;
+    step.normalise();
+    return origin + step;
+  };
+  std::optional<LocalExpansion> expansion(std::in_place, f, midpoint(a, b));
+  Bounded origin_offset = expansion->offset(origin);
+  long expansion_level = 0;
+  constexpr long kRecentreShrink = 20;
+  Bounded width_length = expansion->length(width);  // w 2^k
+  Integer j = 0, middle_index;
+  long level = 0;
+  for (Dyadic current = width; current > width_goal; current.exponent -= 1, ++level) {
+    budget.spend();
+    mpz_mul_2exp(middle_index.get_mpz_t(), j.get_mpz_t(), 1);  // the middle, 2 j + 1 at level + 1
+    mpz_add_ui(middle_index.get_mpz_t(), middle_index.get_mpz_t(), 1);
+    const auto filtered = [&] {
+      const double index = mpz_get_d(middle_index.get_mpz_t());  // truncated: within an ulp
+      const Bounded bounded_index(index, mpz_sizeinbase(middle_index.get_mpz_t(), 2) > 53 ? std::fabs(index) * 0x1p-52 : 0.0);
+      // w 2^(k - level - 1): a power-of-two scaling, exact but for underflow.
+      const int down = static_cast<int>(std::min(level + 1, 2000L));
+      const Bounded step_length(std::ldexp(width_length.value, -down),
+                                std::ldexp(width_length.error, -down) + kUnderflowError);
+      return expansion->filtered_sign_at_offset(origin_offset + bounded_index * step_length);
+    };
+    int at_middle = filtered();
+    if (at_middle == 0 && level >= expansion_level + kRecentreShrink) {
+      expansion.emplace(f, point(middle_index, level + 1));
+      origin_offset = expansion->offset(origin);
+      width_length = expansion->length(width);
+      expansion_level = level;
+      at_middle = filtered();
+    }
+    if (at_middle == 0) {
+      const Dyadic middle = point(middle_index, level + 1);
+      at_middle = exact_sign(f, middle);
+      if (at_middle == 0) {
+        a = b = middle;
+        return;
+      }
+    }
+    // b to the middle (j stays the lower end's index, doubled) or a to it.
+    if (at_middle == sign_b) {
+      mpz_mul_2exp(j.get_mpz_t(), j.get_mpz_t(), 1);
+    } else {
+      std::swap(j, middle_index);
+    }
+  }
+  a = point(j, level);
+  b = point(j + 1, level);
 }
 
 /// f's coefficients over its leading one, each as CGAL::to_double gives that rational (mpq_get_d
@@ -610,18 +665,11 @@ RationalPolynomial SquareFreeFactor::monic() const {
   return RationalPolynomial(coefficients.begin(), coefficients.end());
 }
 
-void isolate_real_roots(const RationalPolynomial& f, const Rational& bound, std::vector<IsolatedRoot>& out,
-                        EvaluationBudget& budget, const Rational& divisor) {
-  if (f.is_zero() || f.degree() < 1) return;
-  // The limit is on f / divisor in lowest terms. Its numerator and denominator divide those of
-  // the unreduced quotient, so the reduction (a gcd) is needed only where that one is too large.
-  const std::size_t divisor_bits = bit_size(divisor);
-  for (int i = 0; i <= f.degree(); ++i) {
-    if (bit_size(f[i]) + divisor_bits <= kMaxCoefficientBits) continue;
-    if (bit_size(f[i] / divisor) > kMaxCoefficientBits) throw ExactTierGiveUp{CertificateReason::exact_coefficients_too_large};
-  }
+namespace {
+
+void isolate(IntegerPolynomial p, const Rational& bound, std::vector<IsolatedRoot>& out, EvaluationBudget& budget) {
+  if (p.degree() < 1) return;
   const Dyadic dyadic_bound = Dyadic::of_rational(bound);
-  IntegerPolynomial p = integer_multiple(f);
   std::vector<IntegerPolynomial> chain = sturm_chain(p);
   auto factors = square_free_factors(p, chain);
   for (auto& [polynomial, multiplicity] : factors) {
@@ -633,6 +681,41 @@ void isolate_real_roots(const RationalPolynomial& f, const Rational& bound, std:
     const auto factor = std::make_shared<const SquareFreeFactor>(shared, multiplicity);
     isolate_factor(factor, *shared, whole ? chain : own_chain, dyadic_bound, out, budget);
   }
+}
+
+}  // namespace
+
+std::size_t bit_size(const Rational& x) {
+  return mpz_sizeinbase(mpq_numref(x.mpq()), 2) + mpz_sizeinbase(mpq_denref(x.mpq()), 2);
+}
+
+void isolate_real_roots(const RationalPolynomial& f, const Rational& bound, std::vector<IsolatedRoot>& out,
+                        EvaluationBudget& budget) {
+  if (f.is_zero() || f.degree() < 1) return;
+  for (int i = 0; i <= f.degree(); ++i) {
+    if (bit_size(f[i]) > kMaxCoefficientBits) throw ExactTierGiveUp{CertificateReason::exact_coefficients_too_large};
+  }
+  isolate(integer_multiple(f), bound, out, budget);
+}
+
+void isolate_real_roots(std::vector<mpz_class> coefficients, const Rational& bound, std::vector<IsolatedRoot>& out,
+                        EvaluationBudget& budget) {
+  IntegerPolynomial p;
+  p.c = std::move(coefficients);
+  p.trim();
+  if (p.degree() < 1) return;
+  // Only the roots matter: the common power of two goes (it costs no gcd) and the leading
+  // coefficient is made positive, as integer_multiple leaves it.
+  mp_bitcnt_t twos = std::numeric_limits<mp_bitcnt_t>::max();
+  for (const Integer& x : p.c) {
+    if (sgn(x) != 0) twos = std::min(twos, mpz_scan1(x.get_mpz_t(), 0));
+  }
+  const bool negate = sgn(p.leading()) < 0;
+  for (Integer& x : p.c) {
+    if (twos > 0) mpz_tdiv_q_2exp(x.get_mpz_t(), x.get_mpz_t(), twos);
+    if (negate) x = -x;
+  }
+  isolate(std::move(p), bound, out, budget);
 }
 
 SturmSequence::SturmSequence(const RationalPolynomial& f) {

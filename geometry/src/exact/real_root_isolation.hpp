@@ -4,20 +4,23 @@
 // a polynomial with rational coefficients, each with its multiplicity, in isolating intervals
 // with rational (dyadic) ends. CGAL headers: include only from the exact tiers' .cpp files.
 //
-// Square-free factorisation (Yun) and Sturm sequences, in integer arithmetic: the polynomial is
-// scaled to integer coefficients once, and every point the isolation evaluates at is dyadic
-// (m 2^e), so a sign is that of an integer sum with no fraction ever reduced. Each sign is first
-// tried in double arithmetic with a running error bound (error_bounded.hpp) and computed exactly
-// only when that cannot decide. CGAL::Polynomial<CGAL::Gmpq> does the same work with a gcd per
-// rational operation, which near a tangency of the joint's rims, where the polynomial's
-// coefficients reach thousands of bits and the isolation needs a hundred Sturm counts, cost
-// milliseconds per query.
+// Square-free factorisation (Yun) and Sturm sequences (subresultant remainders), in integer
+// arithmetic: the polynomial is scaled to integer coefficients once, and every point the
+// isolation evaluates at is dyadic (m 2^e), so a sign is that of an integer sum with no fraction
+// ever reduced. Each sign is first tried in double arithmetic with a running error bound
+// (error_bounded.hpp), next to a root on the polynomial expanded about a nearby point (a Taylor
+// shift, exact), and computed exactly only when that cannot decide. CGAL::Polynomial<CGAL::Gmpq>
+// does the same work with a gcd per rational operation, which near a tangency of the joint's rims,
+// where the polynomial's coefficients reach thousands of bits and the isolation needs a hundred
+// signs, cost milliseconds per query. Every decision (root counts, signs) is exact, so the
+// intervals are those of the textbook algorithm, whatever decides them.
 
 #include <memory>
 #include <vector>
 
 #include <CGAL/Gmpq.h>
 #include <CGAL/Polynomial.h>
+#include <gmpxx.h>
 
 #include "clearjoint/geometry/certificate.hpp"
 
@@ -80,15 +83,23 @@ inline constexpr std::size_t kMaxCoefficientBits = 8192;
 /// rounding to double, not by the isolation.
 inline constexpr int kRefinementBits = 64;
 
+/// Bits of a rational in lowest terms: numerator plus denominator.
+std::size_t bit_size(const Rational& x);
+
 /// The real roots of f in (-bound, bound] (`bound` a power of two), each with its multiplicity,
 /// appended to `out`: for each square-free factor (Yun's order: multiplicity 1 first) its roots,
 /// isolated by Sturm bisection from (-bound, bound] (the upper half of an interval first), then
 /// shrunk to a few ulps around a double Newton iterate proved by two exact signs, or else bisected
-/// to 2^-kRefinementBits bound. Throws ExactTierGiveUp when the coefficients of f / divisor
-/// (divisor > 0: the polynomial the caller means, whose roots are f's) exceed kMaxCoefficientBits
-/// or the budget runs out.
+/// to 2^-kRefinementBits bound. Throws ExactTierGiveUp when f's coefficients exceed
+/// kMaxCoefficientBits or the budget runs out.
 void isolate_real_roots(const RationalPolynomial& f, const Rational& bound, std::vector<IsolatedRoot>& out,
-                        EvaluationBudget& budget, const Rational& divisor = Rational(1));
+                        EvaluationBudget& budget);
+
+/// The same for the polynomial with these integer coefficients (constant term first), which the
+/// caller has checked against kMaxCoefficientBits in the rational form it stands for (a nonzero
+/// multiple of this one, with the same roots).
+void isolate_real_roots(std::vector<mpz_class> coefficients, const Rational& bound, std::vector<IsolatedRoot>& out,
+                        EvaluationBudget& budget);
 
 /// Sturm's theorem on one polynomial (square-free or not): counts its distinct real roots.
 class SturmSequence {

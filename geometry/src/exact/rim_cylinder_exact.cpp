@@ -12,6 +12,8 @@
 
 #include "rim_cylinder_exact.hpp"
 
+#include <gmpxx.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -37,20 +39,6 @@ constexpr CertificateReason kBeyondDoubleRange = CertificateReason::exact_interm
 double finite_or_give_up(double x) {
   if (!std::isfinite(x)) throw ExactTierGiveUp{kBeyondDoubleRange};
   return x;
-}
-
-struct RationalVector {
-  Rational x, y, z;
-};
-RationalVector exact(const Vector3& v) { return {v.x(), v.y(), v.z()}; }
-RationalVector operator-(const RationalVector& a, const RationalVector& b) {
-  return {a.x - b.x, a.y - b.y, a.z - b.z};
-}
-Rational dot(const RationalVector& a, const RationalVector& b) {
-  return a.x * b.x + a.y * b.y + a.z * b.z;
-}
-RationalVector cross(const RationalVector& a, const RationalVector& b) {
-  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
 
 Bounded to_bounded(const Rational& x) {
@@ -166,35 +154,138 @@ int exact_sign_at(const RimConic& conic, const Rational& x, int y_sign) {
 
 namespace {
 
-RationalVector exact_centre(const Circle3& circle, const RoundedPoint* centre, int scale_exponent) {
-  if (centre == nullptr) return exact(circle.center);
-  const std::array<Rational, 3> c = exact_rational_point(*centre, scale_exponent);
-  return {c[0], c[1], c[2]};
+// ---- The inputs as integers ------------------------------------------------------------------
+// Every input is dyadic (a double, or the exact rim centre: doubles combined and scaled by a power
+// of two), so all of them are integers times 2^E for one exponent E, and every quantity of the
+// conic below is an integer times 2^(k E), k its degree in the inputs (each formula sums terms of
+// one degree). Computed so, no operation reduces a fraction; the rationals the crossings need
+// are formed from the integers at the end, the same values as with rational arithmetic throughout.
+
+using Integer = mpz_class;
+
+/// m 2^e, m odd or zero.
+struct Dyadic {
+  Integer m;
+  long e = 0;
+};
+Dyadic dyadic_of(double x) {
+  int exponent = 0;
+  const double fraction = std::frexp(x, &exponent);
+  Dyadic d;
+  mpz_set_d(d.m.get_mpz_t(), std::ldexp(fraction, 53));  // exact: 53 bits
+  d.e = exponent - 53;
+  if (sgn(d.m) != 0) {
+    const mp_bitcnt_t zeros = mpz_scan1(d.m.get_mpz_t(), 0);
+    mpz_tdiv_q_2exp(d.m.get_mpz_t(), d.m.get_mpz_t(), zeros);
+    d.e += static_cast<long>(zeros);
+  }
+  return d;
+}
+/// x with a power of two for denominator (exact_rational_point's values are).
+Dyadic dyadic_of(const Rational& x) {
+  Dyadic d;
+  d.m = Integer(mpq_numref(x.mpq()));
+  d.e = -static_cast<long>(mpz_scan1(mpq_denref(x.mpq()), 0));
+  return d;
+}
+
+struct IntegerVector {
+  Integer x, y, z;
+};
+IntegerVector operator-(const IntegerVector& a, const IntegerVector& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+Integer dot(const IntegerVector& a, const IntegerVector& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+IntegerVector cross(const IntegerVector& a, const IntegerVector& b) {
+  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+
+/// Dyadic inputs brought to one exponent.
+class CommonScale {
+ public:
+  void add(const Dyadic& d) {
+    values_.push_back(d);
+    if (sgn(d.m) != 0) exponent_ = std::min(exponent_, d.e);
+  }
+  /// The i-th value added, as an integer times 2^exponent().
+  Integer integer(std::size_t i) const {
+    Integer out;
+    const Dyadic& d = values_[i];
+    if (sgn(d.m) != 0) mpz_mul_2exp(out.get_mpz_t(), d.m.get_mpz_t(), static_cast<mp_bitcnt_t>(d.e - exponent_));
+    return out;
+  }
+  long exponent() const { return exponent_ == std::numeric_limits<long>::max() ? 0 : exponent_; }
+
+ private:
+  std::vector<Dyadic> values_;
+  long exponent_ = std::numeric_limits<long>::max();
+};
+
+/// x 2^(degree E): a quantity of that degree in the inputs, as a rational.
+Rational rational(const Integer& x, int degree, long exponent) {
+  Rational out;
+  mpq_set_z(out.mpq(), x.get_mpz_t());
+  const long e = degree * exponent;
+  if (e > 0) mpq_mul_2exp(out.mpq(), out.mpq(), static_cast<mp_bitcnt_t>(e));
+  if (e < 0) mpq_div_2exp(out.mpq(), out.mpq(), static_cast<mp_bitcnt_t>(-e));
+  return out;
+}
+
+/// The coefficient limit (kMaxCoefficientBits) on P = (b P) / b, from the integers of b P (degree
+/// 16) and of b (degree 4): P's coefficient k is scaled_p[k] 2^(12 E) / b in lowest terms, whose
+/// bits are at most those of the unreduced fraction; the gcd is taken only when that is too large.
+void check_coefficient_size(const std::vector<Integer>& scaled_p, const Integer& b, long exponent) {
+  const std::size_t power_bits = static_cast<std::size_t>(std::labs(12 * exponent)) + 2;
+  const std::size_t b_bits = mpz_sizeinbase(b.get_mpz_t(), 2);
+  for (const Integer& x : scaled_p) {
+    if (mpz_sizeinbase(x.get_mpz_t(), 2) + b_bits + power_bits <= kMaxCoefficientBits) continue;
+    if (bit_size(rational(x, 16, exponent) / rational(b, 4, exponent)) > kMaxCoefficientBits) {
+      throw ExactTierGiveUp{CertificateReason::exact_coefficients_too_large};
+    }
+  }
 }
 
 RimRoots exact_rim_roots_within_budget(const Circle3& circle, const Cylinder3& cylinder,
                                       const RoundedPoint* centre, int scale_exponent,
                                       EvaluationBudget& budget) {
-  const RationalVector c = exact_centre(circle, centre, scale_exponent), n = exact(circle.normal);
-  const RationalVector q = c - exact(cylinder.axis_point), d = exact(cylinder.axis);
-  const Vector3 u_double = circle.normal.cross(Vector3::Unit(frame_axis_index(circle.normal)));
-  const RationalVector u = exact(u_double);
-  const RationalVector v = cross(n, u);
-  const RationalVector A = cross(q, d), B = cross(u, d), C = cross(v, d);
-  const Rational r = circle.radius, R = cylinder.radius;
+  // The inputs, each exactly, at one scale 2^E (degree 1).
+  CommonScale scale;
+  const auto add_vector = [&](const Vector3& v) {
+    for (int i = 0; i < 3; ++i) scale.add(dyadic_of(v[i]));
+  };
+  if (centre == nullptr) {
+    add_vector(circle.center);
+  } else {
+    for (const Rational& x : exact_rational_point(*centre, scale_exponent)) scale.add(dyadic_of(x));
+  }
+  add_vector(circle.normal);
+  add_vector(cylinder.axis_point);
+  add_vector(cylinder.axis);
+  add_vector(circle.normal.cross(Vector3::Unit(frame_axis_index(circle.normal))));  // u' = n x e_k, exact
+  scale.add(dyadic_of(circle.radius));
+  scale.add(dyadic_of(cylinder.radius));
+  const long E = scale.exponent();
+  const auto vector_at = [&](std::size_t first) {
+    return IntegerVector{scale.integer(first), scale.integer(first + 1), scale.integer(first + 2)};
+  };
+  const IntegerVector c = vector_at(0), n = vector_at(3), p = vector_at(6), d = vector_at(9), u = vector_at(12);
+  const Integer r = scale.integer(15), R = scale.integer(16);
+
+  const IntegerVector q = c - p;                                       // degree 1
+  const IntegerVector v = cross(n, u);                                 // 2
+  const IntegerVector A = cross(q, d), B = cross(u, d), C = cross(v, d);  // 2, 2, 3
+  const Integer a = dot(u, u), b = dot(v, v), r2 = r * r;              // 2, 4, 2
+  const Integer q00 = dot(A, A) - R * R * dot(d, d);                   // 4
+  const Integer q10 = 2 * dot(A, B), q01 = 2 * dot(A, C);              // 4, 5
+  const Integer q20 = dot(B, B), q11 = 2 * dot(B, C), q02 = dot(C, C);  // 4, 5, 6
+  // b L = (b q00 + q02 r^2) + b q10 X + (b q20 - q02 a) X^2 (degree 8): L's own coefficients
+  // carry b's odd part in their denominators.
+  const Integer scaled_l0 = b * q00 + q02 * r2, scaled_l1 = b * q10, scaled_l2 = b * q20 - q02 * a;
 
   RimConic conic;
-  conic.a = dot(u, u);
-  conic.b = dot(v, v);
-  conic.r2 = r * r;
-  const Rational q00 = dot(A, A) - R * R * dot(d, d);
-  const Rational q10 = 2 * dot(A, B), q01 = 2 * dot(A, C);
-  const Rational q20 = dot(B, B), q11 = 2 * dot(B, C), q02 = dot(C, C);
-  // b L, whose coefficients are dyadic like every quantity above (sums of products of doubles):
-  // L's own carry b's odd part in their denominators, and every product of them a gcd.
-  const Polynomial scaled_L(conic.b * q00 + q02 * conic.r2, conic.b * q10, conic.b * q20 - q02 * conic.a);
-  conic.L = Polynomial(scaled_L[0] / conic.b, q10, scaled_L.degree() == 2 ? scaled_L[2] / conic.b : Rational(0));
-  conic.M = Polynomial(q01, q11);
+  conic.a = rational(a, 2, E);
+  conic.b = rational(b, 4, E);
+  conic.r2 = rational(r2, 2, E);
+  conic.L = Polynomial(rational(scaled_l0, 8, E) / conic.b, rational(q10, 4, E), rational(scaled_l2, 8, E) / conic.b);
+  conic.M = Polynomial(rational(q01, 5, E), rational(q11, 5, E));
   // |X| <= r / sqrt(a) on the ellipse; use a power of two above it. The first guess comes from
   // the binary exponents (r / sqrt(a) itself can overflow a double, and a Gmpq made from an
   // infinity aborts the process), clamped to the double range; the loop makes it a bound.
@@ -218,18 +309,20 @@ RimRoots exact_rim_roots_within_budget(const Circle3& circle, const Cylinder3& c
     for (const IsolatedRoot& root : roots)
       add_vertical_line_crossings(conic, root, root.multiplicity, crossings);
   } else {
-    // L(-M0 / M1) = 0, times b M1^2 (nonzero): b L's homogeneous form at (-M0, M1), dyadic.
-    const auto scaled_L_at = [&](int i) { return i <= scaled_L.degree() ? scaled_L[i] : Rational(0); };
+    // L(-M0 / M1) = 0, times b M1^2 (nonzero): b L's homogeneous form at (-M0, M1).
     const bool shared_root =
-        conic.M.degree() == 1 && scaled_L_at(0) * conic.M[1] * conic.M[1] - scaled_L_at(1) * conic.M[0] * conic.M[1] +
-                                         scaled_L_at(2) * conic.M[0] * conic.M[0] ==
-                                     Rational(0);
+        sgn(q11) != 0 && sgn(scaled_l0 * q11 * q11 - scaled_l1 * q01 * q11 + scaled_l2 * q01 * q01) == 0;
     if (!shared_root) {
-      // b P = b (a X^2 - r^2) M^2 + (b L)^2: P's roots, from dyadic coefficients; the
-      // coefficient limit applies to P's own.
-      const Polynomial ellipse(-conic.r2, Rational(0), conic.a);
-      const Polynomial scaled_eliminated = conic.b * ellipse * conic.M * conic.M + scaled_L * scaled_L;
-      isolate_real_roots(scaled_eliminated, conic.bound, roots, budget, conic.b);
+      // b P = b (a X^2 - r^2) M^2 + (b L)^2 (degree 16 in the inputs): P's roots.
+      const Integer m0 = q01 * q01, m1 = 2 * q01 * q11, m2 = q11 * q11;  // M^2
+      std::vector<Integer> scaled_p = {
+          b * (-r2 * m0) + scaled_l0 * scaled_l0,
+          b * (-r2 * m1) + 2 * scaled_l0 * scaled_l1,
+          b * (a * m0 - r2 * m2) + scaled_l1 * scaled_l1 + 2 * scaled_l0 * scaled_l2,
+          b * (a * m1) + 2 * scaled_l1 * scaled_l2,
+          b * (a * m2) + scaled_l2 * scaled_l2};
+      check_coefficient_size(scaled_p, b, E);
+      isolate_real_roots(std::move(scaled_p), conic.bound, roots, budget);
       for (const IsolatedRoot& root : roots)
         add_graph_crossings(conic, conic.L, conic.M, root, crossings);
     } else {
