@@ -88,9 +88,13 @@ std::pair<IntegerPolynomial, int> pseudo_remainder(const IntegerPolynomial& a, c
   const Integer& lead = b.leading();
   Integer top;
   for (int k = m - n; k >= 0; --k) {
-    top = r.c[static_cast<std::size_t>(n + k)];
-    for (int i = 0; i <= n + k; ++i) r.c[static_cast<std::size_t>(i)] *= lead;
-    for (int j = 0; j <= n; ++j) r.c[static_cast<std::size_t>(j + k)] -= top * b.c[static_cast<std::size_t>(j)];
+    // r = lead r - top x^k b, whose x^(n + k) term cancels: it is set, not computed.
+    std::swap(top, r.c[static_cast<std::size_t>(n + k)]);
+    r.c[static_cast<std::size_t>(n + k)] = 0;
+    for (int i = 0; i < n + k; ++i) r.c[static_cast<std::size_t>(i)] *= lead;
+    for (int j = 0; j < n; ++j) {
+      mpz_submul(r.c[static_cast<std::size_t>(j + k)].get_mpz_t(), top.get_mpz_t(), b.c[static_cast<std::size_t>(j)].get_mpz_t());
+    }
   }
   r.c.resize(static_cast<std::size_t>(n));
   r.trim();
@@ -349,6 +353,12 @@ std::vector<IntegerPolynomial> sturm_chain(const IntegerPolynomial& p) {
     const auto delta = static_cast<unsigned long>(a.degree() - b.degree());
     auto [remainder, factor_sign] = pseudo_remainder(a, b);
     if (remainder.is_zero()) break;
+    if (remainder.degree() == 0) {
+      // The last member: only its sign is read, which the positive divisor leaves as it is.
+      remainder.c[0] = factor_sign > 0 ? -sgn(remainder.c[0]) : sgn(remainder.c[0]);
+      chain.push_back(std::move(remainder));
+      break;
+    }
     mpz_pow_ui(power.get_mpz_t(), h.get_mpz_t(), delta);
     divisor = g * power;
     if (divisor != 1) {
@@ -367,7 +377,6 @@ std::vector<IntegerPolynomial> sturm_chain(const IntegerPolynomial& p) {
       mpz_pow_ui(h_power.get_mpz_t(), h.get_mpz_t(), delta - 1);
       mpz_divexact(h.get_mpz_t(), power.get_mpz_t(), h_power.get_mpz_t());
     }
-    if (remainder.degree() == 0) remainder.c[0] = sgn(remainder.c[0]);  // only its sign is read
     chain.push_back(std::move(remainder));
   }
   for (IntegerPolynomial& member : chain) member.prepare_filter();
@@ -687,6 +696,18 @@ void isolate(IntegerPolynomial p, const Rational& bound, std::vector<IsolatedRoo
 
 std::size_t bit_size(const Rational& x) {
   return mpz_sizeinbase(mpq_numref(x.mpq()), 2) + mpz_sizeinbase(mpq_denref(x.mpq()), 2);
+}
+
+int SquareFreeFactor::sign_at(const Rational& x) const {
+  // The factor's leading coefficient is positive: its sign is the monic form's.
+  return detail::sign_at(*polynomial_, x, bounded(x));
+}
+
+bool SquareFreeFactor::shares_root_in(const RationalPolynomial& g, const Rational& low, const Rational& high) const {
+  const IntegerPolynomial common = polynomial_gcd(*polynomial_, integer_multiple(g));
+  if (common.degree() < 1) return false;
+  const std::vector<IntegerPolynomial> chain = sturm_chain(common);
+  return chain_signs(chain, low).variations - chain_signs(chain, high).variations > 0;
 }
 
 void isolate_real_roots(const RationalPolynomial& f, const Rational& bound, std::vector<IsolatedRoot>& out,

@@ -59,6 +59,10 @@ class SquareFreeFactor {
   /// The factor divided by its leading coefficient, as CGAL's square-free factorisation of the
   /// rational polynomial gives it.
   RationalPolynomial monic() const;
+  /// The exact sign of the factor (of its monic form) at x: -1, 0 or +1.
+  int sign_at(const Rational& x) const;
+  /// Whether the factor and g (not zero) have a common root in (low, high], low < high.
+  bool shares_root_in(const RationalPolynomial& g, const Rational& low, const Rational& high) const;
 
  private:
   std::shared_ptr<const IntegerPolynomial> polynomial_;

@@ -94,10 +94,8 @@ void add_vertical_line_crossings(const RimConic& conic, const IsolatedRoot& root
     if (s == CGAL::POSITIVE) return;  // the line misses the ellipse
   } else {
     // Irrational root: it is a vertex exactly when the factor shares it with a X^2 - r2.
-    const Polynomial factor = root.factor->monic();
-    const Polynomial common = CGAL::gcd(factor, vertex_test);
-    if (common.degree() >= 1 && SturmSequence(common).roots_in(root.low, root.high) > 0 &&
-        !(root.low == root.high)) {
+    const SquareFreeFactor& factor = *root.factor;
+    if (factor.shares_root_in(vertex_test, root.low, root.high)) {
       out.push_back({x, Bounded(0.0), 2 * multiplicity});
       return;
     }
@@ -106,8 +104,8 @@ void add_vertical_line_crossings(const RimConic& conic, const IsolatedRoot& root
     const SturmSequence vertices(vertex_test);
     while (vertices.roots_in(low, high) > 0 || vertex_test.sign_at(high) == CGAL::ZERO) {
       const Rational middle = (low + high) / 2;
-      const CGAL::Sign at_middle = factor.sign_at(middle);
-      if (at_middle == CGAL::ZERO) {
+      const int at_middle = factor.sign_at(middle);
+      if (at_middle == 0) {
         low = high = middle;
         break;
       }
