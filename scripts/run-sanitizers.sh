@@ -39,7 +39,7 @@ fi
 ((reduced)) && config+=(-DCLEARJOINT_BUILD_BENCHMARKS=OFF)
 
 mkdir -p build-sanitize
-cmake -S . -B build-sanitize "${config[@]}" -DCMAKE_CXX_FLAGS="$flags" \
+cmake -S . -B build-sanitize "${config[@]}" -DCMAKE_CXX_FLAGS="$flags" -DCMAKE_C_FLAGS="$flags" \
       -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" \
       -DCMAKE_SHARED_LINKER_FLAGS="-fsanitize=address,undefined" >build-sanitize/configure.log 2>&1 ||
   { cat build-sanitize/configure.log; exit 1; }

@@ -17,8 +17,9 @@
 #                                         environment and compare it with the build's program
 #   exported-interface                   every entry of the exported link interface is a target
 #                                         (Namespace::name), never a bare library name or path
-# Environment: CXX and CC, the compilers the consumers are built with, and CXXFLAGS, their C++
-# flags (CMake reads CXXFLAGS itself); CLEARJOINT_VERSION, the version the package must report.
+# Environment: CXX and CC, the compilers the consumers are built with, CXXFLAGS, CFLAGS and
+# LDFLAGS, their C++, C and link flags (CMake reads them itself); CLEARJOINT_VERSION, the version
+# the package must report.
 set -euo pipefail
 step=$1 scratch=$2
 shift 2
@@ -77,15 +78,16 @@ pkg-config-consumer)
   libdir=$(pkg-config --variable=libdir clearjoint-geometry)
   # shellcheck disable=SC2046 # the flags are separate words
   # shellcheck disable=SC2086 # CXXFLAGS holds separate words
-  "$cxx" ${CXXFLAGS:-} -std=c++20 -o "$out/consumer" "$consumer/main.cpp" \
+  "$cxx" ${CXXFLAGS:-} ${LDFLAGS:-} -std=c++20 -o "$out/consumer" "$consumer/main.cpp" \
     $(pkg-config "${static[@]}" --cflags --libs clearjoint-geometry) -Wl,-rpath,"$libdir"
   # shellcheck disable=SC2046
   # shellcheck disable=SC2086
-  "$cxx" ${CXXFLAGS:-} -std=c++20 -o "$out/dynamics_consumer" "$consumer/dynamics_main.cpp" \
+  "$cxx" ${CXXFLAGS:-} ${LDFLAGS:-} -std=c++20 -o "$out/dynamics_consumer" "$consumer/dynamics_main.cpp" \
     $(pkg-config "${static[@]}" --cflags --libs clearjoint-dynamics) -Wl,-rpath,"$libdir"
   # The C API from C, compiled by the C compiler.
   # shellcheck disable=SC2046
-  "$cc" -std=c99 -o "$out/c_consumer" "$consumer/c_main.c" \
+  # shellcheck disable=SC2086
+  "$cc" ${CFLAGS:-} ${LDFLAGS:-} -std=c99 -o "$out/c_consumer" "$consumer/c_main.c" \
     $(pkg-config "${static[@]}" --cflags --libs clearjoint-c) -lm -Wl,-rpath,"$libdir"
   echo "pkg-config ${static[*]} --libs clearjoint-dynamics: $(pkg-config "${static[@]}" --libs clearjoint-dynamics)"
   echo "pkg-config ${static[*]} --libs clearjoint-c: $(pkg-config "${static[@]}" --libs clearjoint-c)"
