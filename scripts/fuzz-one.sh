@@ -23,7 +23,7 @@ set +e
 "$target" "${options[@]}" "$@" "$scratch" "$seeds" >"$log" 2>&1
 status=$?
 set -e
-grep -E '^stat::number_of_executed_units|^stat::peak_rss_mb|^#[0-9]+.*DONE' "$log" || true
+grep -E '^stat::number_of_executed_units|^stat::average_exec_per_sec|^stat::peak_rss_mb|^#[0-9]+.*DONE' "$log" || true
 if ((status != 0)); then
   tail -n 60 "$log"
   echo "fuzz-one: $name failed (status $status); reproducers in $artifacts" >&2

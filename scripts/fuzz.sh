@@ -3,7 +3,8 @@
 # A fuzzing campaign: builds the libFuzzer targets of fuzz/ with ASan+UBSan (Clang 14, in
 # build-fuzz/) and runs each for SECONDS on a scratch corpus seeded with the committed one,
 # one after the other, one process each (one core). Prints each target's executions and
-# fails on the first finding (reproducer in build-fuzz/fuzz/campaign/artifacts-<target>/).
+# exec/s, fails on the first finding (reproducer in build-fuzz/fuzz/campaign/artifacts-<target>/)
+# and ends with a Markdown table of the runs (the table of docs/robustness.md).
 #
 #   scripts/fuzz.sh SECONDS [TARGET...]     (default: every target)
 #
@@ -26,13 +27,17 @@ cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=
       -DCMAKE_SHARED_LINKER_FLAGS="-fsanitize=address,undefined" >/dev/null
 cmake --build build-fuzz -j2 --target "${targets[@]}"
 total=0
+table=("| target | seconds | executions | exec/s | findings |" "| --- | ---: | ---: | ---: | ---: |")
 for target in "${targets[@]}"; do
   dictionary=fuzz/json.dict
   [[ $target == fuzz_detect_raw ]] && dictionary=
   log=$(bash scripts/fuzz-one.sh "build-fuzz/fuzz/$target" "$seconds" \
         "build-fuzz/fuzz/campaign/$target" "fuzz/corpus/$target" "$dictionary" | tee /dev/stderr)
   runs=$(sed -n 's/^stat::number_of_executed_units: *//p' <<<"$log")
+  rate=$(sed -n 's/^stat::average_exec_per_sec: *//p' <<<"$log")
   total=$((total + ${runs:-0}))
-  echo "fuzz: $target: ${runs:-?} executions in $seconds s"
+  echo "fuzz: $target: ${runs:-?} executions in $seconds s (${rate:-?} exec/s)"
+  table+=("| \`$target\` | $seconds | ${runs:-?} | ${rate:-?} | 0 |")
 done
 echo "fuzz: ${#targets[@]} targets, $total executions in total, no finding"
+printf '%s\n' "${table[@]}"
