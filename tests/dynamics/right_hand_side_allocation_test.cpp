@@ -3,7 +3,10 @@
 // detection, contact forces and the constraint solve), begins_event and update_extra_states are
 // called hundreds of thousands of times per simulated second. This executable replaces malloc,
 // calloc and realloc by counting wrappers around glibc's own (__libc_malloc etc.); operator new
-// and Eigen's dynamic storage both end in malloc, so every heap allocation is counted.
+// and Eigen's dynamic storage both end in malloc, so every heap allocation is counted. Under
+// AddressSanitizer (scripts/run-sanitizers.sh) malloc belongs to the sanitizer's runtime, which
+// aborts at start-up when the program replaces it; there the sanitizer's allocation hook, which
+// every malloc, calloc, realloc and operator new of its allocator calls, counts instead.
 
 #include <gtest/gtest.h>
 
@@ -16,15 +19,38 @@
 #include "clearjoint/dynamics/model_builder.hpp"
 #include "dynamics_test_support.hpp"
 
+#if defined(__SANITIZE_ADDRESS__)  // GCC
+#define CLEARJOINT_TEST_UNDER_ASAN 1
+#elif defined(__has_feature)  // Clang
+#if __has_feature(address_sanitizer)
+#define CLEARJOINT_TEST_UNDER_ASAN 1
+#endif
+#endif
+
+#ifdef CLEARJOINT_TEST_UNDER_ASAN
+#include <sanitizer/allocator_interface.h>
+#endif
+
+namespace {
+std::atomic<long> heap_allocations{0};
+}  // namespace
+
+#ifdef CLEARJOINT_TEST_UNDER_ASAN
+namespace {
+void count_allocation(const volatile void*, std::size_t) {
+  heap_allocations.fetch_add(1, std::memory_order_relaxed);
+}
+void ignore_release(const volatile void*) {}
+// Installed before main, so before any test runs (the runtime takes both hooks or none).
+const bool hooks_installed =
+    __sanitizer_install_malloc_and_free_hooks(count_allocation, ignore_release) != 0;
+}  // namespace
+#else
 extern "C" {
 void* __libc_malloc(std::size_t size);
 void* __libc_calloc(std::size_t count, std::size_t size);
 void* __libc_realloc(void* pointer, std::size_t size);
 }
-
-namespace {
-std::atomic<long> heap_allocations{0};
-}  // namespace
 
 extern "C" {
 void* malloc(std::size_t size) {
@@ -40,6 +66,7 @@ void* realloc(void* pointer, std::size_t size) {
   return __libc_realloc(pointer, size);
 }
 }
+#endif
 
 namespace clearjoint::dynamics {
 namespace {
@@ -120,6 +147,9 @@ TEST(RightHandSide, AllocatesNothingForTheIdealSliderCranks) {
 }
 
 TEST(RightHandSide, CountsAllocationsWhenThereAreSome) {
+#ifdef CLEARJOINT_TEST_UNDER_ASAN
+  ASSERT_TRUE(hooks_installed) << "the sanitizer refused the allocation hooks";
+#endif
   // The counter itself works: a vector of doubles is one allocation.
   const long before = heap_allocations.load();
   std::vector<double> v(100);
