@@ -19,6 +19,7 @@
 #include <limits>
 #include <memory>
 #include <numbers>
+#include <stdexcept>
 #include <utility>
 #include <vector>
 
@@ -52,6 +53,8 @@ struct RimConic {
   Rational a, b, r2;  // ellipse a X^2 + b Y^2 = r2
   Polynomial L, M;    // the cylinder modulo the ellipse: L(X) + Y M(X) = 0
   Rational bound;     // a power of two with a bound^2 > r2: every real crossing has |X| < bound
+  // a, b and r2 as Bounded (to_bounded), formed once for every crossing.
+  Bounded a_bounded, b_bounded, r2_bounded;
 };
 
 /// A crossing in (X, Y): X in an interval; Y either from -L/M or +-sqrt((r2 - a X^2) / b).
@@ -60,9 +63,17 @@ struct Crossing {
   int multiplicity;
 };
 
-Bounded polynomial_value(const Polynomial& p, const Bounded& x) {
+/// A polynomial's coefficients as Bounded (to_bounded), constant first: formed once per
+/// polynomial, read at every crossing.
+std::vector<Bounded> bounded_coefficients(const Polynomial& p) {
+  std::vector<Bounded> out;
+  for (int i = 0; i <= p.degree(); ++i) out.push_back(to_bounded(p[i]));
+  return out;
+}
+
+Bounded polynomial_value(const std::vector<Bounded>& p, const Bounded& x) {
   Bounded value(0.0);
-  for (int i = p.degree(); i >= 0; --i) value = value * x + to_bounded(p[i]);
+  for (std::size_t i = p.size(); i-- > 0;) value = value * x + p[i];
   return value;
 }
 
@@ -75,7 +86,7 @@ Bounded bounded_x(const IsolatedRoot& root) {
 
 /// |Y| from the ellipse equation, for X in the given enclosure.
 Bounded ellipse_height(const RimConic& conic, const Bounded& x) {
-  const Bounded y2 = (to_bounded(conic.r2) - to_bounded(conic.a) * x * x) / to_bounded(conic.b);
+  const Bounded y2 = (conic.r2_bounded - conic.a_bounded * x * x) / conic.b_bounded;
   return sqrt(Bounded(std::fmax(y2.value, 0.0), y2.error + std::fmax(-y2.value, 0.0)));
 }
 
@@ -120,8 +131,8 @@ void add_vertical_line_crossings(const RimConic& conic, const IsolatedRoot& root
 
 /// Crossings where Y = -N(X) / m with N linear or quadratic and m a nonzero constant or a linear
 /// M without root on the isolating interval.
-void add_graph_crossings(const RimConic& conic, const Polynomial& numerator,
-                         const Polynomial& denominator, const IsolatedRoot& root,
+void add_graph_crossings(const RimConic& conic, const std::vector<Bounded>& numerator,
+                         const std::vector<Bounded>& denominator, const IsolatedRoot& root,
                          std::vector<Crossing>& out) {
   const Bounded x = bounded_x(root);
   Bounded y = -(polynomial_value(numerator, x) / polynomial_value(denominator, x));
@@ -179,11 +190,15 @@ Dyadic dyadic_of(double x) {
   }
   return d;
 }
-/// x with a power of two for denominator (exact_rational_point's values are).
+/// x with a power of two for denominator (exact_rational_point's values are: sums and halvings of
+/// doubles, scaled by a power of two).
 Dyadic dyadic_of(const Rational& x) {
+  const mpz_srcptr denominator = mpq_denref(x.mpq());
+  const mp_bitcnt_t power = mpz_scan1(denominator, 0);
+  if (mpz_sizeinbase(denominator, 2) != power + 1) throw std::logic_error("rim_cylinder_exact: a centre that is not dyadic");
   Dyadic d;
   d.m = Integer(mpq_numref(x.mpq()));
-  d.e = -static_cast<long>(mpz_scan1(mpq_denref(x.mpq()), 0));
+  d.e = -static_cast<long>(power);
   return d;
 }
 
@@ -284,6 +299,9 @@ RimRoots exact_rim_roots_within_budget(const Circle3& circle, const Cylinder3& c
   conic.r2 = rational(r2, 2, E);
   conic.L = Polynomial(rational(scaled_l0, 8, E) / conic.b, rational(q10, 4, E), rational(scaled_l2, 8, E) / conic.b);
   conic.M = Polynomial(rational(q01, 5, E), rational(q11, 5, E));
+  conic.a_bounded = to_bounded(conic.a);
+  conic.b_bounded = to_bounded(conic.b);
+  conic.r2_bounded = to_bounded(conic.r2);
   // |X| <= r / sqrt(a) on the ellipse; use a power of two above it. The first guess comes from
   // the binary exponents (r / sqrt(a) itself can overflow a double, and a Gmpq made from an
   // infinity aborts the process), clamped to the double range; the loop makes it a bound.
@@ -321,8 +339,8 @@ RimRoots exact_rim_roots_within_budget(const Circle3& circle, const Cylinder3& c
           b * (a * m2) + scaled_l2 * scaled_l2};
       check_coefficient_size(scaled_p, b, E);
       isolate_real_roots(std::move(scaled_p), conic.bound, roots, budget);
-      for (const IsolatedRoot& root : roots)
-        add_graph_crossings(conic, conic.L, conic.M, root, crossings);
+      const std::vector<Bounded> l = bounded_coefficients(conic.L), m = bounded_coefficients(conic.M);
+      for (const IsolatedRoot& root : roots) add_graph_crossings(conic, l, m, root, crossings);
     } else {
       // L = (X - X0) L1, M = q11 (X - X0): the line X = X0 and the line L1 + q11 Y = 0.
       const Rational x0 = -conic.M[0] / conic.M[1];
@@ -344,7 +362,7 @@ RimRoots exact_rim_roots_within_budget(const Circle3& circle, const Cylinder3& c
           }
           continue;
         }
-        add_graph_crossings(conic, l1, m1, root, on_lines);
+        add_graph_crossings(conic, bounded_coefficients(l1), bounded_coefficients(m1), root, on_lines);
       }
       crossings = std::move(on_lines);
     }
