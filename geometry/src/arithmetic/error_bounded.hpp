@@ -19,6 +19,7 @@
 #include <cmath>
 
 #include "pair_lanes.hpp"
+#include "vector3_of.hpp"
 
 namespace clearjoint::geometry::detail {
 
@@ -161,9 +162,7 @@ inline BoundedSinCos sincos_of(double angle) {
 }
 
 /// Three Bounded components, with the vector algebra the kernel needs.
-struct BoundedVector3 {
-  Bounded x, y, z;
-};
+using BoundedVector3 = Vector3Of<Bounded>;
 inline BoundedVector3 operator-(const BoundedVector3& a, const BoundedVector3& b) {
   return {a.x - b.x, a.y - b.y, a.z - b.z};
 }

@@ -4,14 +4,13 @@
 #include <CGAL/Gmpq.h>
 
 #include "exact_rational_point.hpp"
+#include "plane_terms.hpp"
 
 namespace clearjoint::geometry::detail {
 namespace {
 
 using Rational = CGAL::Gmpq;
-struct RationalVector {
-  Rational x, y, z;
-};
+using RationalVector = Vector3Of<Rational>;
 RationalVector exact(const Vector3& v) { return {v.x(), v.y(), v.z()}; }
 RationalVector exact(const Vector3& stored, const RoundedPoint* recipe, int scale_exponent) {
   if (recipe == nullptr) return exact(stored);
@@ -26,20 +25,16 @@ CirclePlaneTopologyAndSide exact_circle_plane_topology(const Circle3& circle, co
                                                        const RoundedPoint* point, int scale_exponent) {
   const RationalVector c = exact(circle.center, centre, scale_exponent);
   const RationalVector p = exact(plane.point, point, scale_exponent);
-  const RationalVector nc = exact(circle.normal), np = exact(plane.normal);
-  const Rational s = np.x * (c.x - p.x) + np.y * (c.y - p.y) + np.z * (c.z - p.z);
-  const Rational wx = np.y * nc.z - np.z * nc.y;
-  const Rational wy = np.z * nc.x - np.x * nc.z;
-  const Rational wz = np.x * nc.y - np.y * nc.x;
-  const Rational w2 = wx * wx + wy * wy + wz * wz;
-  const int side = CGAL::sign(s);
-  if (CGAL::is_zero(w2)) {
+  // The same terms the floating-point filters bound (plane_terms.hpp), here exact.
+  const PlaneTerms<Rational> t = plane_terms<PlaneTermsFor::signs>(
+      RationalVector{c.x - p.x, c.y - p.y, c.z - p.z}, exact(circle.normal), exact(plane.normal),
+      Rational(circle.radius));
+  const int side = CGAL::sign(t.s);
+  if (CGAL::is_zero(t.w2)) {
     return side == 0 ? CirclePlaneTopologyAndSide{CirclePlaneTopology::circle_in_plane, 0}
                      : CirclePlaneTopologyAndSide{CirclePlaneTopology::disjoint, side};
   }
-  const Rational r = circle.radius;
-  const Rational nc2 = nc.x * nc.x + nc.y * nc.y + nc.z * nc.z;
-  switch (CGAL::sign(s * s * nc2 - r * r * w2)) {
+  switch (CGAL::sign(t.discriminant)) {
     case CGAL::POSITIVE: return {CirclePlaneTopology::disjoint, side};
     case CGAL::ZERO: return {CirclePlaneTopology::tangent, side};
     default: return {CirclePlaneTopology::two_crossings, 0};

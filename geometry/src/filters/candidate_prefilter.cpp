@@ -3,6 +3,7 @@
 
 #include "a_priori_bounds.hpp"
 #include "candidate_prefilter_lanes.hpp"
+#include "filtered_predicate.hpp"
 #include "rim_distance_polynomial.hpp"
 #include "rim_plane_quantities.hpp"
 
@@ -43,13 +44,18 @@ CandidatesClear prove_one_by_one(const CandidatePrefilterInput& in) {
 }  // namespace
 
 CandidatesClear prove_candidates_clear(const CandidatePrefilterInput& in) {
-  if (!guard(in)) return prove_one_by_one(in);
   const Vector3& a = in.bearing_axis;
   const Vector3& n = in.journal_axis;
-  return prove_candidates_clear_in_guard({lanes(in.radial_centres), lanes(in.radial_errors), lanes(in.rim_centres),
-                                          lanes(in.rim_errors), lanes(in.base_points), lanes(in.base_errors), a, n,
-                                          a.cross(n), abs_cross(a.cwiseAbs(), n.cwiseAbs()), in.bearing_radius,
-                                          in.journal_radius});
+  return floating_point_filter(
+      guard(in),
+      [&] {
+        return prove_candidates_clear_in_guard({lanes(in.radial_centres), lanes(in.radial_errors),
+                                                lanes(in.rim_centres), lanes(in.rim_errors), lanes(in.base_points),
+                                                lanes(in.base_errors), a, n, a.cross(n),
+                                                abs_cross(a.cwiseAbs(), n.cwiseAbs()), in.bearing_radius,
+                                                in.journal_radius});
+      },
+      [&] { return prove_one_by_one(in); });
 }
 
 }  // namespace clearjoint::geometry::detail

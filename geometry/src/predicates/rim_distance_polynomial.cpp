@@ -6,6 +6,7 @@
 
 #include "a_priori_bounds.hpp"
 #include "candidate_prefilter_lanes.hpp"
+#include "filtered_predicate.hpp"
 #include "primitives_detail.hpp"
 
 namespace clearjoint::geometry::detail {
@@ -157,11 +158,12 @@ RimDistancePolynomial rim_distance_polynomial(const Circle3& circle, const Cylin
 RimDistancePolynomial rim_distance_polynomial(const Circle3& circle, const Cylinder3& cylinder,
                                               const AxisOffset& offset, bool a_priori_bounds_apply,
                                               std::optional<CircleFrame>& frame) {
-  if (a_priori_bounds_apply) {
-    return rim_distance_polynomial_a_priori(circle, cylinder, offset, frame);
-  }
-  frame.reset();
-  return rim_distance_polynomial_running_error(circle, cylinder);
+  return floating_point_filter(
+      a_priori_bounds_apply, [&] { return rim_distance_polynomial_a_priori(circle, cylinder, offset, frame); },
+      [&] {
+        frame.reset();
+        return rim_distance_polynomial_running_error(circle, cylinder);
+      });
 }
 
 RimDistancePolynomial rim_distance_polynomial_running_error(const Circle3& circle,
@@ -261,17 +263,8 @@ RimReach rim_reach_running_error(const Circle3& circle, const Cylinder3& cylinde
   return RimReach::undecided;
 }
 
-}  // namespace
-
-RimReach rim_reach(const Circle3& circle, const Cylinder3& cylinder, bool a_priori_bounds_apply,
-                   double centre_error) {
-  return a_priori_bounds_apply ? rim_reach(circle, cylinder, axis_offset(circle, cylinder), true, centre_error)
-                               : rim_reach_running_error(circle, cylinder, centre_error);
-}
-
-RimReach rim_reach(const Circle3& circle, const Cylinder3& cylinder, const AxisOffset& offset,
-                   bool a_priori_bounds_apply, double centre_error) {
-  if (!a_priori_bounds_apply) return rim_reach_running_error(circle, cylinder, centre_error);
+RimReach rim_reach_a_priori(const Circle3& circle, const Cylinder3& cylinder, const AxisOffset& offset,
+                            double centre_error) {
   // Guard (reach_a_priori_bounds_apply): q, d, r and R in range, so no product of up to four
   // of them under- or overflows.
   // |q x d|^2 (rounding chain 6) against gap^2 D (chain 7: R - r, then - e, then squares);
@@ -292,6 +285,22 @@ RimReach rim_reach(const Circle3& circle, const Cylinder3& cylinder, const AxisO
   if (offset2 - reach2 > kGamma64 * (reach2 + offset2_abs) * kMagnitudeInflation)
     return RimReach::strictly_outside;
   return RimReach::undecided;
+}
+
+}  // namespace
+
+RimReach rim_reach(const Circle3& circle, const Cylinder3& cylinder, bool a_priori_bounds_apply,
+                   double centre_error) {
+  return floating_point_filter(
+      a_priori_bounds_apply, [&] { return rim_reach_a_priori(circle, cylinder, axis_offset(circle, cylinder), centre_error); },
+      [&] { return rim_reach_running_error(circle, cylinder, centre_error); });
+}
+
+RimReach rim_reach(const Circle3& circle, const Cylinder3& cylinder, const AxisOffset& offset,
+                   bool a_priori_bounds_apply, double centre_error) {
+  return floating_point_filter(
+      a_priori_bounds_apply, [&] { return rim_reach_a_priori(circle, cylinder, offset, centre_error); },
+      [&] { return rim_reach_running_error(circle, cylinder, centre_error); });
 }
 
 void widen_for_centre_error(RimDistancePolynomial& g, const Circle3& circle,

@@ -1,74 +1,48 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "rim_plane_quantities.hpp"
 
-#include <array>
 #include <bit>
 #include <cmath>
+#include <optional>
 
 #include "a_priori_bounds.hpp"
+#include "filtered_predicate.hpp"
 #include "pair_lanes.hpp"
+#include "plane_terms.hpp"
 #include "primitives_detail.hpp"
 #include "scale_normalisation.hpp"
+#include "twinned.hpp"
 
 namespace clearjoint::geometry::detail {
 namespace {
 
 BoundedVector3 exact(const Vector3& v) { return {v.x(), v.y(), v.z()}; }
 
-}  // namespace
-
-namespace {
-
-/// A value beside its absolute-value twin (a_priori_bounds.hpp), the value in lane 0 and the twin
-/// in lane 1 (pair_lanes.hpp). The twin is the value's expression on |inputs| with subtractions
-/// turned into additions, so one chain of packed operations forms both, each lane rounded exactly
-/// as the scalar operation: the bits of the value and of the twin computed one after the other.
-/// A subtracted product's factor enters as {x, -|x|}: a - (-|x|) y is a + |x| y exactly (negation
-/// is exact, and so is that of a rounded product).
-Pair with_twin(double x) {
-  const PairMask kAllButLane1Sign = ~bits_of(Pair{0.0, -0.0});
-  return pair_of_bits(bits_of(Pair{x, x}) & kAllButLane1Sign);
-}
-Pair with_negated_twin(double x) {
-  const PairMask kLane1Sign = bits_of(Pair{0.0, -0.0});
-  return pair_of_bits(bits_of(Pair{x, x}) | kLane1Sign);
-}
-
-/// The a priori computation in plain double, each value beside its absolute-value twin
-/// (with_twin). Chains of roundings: c - p 1, s 4, w 2, w2 5, nc2 and np2 3, discriminant 10
+/// The a priori terms: plane_terms on Twinned (twinned.hpp), each value beside its
+/// absolute-value twin, formed in one chain of packed operations. Chains of roundings: c - p 1
+/// (rounded in double, its twin |c - p|), s 4, w 2, w2 5, nc2 and np2 3, discriminant 10
 /// (s^2 nc2 9, r^2 w2 7, then the difference).
 struct APrioriTerms {
-  Pair s;
-  std::array<Pair, 3> w;
-  Pair w2;
-  Pair nc2, np2;  ///< in both lanes: x^2 and |x|^2 round alike, so each is its own twin
-  Pair discriminant;
-  double nc_1, np_1;  ///< 1-norms of the normals, for the guard (plane_quantities_if_ready)
+  PlaneTerms<Twinned> terms;  ///< nc2 and np2 in both lanes: x^2 and |x|^2 round alike
+  double nc_1, np_1;          ///< 1-norms of the normals, for the guard (plane_quantities_if_ready)
 };
 APrioriTerms a_priori_terms(const Circle3& circle, const Plane3& plane) {
-  // Component by component: the same operations as Eigen's cwiseAbs/cross/dot, without the
-  // temporaries, which it did not fold away here (this and the guard below were ~240
-  // instructions of a ~1250-instruction query); in lanes, the value's and the twin's at once.
+  // Component by component, not through Eigen's cwiseAbs/cross/dot, whose temporaries it did
+  // not fold away here (this and the guard below were ~240 instructions of a ~1250-instruction
+  // query).
   const Vector3& c = circle.center;
   const Vector3& p = plane.point;
   const Vector3& np = plane.normal;
   const Vector3& nc = circle.normal;
-  const Pair dx = with_twin(c.x() - p.x()), dy = with_twin(c.y() - p.y()), dz = with_twin(c.z() - p.z());
-  const Pair px = with_twin(np.x()), py = with_twin(np.y()), pz = with_twin(np.z());
-  const Pair cx = with_twin(nc.x()), cy = with_twin(nc.y()), cz = with_twin(nc.z());
+  const Vector3Of<Twinned> offset{Twinned::of(c.x() - p.x()), Twinned::of(c.y() - p.y()), Twinned::of(c.z() - p.z())};
+  const Vector3Of<Twinned> n_p{Twinned::of(np.x()), Twinned::of(np.y()), Twinned::of(np.z())};
+  const Vector3Of<Twinned> n_c{Twinned::of(nc.x()), Twinned::of(nc.y()), Twinned::of(nc.z())};
+  // Filled member by member: built in one braced return, the terms stayed in memory (GCC did not
+  // split the nested aggregate into registers) and plane_quantities_if_ready spilled ~15 values.
   APrioriTerms t;
-  t.s = px * dx + py * dy + pz * dz;
-  // w = n_p x n_c; its twin |n_p| x |n_c| with + (abs_cross).
-  t.w = {py * cz - with_negated_twin(np.z()) * cy, pz * cx - with_negated_twin(np.x()) * cz,
-         px * cy - with_negated_twin(np.y()) * cx};
-  t.w2 = t.w[0] * t.w[0] + t.w[1] * t.w[1] + t.w[2] * t.w[2];
-  t.nc2 = cx * cx + cy * cy + cz * cz;
-  t.np2 = px * px + py * py + pz * pz;
-  const double r2 = circle.radius * circle.radius;
-  // r^2 w2 is subtracted from the value and added to the twin: -r^2 in lane 1 (with_negated_twin).
-  t.discriminant = t.s * t.s * t.nc2 - Pair{r2, -r2} * t.w2;
-  t.nc_1 = (cx + cy + cz)[1];
-  t.np_1 = (px + py + pz)[1];
+  t.terms = plane_terms(offset, n_c, n_p, Twinned::of(circle.radius));
+  t.nc_1 = (n_c.x + n_c.y + n_c.z).twin();
+  t.np_1 = (n_p.x + n_p.y + n_p.z).twin();
   return t;
 }
 
@@ -78,17 +52,14 @@ APrioriTerms a_priori_terms(const Circle3& circle, const Plane3& plane) {
 /// which gives back its bits (-0 and subnormals included). Test: the bits equal those of
 /// a_priori_with_underflow (test_rim_plane_quantities.cpp). As two scalar calls, with the lanes
 /// taken apart first, it cost ~23 more instructions per plane query (callgrind).
-Bounded a_priori_from_twin(Pair value_and_twin) {
-  return std::bit_cast<Bounded>(value_and_twin * Pair{1.0, kGamma64} * Pair{1.0, kMagnitudeInflation} +
+Bounded a_priori_from_twin(Twinned value_and_twin) {
+  return std::bit_cast<Bounded>(value_and_twin.lanes * Pair{1.0, kGamma64} * Pair{1.0, kMagnitudeInflation} +
                                 Pair{-0.0, kUnderflowAllowance});
 }
 
-}  // namespace
-
-namespace {
-PlaneQuantities plane_quantities_from_terms(const APrioriTerms& t, double np2) {
+PlaneQuantities plane_quantities_from_terms(const PlaneTerms<Twinned>& t, double np2) {
   return {a_priori_from_twin(t.s),
-          {a_priori_from_twin(t.w[0]), a_priori_from_twin(t.w[1]), a_priori_from_twin(t.w[2])},
+          {a_priori_from_twin(t.w.x), a_priori_from_twin(t.w.y), a_priori_from_twin(t.w.z)},
           a_priori_from_twin(t.w2),
           a_priori_from_twin(t.nc2),
           a_priori_with_underflow(np2, np2),
@@ -98,18 +69,14 @@ PlaneQuantities plane_quantities_from_terms(const APrioriTerms& t, double np2) {
 }  // namespace
 
 PlaneQuantities plane_quantities_a_priori(const Circle3& circle, const Plane3& plane) {
-  return plane_quantities_from_terms(a_priori_terms(circle, plane), plane.normal.squaredNorm());
+  return plane_quantities_from_terms(a_priori_terms(circle, plane).terms, plane.normal.squaredNorm());
 }
 
 /// The running error bound of error_bounded.hpp, for inputs outside the a priori guard (it also
 /// covers underflow and overflow).
 PlaneQuantities plane_quantities_running_error(const Circle3& circle, const Plane3& plane) {
-  const BoundedVector3 nc = exact(circle.normal), np = exact(plane.normal);
-  const Bounded s = dot(np, exact(circle.center) - exact(plane.point));
-  const BoundedVector3 w = cross(np, nc);
-  const Bounded w2 = squared_norm(w), nc2 = squared_norm(nc);
-  const Bounded r = circle.radius;
-  return {s, w, w2, nc2, squared_norm(np), s * s * nc2 - r * r * w2};
+  return plane_terms(exact(circle.center) - exact(plane.point), exact(circle.normal), exact(plane.normal),
+                     Bounded(circle.radius));
 }
 
 namespace {
@@ -165,10 +132,10 @@ bool plane_a_priori_bounds_apply(const Circle3& circle, const Plane3& plane) {
 
 ReadyPlaneQuantities plane_quantities_if_ready(const Circle3& circle, const Plane3& plane) {
   const APrioriTerms t = a_priori_terms(circle, plane);
-  const double np2 = t.np2[0];
-  const GuardMagnitudes g{lengths_one_norm(circle, plane), t.nc_1, t.np_1, t.nc2[0], np2};
+  const double np2 = t.terms.np2.value();
+  const GuardMagnitudes g{lengths_one_norm(circle, plane), t.nc_1, t.np_1, t.terms.nc2.value(), np2};
   if (!inputs_ready(g, circle.radius)) return {};
-  return {true, plane_quantities_from_terms(t, np2)};
+  return {true, plane_quantities_from_terms(t.terms, np2)};
 }
 
 DeepestDirection deepest_direction(const Circle3& circle, const PlaneQuantities& q) {
@@ -189,26 +156,35 @@ RimSide rim_side_of_plane(const Circle3& circle, const Plane3& plane) {
 
 RimSide rim_side_of_plane(const Circle3& circle, const Plane3& plane, bool a_priori_bounds_apply,
                           double distance_error) {
-  Bounded s, discriminant;
-  if (a_priori_bounds_apply) {  // only the two values the side needs, not all the quantities
-    const APrioriTerms t = a_priori_terms(circle, plane);
-    s = a_priori_from_twin(t.s);
-    discriminant = a_priori_from_twin(t.discriminant);
-    if (distance_error != 0.0) {
-      const double np2 = plane.normal.squaredNorm();
-      widen_side_quantities(s, discriminant, a_priori_with_underflow(np2, np2),
-                            a_priori_from_twin(t.nc2), distance_error);
-    }
-  } else {
-    PlaneQuantities q = plane_quantities_running_error(circle, plane);
-    widen_for_point_error(q, distance_error);
-    s = q.s;
-    discriminant = q.discriminant;
-  }
-  if (discriminant.sign() <= 0) return RimSide::undecided;
-  const int side = s.sign();
-  return side < 0 ? RimSide::strictly_negative
-                  : side > 0 ? RimSide::strictly_positive : RimSide::undecided;
+  struct SideQuantities {
+    Bounded s, discriminant;
+  };
+  return filtered_predicate(
+      a_priori_bounds_apply,
+      [&] {  // only the two values the side needs, not all the quantities
+        const PlaneTerms<Twinned> t = a_priori_terms(circle, plane).terms;
+        SideQuantities q{a_priori_from_twin(t.s), a_priori_from_twin(t.discriminant)};
+        if (distance_error != 0.0) {
+          const double np2 = plane.normal.squaredNorm();
+          widen_side_quantities(q.s, q.discriminant, a_priori_with_underflow(np2, np2), a_priori_from_twin(t.nc2),
+                                distance_error);
+        }
+        return q;
+      },
+      [&] {
+        PlaneQuantities q = plane_quantities_running_error(circle, plane);
+        widen_for_point_error(q, distance_error);
+        return SideQuantities{q.s, q.discriminant};
+      },
+      [](const SideQuantities& q) -> std::optional<RimSide> {
+        if (q.discriminant.sign() <= 0) return std::nullopt;
+        const int side = q.s.sign();
+        if (side == 0) return std::nullopt;
+        return side < 0 ? RimSide::strictly_negative : RimSide::strictly_positive;
+      },
+      // No exact tier: a filter for the callers (the prefilters), which run the whole query when
+      // it cannot tell.
+      [] { return RimSide::undecided; });
 }
 
 }  // namespace clearjoint::geometry::detail

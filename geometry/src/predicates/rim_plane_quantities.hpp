@@ -10,15 +10,12 @@
 
 #include "clearjoint/geometry/primitives.hpp"
 #include "error_bounded.hpp"
+#include "plane_terms.hpp"
 
 namespace clearjoint::geometry::detail {
 
-struct PlaneQuantities {
-  Bounded s;             ///< n_p . (c - p)
-  BoundedVector3 w;      ///< n_p x n_c
-  Bounded w2, nc2, np2;  ///< |w|^2, |n_c|^2, |n_p|^2
-  Bounded discriminant;  ///< s^2 |n_c|^2 - r^2 |w|^2
-};
+/// The terms of plane_terms.hpp, each with its error bound.
+using PlaneQuantities = PlaneTerms<Bounded>;
 
 /// Whether the a priori bounds of a_priori_bounds.hpp hold for these inputs (magnitudes).
 bool plane_a_priori_bounds_apply(const Circle3& circle, const Plane3& plane);

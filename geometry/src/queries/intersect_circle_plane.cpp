@@ -5,7 +5,8 @@
 // signed distance of rim point x(theta) from the plane is, times |n_p|,
 //   f(theta) = s + r |P n_p| cos(theta - theta_m),   |P n_p|^2 = |n_p x n_c|^2 / |n_c|^2,
 // theta_m the angle of P n_p in the rim frame. The topology is the sign of
-// s^2 |n_c|^2 - r^2 |n_p x n_c|^2, decided by a filter then exactly.
+// s^2 |n_c|^2 - r^2 |n_p x n_c|^2 (plane_terms.hpp), decided by a filter then exactly
+// (filtered_predicate.hpp).
 
 #include "clearjoint/geometry/intersect_circle_plane.hpp"
 
@@ -17,6 +18,7 @@
 #include "angles.hpp"
 #include "circle_plane_exact.hpp"
 #include "error_bounded.hpp"
+#include "filtered_predicate.hpp"
 #include "pair_lanes.hpp"
 #include "primitives_detail.hpp"
 #include "rim_plane_quantities.hpp"
@@ -272,8 +274,10 @@ bool answer(const Circle3& circle_in, const Plane3& plane_in, const Intersection
     rescaled = rescale(circle_in, plane_in);
     circle = &rescaled.circle;
     plane = &rescaled.plane;
-    q = detail::plane_a_priori_bounds_apply(*circle, *plane) ? detail::plane_quantities_a_priori(*circle, *plane)
-                                                             : detail::plane_quantities_running_error(*circle, *plane);
+    q = detail::floating_point_filter(
+        detail::plane_a_priori_bounds_apply(*circle, *plane),
+        [&] { return detail::plane_quantities_a_priori(*circle, *plane); },
+        [&] { return detail::plane_quantities_running_error(*circle, *plane); });
   }
   const int e = rescaled.exponent;
   // Every bound below then holds for the exact centre and point too (rounded_point.hpp).
@@ -282,9 +286,13 @@ bool answer(const Circle3& circle_in, const Plane3& plane_in, const Intersection
   if (scaled_centre_error + scaled_point_error != 0.0) {
     detail::widen_for_point_error(q, scaled_centre_error + scaled_point_error);
   }
+  // The filter's decision, else the exact tier's (filtered_predicate.hpp's order), written out:
+  // filtered_or_exact would copy the decision out of its optional, a 16-byte load of two 8-byte
+  // stores that the store buffer cannot forward, and the random-pose queries were measurably
+  // slower for it (bench_intersections); here it is filled in place.
   std::optional<Decision> decision = decide_without_exact_tier(*circle, *plane, options, q);
   if (!decision) {
-    if (scope == Scope::detection) return false;
+    if (scope == Scope::detection) return false;  // its exact tier needs the recipes
     decision = Decision{detail::exact_circle_plane_topology(*circle, *plane, errors.centre_recipe,
                                                             errors.point_recipe, e),
                         {Certainty::exact, CertificateReason::plane_filter_undecided}};

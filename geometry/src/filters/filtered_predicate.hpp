@@ -1,0 +1,45 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+// The order of a predicate's tiers, written once. The idea is CGAL's Filtered_predicate: evaluate
+// the predicate with a fast approximate number type that can say "I cannot tell", and only then
+// with an exact one. Here the approximate evaluation has two forms of one expression
+// (plane_terms.hpp, rim_distance_polynomial.hpp):
+//  1. the a priori filter: plain double plus one absolute-value twin per value
+//     (a_priori_bounds.hpp), valid only inside a magnitude guard;
+//  2. the running-error filter (error_bounded.hpp), for every other finite input;
+// one of the two runs, chosen by the guard (the running error is the filter of the inputs the a
+// priori bounds do not cover, not a second attempt), and
+//  3. the exact tier (exact/, CGAL rationals) runs when the filter leaves the answer open.
+// "Open" is std::nullopt (CGAL throws Uncertain_conversion_exception: no exceptions on the hot
+// path here). The tiers are callables, inlined: the dispatch costs nothing at run time.
+
+#include <optional>
+#include <utility>
+
+namespace clearjoint::geometry::detail {
+
+/// Tier 1 where the guard holds, tier 2 elsewhere: both return the same quantities (or decision)
+/// with rigorous error bounds, so nothing after them depends on which ran.
+template <class APriori, class RunningError>
+[[gnu::always_inline]] inline auto floating_point_filter(bool a_priori_bounds_apply, APriori&& a_priori,
+                                                         RunningError&& running_error) {
+  return a_priori_bounds_apply ? std::forward<APriori>(a_priori)() : std::forward<RunningError>(running_error)();
+}
+
+/// The filter's decision (a std::optional), or the exact tier's when the filter has none.
+template <class Filtered, class Exact>
+[[gnu::always_inline]] inline auto filtered_or_exact(Filtered&& filtered, Exact&& exact) {
+  if (auto decided = std::forward<Filtered>(filtered)()) return *std::move(decided);
+  return std::forward<Exact>(exact)();
+}
+
+/// The three tiers in order: decide(the filter's quantities) -> std::optional<Result>, and
+/// exact() -> Result when that is empty.
+template <class APriori, class RunningError, class Decide, class Exact>
+[[gnu::always_inline]] inline auto filtered_predicate(bool a_priori_bounds_apply, APriori&& a_priori,
+                                                      RunningError&& running_error, Decide&& decide, Exact&& exact) {
+  return filtered_or_exact(
+      [&] { return decide(floating_point_filter(a_priori_bounds_apply, a_priori, running_error)); }, exact);
+}
+
+}  // namespace clearjoint::geometry::detail
