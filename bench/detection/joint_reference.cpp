@@ -7,6 +7,8 @@
 #include <cmath>
 #include <utility>
 
+#include "trig_quadratic_roots.hpp"
+
 namespace clearjoint::bench {
 
 using geometry::ContactBase;
@@ -86,48 +88,9 @@ Rim make_rim(const RealVector& center, const RealVector& normal_hat, const Real&
   return rim;
 }
 
-// ---- trigonometric quadratics and their roots ----------------------------------------------------
+// ---- trigonometric quadratics and their roots (support/multiprecision) ---------------------------
 
-/// f(theta) = p + q cos + s sin + cc cos^2 + ss sin^2 + cs cos sin.
-struct TrigQuadratic {
-  Real p, q, s, cc, ss, cs;
-
-  Real at(const Real& c, const Real& sn) const {
-    return p + q * c + s * sn + cc * c * c + ss * sn * sn + cs * c * sn;
-  }
-  Real at(const Real& angle) const { return at(cos(angle), sin(angle)); }
-  TrigQuadratic derivative() const {
-    // d cos = -sin, d sin = cos, d cos^2 = -2 cos sin, d sin^2 = 2 cos sin,
-    // d (cos sin) = cos^2 - sin^2.
-    return {Real(0), s, -q, cs, -cs, 2 * (ss - cc)};
-  }
-  /// g(psi) = f(phi + psi) with cos(phi) = cp, sin(phi) = sp.
-  TrigQuadratic shifted(const Real& cp, const Real& sp) const {
-    // cos(phi + psi) = cp C - sp S, sin(phi + psi) = sp C + cp S (C = cos psi, S = sin psi).
-    TrigQuadratic g;
-    g.p = p;
-    g.q = q * cp + s * sp;
-    g.s = -q * sp + s * cp;
-    g.cc = cc * cp * cp + ss * sp * sp + cs * cp * sp;
-    g.ss = cc * sp * sp + ss * cp * cp - cs * cp * sp;
-    g.cs = -2 * cc * cp * sp + 2 * ss * sp * cp + cs * (cp * cp - sp * sp);
-    return g;
-  }
-  /// Largest coefficient in the Fourier basis (1, cos, sin, cos 2, sin 2): f == 0 iff all vanish.
-  Real fourier_size() const {
-    Real m = abs(p + (cc + ss) / 2);
-    for (const Real& x : {abs(q), abs(s), abs((cc - ss) / 2), abs(cs / 2)}) m = std::max(m, x);
-    return m;
-  }
-};
-
-using Poly = std::vector<Real>;  // ascending powers
-
-Real horner(const Poly& p, const Real& x) {
-  Real r = 0;
-  for (auto it = p.rbegin(); it != p.rend(); ++it) r = r * x + *it;
-  return r;
-}
+using TrigQuadratic = multiprecision::TrigQuadratic<Real>;
 
 /// Coefficients below this fraction of the largest are rounding noise: the working precision is
 /// 1e-120 and every coefficient is a short sum of products, while the Sturm remainders of roots
@@ -136,63 +99,6 @@ const Real& negligible() {
   static const Real value("1e-105");
   return value;
 }
-
-/// Scale to max |coefficient| = 1 (signs kept) and drop negligible leading terms; false when the
-/// whole polynomial is negligible.
-bool normalise(Poly& p) {
-  Real m = 0;
-  for (const Real& c : p) m = std::max(m, Real(abs(c)));
-  if (m == 0) return false;
-  for (Real& c : p) c /= m;
-  while (!p.empty() && abs(p.back()) <= negligible()) p.pop_back();
-  return !p.empty();
-}
-
-Poly derivative(const Poly& p) {
-  Poly d;
-  for (std::size_t i = 1; i < p.size(); ++i) d.push_back(p[i] * static_cast<int>(i));
-  return d;
-}
-
-Poly negated_remainder(Poly a, const Poly& b) {
-  while (a.size() >= b.size()) {
-    const Real factor = a.back() / b.back();
-    const std::size_t shift = a.size() - b.size();
-    for (std::size_t i = 0; i < b.size(); ++i) a[i + shift] -= factor * b[i];
-    a.pop_back();
-  }
-  for (Real& c : a) c = -c;
-  return a;
-}
-
-/// Sturm sequence: the number of distinct real roots in (a, b] is count(a) - count(b).
-class Sturm {
- public:
-  explicit Sturm(const Poly& p) {
-    chain_.push_back(p);
-    Poly d = derivative(p);
-    if (!normalise(d)) return;
-    chain_.push_back(d);
-    while (chain_.back().size() > 1) {
-      Poly r = negated_remainder(chain_[chain_.size() - 2], chain_.back());
-      if (!normalise(r)) break;
-      chain_.push_back(std::move(r));
-    }
-  }
-  int count(const Real& x) const {
-    int changes = 0, last = 0;
-    for (const Poly& q : chain_) {
-      const int s = sign_of(horner(q, x));
-      if (s == 0) continue;
-      if (last != 0 && s != last) ++changes;
-      last = s;
-    }
-    return changes;
-  }
-
- private:
-  std::vector<Poly> chain_;
-};
 
 /// Safety cap on bisection steps: 2^-600 times any root bound is far below kRootWidth.
 constexpr int kMaxBisections = 600;
@@ -203,69 +109,22 @@ struct PolyRoots {
   std::vector<Real> roots;  // sorted
 };
 
-/// The distinct real roots of `e` (normalised, degree >= 1).
-PolyRoots real_roots(const Poly& e) {
+/// The distinct real roots of `e` (normalised, degree >= 1); ambiguous when two lie closer than
+/// kAmbiguousSeparation or one has even multiplicity.
+PolyRoots real_roots(const multiprecision::Poly<Real>& e) {
+  static const multiprecision::IsolationLimits<Real> limits{negligible(), Real(kRootWidth), Real(kAmbiguousSeparation),
+                                                            kMaxBisections};
   PolyRoots out;
-  Real bound = 0;
-  for (std::size_t i = 0; i + 1 < e.size(); ++i) bound = std::max(bound, Real(abs(e[i] / e.back())));
-  bound += 1;  // Cauchy's bound
-  const Sturm sturm(e);
-  const Poly de = derivative(e);
-  struct Interval {
-    Real lo, hi;
-    int v_lo, v_hi;
-    int depth;
-  };
-  std::vector<Interval> todo{{-bound, bound, sturm.count(-bound), sturm.count(bound), 0}};
-  const Real width(kRootWidth);
-  while (!todo.empty()) {
-    const Interval iv = todo.back();
-    todo.pop_back();
-    const int n = iv.v_lo - iv.v_hi;
-    if (n <= 0) continue;
-    if (n > 1) {
-      if (iv.depth >= kMaxBisections || iv.hi - iv.lo < Real(kAmbiguousSeparation)) {
-        out.ambiguous = true;
-        out.why = "a cluster of roots narrower than kAmbiguousSeparation";
-        out.roots.push_back((iv.lo + iv.hi) / 2);
-        continue;
-      }
-      Real mid = (iv.lo + iv.hi) / 2;
-      if (horner(e, mid) == 0) mid = (iv.lo + 3 * mid) / 4;  // keep roots off the cut
-      const int v_mid = sturm.count(mid);
-      todo.push_back({iv.lo, mid, iv.v_lo, v_mid, iv.depth + 1});
-      todo.push_back({mid, iv.hi, v_mid, iv.v_hi, iv.depth + 1});
-      continue;
-    }
-    Real lo = iv.lo, hi = iv.hi;
-    const int s_lo = sign_of(horner(e, lo));
-    const int s_hi = sign_of(horner(e, hi));
-    if (s_hi == 0) {
-      out.roots.push_back(hi);
-      continue;
-    }
-    if (s_lo == s_hi) {
+  for (const multiprecision::IsolatedRoot<Real>& root : multiprecision::real_roots(e, limits)) {
+    out.roots.push_back(root.t);
+    if (root.multiplicity_hint == 2) {
       out.ambiguous = true;
       out.why = "a root of even multiplicity (a tangency to working precision)";
-      out.roots.push_back((lo + hi) / 2);
-      continue;
+    } else if (root.multiplicity_hint > 2) {
+      out.ambiguous = true;
+      out.why = "a cluster of roots narrower than kAmbiguousSeparation";
     }
-    // Safeguarded Newton: the bracket shrinks every step; steps leaving it become bisections.
-    Real x = (lo + hi) / 2;
-    for (int i = 0; i < kMaxBisections; ++i) {
-      const Real fx = horner(e, x);
-      const int sx = sign_of(fx);
-      if (sx == 0) break;
-      (sx == s_lo ? lo : hi) = x;
-      Real next = x - fx / horner(de, x);
-      if (!(next > lo && next < hi)) next = (lo + hi) / 2;
-      const Real moved = abs(next - x);
-      x = next;
-      if (hi - lo < width || moved < width) break;
-    }
-    out.roots.push_back(x);
   }
-  std::sort(out.roots.begin(), out.roots.end());
   for (std::size_t i = 1; i < out.roots.size(); ++i) {
     if (out.roots[i] - out.roots[i - 1] < Real(kAmbiguousSeparation)) {
       out.ambiguous = true;
@@ -290,32 +149,11 @@ AngleRoots angle_roots(const TrigQuadratic& f, const Real& size) {
     out.vanishes = true;
     return out;
   }
-  // Shift by the multiple of pi/4 with |f(phi + pi)| largest: the quartic's leading coefficient
-  // f(phi + pi) (1 + t^2)^2 / t^4 -> f(phi + pi) is then far from 0, no root hides at t = inf.
-  static const Real half_sqrt2 = sqrt(Real(2)) / 2;
-  const std::array<std::pair<Real, Real>, 8> shifts = {{{Real(1), Real(0)},
-                                                       {half_sqrt2, half_sqrt2},
-                                                       {Real(0), Real(1)},
-                                                       {-half_sqrt2, half_sqrt2},
-                                                       {Real(-1), Real(0)},
-                                                       {-half_sqrt2, -half_sqrt2},
-                                                       {Real(0), Real(-1)},
-                                                       {half_sqrt2, -half_sqrt2}}};
-  int best = 0;
-  Real best_value = -1;
-  for (int k = 0; k < 8; ++k) {
-    const Real value = abs(f.at(-shifts[k].first, -shifts[k].second));  // f(phi + pi)
-    if (value > best_value) {
-      best_value = value;
-      best = k;
-    }
-  }
-  const TrigQuadratic g = f.shifted(shifts[best].first, shifts[best].second);
-  const Real phi = pi_constant() * best / 4;
-  // g (1 + t^2)^2 with cos = (1 - t^2)/(1 + t^2), sin = 2t/(1 + t^2).
-  Poly e{g.p + g.q + g.cc, 2 * g.s + 2 * g.cs, 2 * g.p - 2 * g.cc + 4 * g.ss, 2 * g.s - 2 * g.cs,
-         g.p - g.q + g.cc};
-  if (!normalise(e)) {
+  // The half-angle quartic after the shift that keeps its leading coefficient far from 0.
+  const multiprecision::HalfAngleQuartic<Real> quartic = multiprecision::half_angle_quartic(f);
+  const Real phi = pi_constant() * quartic.k / 4;
+  multiprecision::Poly<Real> e = quartic.e;
+  if (!multiprecision::normalise(e, negligible())) {
     out.vanishes = true;
     return out;
   }

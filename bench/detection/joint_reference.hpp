@@ -32,8 +32,9 @@
 /// doubles, while the joint as given has centres P +- (L/2) a_hat that no double holds; and
 /// CGAL's algebraic kernels isolate the roots of exact (rational) polynomials, while these
 /// coefficients carry square roots (a/|a|). The root isolation (Sturm sequence, bisection,
-/// safeguarded Newton) is therefore written here in MPFR; tests/test_joint_reference.cpp checks it
-/// against the test reference on rounded joints and against closed forms.
+/// safeguarded Newton) in MPFR is the test reference's (support/multiprecision/
+/// trig_quadratic_roots.hpp); tests/test_joint_reference.cpp checks this reference against the test
+/// reference on rounded joints and against closed forms.
 ///
 /// The reference says when it cannot decide (`decided == false`): roots closer than
 /// kAmbiguousSeparation, a root of even multiplicity, or a sign test within kTieWidth of zero.

@@ -8,6 +8,8 @@
 
 #include <boost/multiprecision/gmp.hpp>
 
+#include "trig_quadratic_roots.hpp"
+
 namespace clearjoint::test::reference {
 namespace {
 
@@ -87,128 +89,22 @@ RealVector frame_point(const RimFrame& f, const Real& cos_a, const Real& sin_a) 
   return add(f.center, scale(f.radius, add(scale(cos_a, f.u), scale(sin_a, f.v))));
 }
 
-// ---- trigonometric quadratics ------------------------------------------------------------------
+// ---- trigonometric quadratics and their roots (support/multiprecision) -------------------------
 
-/// f(theta) = p + q cos + s sin + cc cos^2 + ss sin^2 + cs cos sin.
-struct TrigQuadratic {
-  Real p, q, s, cc, ss, cs;
+using TrigQuadratic = multiprecision::TrigQuadratic<Real>;
+using Poly = multiprecision::Poly<Real>;
+using multiprecision::derivative;
+using multiprecision::horner;
+using multiprecision::sign_of;
+using RealRoot = multiprecision::IsolatedRoot<Real>;
 
-  Real at(const Real& c, const Real& sn) const {
-    return p + q * c + s * sn + cc * c * c + ss * sn * sn + cs * c * sn;
-  }
-  TrigQuadratic derivative() const {
-    // d cos = -sin, d sin = cos, d cos^2 = -2 cs, d sin^2 = 2 cs, d cs = cos^2 - sin^2.
-    return {Real(0), s, -q, cs, -cs, 2 * (ss - cc)};
-  }
-  /// The same function of psi = theta - phi.
-  TrigQuadratic shifted(const Real& cphi, const Real& sphi) const {
-    const Real m01 = cs / 2;
-    TrigQuadratic r;
-    r.p = p;
-    r.q = q * cphi + s * sphi;
-    r.s = s * cphi - q * sphi;
-    r.cc = cc * cphi * cphi + 2 * m01 * cphi * sphi + ss * sphi * sphi;
-    r.ss = cc * sphi * sphi - 2 * m01 * sphi * cphi + ss * cphi * cphi;
-    r.cs = 2 * (-cc * cphi * sphi + m01 * (cphi * cphi - sphi * sphi) + ss * sphi * cphi);
-    return r;
-  }
-  /// Largest Fourier coefficient (the cos^2 + sin^2 = 1 identity folded in), to detect f == 0.
-  Real fourier_size() const {
-    using std::max;
-    Real m = abs(p + (cc + ss) / 2);
-    for (const Real& x : {abs(q), abs(s), abs((cc - ss) / 2), abs(cs / 2)}) m = max(m, x);
-    return m;
-  }
-};
-
-// ---- real polynomials, Sturm sequences --------------------------------------------------------
-
-using Poly = std::vector<Real>;  // ascending powers
-
-Real horner(const Poly& p, const Real& x) {
-  Real r = 0;
-  for (auto it = p.rbegin(); it != p.rend(); ++it) r = r * x + *it;
-  return r;
+bool normalise(Poly& p) { return multiprecision::normalise(p, kNegligible); }
+std::vector<RealRoot> real_roots(const Poly& e) {
+  // Clusters narrower than kRootWidth are reported as such (multiplicity_hint > 1: ambiguous).
+  static const multiprecision::IsolationLimits<Real> limits{kNegligible, Real(kRootWidth), Real(kRootWidth),
+                                                            kMaxBisections};
+  return multiprecision::real_roots(e, limits);
 }
-
-Real max_abs(const Poly& p) {
-  Real m = 0;
-  for (const Real& c : p) m = std::max(m, Real(abs(c)));
-  return m;
-}
-
-/// Scale to max |coefficient| 1 (a positive factor: signs are kept) and drop negligible leading
-/// coefficients. Returns false when the polynomial is negligible as a whole.
-bool normalise(Poly& p) {
-  const Real m = max_abs(p);
-  if (m == 0) return false;
-  for (Real& c : p) c /= m;
-  while (!p.empty() && abs(p.back()) <= kNegligible) p.pop_back();
-  return !p.empty();
-}
-
-Poly derivative(const Poly& p) {
-  Poly d;
-  for (std::size_t i = 1; i < p.size(); ++i) d.push_back(p[i] * static_cast<int>(i));
-  return d;
-}
-
-Poly remainder(Poly a, const Poly& b) {
-  while (a.size() >= b.size()) {
-    const Real factor = a.back() / b.back();
-    const std::size_t shift = a.size() - b.size();
-    for (std::size_t i = 0; i < b.size(); ++i) a[i + shift] -= factor * b[i];
-    a.pop_back();
-  }
-  return a;
-}
-
-int sign_of(const Real& x) { return x > 0 ? 1 : (x < 0 ? -1 : 0); }
-
-struct Sturm {
-  std::vector<Poly> chain;
-
-  explicit Sturm(const Poly& p) {
-    chain.push_back(p);
-    Poly d = derivative(p);
-    if (!normalise(d)) return;
-    chain.push_back(d);
-    for (;;) {
-      Poly r = remainder(chain[chain.size() - 2], chain.back());
-      for (Real& c : r) c = -c;
-      if (!normalise(r)) break;
-      chain.push_back(std::move(r));
-      if (chain.back().size() == 1) break;
-    }
-  }
-  static int variations(const std::vector<int>& signs) {
-    int count = 0, last = 0;
-    for (int s : signs) {
-      if (s == 0) continue;
-      if (last != 0 && s != last) ++count;
-      last = s;
-    }
-    return count;
-  }
-  int at(const Real& x) const {
-    int count = 0, last = 0;
-    for (const Poly& q : chain) {
-      const int s = sign_of(horner(q, x));
-      if (s == 0) continue;
-      if (last != 0 && s != last) ++count;
-      last = s;
-    }
-    return count;
-  }
-  int at_infinity(int direction) const {
-    std::vector<int> signs;
-    for (const Poly& q : chain) {
-      const int degree = static_cast<int>(q.size()) - 1;
-      signs.push_back(sign_of(q.back()) * ((direction < 0 && degree % 2 == 1) ? -1 : 1));
-    }
-    return variations(signs);
-  }
-};
 
 /// Discriminant of e4 t^4 + e3 t^3 + e2 t^2 + e1 t + e0 through the invariants
 /// I = 12 a e - 3 b d + c^2 and J = 72 a c e + 9 b c d - 27 a d^2 - 27 e b^2 - 2 c^3:
@@ -218,91 +114,6 @@ Real quartic_discriminant(const Poly& p) {
   const Real i = 12 * a * e - 3 * b * d + c * c;
   const Real j = 72 * a * c * e + 9 * b * c * d - 27 * a * d * d - 27 * e * b * b - 2 * c * c * c;
   return (4 * i * i * i - j * j) / 27;
-}
-
-struct RealRoot {
-  Real t;
-  int multiplicity_hint = 1;  ///< > 1: a cluster or an even root, the answer is ambiguous
-};
-
-Real cauchy_bound(const Poly& e) {
-  Real bound = 0;
-  for (std::size_t i = 0; i + 1 < e.size(); ++i) bound = std::max(bound, Real(abs(e[i] / e.back())));
-  return bound + 1;
-}
-
-/// The distinct real roots of e (normalised, degree >= 1), sorted: Sturm counts isolate them by
-/// bisection from the Cauchy bound, safeguarded Newton refines each sign-changing bracket to
-/// kRootWidth, and a root without a sign change (even multiplicity) is narrowed on Sturm counts.
-std::vector<RealRoot> real_roots(const Poly& e) {
-  const Real bound = cauchy_bound(e);
-  const Sturm sturm(e);
-  const Poly de = derivative(e);
-  struct Interval {
-    Real lo, hi;
-    int v_lo, v_hi;
-    int depth;
-  };
-  std::vector<Interval> todo{{-bound, bound, sturm.at(-bound), sturm.at(bound), 0}};
-  std::vector<RealRoot> roots;
-  while (!todo.empty()) {
-    Interval iv = todo.back();
-    todo.pop_back();
-    const int n = iv.v_lo - iv.v_hi;
-    if (n <= 0) continue;
-    if (n > 1 && (iv.depth >= kMaxBisections || iv.hi - iv.lo < kRootWidth)) {
-      roots.push_back({(iv.lo + iv.hi) / 2, n});  // a cluster: ambiguous
-      continue;
-    }
-    if (n > 1) {
-      Real mid = (iv.lo + iv.hi) / 2;
-      if (horner(e, mid) == 0) mid = (iv.lo + 3 * mid) / 4;  // keep roots off the cut
-      const int v_mid = sturm.at(mid);
-      todo.push_back({iv.lo, mid, iv.v_lo, v_mid, iv.depth + 1});
-      todo.push_back({mid, iv.hi, v_mid, iv.v_hi, iv.depth + 1});
-      continue;
-    }
-    Real lo = iv.lo, hi = iv.hi;
-    const int s_lo = sign_of(horner(e, lo));
-    const int s_hi = sign_of(horner(e, hi));
-    if (s_hi == 0) {
-      roots.push_back({hi, 1});
-      continue;
-    }
-    if (s_lo == s_hi) {
-      // One distinct root without a sign change: even multiplicity. Bisect on Sturm counts.
-      int v_lo = iv.v_lo;
-      for (int i = 0; i < kMaxBisections && hi - lo > kRootWidth; ++i) {
-        const Real mid = (lo + hi) / 2;
-        const int v_mid = sturm.at(mid);
-        if (v_lo - v_mid >= 1) {
-          hi = mid;
-        } else {
-          lo = mid;
-          v_lo = v_mid;
-        }
-      }
-      roots.push_back({(lo + hi) / 2, 2});
-      continue;
-    }
-    // Safeguarded Newton on a sign-changing bracket: the bracket shrinks at every step, Newton
-    // steps that leave it are replaced by bisection.
-    Real x = (lo + hi) / 2;
-    for (int i = 0; i < kMaxBisections; ++i) {
-      const Real fx = horner(e, x);
-      const int sx = sign_of(fx);
-      if (sx == 0) break;
-      if (sx == s_lo) lo = x; else hi = x;
-      Real next = x - fx / horner(de, x);
-      if (!(next > lo && next < hi) || i > 100) next = (lo + hi) / 2;
-      const Real moved = abs(next - x);
-      x = next;
-      if (hi - lo < kRootWidth || moved < kRootWidth * Real(kRootWidth)) break;
-    }
-    roots.push_back({x, 1});
-  }
-  std::sort(roots.begin(), roots.end(), [](const RealRoot& a, const RealRoot& b) { return a.t < b.t; });
-  return roots;
 }
 
 struct SolvedRoot {
@@ -333,32 +144,11 @@ TrigSolution solve(const TrigQuadratic& f, const Real& size) {
     out.why = "excess function vanishes to working precision";
     return out;
   }
-  static const Real half_sqrt2 = sqrt(Real(2)) / 2;
-  static const std::array<std::pair<Real, Real>, 8> shifts = {{{Real(1), Real(0)},
-                                                              {half_sqrt2, half_sqrt2},
-                                                              {Real(0), Real(1)},
-                                                              {-half_sqrt2, half_sqrt2},
-                                                              {Real(-1), Real(0)},
-                                                              {-half_sqrt2, -half_sqrt2},
-                                                              {Real(0), Real(-1)},
-                                                              {half_sqrt2, -half_sqrt2}}};
-  // Pick phi with |f(phi + pi)| largest: the quartic's leading coefficient.
-  int best = 0;
-  Real best_value = -1;
-  for (int k = 0; k < 8; ++k) {
-    const Real value = abs(f.at(-shifts[k].first, -shifts[k].second));
-    if (value > best_value) {
-      best_value = value;
-      best = k;
-    }
-  }
-  const Real& cphi = shifts[best].first;
-  const Real& sphi = shifts[best].second;
-  const Real phi = pi_constant() * best / 4;
-  const TrigQuadratic g = f.shifted(cphi, sphi);
-  // f (1 + t^2)^2 with cos = (1 - t^2)/(1 + t^2), sin = 2t/(1 + t^2).
-  Poly e{g.p + g.q + g.cc, 2 * g.s + 2 * g.cs, 2 * g.p - 2 * g.cc + 4 * g.ss,
-         2 * g.s - 2 * g.cs, g.p - g.q + g.cc};
+  const multiprecision::HalfAngleQuartic<Real> quartic = multiprecision::half_angle_quartic(f);
+  const Real& cphi = quartic.cphi;
+  const Real& sphi = quartic.sphi;
+  const Real phi = pi_constant() * quartic.k / 4;
+  Poly e = quartic.e;
   if (!normalise(e) || e.size() != 5) {
     out.ambiguous = true;
     out.why = "quartic degenerate after the shift";
@@ -382,7 +172,7 @@ TrigSolution solve(const TrigQuadratic& f, const Real& size) {
   if (!out.ambiguous) {
     const Real disc = abs(quartic_discriminant(e));
     const Real sep = Real(kAmbiguousSeparation);
-    const Real threshold = pow(e[4], 6) * sep * sep * pow(2 * cauchy_bound(e), 10);
+    const Real threshold = pow(e[4], 6) * sep * sep * pow(2 * multiprecision::cauchy_bound(e), 10);
     if (disc <= threshold) {
       Poly de = derivative(e);
       normalise(de);

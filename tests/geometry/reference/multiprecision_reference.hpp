@@ -16,7 +16,9 @@
 ///   pi/4 chosen so that G(phi + pi) is as large as possible, which keeps the half-angle substitution
 ///   away from its pole), and t = tan((theta - phi)/2) turns G (1 + t^2)^2 into a quartic in t,
 ///   expanded symbolically. A Sturm sequence counts its distinct real roots, bisection on Sturm
-///   counts isolates them, and safeguarded Newton refines them to kRootWidth.
+///   counts isolates them, and safeguarded Newton refines them to kRootWidth
+///   (support/multiprecision/trig_quadratic_roots.hpp, shared with the joint reference of the
+///   detection benchmarks).
 /// * Plane. The topology is decided exactly with GMP rationals (alpha^2 |n_c|^2 against
 ///   r^2 |n_p x n_c|^2); crossings and the deepest point come from the closed form
 ///   alpha + rho cos(theta - theta0) in MPFR.
