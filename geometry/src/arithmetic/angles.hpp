@@ -83,9 +83,9 @@ inline Pair approximate_atan2(Pair y, Pair x) {
 /// guesses only, as approximate_atan2. acos(a) = sqrt(1 - a) q(a) on [0, 1], q the degree-7
 /// polynomial of Abramowitz and Stegun, Handbook of Mathematical Functions (1964), 4.4.46
 /// (error at most 2e-8; 2.2e-8 measured at 200001 points, which test_angles.cpp bounds), in
-/// Estrin's form; acos(-a) = pi - acos(a). It used to be approximate_atan2 of
-/// (sqrt(1 - c^2), c): a square root, a division and the arctangent's polynomial in a row, where
-/// this is a square root beside a polynomial, on the chain tier 1's first Halley step waits for.
+/// Estrin's form; acos(-a) = pi - acos(a). Not approximate_atan2 of (sqrt(1 - c^2), c): that is a
+/// square root, a division and the arctangent's polynomial in a row, where this is a square root
+/// beside a polynomial, on the chain tier 1's first Halley step waits for.
 inline double approximate_acos(double c) {
   const double x = c < -1.0 ? -1.0 : (c > 1.0 ? 1.0 : c);
   const double a = std::fabs(x), a2 = a * a, a4 = a2 * a2;

@@ -117,9 +117,9 @@ struct RimDistancePolynomial {
 /// iteration step's chain.
 /// The reciprocals are constant expressions, folded at compile time whatever the flags of the
 /// file that includes this header: under -frounding-math (which CGAL::CGAL asks for, and which
-/// geometry/CMakeLists.txt now keeps for the exact tiers only) GCC leaves an inexact 1.0 / 6 in
+/// geometry/CMakeLists.txt keeps for the exact tiers only) GCC leaves an inexact 1.0 / 6 in
 /// ordinary code as a run-time division. Either way each is 1/n rounded to nearest, the mode the
-/// kernel runs in (error_bounded.hpp); folded, they no longer cost six divisions per call.
+/// kernel runs in (error_bounded.hpp); folded, they cost no division per call.
 inline constexpr double kInverse6 = 1.0 / 6, kInverse24 = 1.0 / 24, kInverse120 = 1.0 / 120,
                         kInverse720 = 1.0 / 720, kInverse5040 = 1.0 / 5040,
                         kInverse40320 = 1.0 / 40320, kInverse362880 = 1.0 / 362880;
@@ -230,9 +230,9 @@ ValueAndSlopeOf<T> RimDistancePolynomial::approximate_at(CosSinOf<T> t) const {
 }
 
 /// The rim centre's offset from the axis in plain double, with the operations the reach test,
-/// the a priori polynomial and the widening each used to form it: a query forms it once
-/// (axis_offset) and hands it to them and to the reach guard (callgrind: ~110 instructions
-/// fewer per query).
+/// the a priori polynomial and the widening each need: a query forms it once (axis_offset) and
+/// hands it to them and to the reach guard, rather than each forming its own (~110 instructions
+/// per query, callgrind).
 struct AxisOffset {
   Vector3 q;               ///< c - p, rounded
   Vector3 perp, perp_abs;  ///< A = q x d and its absolute-value twin abs_cross(|q|, |d|)

@@ -92,8 +92,8 @@ AngleWithTrig angle_of(const Bounded& x, const Bounded& y) {
 /// crossing points must sit at the reported angles, not at acos(c)). "Near" is within 2^-20 of
 /// +-1, where the slope bound exceeds ~700: below that the two give enclosures of the same width
 /// (both are the enclosure's spread times acos's slope there), and the first costs one libm call
-/// instead of four (it was 0.75 until this was measured: the four calls were a fifth of a random
-/// circle-plane query).
+/// instead of four (the four calls are a fifth of a random circle-plane query, so the switch sits
+/// as close to +-1 as the widths allow).
 constexpr double kNearUnitCosine = 1 - 0x1p-20;
 
 AngleWithTrig acos_of(const Bounded& c) {
