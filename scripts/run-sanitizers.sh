@@ -10,8 +10,10 @@
 #                       test), the program's end-to-end tests and the fuzz targets
 #     --fuzz-seconds N  seconds per fuzz target under ctest (default 20)
 # Uses clang++-14 when installed (Debian clang-14, libclang-rt-14-dev), otherwise g++
-# (no fuzz targets then). The Python bindings are left out: an instrumented extension needs an
-# instrumented interpreter.
+# (no fuzz targets then). The Python and MATLAB/Octave bindings are left out: an instrumented
+# extension needs an instrumented interpreter (python3, octave-cli); so is the Fortran binding:
+# gfortran would link GCC's sanitizer runtime into programs whose libraries Clang instrumented.
+# The C API they wrap is tested from C and C++ here.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 reduced=0 fuzz_seconds=20 jobs=2
@@ -26,10 +28,16 @@ while (($#)); do
 done
 
 flags="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
-config=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DCLEARJOINT_BUILD_PYTHON=OFF)
+link_flags="-fsanitize=address,undefined"
+config=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DCLEARJOINT_BUILD_PYTHON=OFF -DCLEARJOINT_BUILD_MATLAB=OFF
+        -DCLEARJOINT_BUILD_FORTRAN=OFF)
 if command -v clang++-14 >/dev/null; then
   config+=(-DCMAKE_CXX_COMPILER=clang++-14 -DCMAKE_C_COMPILER=clang-14 -DCLEARJOINT_BUILD_FUZZERS=ON
            -DCLEARJOINT_FUZZ_SECONDS="$fuzz_seconds")
+  # C programs (the C API's tests, the packaging test's C consumer) load C++ libraries whose
+  # UBSan vptr checks call into the C++ part of the sanitizer runtime, which clang links into
+  # C++ programs only; that part needs libstdc++ on the link line.
+  link_flags+=" -fsanitize-link-c++-runtime -lstdc++"
 else
   echo "run-sanitizers: clang++-14 not found; building with g++ and without the fuzz targets" >&2
 fi
@@ -40,7 +48,7 @@ fi
 
 mkdir -p build-sanitize
 cmake -S . -B build-sanitize "${config[@]}" -DCMAKE_CXX_FLAGS="$flags" -DCMAKE_C_FLAGS="$flags" \
-      -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" \
+      -DCMAKE_EXE_LINKER_FLAGS="$link_flags" \
       -DCMAKE_SHARED_LINKER_FLAGS="-fsanitize=address,undefined" >build-sanitize/configure.log 2>&1 ||
   { cat build-sanitize/configure.log; exit 1; }
 
