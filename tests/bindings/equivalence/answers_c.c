@@ -86,27 +86,27 @@ static double* read_all(const char* path, size_t* doubles) {
 
 int main(int argc, char** argv) {
   size_t doubles = 0, count, singles, batch, i;
-  double* data;
+  double *file_data, *data;
   FILE* out;
   char line[LINE_CAPACITY], other[LINE_CAPACITY], message[1024];
-  cj_result *results, *column_results, single;
-  double* columns;
+  cj_result *results = NULL, *column_results = NULL, single;
+  double* columns = NULL;
   cj_pose_array bearings, journals;
   int c, failures = 0;
   if (argc != 3) {
     fprintf(stderr, "usage: %s INPUT OUTPUT\n", argv[0]);
     return 2;
   }
-  data = read_all(argv[1], &doubles);
+  file_data = read_all(argv[1], &doubles);
   out = fopen(argv[2], "w");
-  if (data == NULL || doubles < RECORD || out == NULL) {
+  if (file_data == NULL || doubles < RECORD || out == NULL) {
     fprintf(stderr, "%s: cannot read %s or write %s\n", argv[0], argv[1], argv[2]);
     return 2;
   }
-  count = (size_t)data[0];
-  singles = (size_t)data[1];
+  count = (size_t)file_data[0];
+  singles = (size_t)file_data[1];
   batch = count - singles;
-  data += RECORD; /* past the header */
+  data = file_data + RECORD; /* past the header */
 
   for (i = 0; i < singles; ++i) {
     const double* r = data + i * RECORD;
@@ -193,6 +193,11 @@ int main(int argc, char** argv) {
       }
     }
   }
+  /* Freed, so that LeakSanitizer (scripts/run-sanitizers.sh) has nothing to report. */
+  free(columns);
+  free(column_results);
+  free(results);
+  free(file_data);
   if (fclose(out) != 0) return 2;
   printf("%zu single-call and %zu batch answers written; %d differences between C calls\n", singles,
          batch, failures);
