@@ -31,8 +31,13 @@ table=("| target | seconds | executions | exec/s | findings |" "| --- | ---: | -
 for target in "${targets[@]}"; do
   dictionary=fuzz/json.dict
   [[ $target == fuzz_detect_raw ]] && dictionary=
+  # Printed once the target ends (fuzz-one.sh prints only then); not through `tee /dev/stderr`,
+  # which truncates a log file that stderr is redirected to.
+  status=0
   log=$(bash scripts/fuzz-one.sh "build-fuzz/fuzz/$target" "$seconds" \
-        "build-fuzz/fuzz/campaign/$target" "fuzz/corpus/$target" "$dictionary" | tee /dev/stderr)
+        "build-fuzz/fuzz/campaign/$target" "fuzz/corpus/$target" "$dictionary" 2>&1) || status=$?
+  printf '%s\n' "$log"
+  ((status == 0)) || exit "$status"
   runs=$(sed -n 's/^stat::number_of_executed_units: *//p' <<<"$log")
   rate=$(sed -n 's/^stat::average_exec_per_sec: *//p' <<<"$log")
   total=$((total + ${runs:-0}))
