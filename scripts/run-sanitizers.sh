@@ -44,7 +44,8 @@ fi
 if command -v ccache >/dev/null; then
   config+=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache)
 fi
-((reduced)) && config+=(-DCLEARJOINT_BUILD_BENCHMARKS=OFF)
+# Said both ways: the folder's cache would otherwise keep a reduced run's OFF in a full run.
+if ((reduced)); then config+=(-DCLEARJOINT_BUILD_BENCHMARKS=OFF); else config+=(-DCLEARJOINT_BUILD_BENCHMARKS=ON); fi
 
 mkdir -p build-sanitize
 cmake -S . -B build-sanitize "${config[@]}" -DCMAKE_CXX_FLAGS="$flags" -DCMAKE_C_FLAGS="$flags" \
