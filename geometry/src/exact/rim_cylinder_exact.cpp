@@ -90,59 +90,82 @@ Bounded ellipse_height(const RimConic& conic, const Bounded& x) {
   return sqrt(Bounded(std::fmax(y2.value, 0.0), y2.error + std::fmax(-y2.value, 0.0)));
 }
 
+/// The exact sign of g at the isolated root: 0 when they share it; otherwise `root`'s interval
+/// is bisected on its factor's exact signs until g has no root in it, and g's sign there is the
+/// answer. The root lies in (low, high] (isolate_real_roots), so that is where g must not vanish.
+/// Terminates because g's roots in the interval are not this root.
+int sign_at_root(const Polynomial& g, IsolatedRoot& root, EvaluationBudget& budget) {
+  if (root.low == root.high) return static_cast<int>(g.sign_at(root.low));
+  if (g.degree() < 1) return static_cast<int>(CGAL::sign(g[0]));
+  const SquareFreeFactor& factor = *root.factor;
+  if (factor.shares_root_in(g, root.low, root.high)) return 0;
+  const int sign_high = factor.sign_at(root.high);
+  if (sign_high == 0) {
+    root.low = root.high;
+    return static_cast<int>(g.sign_at(root.high));
+  }
+  const SturmSequence chain(g);
+  while (chain.roots_in(root.low, root.high) > 0) {
+    budget.spend();
+    const Rational middle = (root.low + root.high) / 2;
+    const int at_middle = factor.sign_at(middle);
+    if (at_middle == 0) {
+      root.low = root.high = middle;
+      break;
+    }
+    (at_middle == sign_high ? root.high : root.low) = middle;
+  }
+  return static_cast<int>(g.sign_at(root.high));
+}
+
 /// Crossings on a vertical line X = root: both ellipse points, or the vertex (Y = 0, doubled
 /// multiplicity) when a X^2 = r2 exactly.
 void add_vertical_line_crossings(const RimConic& conic, const IsolatedRoot& root, int multiplicity,
-                                 std::vector<Crossing>& out) {
+                                 std::vector<Crossing>& out, EvaluationBudget& budget) {
   const Polynomial vertex_test(-conic.r2, Rational(0), conic.a);  // a X^2 - r2
   const Bounded x = bounded_x(root);
-  if (root.low == root.high) {
-    const CGAL::Sign s = vertex_test.sign_at(root.low);
-    if (s == CGAL::ZERO) {
-      out.push_back({x, Bounded(0.0), 2 * multiplicity});
-      return;
-    }
-    if (s == CGAL::POSITIVE) return;  // the line misses the ellipse
-  } else {
-    // Irrational root: it is a vertex exactly when the factor shares it with a X^2 - r2.
-    const SquareFreeFactor& factor = *root.factor;
-    if (factor.shares_root_in(vertex_test, root.low, root.high)) {
-      out.push_back({x, Bounded(0.0), 2 * multiplicity});
-      return;
-    }
-    // Not a vertex: refine until a X^2 - r2 has no root on the interval, then read its sign.
-    Rational low = root.low, high = root.high;
-    const SturmSequence vertices(vertex_test);
-    while (vertices.roots_in(low, high) > 0 || vertex_test.sign_at(high) == CGAL::ZERO) {
-      const Rational middle = (low + high) / 2;
-      const int at_middle = factor.sign_at(middle);
-      if (at_middle == 0) {
-        low = high = middle;
-        break;
-      }
-      if (at_middle == factor.sign_at(high)) high = middle; else low = middle;
-    }
-    if (vertex_test.sign_at(high) == CGAL::POSITIVE) return;
+  IsolatedRoot refined = root;
+  const int vertex_sign = sign_at_root(vertex_test, refined, budget);
+  if (vertex_sign == 0) {
+    out.push_back({x, Bounded(0.0), 2 * multiplicity});
+    return;
   }
+  if (vertex_sign > 0) return;  // the line misses the ellipse
   const Bounded height = ellipse_height(conic, x);
   out.push_back({x, height, multiplicity});
   out.push_back({x, -height, multiplicity});
 }
 
 /// Crossings where Y = -N(X) / m with N linear or quadratic and m a nonzero constant or a linear
-/// M without root on the isolating interval.
-void add_graph_crossings(const RimConic& conic, const std::vector<Bounded>& numerator,
-                         const std::vector<Bounded>& denominator, const IsolatedRoot& root,
-                         std::vector<Crossing>& out) {
-  const Bounded x = bounded_x(root);
-  Bounded y = -(polynomial_value(numerator, x) / polynomial_value(denominator, x));
-  const Bounded height = ellipse_height(conic, x);
+/// M without root at X (`numerator`, `denominator`; their coefficients as Bounded beside them).
+/// The double enclosure of -N/M usually signs Y. Near a rim symmetric about the plane through
+/// its centre and the cylinder's axis, where two crossings share X and N and M nearly vanish
+/// there, it cannot: then the exact signs of N and M at the root decide which half of the
+/// ellipse holds the crossing (an enclosure of Y symmetric about 0 would be rigorous but would put
+/// both crossings at the same angle with an error of a large part of the rim).
+void add_graph_crossings(const RimConic& conic, const Polynomial& numerator, const std::vector<Bounded>& numerator_bounded,
+                         const Polynomial& denominator, const std::vector<Bounded>& denominator_bounded,
+                         const IsolatedRoot& root, std::vector<Crossing>& out, EvaluationBudget& budget) {
+  Bounded x = bounded_x(root);
+  Bounded y = -(polynomial_value(numerator_bounded, x) / polynomial_value(denominator_bounded, x));
+  Bounded height = ellipse_height(conic, x);
   if (y.finite() && y.sign() != 0) {
     // The ellipse often bounds |Y| tighter; the proved sign of -N/M picks the half.
     if (height.error < y.error) y = y.sign() > 0 ? height : -height;
   } else {
-    // Y too close to 0 to sign: an enclosure symmetric about 0 is still rigorous.
-    y = Bounded(0.0, height.value + height.error);
+    IsolatedRoot refined = root;
+    const int numerator_sign = sign_at_root(numerator, refined, budget);
+    const int denominator_sign = sign_at_root(denominator, refined, budget);
+    x = bounded_x(refined);
+    height = ellipse_height(conic, x);
+    if (denominator_sign == 0) {
+      // Cannot happen (M and P sharing a root means L shares it too: the shared-root branch);
+      // the enclosure symmetric about 0 stays rigorous.
+      y = Bounded(0.0, height.value + height.error);
+    } else {
+      const int y_sign = -numerator_sign * denominator_sign;
+      y = y_sign == 0 ? Bounded(0.0) : y_sign > 0 ? height : -height;
+    }
   }
   out.push_back({x, y, root.multiplicity});
 }
@@ -323,7 +346,7 @@ RimRoots exact_rim_roots_within_budget(const Circle3& circle, const Cylinder3& c
     // The cylinder meets E along vertical lines L(X) = 0.
     isolate_real_roots(conic.L, conic.bound * 2, roots, budget);
     for (const IsolatedRoot& root : roots)
-      add_vertical_line_crossings(conic, root, root.multiplicity, crossings);
+      add_vertical_line_crossings(conic, root, root.multiplicity, crossings, budget);
   } else {
     // L(-M0 / M1) = 0, times b M1^2 (nonzero): b L's homogeneous form at (-M0, M1).
     const bool shared_root =
@@ -340,7 +363,7 @@ RimRoots exact_rim_roots_within_budget(const Circle3& circle, const Cylinder3& c
       check_coefficient_size(scaled_p, b, E);
       isolate_real_roots(std::move(scaled_p), conic.bound, roots, budget);
       const std::vector<Bounded> l = bounded_coefficients(conic.L), m = bounded_coefficients(conic.M);
-      for (const IsolatedRoot& root : roots) add_graph_crossings(conic, l, m, root, crossings);
+      for (const IsolatedRoot& root : roots) add_graph_crossings(conic, conic.L, l, conic.M, m, root, crossings, budget);
     } else {
       // L = (X - X0) L1, M = q11 (X - X0): the line X = X0 and the line L1 + q11 Y = 0.
       const Rational x0 = -conic.M[0] / conic.M[1];
@@ -348,7 +371,7 @@ RimRoots exact_rim_roots_within_budget(const Circle3& circle, const Cylinder3& c
       Polynomial::euclidean_division(conic.L, Polynomial(-x0, Rational(1)), l1, remainder);
       const Polynomial m1(conic.M[1]);
       std::vector<Crossing> on_lines;
-      add_vertical_line_crossings(conic, {x0, x0, 1, nullptr}, 1, on_lines);
+      add_vertical_line_crossings(conic, {x0, x0, 1, nullptr}, 1, on_lines, budget);
       const Polynomial ellipse(-conic.r2, Rational(0), conic.a);
       const Polynomial second_line = ellipse * m1 * m1 + conic.b * l1 * l1;
       isolate_real_roots(second_line, conic.bound, roots, budget);
@@ -362,7 +385,7 @@ RimRoots exact_rim_roots_within_budget(const Circle3& circle, const Cylinder3& c
           }
           continue;
         }
-        add_graph_crossings(conic, bounded_coefficients(l1), bounded_coefficients(m1), root, on_lines);
+        add_graph_crossings(conic, l1, bounded_coefficients(l1), m1, bounded_coefficients(m1), root, on_lines, budget);
       }
       crossings = std::move(on_lines);
     }

@@ -201,6 +201,20 @@ JournalPoint journal_contact_point(const Circle3& rim, double centre_error, cons
   return {point, detail::any_rim_point_error(point, rim.center, centre_error, rim.radius)};
 }
 
+/// The contact normal when the journal point, as rounded in the bearing frame, lies on the bearing
+/// axis: eq. (20) has no direction, though the exact point (within its error bound, which is then
+/// at least its distance to the axis) has one. Only at scales where the frame's rounding exceeds
+/// the rim radius (lengths ~1e30 beside radii ~1e-2): the direction of the point from its rim
+/// centre, off the axis, stands in, or any direction square to the axis. The contact's bearing
+/// point then carries no error bound (radial_contact), so this is a convention, not a claim.
+Vector3 radial_direction_off_axis(const JointSetup& s, const Circle3& rim, const Vector3& p_WCj) {
+  Vector3 direction = off_axis(p_WCj - rim.center, s.bearing_axis_hat_W);
+  if (!(direction.norm() > 0.0)) {
+    direction = off_axis(Vector3::Unit(frame_axis_index(s.bearing_axis_hat_W)), s.bearing_axis_hat_W);
+  }
+  return direction.normalized();
+}
+
 /// Radial point contact from one penetration arc of rim `base` against the wall, eqs. (18)-(23),
 /// written in place (every field set as in a fresh Contact: building one and copying it into the
 /// result cost ~30 instructions per contact).
@@ -221,7 +235,8 @@ void radial_contact(const JointSetup& s, ContactBase base, const Circle3& rim, c
   const Vector3 offset = p_WCj - s.p_WPi;
   const Vector3 radial = off_axis(offset, s.bearing_axis_hat_W);
   const double distance_to_axis = radial.norm();
-  contact.normal_W = radial / distance_to_axis;  // eq. (20)
+  contact.normal_W = distance_to_axis > 0.0 ? Vector3(radial / distance_to_axis)  // eq. (20)
+                                            : radial_direction_off_axis(s, rim, p_WCj);
   contact.p_WCi = s.p_WPi + offset.dot(s.bearing_axis_hat_W) * s.bearing_axis_hat_W +
                   s.bearing_radius * contact.normal_W;  // eq. (21)
   // eq. (23): |C_j - C_i| = distance_to_axis - Ri for a point beyond the wall. Both terms are

@@ -135,6 +135,38 @@ TEST(RimCylinderExact, MergesTheSharedRootLinesMeetingOnTheRimIntoADoubleRoot) {
                 {3 * kPi / 2 + phi, 1, -1}});
 }
 
+/// Each enclosure holds a sign change of g (a simple root) and is narrower than `width`.
+void expect_simple_roots(const RimRoots& result, const Circle3& circle, const Cylinder3& cylinder, int count,
+                         double width) {
+  ASSERT_TRUE(result.proved);
+  ASSERT_EQ(result.count, count);
+  for (int i = 0; i < result.count; ++i) {
+    const RootEnclosure& root = result.roots[i];
+    EXPECT_EQ(root.multiplicity, 1);
+    EXPECT_LT(root.radius, width) << "root at " << root.angle;
+    EXPECT_EQ(it::sign_of(g_at(circle, cylinder, Real(root.angle) - Real(root.radius))),
+              -it::sign_of(g_at(circle, cylinder, Real(root.angle) + Real(root.radius))))
+        << "root at " << root.angle << " +- " << root.radius;
+  }
+}
+
+TEST(RimCylinderExact, SeparatesTwoCrossingsThatShareTheirFirstRimCoordinate) {
+  // A rim tilted 45 degrees about x, its centre 0.7 off the wall's axis (z) along y: mirror-
+  // symmetric about the plane x = 0, which holds the axis, so its two crossings share X (the
+  // frame's u' = n x e_x lies in that plane) and have opposite Y. Exactly symmetric, and broken
+  // by 2^-200: there L and M nearly share a root and -L/M at the crossings is beyond double
+  // arithmetic; their exact signs at the root pick each crossing's half of the rim.
+  const Cylinder3 wall{{0, 0, 0}, {0, 0, 1}, 1};
+  for (const double asymmetry : {0.0, 0x1p-200, -0x1p-200}) {
+    const Circle3 rim{{asymmetry, 0.7, 0.0}, {asymmetry, 1, 1}, 1};
+    const RimRoots roots = exact_rim_roots(rim, wall);
+    expect_simple_roots(roots, rim, wall, 2, 1e-12);
+    if (roots.count == 2) {
+      EXPECT_GT(roots.roots[1].angle - roots.roots[0].angle, 0.1) << "asymmetry " << asymmetry;
+    }
+  }
+}
+
 TEST(RimCylinderExact, AgreesWithDirectSignsOnRandomIntegerPoses) {
   std::mt19937_64 rng(307);
   std::uniform_int_distribution<int> small_int(-4, 4);

@@ -7,6 +7,8 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <cmath>
+#include <optional>
 #include <random>
 
 #include "joint_properties.hpp"
@@ -39,6 +41,87 @@ TEST(JointProperties, HoldForOneHundredThousandRandomJoints) {
         ContactScenario::radial_at_both_bases, ContactScenario::radial_and_axial_same_base,
         ContactScenario::line, ContactScenario::beyond_model}) {
     EXPECT_GT(scenarios[static_cast<std::size_t>(s)], 100) << to_string(s);
+  }
+}
+
+// Joints on which fuzz_detect_raw (fuzz/) found an answer breaking the properties: each is
+// checked with the unit change the fuzzer used, then for what was wrong.
+
+/// A journal whose centre lies on the bearing axis 6.4e5 bearing lengths beyond it, tilted 45
+/// degrees: each rim is mirror-symmetric about the plane of the axes (to 1e-63), so its two wall
+/// crossings share their coordinate along the rim frame's first axis and the exact tier must tell
+/// them apart by the sign of the second.
+const props::Joint kSymmetricRimFarAlongTheAxis{
+    {0.0099960493296384813, 0.02, 0.0098999999999356079, 0.019800000000000002},
+    {{0, 0, 0}, {0, 0, 1.625000000003638}},
+    {{0, 0, -638320.63889005606}, {-5.876301149817338e-28, 2.4173705217460969e+35, 2.4173705217460969e+35}}};
+
+/// Five contacts with coordinates around 1e5: the exact tier decides the rims, two of whose
+/// crossings lie 7e-15 apart along the rim frame's first axis.
+const props::Joint kFiveContactsFarFromTheOrigin{
+    {0.0099999999999998944, 0.02, 0.0099000000000000008, 0.0034515625000000002},
+    {{-131100, -0.19999999999999862, 1}, {1, 0, 0}},
+    {{0.5, -0.19999999999999832, 1.0000800004656614}, {3.2305717468261719e-05, 0, 0.0049999999912720573}}};
+
+/// Lengths of 1e32 beside radii of 1e-2: in the bearing-centred frame the journal's rims round onto
+/// the bearing axis.
+constexpr double kFar = -9.2392341159222657e+32;
+const props::Joint kRimsRoundedOntoTheAxis{
+    {0.01, 1.0384593717069655e+32, 0.0099000000000000008, 0.019800000000000002},
+    {{kFar, kFar, kFar}, {kFar, kFar, kFar}},
+    {{0, 0, 0}, {0, 0, 0.012999999999999999}}};
+
+TEST(JointProperties, HoldForTheJointsOnWhichTheFuzzerFoundThemBroken) {
+  EXPECT_EQ(props::check_properties(kSymmetricRimFarAlongTheAxis, std::nullopt, 0), "");
+  EXPECT_EQ(props::check_properties(kFiveContactsFarFromTheOrigin, std::nullopt, 0), "");
+  EXPECT_EQ(props::check_properties(kRimsRoundedOntoTheAxis, std::nullopt, -54), "");
+}
+
+TEST(JointProperties, PutTheDeepestPointOfASymmetricRimAtTheMiddleOfItsArc) {
+  const props::Joint& j = kSymmetricRimFarAlongTheAxis;
+  const JointContacts answer = detect_contacts(j.dimensions, j.bearing, j.journal);
+  // The journal centre is on the axis and the rim centres (L/2)/sqrt(2) off it; the rim point
+  // farthest from the axis, the arc's middle by symmetry, lies Rj/sqrt(2) farther.
+  const double expected_depth =
+      (0.5 * j.dimensions.journal_length + j.dimensions.journal_radius) / std::sqrt(2.0) - j.dimensions.bearing_radius;
+  int radial = 0;
+  for (int i = 0; i < answer.contact_count; ++i) {
+    const Contact& c = answer.contacts[i];
+    if (c.type != ContactType::radial) continue;
+    ++radial;
+    EXPECT_NE(c.certificate.level, Certainty::uncertain);
+    EXPECT_LT(c.depth_error, 1e-6);
+    EXPECT_NEAR(c.depth, expected_depth, c.depth_error + 1e-15);
+  }
+  EXPECT_EQ(radial, 2);
+}
+
+TEST(JointProperties, GiveMirrorImageContactsTheSameDepthFarFromTheOrigin) {
+  const props::Joint& j = kFiveContactsFarFromTheOrigin;
+  const JointContacts answer = detect_contacts(j.dimensions, j.bearing, j.journal);
+  ASSERT_EQ(answer.contact_count, 5);
+  // Radial contacts 0, 1 (rim A) and 2, 3 (rim B) are mirror images across the plane y = -0.2,
+  // up to the inputs' last bits.
+  for (const int first : {0, 2}) {
+    const Contact &c = answer.contacts[first], &mirror = answer.contacts[first + 1];
+    ASSERT_EQ(c.type, ContactType::radial);
+    ASSERT_EQ(mirror.type, ContactType::radial);
+    EXPECT_GT(c.depth, 0.0);
+    EXPECT_LT(mirror.depth_error, 1e-6);
+    EXPECT_NEAR(mirror.depth, c.depth, c.depth_error + mirror.depth_error);
+  }
+}
+
+TEST(JointProperties, GiveUnitNormalsWhereTheRimsRoundOntoTheAxis) {
+  const props::Joint& j = kRimsRoundedOntoTheAxis;
+  const JointContacts answer = detect_contacts(j.dimensions, j.bearing, j.journal);
+  ASSERT_GT(answer.contact_count, 0);
+  for (int i = 0; i < answer.contact_count; ++i) {
+    const Contact& c = answer.contacts[i];
+    EXPECT_TRUE(c.normal_W.allFinite() && c.p_WCi.allFinite() && c.p_WCj.allFinite()) << "contact " << i;
+    EXPECT_NEAR(c.normal_W.norm(), 1.0, 1e-15) << "contact " << i;
+    // Square to the bearing axis for radial contacts.
+    if (c.type == ContactType::radial) EXPECT_NEAR(c.normal_W.dot(Vector3(1, 1, 1).normalized()), 0.0, 1e-15);
   }
 }
 
