@@ -39,7 +39,14 @@ install-static)
   source_dir=$1
   shift
   rm -rf "$prefix"
-  # The build folder is kept between runs: a rerun recompiles only what changed.
+  # The build folder is kept between runs: a rerun recompiles only what changed. Not when the
+  # arguments changed: CMake drops a cache whose compiler changes and configures again without
+  # the other -D values (BUILD_SHARED_LIBS would go back to ON), so the folder starts afresh.
+  arguments="$source_dir $*"
+  if [[ ! -f "$scratch.arguments" || "$(cat "$scratch.arguments")" != "$arguments" ]]; then
+    rm -rf "$scratch/build"
+  fi
+  printf '%s' "$arguments" > "$scratch.arguments"
   cmake -S "$source_dir" -B "$scratch/build" -DBUILD_SHARED_LIBS=OFF \
         -DCLEARJOINT_BUILD_TESTS=OFF -DCLEARJOINT_BUILD_BENCHMARKS=OFF \
         -DCLEARJOINT_BUILD_APPS=OFF -DCLEARJOINT_BUILD_PYTHON=OFF -DCLEARJOINT_BUILD_MATLAB=OFF \
