@@ -489,7 +489,9 @@ void detect_aligned(const JointSetup& s, const DetectionOptions& options, bool e
 /// overflows beyond 1e154). A crossing that the translation takes out of the double range, or
 /// whose bound does, is no longer an answer: its contact becomes uncertain.
 void translate_to_world(const Vector3& p_WPi, JointContacts& out) {
-  if (p_WPi.isZero()) return;
+  // Exactly zero: Eigen's isZero() is fuzzy (|x| <= 1e-12), which skipped the translation of a
+  // whole joint smaller than that.
+  if ((p_WPi.array() == 0.0).all()) return;
   constexpr double kTranslationRounding = 2 * detail::kUnitRoundoff;  // > u, rounded up
   for (int i = 0; i < out.contact_count; ++i) {
     Contact& contact = out.contacts[i];

@@ -71,10 +71,48 @@ const props::Joint kRimsRoundedOntoTheAxis{
     {{kFar, kFar, kFar}, {kFar, kFar, kFar}},
     {{0, 0, 0}, {0, 0, 0.012999999999999999}}};
 
+/// Every length ~7e-38 (normal doubles): the bearing centre is within 1e-12 of the origin.
+constexpr double kTiny = 7.1175030496847524e-38;
+const props::Joint kTinyJoint{
+    {7.1175030496847586e-38, 7.1175030496852869e-38, kTiny, kTiny},
+    {{7.1175029270711367e-38, kTiny, kTiny}, {5.4072740308728683e-37, kTiny, kTiny}},
+    {{kTiny, kTiny, kTiny}, {7.1175038691008998e-38, kTiny, kTiny}}};
+
 TEST(JointProperties, HoldForTheJointsOnWhichTheFuzzerFoundThemBroken) {
   EXPECT_EQ(props::check_properties(kSymmetricRimFarAlongTheAxis, std::nullopt, 0), "");
   EXPECT_EQ(props::check_properties(kFiveContactsFarFromTheOrigin, std::nullopt, 0), "");
   EXPECT_EQ(props::check_properties(kRimsRoundedOntoTheAxis, std::nullopt, -54), "");
+  EXPECT_EQ(props::check_properties(kTinyJoint, std::nullopt, -59), "");
+}
+
+/// The joint scaled by 2^exponent, exactly (every length stays a normal double).
+props::Joint scaled(const props::Joint& j, int exponent) {
+  const double f = std::ldexp(1.0, exponent);
+  props::Joint out = j;
+  out.dimensions = {j.dimensions.bearing_radius * f, j.dimensions.bearing_length * f, j.dimensions.journal_radius * f,
+                    j.dimensions.journal_length * f};
+  out.bearing.p_WP = j.bearing.p_WP * f;
+  out.journal.p_WP = j.journal.p_WP * f;
+  return out;
+}
+
+TEST(JointProperties, PlaceTheContactsOfATinyJointInTheWorldFrameAtEveryScale) {
+  // The same joint at lengths ~6 and at lengths 2^-200 to 2^60 times that: the contact points
+  // scale with it (within their bounds), so the translation back to the world frame happened.
+  const props::Joint unit = scaled(kTinyJoint, 126);
+  const JointContacts reference = detect_contacts(unit.dimensions, unit.bearing, unit.journal);
+  ASSERT_EQ(reference.contact_count, 4);
+  for (const int exponent : {-200, -126, -60, -1, 60}) {
+    const props::Joint j = scaled(unit, exponent);
+    const JointContacts answer = detect_contacts(j.dimensions, j.bearing, j.journal);
+    ASSERT_EQ(answer.contact_count, reference.contact_count) << "2^" << exponent;
+    const double f = std::ldexp(1.0, exponent);
+    for (int i = 0; i < answer.contact_count; ++i) {
+      const Contact &c = answer.contacts[i], &r = reference.contacts[i];
+      EXPECT_LE((c.p_WCj / f - r.p_WCj).norm(), c.p_WCj_error / f + r.p_WCj_error) << "2^" << exponent << " contact " << i;
+      EXPECT_LE((c.p_WCi / f - r.p_WCi).norm(), c.p_WCi_error / f + r.p_WCi_error) << "2^" << exponent << " contact " << i;
+    }
+  }
 }
 
 TEST(JointProperties, PutTheDeepestPointOfASymmetricRimAtTheMiddleOfItsArc) {
