@@ -455,6 +455,20 @@ class LocalExpansion {
   /// f's sign at the point whose offset is s, or 0 where the double filter cannot decide it.
   int filtered_sign_at_offset(const Bounded& s) const { return filtered_sign(g_, s); }
   int filtered_sign_at(const Dyadic& x) const { return filtered_sign(g_, offset(x)); }
+  /// Where G's rounded coefficients, evaluated in plain doubles, change sign between the offsets
+  /// low and high (G of sign `sign_high` towards high): bisection to adjacent doubles. A guess,
+  /// which the caller proves or discards.
+  double approximate_sign_change(double low, double high, int sign_high) const {
+    for (int step = 0; step < 2200; ++step) {
+      const double middle = 0.5 * (low + high);
+      if (!(middle > low && middle < high)) break;
+      double value = g_.scaled.back().value;
+      for (int i = g_.degree() - 1; i >= 0; --i) value = value * middle + g_.scaled[static_cast<std::size_t>(i)].value;
+      if (value == 0.0) return middle;
+      ((value > 0.0 ? 1 : -1) == sign_high ? high : low) = middle;
+    }
+    return high;
+  }
 
  private:
   Dyadic m_;
@@ -515,6 +529,64 @@ bool tighten_with_double_newton(const IntegerPolynomial& f, const std::vector<do
   return false;
 }
 
+/// Levels beyond which jump_to_last_level leaves the bisection to itself: its index must be an
+/// exact double.
+constexpr long kMostJumpLevels = 50;
+/// Tries of jump_to_last_level's index (its guess, then a neighbour per try).
+constexpr int kJumpTries = 4;
+
+/// The interval bisect would end with, found without its levels: the levels L it would take
+/// (the first with w 2^-L <= width_goal, w = b - a), the index j of the level-L interval
+/// (a + j w 2^-L, a + (j + 1) w 2^-L] guessed from where G's rounded coefficients change sign,
+/// and the guess proved by f's exact signs at both ends (the expansion's filter first): opposite
+/// to sign_b at the lower end (not needed at a itself), sign_b at the upper end (known at b).
+/// Then the root lies strictly between two level-L points, so none of bisect's midpoints (all
+/// level-L points) is the root, each of them sends the bisection towards the root, and it ends
+/// on this interval having spent L. Near a pair of close roots the double Newton of
+/// tighten_with_double_newton does not settle and bisect runs some 40 levels, each with its
+/// dyadic arithmetic; this proves the same end with two signs. False (nothing spent, a and b
+/// untouched) when the guess is not proved within kJumpTries, or the levels are too many.
+template <class Point>
+bool jump_to_last_level(const IntegerPolynomial& f, const LocalExpansion& expansion, const Bounded& origin_offset,
+                        const Point& point, Dyadic& a, Dyadic& b, int sign_b, const Dyadic& width_goal,
+                        EvaluationBudget& budget) {
+  long levels = 0;
+  for (Dyadic current = b - a; current > width_goal && levels <= kMostJumpLevels; current.exponent -= 1) ++levels;
+  if (levels > kMostJumpLevels) return false;
+  const double low = origin_offset.value, high = expansion.offset(b).value;
+  if (!(std::isfinite(low) && std::isfinite(high) && low < high)) return false;
+  const double guess = expansion.approximate_sign_change(low, high, sign_b);
+  const double count = std::ldexp(1.0, static_cast<int>(levels));  // level-L intervals
+  double index = std::floor((guess - low) / (high - low) * count);
+  if (!std::isfinite(index)) return false;
+  const auto sign_at = [&](const Dyadic& x) {
+    const int filtered = expansion.filtered_sign_at(x);
+    return filtered != 0 ? filtered : exact_sign(f, x);
+  };
+  for (int attempt = 0; attempt < kJumpTries; ++attempt) {
+    index = std::clamp(index, 0.0, count - 1);
+    const Integer j(index);  // exact: a whole number below 2^kMostJumpLevels
+    const Dyadic lower = point(j, levels), upper = point(j + 1, levels);
+    const int at_upper = index + 1 == count ? sign_b : sign_at(upper);
+    if (at_upper != sign_b) {  // the root lies above upper (or at it: then bisect hits it)
+      if (at_upper == 0 || index + 1 == count) return false;
+      index += 1;
+      continue;
+    }
+    const int at_lower = index == 0 ? -sign_b : sign_at(lower);
+    if (at_lower != -sign_b) {  // the root lies at or below lower
+      if (at_lower == 0 || index == 0) return false;
+      index -= 1;
+      continue;
+    }
+    budget.spend(static_cast<int>(levels));
+    a = lower;
+    b = upper;
+    return true;
+  }
+  return false;
+}
+
 /// Bisection of (a, b], which holds exactly one root of f (simple: f is square-free), until it is
 /// at most `width_goal` wide or a midpoint is the root. Only the sign at the upper end is compared,
 /// and it stays sign_b: b only ever moves to a point of that sign. The points are a + j w 2^-i
@@ -536,6 +608,7 @@ void bisect(const IntegerPolynomial& f, Dyadic& a, Dyadic& b, int sign_b, const 
   };
   std::optional<LocalExpansion> expansion(std::in_place, f, midpoint(a, b));
   Bounded origin_offset = expansion->offset(origin);
+  if (jump_to_last_level(f, *expansion, origin_offset, point, a, b, sign_b, width_goal, budget)) return;
   long expansion_level = 0;
   constexpr long kRecentreShrink = 20;
   Bounded width_length = expansion->length(width);  // w 2^k
