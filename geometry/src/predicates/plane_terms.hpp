@@ -6,9 +6,9 @@
 //   discriminant = s^2 |n_c|^2 - r^2 |w|^2,
 // the rim strictly on one side of the plane iff the discriminant is positive (the side of s).
 // Instances: Twinned (a value and its absolute-value twin: the a priori bounds) and Bounded (the
-// running error bound) in rim_plane_quantities.cpp, CGAL's rationals in circle_plane_exact.cpp
-// (the exact tier; this header includes no CGAL header). The order of the operations is part of
-// the definition: the floating-point instances' bits, and the a priori bounds' chains of
+// running error bound) in rim_plane_quantities.cpp, GMP's integers in circle_plane_exact.cpp
+// (the exact tier; this header includes no CGAL or GMP header). The order of the operations is
+// part of the definition: the floating-point instances' bits, and the a priori bounds' chains of
 // roundings (rim_plane_quantities.cpp), follow from it.
 
 #include "vector3_of.hpp"
@@ -24,7 +24,7 @@ struct PlaneTerms {
 };
 
 /// Who asks: the floating-point filters want every term; the exact tier decides signs only and
-/// leaves out |n_p|^2 (for the depth and the widening), five rational operations with a gcd each.
+/// leaves out |n_p|^2 (for the depth and the widening), five exact operations.
 enum class PlaneTermsFor { filters, signs };
 
 /// The terms from the offset c - p (formed by the caller: each number type has its own exact or

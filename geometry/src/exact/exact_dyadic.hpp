@@ -1,0 +1,80 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+// Exact sums and products of doubles as integers times powers of two, for the exact tiers (GMP:
+// include only from the exact tiers' .cpp files). Every input of the kernel is a double, and the
+// exact tiers' quantities are sums of products of them: in this form no operation reduces a
+// fraction, where CGAL::Gmpq takes a gcd per operation, which on inputs of very different
+// magnitudes cost more than the rest of an exact query.
+
+#include <array>
+#include <cmath>
+#include <limits>
+
+#include <CGAL/Gmpq.h>
+#include <gmpxx.h>
+
+namespace clearjoint::geometry::detail {
+
+/// mantissa 2^exponent, exactly.
+struct ExactDyadic {
+  mpz_class mantissa;
+  long exponent = 0;
+};
+
+/// A finite double, exactly (a 53-bit integer times a power of two).
+inline ExactDyadic exact_dyadic(double x) {
+  int binary_exponent = 0;
+  const double fraction = std::frexp(x, &binary_exponent);
+  ExactDyadic d;
+  mpz_set_d(d.mantissa.get_mpz_t(), std::ldexp(fraction, 53));  // exact: 53 bits
+  d.exponent = binary_exponent - 53;
+  return d;
+}
+
+/// a + b, exactly (zeros aside, at the smaller exponent).
+inline ExactDyadic exact_sum(const ExactDyadic& a, const ExactDyadic& b) {
+  if (sgn(a.mantissa) == 0) return b;
+  if (sgn(b.mantissa) == 0) return a;
+  const ExactDyadic& low = a.exponent <= b.exponent ? a : b;
+  const ExactDyadic& high = a.exponent <= b.exponent ? b : a;
+  ExactDyadic out;
+  out.exponent = low.exponent;
+  mpz_mul_2exp(out.mantissa.get_mpz_t(), high.mantissa.get_mpz_t(),
+               static_cast<mp_bitcnt_t>(high.exponent - low.exponent));
+  out.mantissa += low.mantissa;
+  return out;
+}
+
+/// a b, exactly.
+inline ExactDyadic exact_product(const ExactDyadic& a, const ExactDyadic& b) {
+  return {a.mantissa * b.mantissa, a.exponent + b.exponent};
+}
+
+/// The rational m 2^e in Gmpq's canonical form (mpq_div_2exp removes the common twos).
+inline CGAL::Gmpq exact_rational(const ExactDyadic& d) {
+  CGAL::Gmpq out;
+  mpq_set_z(out.mpq(), d.mantissa.get_mpz_t());
+  if (d.exponent > 0) mpq_mul_2exp(out.mpq(), out.mpq(), static_cast<mp_bitcnt_t>(d.exponent));
+  if (d.exponent < 0) mpq_div_2exp(out.mpq(), out.mpq(), static_cast<mp_bitcnt_t>(-d.exponent));
+  return out;
+}
+
+/// The integers x_i 2^-E of values x_i that all share the exponent E (the smallest exponent of a
+/// nonzero one). A polynomial homogeneous of degree k in the x_i takes the value 2^(-k E) times
+/// its value at the x_i at these integers: the same sign, with no fraction formed.
+template <std::size_t N>
+std::array<mpz_class, N> integers_at_common_exponent(const std::array<ExactDyadic, N>& values) {
+  long exponent = std::numeric_limits<long>::max();
+  for (const ExactDyadic& d : values) {
+    if (sgn(d.mantissa) != 0) exponent = std::min(exponent, d.exponent);
+  }
+  std::array<mpz_class, N> out;
+  for (std::size_t i = 0; i < N; ++i) {
+    if (sgn(values[i].mantissa) == 0) continue;
+    mpz_mul_2exp(out[i].get_mpz_t(), values[i].mantissa.get_mpz_t(),
+                 static_cast<mp_bitcnt_t>(values[i].exponent - exponent));
+  }
+  return out;
+}
+
+}  // namespace clearjoint::geometry::detail
