@@ -35,7 +35,7 @@ CirclePlaneTopologyAndSide exact_circle_plane_topology(const Circle3& circle, co
     inputs[6 + i] = n_p[i];
   }
   inputs[9] = exact_dyadic(circle.radius);
-  const std::array<mpz_class, 10> x = integers_at_common_exponent(inputs);
+  const std::array<mpz_class, 10> x = integers_at_common_exponent(inputs).integers;
   // The same terms the floating-point filters bound (plane_terms.hpp), here exact.
   const PlaneTerms<mpz_class> t = plane_terms<PlaneTermsFor::signs>(
       Vector3Of<mpz_class>{x[0], x[1], x[2]}, Vector3Of<mpz_class>{x[3], x[4], x[5]},

@@ -6,9 +6,9 @@
 // fraction, where CGAL::Gmpq takes a gcd per operation, which on inputs of very different
 // magnitudes cost more than the rest of an exact query.
 
+#include <algorithm>
 #include <array>
 #include <cmath>
-#include <limits>
 
 #include <CGAL/Gmpq.h>
 #include <gmpxx.h>
@@ -21,13 +21,24 @@ struct ExactDyadic {
   long exponent = 0;
 };
 
-/// A finite double, exactly (a 53-bit integer times a power of two).
+/// The same value with an odd mantissa (or zero): the integers at a common exponent
+/// (integers_at_common_exponent) then carry no needless factors of two.
+inline void strip_twos(ExactDyadic& d) {
+  if (sgn(d.mantissa) == 0) return;
+  const mp_bitcnt_t zeros = mpz_scan1(d.mantissa.get_mpz_t(), 0);
+  if (zeros == 0) return;
+  mpz_tdiv_q_2exp(d.mantissa.get_mpz_t(), d.mantissa.get_mpz_t(), zeros);
+  d.exponent += static_cast<long>(zeros);
+}
+
+/// A finite double, exactly (an integer of at most 53 bits times a power of two), odd mantissa.
 inline ExactDyadic exact_dyadic(double x) {
   int binary_exponent = 0;
   const double fraction = std::frexp(x, &binary_exponent);
   ExactDyadic d;
   mpz_set_d(d.mantissa.get_mpz_t(), std::ldexp(fraction, 53));  // exact: 53 bits
   d.exponent = binary_exponent - 53;
+  strip_twos(d);
   return d;
 }
 
@@ -59,20 +70,28 @@ inline CGAL::Gmpq exact_rational(const ExactDyadic& d) {
   return out;
 }
 
-/// The integers x_i 2^-E of values x_i that all share the exponent E (the smallest exponent of a
-/// nonzero one). A polynomial homogeneous of degree k in the x_i takes the value 2^(-k E) times
-/// its value at the x_i at these integers: the same sign, with no fraction formed.
+/// Values x_i that all share one exponent E (the smallest exponent of a nonzero one; 0 when all
+/// are zero), as the integers x_i 2^-E. A polynomial homogeneous of degree k in the x_i takes the
+/// value 2^(-k E) times its value at the x_i at these integers: the same sign, and no fraction
+/// formed on the way.
 template <std::size_t N>
-std::array<mpz_class, N> integers_at_common_exponent(const std::array<ExactDyadic, N>& values) {
-  long exponent = std::numeric_limits<long>::max();
+struct IntegersAtCommonExponent {
+  std::array<mpz_class, N> integers;
+  long exponent = 0;
+};
+template <std::size_t N>
+IntegersAtCommonExponent<N> integers_at_common_exponent(const std::array<ExactDyadic, N>& values) {
+  IntegersAtCommonExponent<N> out;
+  bool any = false;
   for (const ExactDyadic& d : values) {
-    if (sgn(d.mantissa) != 0) exponent = std::min(exponent, d.exponent);
+    if (sgn(d.mantissa) == 0) continue;
+    out.exponent = any ? std::min(out.exponent, d.exponent) : d.exponent;
+    any = true;
   }
-  std::array<mpz_class, N> out;
   for (std::size_t i = 0; i < N; ++i) {
     if (sgn(values[i].mantissa) == 0) continue;
-    mpz_mul_2exp(out[i].get_mpz_t(), values[i].mantissa.get_mpz_t(),
-                 static_cast<mp_bitcnt_t>(values[i].exponent - exponent));
+    mpz_mul_2exp(out.integers[i].get_mpz_t(), values[i].mantissa.get_mpz_t(),
+                 static_cast<mp_bitcnt_t>(values[i].exponent - out.exponent));
   }
   return out;
 }

@@ -25,6 +25,7 @@ inline std::array<ExactDyadic, 3> exact_dyadic_point(const RoundedPoint& point, 
     ExactDyadic x = exact_sum(exact_dyadic(point.minuend[i]), exact_dyadic(-point.subtrahend[i]));
     if (point.sign != 0) x = exact_sum(x, exact_product(exact_dyadic(point.direction[i]), half_length));
     x.exponent -= scale_exponent;
+    strip_twos(x);
     out[i] = std::move(x);
   }
   return out;

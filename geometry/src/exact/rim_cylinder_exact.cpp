@@ -15,15 +15,15 @@
 #include <gmpxx.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
-#include <limits>
 #include <memory>
 #include <numbers>
-#include <stdexcept>
 #include <utility>
 #include <vector>
 
 #include "angles.hpp"
+#include "exact_dyadic.hpp"
 #include "exact_rational_point.hpp"
 #include "primitives_detail.hpp"
 #include "real_root_isolation.hpp"
@@ -195,36 +195,6 @@ namespace {
 
 using Integer = mpz_class;
 
-/// m 2^e, m odd or zero.
-struct Dyadic {
-  Integer m;
-  long e = 0;
-};
-Dyadic dyadic_of(double x) {
-  int exponent = 0;
-  const double fraction = std::frexp(x, &exponent);
-  Dyadic d;
-  mpz_set_d(d.m.get_mpz_t(), std::ldexp(fraction, 53));  // exact: 53 bits
-  d.e = exponent - 53;
-  if (sgn(d.m) != 0) {
-    const mp_bitcnt_t zeros = mpz_scan1(d.m.get_mpz_t(), 0);
-    mpz_tdiv_q_2exp(d.m.get_mpz_t(), d.m.get_mpz_t(), zeros);
-    d.e += static_cast<long>(zeros);
-  }
-  return d;
-}
-/// x with a power of two for denominator (exact_rational_point's values are: sums and halvings of
-/// doubles, scaled by a power of two).
-Dyadic dyadic_of(const Rational& x) {
-  const mpz_srcptr denominator = mpq_denref(x.mpq());
-  const mp_bitcnt_t power = mpz_scan1(denominator, 0);
-  if (mpz_sizeinbase(denominator, 2) != power + 1) throw std::logic_error("rim_cylinder_exact: a centre that is not dyadic");
-  Dyadic d;
-  d.m = Integer(mpq_numref(x.mpq()));
-  d.e = -static_cast<long>(power);
-  return d;
-}
-
 struct IntegerVector {
   Integer x, y, z;
 };
@@ -233,27 +203,6 @@ Integer dot(const IntegerVector& a, const IntegerVector& b) { return a.x * b.x +
 IntegerVector cross(const IntegerVector& a, const IntegerVector& b) {
   return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
-
-/// Dyadic inputs brought to one exponent.
-class CommonScale {
- public:
-  void add(const Dyadic& d) {
-    values_.push_back(d);
-    if (sgn(d.m) != 0) exponent_ = std::min(exponent_, d.e);
-  }
-  /// The i-th value added, as an integer times 2^exponent().
-  Integer integer(std::size_t i) const {
-    Integer out;
-    const Dyadic& d = values_[i];
-    if (sgn(d.m) != 0) mpz_mul_2exp(out.get_mpz_t(), d.m.get_mpz_t(), static_cast<mp_bitcnt_t>(d.e - exponent_));
-    return out;
-  }
-  long exponent() const { return exponent_ == std::numeric_limits<long>::max() ? 0 : exponent_; }
-
- private:
-  std::vector<Dyadic> values_;
-  long exponent_ = std::numeric_limits<long>::max();
-};
 
 /// x 2^(degree E): a quantity of that degree in the inputs, as a rational.
 Rational rational(const Integer& x, int degree, long exponent) {
@@ -283,27 +232,29 @@ RimRoots exact_rim_roots_within_budget(const Circle3& circle, const Cylinder3& c
                                       const RoundedPoint* centre, int scale_exponent,
                                       EvaluationBudget& budget) {
   // The inputs, each exactly, at one scale 2^E (degree 1).
-  CommonScale scale;
-  const auto add_vector = [&](const Vector3& v) {
-    for (int i = 0; i < 3; ++i) scale.add(dyadic_of(v[i]));
+  std::array<ExactDyadic, 17> inputs;
+  const auto put_vector = [&](std::size_t first, const Vector3& v) {
+    for (int i = 0; i < 3; ++i) inputs[first + static_cast<std::size_t>(i)] = exact_dyadic(v[i]);
   };
   if (centre == nullptr) {
-    add_vector(circle.center);
+    put_vector(0, circle.center);
   } else {
-    for (const Rational& x : exact_rational_point(*centre, scale_exponent)) scale.add(dyadic_of(x));
+    const std::array<ExactDyadic, 3> exact_centre = exact_dyadic_point(*centre, scale_exponent);
+    std::copy(exact_centre.begin(), exact_centre.end(), inputs.begin());
   }
-  add_vector(circle.normal);
-  add_vector(cylinder.axis_point);
-  add_vector(cylinder.axis);
-  add_vector(circle.normal.cross(Vector3::Unit(frame_axis_index(circle.normal))));  // u' = n x e_k, exact
-  scale.add(dyadic_of(circle.radius));
-  scale.add(dyadic_of(cylinder.radius));
-  const long E = scale.exponent();
-  const auto vector_at = [&](std::size_t first) {
-    return IntegerVector{scale.integer(first), scale.integer(first + 1), scale.integer(first + 2)};
-  };
+  put_vector(3, circle.normal);
+  put_vector(6, cylinder.axis_point);
+  put_vector(9, cylinder.axis);
+  put_vector(12, circle.normal.cross(Vector3::Unit(frame_axis_index(circle.normal))));  // u' = n x e_k, exact
+  inputs[15] = exact_dyadic(circle.radius);
+  inputs[16] = exact_dyadic(cylinder.radius);
+  const IntegersAtCommonExponent<17> scaled = integers_at_common_exponent(inputs);
+  const long E = scaled.exponent;
+  const std::array<Integer, 17>& x = scaled.integers;
+  const auto vector_at = [&](std::size_t first) { return IntegerVector{x[first], x[first + 1], x[first + 2]}; };
   const IntegerVector c = vector_at(0), n = vector_at(3), p = vector_at(6), d = vector_at(9), u = vector_at(12);
-  const Integer r = scale.integer(15), R = scale.integer(16);
+  const Integer& r = x[15];
+  const Integer& R = x[16];
 
   const IntegerVector q = c - p;                                       // degree 1
   const IntegerVector v = cross(n, u);                                 // 2
