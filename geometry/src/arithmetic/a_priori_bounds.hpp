@@ -12,6 +12,7 @@
 
 #include "clearjoint/geometry/vector3.hpp"
 #include "error_bounded.hpp"
+#include "twinned.hpp"
 
 namespace clearjoint::geometry::detail {
 
@@ -49,6 +50,19 @@ inline constexpr double kUnderflowAllowance = 0x1p-600;
 /// a_priori plus kUnderflowAllowance.
 inline Bounded a_priori_with_underflow(double value, double magnitude) {
   return {value, kGamma64 * magnitude * kMagnitudeInflation + kUnderflowAllowance};
+}
+
+/// Whether x's a priori bound proves it positive: value > gamma_64 twin (a_priori's bound), for
+/// inputs inside the full guard (nothing underflows). A bool for V = double, a lane mask for Pair.
+template <class V>
+auto a_priori_proves_positive(const ValueAndTwin<V>& x) {
+  return x.value > kGamma64 * x.twin * kMagnitudeInflation;
+}
+/// The same with kUnderflowAllowance (a_priori_with_underflow's bound), for guards that test only
+/// the upper limit.
+template <class V>
+auto a_priori_proves_positive_with_underflow(const ValueAndTwin<V>& x) {
+  return x.value > kGamma64 * x.twin * kMagnitudeInflation + kUnderflowAllowance;
 }
 
 }  // namespace clearjoint::geometry::detail

@@ -5,12 +5,11 @@
 // detect_contacts' free-flight proof (which builds these lanes from the poses directly) and
 // prove_candidates_clear share one copy of the arithmetic.
 //
-// Bit for bit: SSE2 packed operations round each lane exactly as the scalar operation would (IEEE
-// binary64, round to nearest; the target has no FMA to contract into), and every expression below
-// keeps the operation order of the scalar tests it mirrors (Eigen's: dot and squaredNorm sum
-// (x + y) + z, cross is (y z' - z y', z x' - x z', x y' - y x')). So each lane decides what
-// rim_reach and rim_side_of_plane decide for that base (test: DecidesAsTheOneByOneTestsDo), at
-// about half the instructions of two scalar passes.
+// Bit for bit: the radial tests are rim_reach_terms.hpp's a priori form and the axial tests take
+// s and the discriminant from plane_terms.hpp, on ValueAndTwin<Pair> (twinned.hpp): each lane a
+// value and its twin rounded exactly as the scalar instance rounds them (a Pair rounds each lane as
+// the scalar operation would, pair_lanes.hpp). So each lane decides what rim_reach and rim_side_of_plane decide for that base
+// (test: DecidesAsTheOneByOneTestsDo), at about half the instructions of two scalar passes.
 
 #include <array>
 
@@ -18,7 +17,10 @@
 #include "candidate_prefilter.hpp"
 #include "error_bounded.hpp"
 #include "pair_lanes.hpp"
+#include "plane_terms.hpp"
 #include "rim_plane_quantities.hpp"
+#include "rim_reach_terms.hpp"
+#include "twinned.hpp"
 
 namespace clearjoint::geometry::detail {
 
@@ -44,7 +46,6 @@ inline LaneVector3 operator+(const LaneVector3& p, const LaneVector3& q) { retur
 inline LaneVector3 operator-(const LaneVector3& p, const LaneVector3& q) { return {p.x - q.x, p.y - q.y, p.z - q.z}; }
 /// v scaled per lane (by +-1 in the callers: exact).
 inline LaneVector3 scaled(const Lanes& s, const Vector3& v) { return {s * v.x(), s * v.y(), s * v.z()}; }
-inline LaneVector3 abs(const LaneVector3& v) { return {magnitude(v.x), magnitude(v.y), magnitude(v.z)}; }
 /// |v|_1 per lane, as Eigen's v.cwiseAbs().sum().
 inline Lanes one_norm(const LaneVector3& v) { return magnitude(v.x) + magnitude(v.y) + magnitude(v.z); }
 inline Lanes dot(const Vector3& a, const LaneVector3& v) { return a.x() * v.x + a.y() * v.y + a.z() * v.z; }
@@ -106,46 +107,49 @@ struct CandidateLanes {
 /// inlined: GCC kept it out of line, and passing CandidateLanes through memory cost ~60 of the
 /// ~820 instructions of a free-flight detection (callgrind).
 [[gnu::always_inline]] inline CandidatesClear prove_candidates_clear_in_guard(const CandidateLanes& in) {
+  using Twin = ValueAndTwin<double>;
+  using LaneTwin = ValueAndTwin<Lanes>;
   const Vector3& a = in.bearing_axis;
   const Vector3& n = in.journal_axis;
-  const Vector3 a_abs = a.cwiseAbs();
+  const Vector3Of<Twin> axis{Twin::of(a.x()), Twin::of(a.y()), Twin::of(a.z())};  // |a| beside a
   const double axis_norm2 = a.squaredNorm();  // |a_i|^2, its own absolute-value twin
   const double R = in.bearing_radius, r = in.journal_radius;
 
-  // Radial: rim_reach's a priori "strictly inside" test. The axis point is 0, so q = c exactly.
-  const Lanes& e = in.radial_errors;
-  const Lanes gap = broadcast(R - r) - e, gap_abs = broadcast(R - r) + e;
-  const Lanes gap2 = gap * gap * axis_norm2;
+  // Radial: rim_reach's a priori "strictly inside" test (rim_reach_terms.hpp), the rim of lane k
+  // against the wall. The axis point is 0, so q = c exactly. The gap as rim_distance_polynomial.cpp
+  // forms it (R - r its own twin where the gap is proved positive); the guard tests only the
+  // upper limit, hence the underflow allowance.
   const LaneVector3& c = in.radial_centres;
-  const Lanes offset2 = squared_norm(cross(c, a));
-  const Lanes offset2_abs = squared_norm(abs_cross(abs(c), a_abs));
-  const LaneFlags gap_positive = broadcast(R - r) > e;
-  const LaneFlags offset_proved_small =
-      gap2 - offset2 > kGamma64 * (gap_abs * gap_abs * axis_norm2 + offset2_abs) * kMagnitudeInflation +
-                           kUnderflowAllowance;
+  const OffsetFromAxis<LaneTwin> offset =
+      offset_from_axis(Vector3Of<LaneTwin>{LaneTwin::of(c.x), LaneTwin::of(c.y), LaneTwin::of(c.z)}, axis);
+  const LaneTwin gap = LaneTwin::nonnegative(broadcast(R - r)) - LaneTwin::nonnegative(in.radial_errors);
+  const LaneFlags radial = (gap.value > 0.0) & a_priori_proves_positive_with_underflow(inside_margin(
+                                                   offset.perp2, Twin::nonnegative(axis_norm2), gap));
 
-  // Axial: rim_side_of_plane's a priori "strictly negative" test (a_priori_terms). Base plane X
+  // Axial: rim_side_of_plane's a priori "strictly negative" test (plane_terms.hpp). Base plane X
   // has normal sigma a_i (sigma = +1 at A, -1 at B): its s is sigma (a_i . (c - p)) and its
   // w = sigma (a_i x a_j), each rounded exactly as with the normal sigma a_i (negation is exact and
   // commutes with rounding), so |w|^2 and the twins are shared by both bases.
-  const double w2 = in.axes_cross.squaredNorm(), w2_abs = in.axes_cross_abs.squaredNorm();
-  const double nc2 = n.squaredNorm();
-  const double r2 = r * r;
-  const double r2_w2 = r2 * w2, r2_w2_abs = r2 * w2_abs;
+  const Twin w2 = squared_length(Vector3Of<Twin>{{in.axes_cross.x(), in.axes_cross_abs.x()},
+                                                 {in.axes_cross.y(), in.axes_cross_abs.y()},
+                                                 {in.axes_cross.z(), in.axes_cross_abs.z()}});
+  const double nc2 = squared_length(Vector3Of<double>{n.x(), n.y(), n.z()});  // its own twin
   const Bounded np2 = a_priori_with_underflow(axis_norm2, axis_norm2);
   const Bounded nc2_bounded = a_priori_with_underflow(nc2, nc2);
   const double normal_length = plane_normal_length_bound(np2);  // |n_p| = |a_i|, rounded up
   const LaneVector3 d = in.rim_centres - in.base_points;
-  const Lanes s_value = dot(a, d) * Lanes{1.0, -1.0};  // times -1: exact, as the negation
-  const Lanes s_abs = dot(a_abs, abs(d));
-  LaneBounded s{s_value, a_priori_error(s_abs)};
-  LaneBounded discriminant{s_value * s_value * nc2 - r2_w2, a_priori_error(s_abs * s_abs * nc2 + r2_w2_abs)};
+  LaneTwin s_terms = plane_offset(axis, Vector3Of<LaneTwin>{LaneTwin::of(d.x), LaneTwin::of(d.y), LaneTwin::of(d.z)});
+  s_terms.value = s_terms.value * Lanes{1.0, -1.0};  // times sigma: exact, as the negation
+  const LaneTwin discriminant_terms =
+      plane_discriminant(s_terms, Twin::nonnegative(nc2), Twin::nonnegative(r), w2);
+  LaneBounded s{s_terms.value, a_priori_error(s_terms.twin)};
+  LaneBounded discriminant{discriminant_terms.value, a_priori_error(discriminant_terms.twin)};
   // side_shift(normal_length, rim error + base error), per lane.
   const Lanes shift = normal_length * (in.rim_errors + in.base_errors) * kWideningRounding + kUnderflowError;
   widen_side_quantities_by_shift(s, discriminant, nc2_bounded, shift);
   const LaneFlags no_crossing = discriminant.positive(), inside_base = s.negative();
 
-  const LaneFlags radial = gap_positive & offset_proved_small, axial = no_crossing & inside_base;
+  const LaneFlags axial = no_crossing & inside_base;
   CandidatesClear out;
   for (int k = 0; k < 2; ++k) {
     out.radial[k] = radial[k] != 0;

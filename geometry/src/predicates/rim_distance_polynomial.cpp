@@ -40,10 +40,17 @@ PairMask in_range_pair(double a, double b) {
 }  // namespace
 
 AxisOffset axis_offset(const Circle3& circle, const Cylinder3& cylinder) {
+  using Twin = ValueAndTwin<double>;
   const Vector3 q = circle.center - cylinder.axis_point;
   const Vector3& d = cylinder.axis;
-  const Vector3 perp = q.cross(d), perp_abs = abs_cross(q.cwiseAbs(), d.cwiseAbs());
-  return {q, perp, perp_abs, perp.squaredNorm(), perp_abs.squaredNorm(), d.squaredNorm()};
+  const OffsetFromAxis<Twin> t = offset_from_axis(Vector3Of<Twin>{Twin::of(q.x()), Twin::of(q.y()), Twin::of(q.z())},
+                                                  Vector3Of<Twin>{Twin::of(d.x()), Twin::of(d.y()), Twin::of(d.z())});
+  return {q,
+          {t.perp.x.value, t.perp.y.value, t.perp.z.value},
+          {t.perp.x.twin, t.perp.y.twin, t.perp.z.twin},
+          t.perp2.value,
+          t.perp2.twin,
+          d.squaredNorm()};
 }
 
 bool reach_a_priori_bounds_apply(const Circle3& circle, const Cylinder3& cylinder) {
@@ -244,23 +251,14 @@ RimReach rim_reach(const Circle3& circle, const Cylinder3& cylinder) {
 
 namespace {
 
-// dist(x, axis) lies within dist(c, axis) +- r for every rim point x, and dist(c, axis) moves by
-// at most centre_error with the centre: both versions compare |q x d|^2 against
-// (R - r - e)^2 |d|^2 and (R + r + e)^2 |d|^2.
+// The reach test of rim_reach_terms.hpp in its two floating-point forms.
 
 RimReach rim_reach_running_error(const Circle3& circle, const Cylinder3& cylinder, double centre_error) {
-  const double R = cylinder.radius, r = circle.radius;
-  const BoundedVector3 q = exact(circle.center) - exact(cylinder.axis_point);
+  const Bounded R = cylinder.radius, r = circle.radius;
   const BoundedVector3 d = exact(cylinder.axis);
-  const Bounded offset2 = squared_norm(cross(q, d));
-  const Bounded axis_norm2 = squared_norm(d);
-  if (R > r) {
-    const Bounded gap = Bounded(R) - Bounded(r) - Bounded(centre_error);
-    if (gap.sign() > 0 && (gap * gap * axis_norm2 - offset2).sign() > 0) return RimReach::strictly_inside;
-  }
-  const Bounded reach = Bounded(R) + Bounded(r) + Bounded(centre_error);
-  if ((offset2 - reach * reach * axis_norm2).sign() > 0) return RimReach::strictly_outside;
-  return RimReach::undecided;
+  const auto proved_positive = [](const Bounded& x) { return x.sign() > 0; };
+  return rim_reach_of(offset_from_axis(exact(circle.center) - exact(cylinder.axis_point), d).perp2, squared_norm(d),
+                      R - r, R + r, Bounded(centre_error), proved_positive, proved_positive);
 }
 
 RimReach rim_reach_a_priori(const Circle3& circle, const Cylinder3& cylinder, const AxisOffset& offset,
@@ -270,21 +268,18 @@ RimReach rim_reach_a_priori(const Circle3& circle, const Cylinder3& cylinder, co
   // |q x d|^2 (rounding chain 6) against gap^2 D (chain 7: R - r, then - e, then squares);
   // the difference has chain 8: error <= gamma_64 (|q x d|_abs^2 + gap_abs^2 D), see
   // kGamma64, with gap_abs = (R - r) + e the twin of (R - r) - e (each subtraction of the
-  // gap is rounded relative to its result, which is at most gap_abs).
+  // gap is rounded relative to its result, which is at most gap_abs). R - r is its own twin
+  // where the gap is used: there R - r > e >= 0.
+  using Twin = ValueAndTwin<double>;
   const double R = cylinder.radius, r = circle.radius;
-  const double offset2 = offset.perp2, offset2_abs = offset.perp2_abs;
-  const double axis_norm2 = offset.axis_norm2;
-  if (R - r > centre_error) {
-    const double gap = (R - r) - centre_error, gap_abs = (R - r) + centre_error;
-    const double gap2 = gap * gap * axis_norm2;
-    if (gap2 - offset2 > kGamma64 * (gap_abs * gap_abs * axis_norm2 + offset2_abs) * kMagnitudeInflation)
-      return RimReach::strictly_inside;
-  }
-  const double reach = (R + r) + centre_error;
-  const double reach2 = reach * reach * axis_norm2;
-  if (offset2 - reach2 > kGamma64 * (reach2 + offset2_abs) * kMagnitudeInflation)
-    return RimReach::strictly_outside;
-  return RimReach::undecided;
+  return rim_reach_of(
+      Twin{offset.perp2, offset.perp2_abs}, Twin::nonnegative(offset.axis_norm2), Twin::nonnegative(R - r),
+      Twin::nonnegative(R + r), Twin::nonnegative(centre_error),
+      // The rounded (R - r) - e is positive iff the rounded R - r exceeds e (the sign of a
+      // difference of doubles survives its rounding), and then the exact R - r does too:
+      // rounding is monotone and e is a double.
+      [](const Twin& gap) { return gap.value > 0.0; },
+      [](const Twin& x) { return a_priori_proves_positive(x); });
 }
 
 }  // namespace

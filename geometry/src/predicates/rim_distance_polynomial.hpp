@@ -12,6 +12,7 @@
 #include "clearjoint/geometry/primitives.hpp"
 #include "error_bounded.hpp"
 #include "pair_lanes.hpp"
+#include "rim_reach_terms.hpp"
 
 namespace clearjoint::geometry::detail {
 
@@ -287,13 +288,7 @@ void widen_for_centre_error(RimDistancePolynomial& g, const Circle3& circle,
 void widen_for_centre_error(RimDistancePolynomial& g, const Circle3& circle, const AxisOffset& offset,
                             double centre_error);
 
-/// Outcome of the cheap test on the rim's reach before any root finding.
-enum class RimReach {
-  strictly_inside,   ///< dist(center, axis) + r < R: no rim point reaches the wall
-  strictly_outside,  ///< dist(center, axis) - r > R: every rim point is beyond the wall
-  undecided,
-};
-
+/// The reach test of rim_reach_terms.hpp, before any root finding.
 /// Proved with the running error bound of error_bounded.hpp: the answer is never wrong.
 RimReach rim_reach(const Circle3& circle, const Cylinder3& cylinder);
 /// The same with the magnitude guard already evaluated, proved for every centre within
