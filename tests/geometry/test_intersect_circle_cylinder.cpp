@@ -649,6 +649,38 @@ TEST(CircleCylinder, SaysUncertainWithoutBoundsWhenTheCertificateIsSwitchedOff) 
   }
 }
 
+TEST(CircleCylinder, NamesTheReasonOfTheLastTierThatRanWhenItCannotCertify) {
+  // A radius of 1e308 beside a subnormal axis point (AnswersWithoutCrashingWhen... below): the
+  // floating-point tiers cannot decide. Without the exact tier the answer is their best guess,
+  // uncertain, with their reason. With it, either the exact tier decides (and its certificate
+  // names why the floating-point tiers could not) or it gives up, and the answer is the same
+  // best guess with the exact tier's reason.
+  const Circle3 rim{{0.0001066730970030485, -0.017055439295696573, 405.4779034944622},
+                    {-6605.137064002415, -0.0009145328975634364, -954092.7138507926}, 1e308};
+  const Cylinder3 wall{{5e-324, 6.02688337003884e-08, 744516.0306718774},
+                       {73.75369479187992, -0.009966669369927525, 9.113820629672232e-06},
+                       377353.9049903767};
+  IntersectionOptions no_fallback;
+  no_fallback.exact_fallback = false;
+  const CircleCylinderIntersection guess = intersect_circle_cylinder(rim, wall, no_fallback);
+  ASSERT_EQ(guess.certificate.level, Certainty::uncertain);
+  EXPECT_NE(guess.certificate.reason, CertificateReason::none);
+  const CircleCylinderIntersection r = intersect_circle_cylinder(rim, wall);
+  if (r.certificate.level == Certainty::exact) {
+    EXPECT_EQ(r.certificate.reason, guess.certificate.reason);
+    return;
+  }
+  EXPECT_EQ(r.certificate.level, Certainty::uncertain);
+  EXPECT_NE(std::string(r.certificate.reason_text()).find("exact tier gave up"), std::string::npos)
+      << r.certificate.reason_text();
+  EXPECT_EQ(r.topology, guess.topology);
+  ASSERT_EQ(r.crossing_count, guess.crossing_count);
+  for (int i = 0; i < r.crossing_count; ++i) {
+    EXPECT_EQ(r.crossings[i].angle, guess.crossings[i].angle);
+    EXPECT_EQ(r.crossings[i].angle_error, kNoErrorBound);
+  }
+}
+
 TEST(CircleCylinder, ValidatesBothArguments) {
   const Circle3 rim = flat_rim({0, 0, 0}, 1);
   Circle3 zero_normal = rim;

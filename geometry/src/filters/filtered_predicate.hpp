@@ -3,7 +3,7 @@
 // The order of a predicate's tiers, written once. The idea is CGAL's Filtered_predicate: evaluate
 // the predicate with a fast approximate number type that can say "I cannot tell", and only then
 // with an exact one. Here the approximate evaluation has two forms of one expression
-// (plane_terms.hpp, rim_distance_polynomial.hpp):
+// (plane_terms.hpp, rim_reach_terms.hpp, rim_distance_polynomial.hpp):
 //  1. the a priori filter: plain double plus one absolute-value twin per value
 //     (a_priori_bounds.hpp), valid only inside a magnitude guard;
 //  2. the running-error filter (error_bounded.hpp), for every other finite input;
@@ -40,6 +40,39 @@ template <class APriori, class RunningError, class Decide, class Exact>
                                                       RunningError&& running_error, Decide&& decide, Exact&& exact) {
   return filtered_or_exact(
       [&] { return decide(floating_point_filter(a_priori_bounds_apply, a_priori, running_error)); }, exact);
+}
+
+/// What a tier of a query that fills its answer in place returns: decided (the answer filled), or
+/// left open, and why. The reason travels on: the exact tier's certificate names why the filter
+/// could not decide, and the fallback's why the last tier that ran could not.
+template <class Reason>
+struct TierVerdict {
+  bool decided = false;
+  Reason why_open{};  ///< when !decided
+
+  static TierVerdict done() { return {true, Reason{}}; }
+  static TierVerdict open(Reason why) { return {false, why}; }
+};
+
+/// The tiers in order, for a query whose exact tier can give up (CGAL's exact number types always
+/// decide; the circle-cylinder exact tier works on the doubles' integer mantissas and gives up
+/// where an intermediate leaves the double range or root isolation exceeds its budget), and which
+/// must still answer:
+///  1. filter() -> TierVerdict: the floating-point filters;
+///  2. exact(filter's reason) -> TierVerdict, where `exact_tier_on` and the filter left it open;
+///  3. fallback(reason of the last tier that ran): an approximate answer, marked uncertain.
+/// Each tier fills the answer itself: copying an answer out of a std::optional cost measurably on
+/// the hot paths (intersect_circle_plane.cpp).
+template <class Reason, class Filter, class Exact, class Fallback>
+[[gnu::always_inline]] inline void filtered_exact_or_fallback(bool exact_tier_on, Filter&& filter, Exact&& exact,
+                                                              Fallback&& fallback) {
+  TierVerdict<Reason> verdict = std::forward<Filter>(filter)();
+  if (verdict.decided) return;
+  if (exact_tier_on) {
+    verdict = std::forward<Exact>(exact)(verdict.why_open);
+    if (verdict.decided) return;
+  }
+  std::forward<Fallback>(fallback)(verdict.why_open);
 }
 
 }  // namespace clearjoint::geometry::detail

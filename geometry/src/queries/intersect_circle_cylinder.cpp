@@ -8,6 +8,7 @@
 
 #include "angles.hpp"
 #include "certified_rim_roots.hpp"
+#include "filtered_predicate.hpp"
 #include "rim_cylinder_exact.hpp"
 #include "rim_distance_polynomial.hpp"
 #include "primitives_detail.hpp"
@@ -175,9 +176,9 @@ CircleCylinderIntersection intersect_scaled(const Circle3& circle, const Cylinde
                                             const detail::RoundedPoint* centre, int scale_exponent) {
   CircleCylinderIntersection out;
 
-  // Bounding test on the rim's reach: most free-flight rims stop here.
-  // The reach test needs only part of the magnitude guard; the rest only if it is undecided.
-  // The centre's offset from the axis serves the guard, the reach test, the polynomial and the
+  // The reach test (rim_reach_terms.hpp) before any tier of the crossings: most free-flight rims
+  // stop here. It needs only part of the magnitude guard; the rest only if it is undecided. The
+  // centre's offset from the axis serves the guard, the reach test, the polynomial and the
   // widening.
   const detail::AxisOffset offset = detail::axis_offset(circle, cylinder);
   const bool reach_a_priori = detail::reach_a_priori_bounds_apply(offset, circle, cylinder);
@@ -191,32 +192,34 @@ CircleCylinderIntersection intersect_scaled(const Circle3& circle, const Cylinde
     return out;
   }
 
+  // The crossings, in filtered_predicate.hpp's order: the certified roots of the rim polynomial
+  // (tiers 1 and 2, docs/circle-cylinder.md), else the exact tier, else the approximate roots.
   const bool a_priori = detail::cylinder_a_priori_bounds_apply(circle, cylinder, reach_a_priori);
   std::optional<CircleFrame> frame;
   detail::RimDistancePolynomial g = detail::rim_distance_polynomial(circle, cylinder, offset, a_priori, frame);
-  if (!options.certify) {
-    fill(circle, detail::approximate_rim_roots(g), false, centre_error, out, frame);
-    out.certificate = {Certainty::uncertain, CertificateReason::certificate_switched_off};
-    return out;
-  }
-  detail::widen_for_centre_error(g, circle, offset, centre_error);
-  const RimRoots roots = detail::certified_rim_roots(g);
-  if (roots.proved) {
-    fill(circle, roots, true, centre_error, out, frame);
-    out.certificate = {Certainty::certified, CertificateReason::none};
-  } else if (options.exact_fallback) {
-    const RimRoots exact = detail::exact_rim_roots(circle, cylinder, centre, scale_exponent);
-    if (exact.proved) {
-      fill(circle, exact, true, centre_error, out);
-      out.certificate = {Certainty::exact, roots.failure};
-    } else {  // the exact tier gave up (magnitudes far apart): the best guess, marked so
-      fill(circle, detail::approximate_rim_roots(g), false, centre_error, out, frame);
-      out.certificate = {Certainty::uncertain, exact.failure};
-    }
-  } else {
-    fill(circle, detail::approximate_rim_roots(g), false, centre_error, out, frame);
-    out.certificate = {Certainty::uncertain, roots.failure};
-  }
+  using Verdict = detail::TierVerdict<CertificateReason>;
+  detail::filtered_exact_or_fallback<CertificateReason>(
+      options.certify && options.exact_fallback,
+      [&] {
+        if (!options.certify) return Verdict::open(CertificateReason::certificate_switched_off);
+        detail::widen_for_centre_error(g, circle, offset, centre_error);
+        const RimRoots roots = detail::certified_rim_roots(g);
+        if (!roots.proved) return Verdict::open(roots.failure);
+        fill(circle, roots, true, centre_error, out, frame);
+        out.certificate = {Certainty::certified, CertificateReason::none};
+        return Verdict::done();
+      },
+      [&](CertificateReason filter_failure) {
+        const RimRoots exact = detail::exact_rim_roots(circle, cylinder, centre, scale_exponent);
+        if (!exact.proved) return Verdict::open(exact.failure);
+        fill(circle, exact, true, centre_error, out);
+        out.certificate = {Certainty::exact, filter_failure};
+        return Verdict::done();
+      },
+      [&](CertificateReason why) {  // the best guess, marked so
+        fill(circle, detail::approximate_rim_roots(g), false, centre_error, out, frame);
+        out.certificate = {Certainty::uncertain, why};
+      });
   return out;
 }
 
