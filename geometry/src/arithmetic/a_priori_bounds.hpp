@@ -32,10 +32,15 @@ inline Vector3 abs_cross(const Vector3& a, const Vector3& b) {
           a.x() * b.y() + a.y() * b.x()};
 }
 
-/// A computed value with its a priori bound gamma_64 * magnitude, as a Bounded.
-inline Bounded a_priori(double value, double magnitude) {
-  return {value, kGamma64 * magnitude * kMagnitudeInflation};
+/// The a priori bound gamma_64 * magnitude, inflated for the twin's own rounding; for V = double
+/// or Pair (a bound per lane).
+template <class V>
+V a_priori_bound(V magnitude) {
+  return kGamma64 * magnitude * kMagnitudeInflation;
 }
+
+/// A computed value with its a priori bound, as a Bounded.
+inline Bounded a_priori(double value, double magnitude) { return {value, a_priori_bound(magnitude)}; }
 
 /// Underflow allowance for a priori bounds whose guard checks only the upper limit (every input
 /// at most 2^100 in magnitude, however small). Higham's model with underflow (sec. 2.1): a
@@ -47,22 +52,30 @@ inline Bounded a_priori(double value, double magnitude) {
 /// ~1e-150 in magnitude. Tiny non-zero inputs are then harmless, and the guard need not test a
 /// lower limit per value (26 values, ~9 instructions each, in the prefilters).
 inline constexpr double kUnderflowAllowance = 0x1p-600;
-/// a_priori plus kUnderflowAllowance.
+/// a_priori_bound plus kUnderflowAllowance.
+template <class V>
+V a_priori_bound_with_underflow(V magnitude) {
+  return a_priori_bound(magnitude) + kUnderflowAllowance;
+}
 inline Bounded a_priori_with_underflow(double value, double magnitude) {
-  return {value, kGamma64 * magnitude * kMagnitudeInflation + kUnderflowAllowance};
+  return {value, a_priori_bound_with_underflow(magnitude)};
 }
 
-/// Whether x's a priori bound proves it positive: value > gamma_64 twin (a_priori's bound), for
-/// inputs inside the full guard (nothing underflows). A bool for V = double, a lane mask for Pair.
+/// Whether x's a priori bound proves it positive, for inputs inside the full guard (nothing
+/// underflows). A bool for V = double, a lane mask for Pair.
 template <class V>
 auto a_priori_proves_positive(const ValueAndTwin<V>& x) {
-  return x.value > kGamma64 * x.twin * kMagnitudeInflation;
+  return x.value > a_priori_bound(x.twin);
 }
-/// The same with kUnderflowAllowance (a_priori_with_underflow's bound), for guards that test only
-/// the upper limit.
+/// The same with kUnderflowAllowance, for guards that test only the upper limit.
 template <class V>
 auto a_priori_proves_positive_with_underflow(const ValueAndTwin<V>& x) {
-  return x.value > kGamma64 * x.twin * kMagnitudeInflation + kUnderflowAllowance;
+  return x.value > a_priori_bound_with_underflow(x.twin);
+}
+/// x with its a priori bound (and kUnderflowAllowance) as a Bounded, or a PairBounded for V = Pair.
+inline Bounded a_priori_with_underflow(const ValueAndTwin<double>& x) { return a_priori_with_underflow(x.value, x.twin); }
+inline PairBounded a_priori_with_underflow(const ValueAndTwin<Pair>& x) {
+  return {x.value, a_priori_bound_with_underflow(x.twin)};
 }
 
 }  // namespace clearjoint::geometry::detail

@@ -70,6 +70,9 @@ inline double nonnegative_part(double x) { return x > 0.0 ? x : 0.0; }
 struct PairBounded {
   Pair value, error;
   Bounded lane(int i) const { return {value[i], error[i]}; }
+  /// Bounded::sign() > 0 and sign() < 0, lane by lane: -1 where proved, 0 where not.
+  PairMask positive() const { return value > sign_margin(error); }
+  PairMask negative() const { return value < -sign_margin(error); }
 };
 
 template <class T>

@@ -64,6 +64,9 @@ namespace clearjoint::geometry::detail {
 
 /// |x|, for the templates over double and Pair.
 inline double magnitude(double x) { return std::fabs(x); }
+/// a where `condition` holds, else b: select's form for a double, for the templates over double
+/// and Pair.
+inline double select(bool condition, double a, double b) { return condition ? a : b; }
 /// |x| per lane: the sign bit cleared, as std::fabs does for a double.
 inline Pair magnitude(Pair x) {
   const PairMask kMagnitudeBits = {0x7fff'ffff'ffff'ffff, 0x7fff'ffff'ffff'ffff};

@@ -58,34 +58,6 @@ inline LaneVector3 cross(const LaneVector3& c, const Vector3& a) {
 inline LaneVector3 abs_cross(const LaneVector3& c, const Vector3& a) {
   return {c.y * a.z() + c.z * a.y(), c.z * a.x() + c.x * a.z(), c.x * a.y() + c.y * a.x()};
 }
-/// a_priori_with_underflow's bound, per lane.
-inline Lanes a_priori_error(const Lanes& magnitude) {
-  return kGamma64 * magnitude * kMagnitudeInflation + kUnderflowAllowance;
-}
-
-/// Bounded (error_bounded.hpp) per lane, with its sign tests: sign() > 0 and sign() < 0.
-struct LaneBounded {
-  Lanes value, error;
-  LaneFlags positive() const { return value > error * kErrorInflation + kUnderflowError; }
-  LaneFlags negative() const { return value < -(error * kErrorInflation + kUnderflowError); }
-};
-
-/// widen_side_quantities_by_shift (rim_plane_quantities.hpp, where the derivation is), per lane,
-/// operation for operation.
-inline void widen_side_quantities_by_shift(LaneBounded& s, LaneBounded& discriminant, const Bounded& nc2,
-                                           const Lanes& shift) {
-  const Lanes high_s = magnitude(s.value) + s.error;
-  const double high_nc2 = std::fabs(nc2.value) + nc2.error;
-  const Lanes low_s = magnitude(s.value) - s.error;
-  const Lanes centre_shift = shift * shift;
-  const Lanes half_width = select(low_s >= shift, 2.0 * high_s * shift, (2.0 * high_s + shift) * shift);
-  const Lanes value = discriminant.value + centre_shift * nc2.value;
-  const Lanes added_error = (half_width * high_nc2 + centre_shift * nc2.error) * kWideningRounding +
-                            kUnitRoundoff * magnitude(value) + 2 * kUnderflowError;
-  s.error = (s.error + shift) * kWideningRounding;
-  discriminant = {value, (discriminant.error + added_error) * kWideningRounding};
-}
-
 /// CandidatePrefilterInput in lanes, with a_i x a_j and its absolute-value twin
 /// abs_cross(|a_i|, |a_j|) (which detect_contacts' parallelism filter computes too).
 struct CandidateLanes {
@@ -142,8 +114,8 @@ struct CandidateLanes {
   s_terms.value = s_terms.value * Lanes{1.0, -1.0};  // times sigma: exact, as the negation
   const LaneTwin discriminant_terms =
       plane_discriminant(s_terms, Twin::nonnegative(nc2), Twin::nonnegative(r), w2);
-  LaneBounded s{s_terms.value, a_priori_error(s_terms.twin)};
-  LaneBounded discriminant{discriminant_terms.value, a_priori_error(discriminant_terms.twin)};
+  PairBounded s = a_priori_with_underflow(s_terms);
+  PairBounded discriminant = a_priori_with_underflow(discriminant_terms);
   // side_shift(normal_length, rim error + base error), per lane.
   const Lanes shift = normal_length * (in.rim_errors + in.base_errors) * kWideningRounding + kUnderflowError;
   widen_side_quantities_by_shift(s, discriminant, nc2_bounded, shift);

@@ -48,21 +48,26 @@ inline double plane_normal_length_bound(const Bounded& np2) {
 inline double side_shift(double normal_length_bound, double distance_error) {
   return normal_length_bound * distance_error * kWideningRounding + kUnderflowError;
 }
-inline void widen_side_quantities_by_shift(Bounded& s, Bounded& discriminant, const Bounded& nc2, double shift) {
+/// B is Bounded for one s, or PairBounded for two side by side (the axial prefilters of
+/// candidate_prefilter_lanes.hpp, one base plane per lane): lane by lane the same operations, so
+/// each lane holds the bits of the call for its s alone.
+template <class B>
+inline void widen_side_quantities_by_shift(B& s, B& discriminant, const Bounded& nc2, decltype(B::value) shift) {
   // s moves by delta, |delta| <= shift. s^2 moves by 2 s delta + delta^2: within
   // [-2 |s| shift + shift^2, 2 |s| shift + shift^2] when |s| >= shift (centre shift^2,
   // half-width 2 |s| shift); otherwise within [-s^2, 2 |s| shift + shift^2], inside
   // shift^2 +- (2 |s| + shift) shift. Times |n_c|^2.
-  const double high_s = std::fabs(s.value) + s.error;
+  using V = decltype(B::value);
+  const V high_s = magnitude(s.value) + s.error;
   const double high_nc2 = std::fabs(nc2.value) + nc2.error;
-  const double low_s = std::fabs(s.value) - s.error;
-  const double centre_shift = shift * shift;
-  const double half_width = low_s >= shift ? 2 * high_s * shift : (2 * high_s + shift) * shift;
-  const double value = discriminant.value + centre_shift * nc2.value;
-  const double added_error = (half_width * high_nc2 + centre_shift * nc2.error) * kWideningRounding +
-                             kUnitRoundoff * std::fabs(value) + 2 * kUnderflowError;
+  const V low_s = magnitude(s.value) - s.error;
+  const V centre_shift = shift * shift;
+  const V half_width = select(low_s >= shift, 2.0 * high_s * shift, (2.0 * high_s + shift) * shift);
+  const V value = discriminant.value + centre_shift * nc2.value;
+  const V added_error = (half_width * high_nc2 + centre_shift * nc2.error) * kWideningRounding +
+                        kUnitRoundoff * magnitude(value) + 2 * kUnderflowError;
   s.error = (s.error + shift) * kWideningRounding;
-  discriminant = Bounded(value, (discriminant.error + added_error) * kWideningRounding);
+  discriminant = B{value, (discriminant.error + added_error) * kWideningRounding};
 }
 
 /// Widens s and the discriminant so that they hold for every rim centre c' and plane point p'
