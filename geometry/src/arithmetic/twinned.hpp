@@ -41,8 +41,8 @@ inline Twinned operator-(Twinned a, Twinned b) { return {a.lanes - twin_negated(
 inline Twinned operator*(Twinned a, Twinned b) { return {a.lanes * b.lanes}; }
 
 /// A value and its absolute-value twin side by side instead of packed: the same rules as Twinned
-/// (+ and * act on both, a - b adds b's twin), for V = double where the caller keeps the value and
-/// the twin apart (rim_reach's a priori form hands the twin of q x d on to the rim polynomial,
+/// (+ and * act on both, a - b adds b's twin), for V = double where the value and the twin come
+/// apart (rim_reach's a priori form takes |q x d|^2 and its twin from AxisOffset,
 /// rim_distance_polynomial.cpp), and V = Pair for two expressions at once, one per lane (bases A
 /// and B in candidate_prefilter_lanes.hpp). Operands of different V mix as double and Pair do (a
 /// double is broadcast to both lanes): a term both lanes share is formed once, in scalars.

@@ -94,9 +94,11 @@ struct CandidateLanes {
   const LaneVector3& c = in.radial_centres;
   const OffsetFromAxis<LaneTwin> offset =
       offset_from_axis(Vector3Of<LaneTwin>{LaneTwin::of(c.x), LaneTwin::of(c.y), LaneTwin::of(c.z)}, axis);
-  const LaneTwin gap = LaneTwin::nonnegative(broadcast(R - r)) - LaneTwin::nonnegative(in.radial_errors);
-  const LaneFlags radial = (gap.value > 0.0) & a_priori_proves_positive_with_underflow(inside_margin(
-                                                   offset.perp2, Twin::nonnegative(axis_norm2), gap));
+  const Twin radii_gap = Twin::nonnegative(R - r);
+  const LaneTwin e = LaneTwin::nonnegative(in.radial_errors);
+  const LaneFlags radial = (radii_gap.value > e.value) &
+                           a_priori_proves_positive_with_underflow(
+                               inside_margin(offset.perp2, Twin::nonnegative(axis_norm2), radii_gap - e));
 
   // Axial: rim_side_of_plane's a priori "strictly negative" test (plane_terms.hpp). Base plane X
   // has normal sigma a_i (sigma = +1 at A, -1 at B): its s is sigma (a_i . (c - p)) and its

@@ -9,9 +9,10 @@
 //   strictly inside the wall  when gap = (R - r) - e > 0 and gap^2 D - |A|^2 > 0,
 //   strictly outside the wall when |A|^2 - reach^2 D > 0, reach = (R + r) + e,
 // and the crossings of eqs. (16)-(17) need no root finding.
-// Instances: ValueAndTwin<double> (the a priori filter) and Bounded (the running-error filter) in
-// rim_distance_polynomial.cpp; ValueAndTwin<Pair>, two rims at once, for the radial prefilters of
-// candidate_prefilter_lanes.hpp. The order of the operations is part of the definition: the
+// Instances in rim_distance_polynomial.cpp: Twinned for A and |A|^2 with their twins (axis_offset,
+// which the polynomial and the widening share), ValueAndTwin<double> for the a priori margins and
+// Bounded for the running-error filter; and ValueAndTwin<Pair>, two rims at once, for the radial
+// prefilters of candidate_prefilter_lanes.hpp. The order of the operations is part of the definition: the
 // floating-point instances' bits, and the a priori chains counted in rim_distance_polynomial.cpp,
 // follow from it.
 
@@ -56,16 +57,17 @@ template <class T, class AxisNorm2>
 }
 
 /// The test on one rim: `radii_gap` R - r and `radii_sum` R + r as the number type forms them
-/// (the a priori chains count each as one rounding), `centre_error` e. `gap_proved_positive`
-/// and `proved_positive` are the number type's proofs of a sign (the first may use what it knows
-/// of the gap's form). Inline: the a priori form is on the path most free-flight rims take.
+/// (the a priori chains count each as one rounding), `centre_error` e. `gap_proved_positive(R - r,
+/// e)` proves gap = (R - r) - e > 0 (from the inputs, so that the branch does not wait for the
+/// gap) and `proved_positive` the sign of a margin, each the number type's own proof. Inline: the
+/// a priori form is on the path most free-flight rims take.
 template <class T, class AxisNorm2, class GapProvedPositive, class ProvedPositive>
 [[gnu::always_inline]] inline RimReach rim_reach_of(const T& perp2, const AxisNorm2& axis_norm2, const T& radii_gap,
                                                     const T& radii_sum, const T& centre_error,
                                                     GapProvedPositive&& gap_proved_positive,
                                                     ProvedPositive&& proved_positive) {
-  const T gap = radii_gap - centre_error;
-  if (gap_proved_positive(gap) && proved_positive(inside_margin(perp2, axis_norm2, gap))) {
+  if (gap_proved_positive(radii_gap, centre_error) &&
+      proved_positive(inside_margin(perp2, axis_norm2, radii_gap - centre_error))) {
     return RimReach::strictly_inside;
   }
   if (proved_positive(outside_margin(perp2, axis_norm2, radii_sum + centre_error))) return RimReach::strictly_outside;
