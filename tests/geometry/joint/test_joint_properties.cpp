@@ -159,7 +159,9 @@ TEST(JointProperties, GiveUnitNormalsWhereTheRimsRoundOntoTheAxis) {
     EXPECT_TRUE(c.normal_W.allFinite() && c.p_WCi.allFinite() && c.p_WCj.allFinite()) << "contact " << i;
     EXPECT_NEAR(c.normal_W.norm(), 1.0, 1e-15) << "contact " << i;
     // Square to the bearing axis for radial contacts.
-    if (c.type == ContactType::radial) EXPECT_NEAR(c.normal_W.dot(Vector3(1, 1, 1).normalized()), 0.0, 1e-15);
+    if (c.type == ContactType::radial) {
+      EXPECT_NEAR(c.normal_W.dot(Vector3(1, 1, 1).normalized()), 0.0, 1e-15);
+    }
   }
 }
 
