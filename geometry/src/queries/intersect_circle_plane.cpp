@@ -13,7 +13,6 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
-#include <optional>
 
 #include "angles.hpp"
 #include "circle_plane_exact.hpp"
@@ -136,12 +135,15 @@ struct Decision {
   detail::CirclePlaneTopologyAndSide topology;
   Certificate certificate;
 };
-/// The topology from the floating-point filter on q (widened), or read off the double values
-/// when the certificate or the exact fallback is off; nullopt when only the exact tier
-/// (exact_circle_plane_topology) can decide.
-std::optional<Decision> decide_without_exact_tier(const Circle3& circle, const Plane3& plane,
-                                                  const IntersectionOptions& options,
-                                                  const detail::PlaneQuantities& q);
+using Verdict = detail::TierVerdict<CertificateReason>;
+/// The floating-point tier of the topology: proved by the filter on q (widened), or read off the
+/// double values when the certificate is off, into `decision`; open (plane_filter_undecided) when
+/// only the exact tier (exact_circle_plane_topology) can decide.
+Verdict decide_by_filter(const Circle3& circle, const Plane3& plane, const IntersectionOptions& options,
+                         const detail::PlaneQuantities& q, Decision& decision);
+/// The last tier, when the filter left the topology open and the exact tier is off: the signs
+/// read off the double values, marked uncertain.
+Decision approximate_decision(const detail::PlaneQuantities& q);
 /// Fills `out` (default-constructed) for a decided topology: the certificate, the depth (if
 /// with_depth) and the crossings, on q (widened) and the stored rim; each crossing point's bound
 /// also covers centre_error (the exact rim is that much farther).
@@ -286,19 +288,29 @@ bool answer(const Circle3& circle_in, const Plane3& plane_in, const Intersection
   if (scaled_centre_error + scaled_point_error != 0.0) {
     detail::widen_for_point_error(q, scaled_centre_error + scaled_point_error);
   }
-  // The filter's decision, else the exact tier's (filtered_predicate.hpp's order), written out:
-  // filtered_or_exact would copy the decision out of its optional, a 16-byte load of two 8-byte
-  // stores that the store buffer cannot forward, and the random-pose queries were measurably
-  // slower for it (bench_intersections); here it is filled in place.
-  std::optional<Decision> decision = decide_without_exact_tier(*circle, *plane, options, q);
-  if (!decision) {
-    if (scope == Scope::detection) return false;  // its exact tier needs the recipes
-    decision = Decision{detail::exact_circle_plane_topology(*circle, *plane, errors.centre_recipe,
-                                                            errors.point_recipe, e),
-                        {Certainty::exact, CertificateReason::plane_filter_undecided}};
-  }
+  // The topology, in filtered_predicate.hpp's order, each tier filling `decision` in place: a
+  // decision copied out of a std::optional is a 16-byte load of two 8-byte stores that the store
+  // buffer cannot forward, and the random-pose queries were measurably slower for it.
+  Decision decision;
+  bool declined = false;
+  detail::filtered_exact_or_fallback<CertificateReason>(
+      options.certify && options.exact_fallback,
+      [&] { return decide_by_filter(*circle, *plane, options, q, decision); },
+      [&](CertificateReason filter_failure) {
+        // The detection's pass ends here, declined: it builds the exact tier's recipes only now
+        // and asks again for the whole query.
+        if (scope == Scope::detection) {
+          declined = true;
+          return Verdict::done();
+        }
+        decision = {detail::exact_circle_plane_topology(*circle, *plane, errors.centre_recipe, errors.point_recipe, e),
+                    {Certainty::exact, filter_failure}};
+        return Verdict::done();
+      },
+      [&](CertificateReason) { decision = approximate_decision(q); });
+  if (declined) return false;
   const bool with_depth = scope == Scope::whole_query;
-  describe(*circle, options, scaled_centre_error, q, *decision, with_depth, out);
+  describe(*circle, options, scaled_centre_error, q, decision, with_depth, out);
   if (e != 0) {
     for (int i = 0; i < out.crossing_count; ++i) {
       out.crossings[i].point = detail::scaled(out.crossings[i].point, -e);
@@ -311,9 +323,8 @@ bool answer(const Circle3& circle_in, const Plane3& plane_in, const Intersection
   return true;
 }
 
-std::optional<Decision> decide_without_exact_tier(const Circle3& circle, const Plane3& plane,
-                                                  const IntersectionOptions& options,
-                                                  const detail::PlaneQuantities& q) {
+Verdict decide_by_filter(const Circle3& circle, const Plane3& plane, const IntersectionOptions& options,
+                         const detail::PlaneQuantities& q, Decision& decision) {
   const Bounded& s = q.s;
   const BoundedVector3& w = q.w;
   const Bounded& w2 = q.w2;
@@ -342,7 +353,10 @@ std::optional<Decision> decide_without_exact_tier(const Circle3& circle, const P
     decided = {CirclePlaneTopology::two_crossings, 0};
     filtered = true;
   }
-  if (filtered && options.certify) return Decision{decided, {Certainty::certified, CertificateReason::none}};
+  if (filtered && options.certify) {
+    decision = {decided, {Certainty::certified, CertificateReason::none}};
+    return Verdict::done();
+  }
   if (!options.certify) {
     // Plain double pipeline: read the signs off the computed values.
     const bool parallel = w2.value == 0.0;
@@ -351,14 +365,20 @@ std::optional<Decision> decide_without_exact_tier(const Circle3& circle, const P
     else if (discriminant.value > 0) decided = {CirclePlaneTopology::disjoint, side};
     else if (discriminant.value == 0) decided = {CirclePlaneTopology::tangent, side};
     else decided = {CirclePlaneTopology::two_crossings, 0};
-    return Decision{decided, {Certainty::uncertain, CertificateReason::certificate_switched_off}};
+    decision = {decided, {Certainty::uncertain, CertificateReason::certificate_switched_off}};
+    return Verdict::done();
   }
-  if (options.exact_fallback) return std::nullopt;
+  return Verdict::open(CertificateReason::plane_filter_undecided);
+}
+
+Decision approximate_decision(const detail::PlaneQuantities& q) {
+  const Bounded& s = q.s;
+  const Bounded& discriminant = q.discriminant;
   const int side = s.value > 0 ? 1 : (s.value < 0 ? -1 : 0);
-  decided = {discriminant.value > 0 ? CirclePlaneTopology::disjoint : CirclePlaneTopology::two_crossings,
-             discriminant.value > 0 ? side : 0};
-  return Decision{decided,
-                  {Certainty::uncertain, CertificateReason::plane_filter_undecided_exact_fallback_off}};
+  const detail::CirclePlaneTopologyAndSide decided{
+      discriminant.value > 0 ? CirclePlaneTopology::disjoint : CirclePlaneTopology::two_crossings,
+      discriminant.value > 0 ? side : 0};
+  return {decided, {Certainty::uncertain, CertificateReason::plane_filter_undecided_exact_fallback_off}};
 }
 
 void describe(const Circle3& circle, const IntersectionOptions& options, double centre_error,
