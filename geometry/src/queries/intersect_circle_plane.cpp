@@ -267,11 +267,14 @@ bool answer(const Circle3& circle_in, const Plane3& plane_in, const Intersection
   // Realistic inputs are valid, inside the a priori guard and need no rescaling
   // (plane_quantities_if_ready): for them the checks, the rescaling and the copies, a fifth of a
   // disjoint query, are skipped.
-  auto [ready, q] = detail::plane_quantities_if_ready(circle_in, plane_in);
+  // Named, not a structured binding: the tiers' lambdas below capture q (Clang 14 cannot capture
+  // a structured binding).
+  detail::ReadyPlaneQuantities prepared = detail::plane_quantities_if_ready(circle_in, plane_in);
+  detail::PlaneQuantities& q = prepared.q;
   Rescaled rescaled;
   const Circle3* circle = &circle_in;
   const Plane3* plane = &plane_in;
-  if (!ready) {
+  if (!prepared.ready) {
     if (scope == Scope::detection) return false;
     rescaled = rescale(circle_in, plane_in);
     circle = &rescaled.circle;
