@@ -207,6 +207,12 @@ struct JournalPoint {
   return {point, detail::any_rim_point_error(point, rim.center, centre_error, rim.radius)};
 }
 
+/// A unit direction square to the unit axis `axis_hat`: the stand-in where rounding has lost the
+/// exact direction.
+Vector3 any_direction_off_axis(const Vector3& axis_hat) {
+  return off_axis(Vector3::Unit(frame_axis_index(axis_hat)), axis_hat).normalized();
+}
+
 /// The contact normal when the journal point, as rounded in the bearing frame, lies on the bearing
 /// axis: eq. (20) has no direction, though the exact point (within its error bound, which is then
 /// at least its distance to the axis) has one. Only at scales where the frame's rounding exceeds
@@ -214,10 +220,8 @@ struct JournalPoint {
 /// centre, off the axis, stands in, or any direction square to the axis. The contact's bearing
 /// point then carries no error bound (radial_contact), so this is a convention, not a claim.
 Vector3 radial_direction_off_axis(const JointSetup& s, const Circle3& rim, const Vector3& p_WCj) {
-  Vector3 direction = off_axis(p_WCj - rim.center, s.bearing_axis_hat_W);
-  if (!(direction.norm() > 0.0)) {
-    direction = off_axis(Vector3::Unit(frame_axis_index(s.bearing_axis_hat_W)), s.bearing_axis_hat_W);
-  }
+  const Vector3 direction = off_axis(p_WCj - rim.center, s.bearing_axis_hat_W);
+  if (!(direction.norm() > 0.0)) return any_direction_off_axis(s.bearing_axis_hat_W);
   return direction.normalized();
 }
 
@@ -437,13 +441,17 @@ void detect_aligned(const JointSetup& s, const DetectionOptions& options, bool e
     line = eccentricity > s.radial_clearance;
   }
   certificate.add(line_certificate);
-  if (line && eccentricity > 0.0) {
+  if (line) {
     presence.line = true;
     Contact contact;
     contact.type = ContactType::radial;
     contact.base = ContactBase::mid;
     contact.certificate = line_certificate;
-    contact.normal_W = radial / eccentricity;  // eq. (6)
+    // eq. (6). The computed eccentricity is 0 where rounding the offset, far along the axis,
+    // loses all of it though the kernel proved the line on the exact joint: then any direction
+    // square to the axis stands in, and the points carry no error bound (set_line_contact_errors),
+    // so this is a convention; the depth's bound still covers the exact depth.
+    contact.normal_W = eccentricity > 0.0 ? Vector3(radial / eccentricity) : any_direction_off_axis(s.bearing_axis_hat_W);
     contact.p_WCi = s.p_WPi + offset.dot(s.bearing_axis_hat_W) * s.bearing_axis_hat_W +
                     s.bearing_radius * contact.normal_W;                       // eq. (7)
     contact.p_WCj = s.p_WPj + s.journal_radius * contact.normal_W;            // eq. (8)

@@ -702,6 +702,38 @@ TEST(DetectContacts, GivesTheSameAnswerForAJointFarFromTheOrigin) {
   }
 }
 
+// The aligned journal's eccentricity (eq. 6) is the part of its offset square to the axis. Far
+// along a diagonal axis, an offset whose two components are one ulp (2^-33) apart has
+// e = 2^-33 / sqrt(2), eight clearances, yet the rounded cross products of off_axis can cancel to
+// exactly 0 (on about a third of these poses). The kernel proves the line on the exact joint, and
+// the contact must be listed (it was dropped, leaving a certified "none"), with a unit normal square
+// to the axis and a depth whose bound covers the exact depth. The exact depth, 7.2 clearances, is
+// beyond the model; the label follows the rounded depth, whose bound (~7e-9) spans the clearance
+// here, so either label is consistent with it.
+TEST(DetectContacts, ListsTheLineContactWhereRoundingLosesTheWholeEccentricity) {
+  const JointDimensions joint{
+      .bearing_radius = 1e-3, .bearing_length = 4e6, .journal_radius = 1e-3 - 1e-11, .journal_length = 1e5};
+  const Vector3 diagonal(1.0, 1.0, 0.0);
+  const PartPose bearing{Vector3::Zero(), diagonal};
+  for (int k = 0; k < 200; ++k) {
+    const double x = 1e6 + 0.37 * k;
+    const double y = std::nextafter(x, 2e6);
+    const JointContacts result = detect_contacts(joint, bearing, PartPose{Vector3(x, y, 0.0), diagonal});
+    ASSERT_TRUE(result.aligned);
+    EXPECT_TRUE(result.scenario == ContactScenario::line || result.scenario == ContactScenario::beyond_model)
+        << "pose " << k << ": " << to_string(result.scenario);
+    ASSERT_EQ(result.contact_count, 1) << "pose " << k;
+    const Contact& c = result.contacts[0];
+    EXPECT_EQ(c.base, ContactBase::mid);
+    EXPECT_NE(c.certificate.level, Certainty::uncertain);
+    // (y - x) is exact; the quotient and the difference round far below the bound.
+    const double exact_depth = (y - x) / std::sqrt(2.0) - joint.radial_clearance();
+    EXPECT_LE(std::fabs(c.depth - exact_depth), c.depth_error) << "pose " << k;
+    EXPECT_NEAR(c.normal_W.norm(), 1.0, 1e-15);
+    EXPECT_NEAR(c.normal_W.dot(diagonal), 0.0, 1e-15);
+  }
+}
+
 // Found by fuzzing `clearjoint detect`: joints whose numbers lie hundreds of orders of magnitude
 // apart crashed (SIGFPE inside GMP) or kept the exact tier busy for minutes. They must come back,
 // and every contact that is not marked uncertain must have finite numbers.
