@@ -2,6 +2,7 @@
 #include "real_root_isolation.hpp"
 
 #include <gmpxx.h>
+#include <mpfr.h>
 
 #include <algorithm>
 #include <cmath>
@@ -336,6 +337,47 @@ Bounded bounded(const Rational& x) {
 
 // ---- Sturm sequences ---------------------------------------------------------------------------
 
+/// The sign of prem(a, b) for b = b1 x + b0: lc(b)^(deg a) a(-b0 / b1) = sum a_i (-b0)^i b1^(m - i)
+/// (m = deg a), or 0 where the filter cannot decide it. Near a pair of close roots this constant
+/// (the Sturm chain's last member, a multiple of the discriminant) is small next to its terms,
+/// by a factor of about the roots' squared distance, far beyond a double's precision but not
+/// beyond kRemainderFilterBits; the exact sum takes products of thousands of bits. MPFR rounds
+/// each operation to nearest (relative error at most 2^-p, p the precision): per term 3
+/// conversions, at most 4 steps of (-b0)^i, one correctly rounded b1^(m - i) and 2 products, then
+/// at most 4 additions, so |computed - exact| <= gamma_14 sum |T_i| <= 2^(6 - p) sum |T_i|, T_i
+/// the computed terms (gamma_k = k u / (1 - k u), and 2^6 leaves room for the terms' own
+/// rounding); that sum is formed with upward rounding. Where MPFR's exponent range is exceeded
+/// the comparison fails and the filter decides nothing.
+constexpr mpfr_prec_t kRemainderFilterBits = 256;
+int filtered_linear_remainder_sign(const IntegerPolynomial& a, const IntegerPolynomial& b) {
+  const int m = a.degree();
+  if (m < 1 || m > 4) return 0;
+  mpfr_t minus_b0, b1, power_b0, power_b1, term, sum, magnitude, bound;
+  mpfr_inits2(kRemainderFilterBits, minus_b0, b1, power_b0, power_b1, term, sum, magnitude, bound, static_cast<mpfr_ptr>(nullptr));
+  mpfr_set_z(minus_b0, b.c[0].get_mpz_t(), MPFR_RNDN);
+  mpfr_neg(minus_b0, minus_b0, MPFR_RNDN);
+  mpfr_set_z(b1, b.c[1].get_mpz_t(), MPFR_RNDN);
+  mpfr_set_ui(sum, 0, MPFR_RNDN);
+  mpfr_set_ui(magnitude, 0, MPFR_RNDN);
+  mpfr_set_ui(power_b0, 1, MPFR_RNDN);
+  for (int i = 0; i <= m; ++i) {
+    // (-b0)^i b1^(m - i) a_i
+    mpfr_pow_ui(power_b1, b1, static_cast<unsigned long>(m - i), MPFR_RNDN);
+    mpfr_mul(term, power_b0, power_b1, MPFR_RNDN);
+    mpfr_set_z(power_b1, a.c[static_cast<std::size_t>(i)].get_mpz_t(), MPFR_RNDN);
+    mpfr_mul(term, term, power_b1, MPFR_RNDN);
+    mpfr_add(sum, sum, term, MPFR_RNDN);
+    mpfr_abs(term, term, MPFR_RNDN);
+    mpfr_add(magnitude, magnitude, term, MPFR_RNDU);
+    mpfr_mul(power_b0, power_b0, minus_b0, MPFR_RNDN);
+  }
+  mpfr_mul_2si(bound, magnitude, 6 - static_cast<long>(kRemainderFilterBits), MPFR_RNDU);
+  mpfr_abs(magnitude, sum, MPFR_RNDN);
+  const int sign = mpfr_cmp(magnitude, bound) > 0 ? mpfr_sgn(sum) : 0;
+  mpfr_clears(minus_b0, b1, power_b0, power_b1, term, sum, magnitude, bound, static_cast<mpfr_ptr>(nullptr));
+  return sign;
+}
+
 /// p, p', then -rem of the last two (times positive factors, which leave every sign as it is),
 /// until a constant or a zero remainder (the last member is then a multiple of gcd(p, p')).
 /// The positive factors are those of the subresultant remainder sequence (Cohen, "A Course in
@@ -351,6 +393,18 @@ std::vector<IntegerPolynomial> sturm_chain(const IntegerPolynomial& p) {
     const IntegerPolynomial& a = chain[chain.size() - 2];
     const IntegerPolynomial& b = chain.back();
     const auto delta = static_cast<unsigned long>(a.degree() - b.degree());
+    if (b.degree() == 1 && mpz_sizeinbase(b.leading().get_mpz_t(), 2) > kRemainderFilterBits) {
+      // The last member is a constant, and only its sign is read: the multiprecision filter
+      // usually decides it without the exact remainder, the costliest step of the chain when
+      // the members have thousands of bits (with fewer the exact remainder costs less).
+      if (const int sign = filtered_linear_remainder_sign(a, b); sign != 0) {
+        const bool factor_positive = !(sgn(b.leading()) < 0 && (a.degree() % 2 == 1));
+        IntegerPolynomial last;
+        last.c.assign(1, Integer(factor_positive ? -sign : sign));
+        chain.push_back(std::move(last));
+        break;
+      }
+    }
     auto [remainder, factor_sign] = pseudo_remainder(a, b);
     if (remainder.is_zero()) break;
     if (remainder.degree() == 0) {

@@ -335,9 +335,13 @@ bool first_harmonic_proof(const RimDistancePolynomial& g, RimRoots& result) {
 }
 
 // ---- Tier 2: subdivision with Taylor bounds (docs/circle-cylinder.md, section 3) ---------
+/// The signs of g (Bounded::sign) at an arc's ends, when known: an end that is its parent's
+/// middle keeps the sign g had there, the same evaluation the monotone case would repeat.
+constexpr int kSignNotYetKnown = 2;
 struct Arc {
   double low, high;
   int depth;
+  int sign_low = kSignNotYetKnown, sign_high = kSignNotYetKnown;
 };
 
 /// Keeps the distinct roots among `found` (a root next to the seam of the circle can be found
@@ -380,8 +384,7 @@ bool subdivision_proof(const RimDistancePolynomial& g, RimRoots& result) {
     }
     const double middle = 0.5 * (arc.low + arc.high);
     const double radius = std::max(middle - arc.low, arc.high - middle) * kSlack;
-    const Bounded at = g.value(middle);
-    const Bounded slope = g.derivative(middle);
+    const auto [at, slope] = g.value_and_derivative(middle);
     // Taylor: |g(t) - g(m)| <= |g'(m)| rho + M2 rho^2 / 2 on the arc.
     const double variation = (high(slope) * radius + 0.5 * curvature * radius * radius) * kSlack;
     if (std::fabs(at.value) - at.error * kSlack > variation) {
@@ -391,8 +394,8 @@ bool subdivision_proof(const RimDistancePolynomial& g, RimRoots& result) {
     if (std::fabs(slope.value) - slope.error * kSlack > curvature * radius * kSlack) {
       // g' keeps its sign on the arc: at most one root; the end signs say whether there is one.
       const int direction = slope.value > 0 ? 1 : -1;
-      const int sign_low = g.value(arc.low).sign();
-      const int sign_high = g.value(arc.high).sign();
+      const int sign_low = arc.sign_low != kSignNotYetKnown ? arc.sign_low : g.value(arc.low).sign();
+      const int sign_high = arc.sign_high != kSignNotYetKnown ? arc.sign_high : g.value(arc.high).sign();
       if (sign_low != 0 && sign_low == sign_high) {
         seen_sign = sign_low;
         continue;
@@ -424,8 +427,9 @@ bool subdivision_proof(const RimDistancePolynomial& g, RimRoots& result) {
       collect_distinct(roots, found, seen_sign, result);
       return false;
     }
-    stack[top++] = {middle, arc.high, arc.depth + 1};
-    stack[top++] = {arc.low, middle, arc.depth + 1};
+    const int sign_middle = at.sign();
+    stack[top++] = {middle, arc.high, arc.depth + 1, sign_middle, arc.sign_high};
+    stack[top++] = {arc.low, middle, arc.depth + 1, arc.sign_low, sign_middle};
   }
   collect_distinct(roots, found, seen_sign, result);
   result.proved = true;

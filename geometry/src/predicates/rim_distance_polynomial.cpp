@@ -219,18 +219,36 @@ RimDistancePolynomial rim_distance_polynomial_running_error(const Circle3& circl
   return g;
 }
 
-Bounded RimDistancePolynomial::value(double theta) const {
+namespace {
+
+/// cos, sin, cos 2 theta and sin 2 theta, enclosed: what g and g' at theta are formed from.
+struct BoundedHarmonics {
+  BoundedSinCos first;
+  Bounded cos2, sin2;
+};
+
+BoundedHarmonics harmonics_of(double theta) {
   const BoundedSinCos t = sincos_of(theta);
-  const Bounded cos2 = (t.cos - t.sin) * (t.cos + t.sin);
-  const Bounded sin2 = Bounded(2.0) * t.sin * t.cos;
-  return k[0] + k[1] * t.cos + k[2] * t.sin + k[3] * cos2 + k[4] * sin2;
+  return {t, (t.cos - t.sin) * (t.cos + t.sin), Bounded(2.0) * t.sin * t.cos};
 }
 
-Bounded RimDistancePolynomial::derivative(double theta) const {
-  const BoundedSinCos t = sincos_of(theta);
-  const Bounded cos2 = (t.cos - t.sin) * (t.cos + t.sin);
-  const Bounded sin2 = Bounded(2.0) * t.sin * t.cos;
-  return k[2] * t.cos - k[1] * t.sin + Bounded(2.0) * (k[4] * cos2 - k[3] * sin2);
+Bounded value_of(const std::array<Bounded, 5>& k, const BoundedHarmonics& h) {
+  return k[0] + k[1] * h.first.cos + k[2] * h.first.sin + k[3] * h.cos2 + k[4] * h.sin2;
+}
+
+Bounded derivative_of(const std::array<Bounded, 5>& k, const BoundedHarmonics& h) {
+  return k[2] * h.first.cos - k[1] * h.first.sin + Bounded(2.0) * (k[4] * h.cos2 - k[3] * h.sin2);
+}
+
+}  // namespace
+
+Bounded RimDistancePolynomial::value(double theta) const { return value_of(k, harmonics_of(theta)); }
+
+Bounded RimDistancePolynomial::derivative(double theta) const { return derivative_of(k, harmonics_of(theta)); }
+
+BoundedValueAndSlope RimDistancePolynomial::value_and_derivative(double theta) const {
+  const BoundedHarmonics h = harmonics_of(theta);
+  return {value_of(k, h), derivative_of(k, h)};
 }
 
 double RimDistancePolynomial::approximate_newton_step(double theta) const {

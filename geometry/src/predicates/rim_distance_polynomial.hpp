@@ -52,11 +52,19 @@ inline constexpr double kAngleAdditionUlps = 24;
 inline constexpr double kAngleAdditionTrigError =
     kAngleAdditionUlps * kUnitRoundoff + 4.1e-17;  // + the sine's Taylor remainder (1/16)^9 / 9!
 
+/// g and g' at one angle, enclosed.
+struct BoundedValueAndSlope {
+  Bounded value, slope;
+};
+
 struct RimDistancePolynomial {
   std::array<Bounded, 5> k;
 
   Bounded value(double theta) const;
   Bounded derivative(double theta) const;
+  /// value(theta) and derivative(theta), bit for bit, from one sine and cosine (tier 2 needs
+  /// both at every arc's middle).
+  BoundedValueAndSlope value_and_derivative(double theta) const;
   /// g / g' at theta from one sine-cosine evaluation (the Newton step).
   double approximate_newton_step(double theta) const;
   /// g, g' near a base angle whose sine and cosine are known, at the real angle

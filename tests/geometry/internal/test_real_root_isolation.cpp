@@ -205,5 +205,42 @@ TEST(RealRootIsolation, FindsNoRootOfAConstantOrOfAPolynomialWithoutRealRoots) {
   EXPECT_TRUE(roots.empty());
 }
 
+
+// The Sturm chain's last member, a constant whose sign alone is read, comes from a multiprecision
+// filter where that decides and from the exact remainder otherwise: near two close roots it is
+// small next to its terms by about their squared distance. Roots 2^-39 apart leave the filter its
+// decision, 2^-200 apart (a cancellation beyond its precision) and a double root (a zero
+// remainder) the exact path; each count must be the true one. A factor of 2^1000 gives the
+// coefficients the size at which the filter is tried (the rim's reach thousands of bits).
+TEST(RealRootIsolation, CountsCloseRootsCorrectlyWhateverDecidesTheChainsLastMember) {
+  std::mt19937_64 random(20170506);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  std::uniform_int_distribution<int> kind(0, 2);
+  const Rational huge(std::ldexp(1.0, 1000));
+  for (int trial = 0; trial < 120; ++trial) {
+    const Rational first(unit(random));
+    const int gap_exponent = trial % 3 == 0 ? -39 : trial % 3 == 1 ? -200 : 0;
+    const Rational second = gap_exponent == 0 ? first : first + Rational(std::ldexp(1.0, gap_exponent));
+    // The large scalar, and a third factor: two real roots far off, or none.
+    Polynomial f = linear(first) * linear(second) * Polynomial(huge * 3 + Rational(1));
+    const bool real_pair = kind(random) == 0;
+    f *= real_pair ? linear(Rational(3)) * linear(Rational(-3)) : Polynomial(Rational(1), Rational(0), Rational(1));
+    const int distinct = (gap_exponent == 0 ? 1 : 2) + (real_pair ? 2 : 0);
+    SCOPED_TRACE(trial);
+    const SturmSequence sturm(f);
+    EXPECT_EQ(sturm.roots_in(Rational(-4), Rational(4)), distinct);
+    // Ends off the roots (Sturm's theorem on a polynomial with a multiple root needs that): the
+    // pair, then each of its roots alone when there are two.
+    const Rational below = first - Rational(1, 1024), above = second + Rational(1, 1024);
+    EXPECT_EQ(sturm.roots_in(below, above), gap_exponent == 0 ? 1 : 2);
+    if (gap_exponent != 0) {
+      const Rational between = first + Rational(std::ldexp(1.0, gap_exponent - 1));
+      EXPECT_EQ(sturm.roots_in(below, between), 1);
+      EXPECT_EQ(sturm.roots_in(between, above), 1);
+    }
+    expect_consistent_isolation(f);
+  }
+}
+
 }  // namespace
 }  // namespace clearjoint::geometry::detail
