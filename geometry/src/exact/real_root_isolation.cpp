@@ -18,10 +18,17 @@ namespace clearjoint::geometry::detail {
 /// Integer coefficients, constant term first, the last one nonzero (none: the zero polynomial),
 /// and the same coefficients as doubles scaled by one power of two, with rounding bounds, for
 /// the double filter of sign evaluations.
+struct PendingRemainder;
+
 class IntegerPolynomial {
  public:
   std::vector<mpz_class> c;
   std::vector<Bounded> scaled;
+  /// Set on a Sturm chain member whose filter (`scaled`) was formed from multiprecision
+  /// enclosures (sturm_chain): `c` then holds only the right number of placeholders, and
+  /// exact_form() computes the exact coefficients at the first exact sign that needs them.
+  std::shared_ptr<PendingRemainder> pending;
+  const IntegerPolynomial& exact_form() const;
 
   int degree() const { return static_cast<int>(c.size()) - 1; }
   bool is_zero() const { return c.empty(); }
@@ -326,7 +333,7 @@ int sign_at(const IntegerPolynomial& p, const Point& x, const Bounded& approxima
   if (p.is_zero()) return 0;
   if (p.degree() == 0) return sgn(p.c[0]);
   const int filtered = filtered_sign(p, approximate);
-  return filtered != 0 ? filtered : exact_sign(p, x);
+  return filtered != 0 ? filtered : exact_sign(p.exact_form(), x);
 }
 
 Bounded bounded(const Rational& x) {
@@ -337,45 +344,207 @@ Bounded bounded(const Rational& x) {
 
 // ---- Sturm sequences ---------------------------------------------------------------------------
 
+/// Working precision of the chain's multiprecision filters (below), in bits: near a pair of close
+/// roots the last members are small next to their terms by about the roots' squared distance
+/// (2^-80 and less for the rims' tangencies), far beyond a double's precision.
+constexpr mpfr_prec_t kChainFilterBits = 256;
+/// Precision of the balls' radii: upper bounds only, rounded upwards.
+constexpr mpfr_prec_t kRadiusBits = 64;
+
+/// A real number enclosed as mid +- rad (ball arithmetic, as in Arb or MPFI's midpoint form):
+/// mid rounded to nearest at kChainFilterBits bits, rad an upper bound on the distance to the true
+/// value, every operation on it rounded upwards. A rounding to nearest at p bits moves a result by
+/// at most 2^-p of its rounded magnitude, which each operation adds to rad. Where MPFR's exponent
+/// range is exceeded, rad or mid become infinite or NaN and no sign is decided.
+class Ball {
+ public:
+  Ball() {
+    mpfr_init2(mid_, kChainFilterBits);
+    mpfr_init2(rad_, kRadiusBits);
+    mpfr_set_zero(mid_, 1);
+    mpfr_set_zero(rad_, 1);
+  }
+  explicit Ball(const mpz_class& x) : Ball() {
+    mpfr_set_z(mid_, x.get_mpz_t(), MPFR_RNDN);
+    add_rounding();
+  }
+  Ball(const Ball&) = delete;
+  Ball& operator=(const Ball&) = delete;
+  ~Ball() {
+    mpfr_clear(mid_);
+    mpfr_clear(rad_);
+  }
+  /// A copy of x (exact: the same precisions).
+  void assign(const Ball& x) {
+    mpfr_set(mid_, x.mid_, MPFR_RNDN);
+    mpfr_set(rad_, x.rad_, MPFR_RNDU);
+  }
+  /// x + sign y (sign +-1).
+  static void add(Ball& out, const Ball& x, const Ball& y, int sign) {
+    (sign > 0 ? mpfr_add : mpfr_sub)(out.mid_, x.mid_, y.mid_, MPFR_RNDN);
+    mpfr_add(out.rad_, x.rad_, y.rad_, MPFR_RNDU);
+    out.add_rounding();
+  }
+  /// x y: |x y - X Y| <= |x| rad(Y) + |y| rad(X) + rad(X) rad(Y) before the product's rounding.
+  static void multiply(Ball& out, const Ball& x, const Ball& y) {
+    mpfr_t part;
+    mpfr_init2(part, kRadiusBits);
+    mpfr_mul(out.rad_, x.rad_, y.rad_, MPFR_RNDU);
+    mpfr_abs_upper(part, x.mid_);
+    mpfr_mul(part, part, y.rad_, MPFR_RNDU);
+    mpfr_add(out.rad_, out.rad_, part, MPFR_RNDU);
+    mpfr_abs_upper(part, y.mid_);
+    mpfr_mul(part, part, x.rad_, MPFR_RNDU);
+    mpfr_add(out.rad_, out.rad_, part, MPFR_RNDU);
+    mpfr_clear(part);
+    mpfr_mul(out.mid_, x.mid_, y.mid_, MPFR_RNDN);
+    out.add_rounding();
+  }
+  /// The true value's sign where the ball excludes 0, else 0.
+  int sign() const { return mpfr_number_p(rad_) && mpfr_cmpabs(mid_, rad_) > 0 ? mpfr_sgn(mid_) : 0; }
+  /// The true value times 2^-shift, negated when `negate`, as a Bounded (error_bounded.hpp).
+  Bounded scaled_bounded(long shift, bool negate) const {
+    mpfr_t scaled;
+    mpfr_init2(scaled, kChainFilterBits);
+    mpfr_mul_2si(scaled, mid_, -shift, MPFR_RNDN);  // exact: a power of two
+    const double value = mpfr_get_d(scaled, MPFR_RNDN);
+    mpfr_set_prec(scaled, kRadiusBits);
+    mpfr_mul_2si(scaled, rad_, -shift, MPFR_RNDU);
+    const double radius = mpfr_get_d(scaled, MPFR_RNDU);
+    mpfr_clear(scaled);
+    // Rounding mid to a double: 2^-53 of its magnitude, or an underflow.
+    return {negate ? -value : value, (std::fabs(value) * 0x1p-52 + radius) * kErrorInflation + kUnderflowError};
+  }
+  long exponent() const { return mpfr_regular_p(mid_) ? mpfr_get_exp(mid_) : std::numeric_limits<long>::min(); }
+
+ private:
+  static void mpfr_abs_upper(mpfr_ptr out, mpfr_srcptr x) { mpfr_abs(out, x, MPFR_RNDU); }
+  void add_rounding() {
+    mpfr_t rounding;
+    mpfr_init2(rounding, kRadiusBits);
+    mpfr_abs(rounding, mid_, MPFR_RNDU);
+    mpfr_mul_2si(rounding, rounding, -static_cast<long>(kChainFilterBits), MPFR_RNDU);
+    mpfr_add(rad_, rad_, rounding, MPFR_RNDU);
+    mpfr_clear(rounding);
+  }
+  mpfr_t mid_, rad_;
+};
+
+/// One step of the subresultant remainder sequence (sturm_chain): -prem(a, b) / (g h^delta), or
+/// its sign alone (+-1) when it is a constant, or the zero polynomial.
+IntegerPolynomial subresultant_remainder(const IntegerPolynomial& a, const IntegerPolynomial& b, const Integer& divisor) {
+  auto [remainder, factor_sign] = pseudo_remainder(a, b);
+  if (remainder.is_zero()) return remainder;
+  if (remainder.degree() == 0) {
+    // The last member: only its sign is read, which the positive divisor leaves as it is.
+    remainder.c[0] = factor_sign > 0 ? -sgn(remainder.c[0]) : sgn(remainder.c[0]);
+    return remainder;
+  }
+  if (divisor != 1) {
+    for (Integer& x : remainder.c) mpz_divexact(x.get_mpz_t(), x.get_mpz_t(), divisor.get_mpz_t());
+  }
+  if (factor_sign > 0) {
+    for (Integer& x : remainder.c) x = -x;
+  }
+  return remainder;
+}
+
+}  // namespace
+
+/// A chain member known by its filter only: what its exact coefficients are made from.
+struct PendingRemainder {
+  IntegerPolynomial a, b;
+  Integer divisor;
+  std::optional<IntegerPolynomial> exact;
+};
+
+const IntegerPolynomial& IntegerPolynomial::exact_form() const {
+  if (!pending) return *this;
+  if (!pending->exact) pending->exact = subresultant_remainder(pending->a, pending->b, pending->divisor);
+  return *pending->exact;
+}
+
+namespace {
+
+/// The chain's last two members from a cubic a (p') and a quadratic b (the member after it), by
+/// ball arithmetic (Ball), or false where it cannot decide them. With pseudo-division by b
+/// (b2 x^2 + b1 x + b0) written out, prem(a, b) = r1 x + r0,
+///   t = a2 b2 - a3 b1,   r1 = (a1 b2 - a3 b0) b2 - t b1,   r0 = a0 b2^2 - t b0,
+/// and the next member, -r / (g h), is a positive multiple of -r: the filter of its signs is
+/// formed from the balls of -r, and its exact coefficients wait until an exact sign needs them
+/// (IntegerPolynomial::pending). The last member is the sign of -prem(b, -r / (g h)) =
+/// -(b0 r1^2 - b1 r0 r1 + b2 r0^2) / (g h)^2. Both need r1 != 0 and that sum's sign proved.
+/// The exact remainders multiply numbers of thousands of bits near a tangency of the rims;
+/// the balls decide there (the members are small next to their terms by about the squared
+/// distance of the close roots, within the filter's precision).
+bool filtered_last_members(const IntegerPolynomial& a, const IntegerPolynomial& b, const Integer& divisor,
+                           std::vector<IntegerPolynomial>& chain) {
+  const Ball a0(a.c[0]), a1(a.c[1]), a2(a.c[2]), a3(a.c[3]);
+  const Ball b0(b.c[0]), b1(b.c[1]), b2(b.c[2]);
+  Ball x, y, t, r0, r1;
+  Ball::multiply(x, a2, b2);
+  Ball::multiply(y, a3, b1);
+  Ball::add(t, x, y, -1);
+  Ball::multiply(x, a1, b2);
+  Ball::multiply(y, a3, b0);
+  Ball::add(r1, x, y, -1);  // a1 b2 - a3 b0
+  Ball::multiply(x, r1, b2);
+  Ball::multiply(y, t, b1);
+  Ball::add(r1, x, y, -1);
+  Ball::multiply(x, b2, b2);
+  Ball::multiply(y, a0, x);
+  Ball::multiply(x, t, b0);
+  Ball::add(r0, y, x, -1);
+  if (r1.sign() == 0) return false;
+  // b0 r1^2 - b1 r0 r1 + b2 r0^2
+  Ball sum, term;
+  Ball::multiply(x, r1, r1);
+  Ball::multiply(sum, b0, x);
+  Ball::multiply(x, r0, r1);
+  Ball::multiply(term, b1, x);
+  Ball::add(y, sum, term, -1);
+  Ball::multiply(x, r0, r0);
+  Ball::multiply(term, b2, x);
+  Ball::add(sum, y, term, +1);
+  const int last_sign = sum.sign();
+  if (last_sign == 0) return false;
+
+  IntegerPolynomial member;
+  member.c.resize(2);  // placeholders: the exact coefficients are pending
+  const long shift = std::max(r0.exponent(), r1.exponent());
+  member.scaled = {r0.scaled_bounded(shift, true), r1.scaled_bounded(shift, true)};
+  auto pending = std::make_shared<PendingRemainder>();
+  pending->a.c = a.c;
+  pending->b.c = b.c;
+  pending->divisor = divisor;
+  member.pending = std::move(pending);
+  chain.push_back(std::move(member));
+  IntegerPolynomial last;
+  last.c.assign(1, Integer(-last_sign));
+  chain.push_back(std::move(last));
+  return true;
+}
+
 /// The sign of prem(a, b) for b = b1 x + b0: lc(b)^(deg a) a(-b0 / b1) = sum a_i (-b0)^i b1^(m - i)
-/// (m = deg a), or 0 where the filter cannot decide it. Near a pair of close roots this constant
-/// (the Sturm chain's last member, a multiple of the discriminant) is small next to its terms,
-/// by a factor of about the roots' squared distance, far beyond a double's precision but not
-/// beyond kRemainderFilterBits; the exact sum takes products of thousands of bits. MPFR rounds
-/// each operation to nearest (relative error at most 2^-p, p the precision): per term 3
-/// conversions, at most 4 steps of (-b0)^i, one correctly rounded b1^(m - i) and 2 products, then
-/// at most 4 additions, so |computed - exact| <= gamma_14 sum |T_i| <= 2^(6 - p) sum |T_i|, T_i
-/// the computed terms (gamma_k = k u / (1 - k u), and 2^6 leaves room for the terms' own
-/// rounding); that sum is formed with upward rounding. Where MPFR's exponent range is exceeded
-/// the comparison fails and the filter decides nothing.
-constexpr mpfr_prec_t kRemainderFilterBits = 256;
+/// (m = deg a), by ball arithmetic (Ball), or 0 where that cannot decide it: the chain's last
+/// member where filtered_last_members did not form it.
 int filtered_linear_remainder_sign(const IntegerPolynomial& a, const IntegerPolynomial& b) {
   const int m = a.degree();
-  if (m < 1 || m > 4) return 0;
-  mpfr_t minus_b0, b1, power_b0, power_b1, term, sum, magnitude, bound;
-  mpfr_inits2(kRemainderFilterBits, minus_b0, b1, power_b0, power_b1, term, sum, magnitude, bound, static_cast<mpfr_ptr>(nullptr));
-  mpfr_set_z(minus_b0, b.c[0].get_mpz_t(), MPFR_RNDN);
-  mpfr_neg(minus_b0, minus_b0, MPFR_RNDN);
-  mpfr_set_z(b1, b.c[1].get_mpz_t(), MPFR_RNDN);
-  mpfr_set_ui(sum, 0, MPFR_RNDN);
-  mpfr_set_ui(magnitude, 0, MPFR_RNDN);
-  mpfr_set_ui(power_b0, 1, MPFR_RNDN);
-  for (int i = 0; i <= m; ++i) {
-    // (-b0)^i b1^(m - i) a_i
-    mpfr_pow_ui(power_b1, b1, static_cast<unsigned long>(m - i), MPFR_RNDN);
-    mpfr_mul(term, power_b0, power_b1, MPFR_RNDN);
-    mpfr_set_z(power_b1, a.c[static_cast<std::size_t>(i)].get_mpz_t(), MPFR_RNDN);
-    mpfr_mul(term, term, power_b1, MPFR_RNDN);
-    mpfr_add(sum, sum, term, MPFR_RNDN);
-    mpfr_abs(term, term, MPFR_RNDN);
-    mpfr_add(magnitude, magnitude, term, MPFR_RNDU);
-    mpfr_mul(power_b0, power_b0, minus_b0, MPFR_RNDN);
+  const Ball minus_b0(-b.c[0]), b1(b.c[1]);
+  Ball sum(a.c[static_cast<std::size_t>(m)]), power, term, next;
+  power.assign(b1);
+  // Horner in the homogeneous form: sum <- sum (-b0) + a_i b1^(m - i), the power built up.
+  for (int i = m - 1; i >= 0; --i) {
+    const Ball coefficient(a.c[static_cast<std::size_t>(i)]);
+    Ball::multiply(term, coefficient, power);
+    Ball::multiply(next, sum, minus_b0);
+    Ball::add(sum, next, term, +1);
+    if (i > 0) {
+      Ball::multiply(next, power, b1);
+      power.assign(next);
+    }
   }
-  mpfr_mul_2si(bound, magnitude, 6 - static_cast<long>(kRemainderFilterBits), MPFR_RNDU);
-  mpfr_abs(magnitude, sum, MPFR_RNDN);
-  const int sign = mpfr_cmp(magnitude, bound) > 0 ? mpfr_sgn(sum) : 0;
-  mpfr_clears(minus_b0, b1, power_b0, power_b1, term, sum, magnitude, bound, static_cast<mpfr_ptr>(nullptr));
-  return sign;
+  return sum.sign();
 }
 
 /// p, p', then -rem of the last two (times positive factors, which leave every sign as it is),
@@ -385,7 +554,10 @@ int filtered_linear_remainder_sign(const IntegerPolynomial& a, const IntegerPoly
 /// exactly by |g h^delta|, which keeps the coefficients' growth linear in the degree without the
 /// gcds a primitive sequence takes (a member's sign pattern only matters, and the subresultant
 /// members differ from the Euclidean remainders by nonzero constants; their magnitudes do not
-/// depend on the signs the Sturm sequence gives the members).
+/// depend on the signs the Sturm sequence gives the members). Where the members have more bits
+/// than the filters' precision, the last members come from ball arithmetic when it decides them
+/// (filtered_last_members, filtered_linear_remainder_sign); with fewer the exact remainders cost
+/// less than the balls.
 std::vector<IntegerPolynomial> sturm_chain(const IntegerPolynomial& p) {
   std::vector<IntegerPolynomial> chain{p, derivative(p)};
   Integer g = 1, h = 1, divisor, power;
@@ -393,11 +565,13 @@ std::vector<IntegerPolynomial> sturm_chain(const IntegerPolynomial& p) {
     const IntegerPolynomial& a = chain[chain.size() - 2];
     const IntegerPolynomial& b = chain.back();
     const auto delta = static_cast<unsigned long>(a.degree() - b.degree());
-    if (b.degree() == 1 && mpz_sizeinbase(b.leading().get_mpz_t(), 2) > kRemainderFilterBits) {
-      // The last member is a constant, and only its sign is read: the multiprecision filter
-      // usually decides it without the exact remainder, the costliest step of the chain when
-      // the members have thousands of bits (with fewer the exact remainder costs less).
+    mpz_pow_ui(power.get_mpz_t(), h.get_mpz_t(), delta);
+    divisor = g * power;
+    const bool large = mpz_sizeinbase(b.leading().get_mpz_t(), 2) > kChainFilterBits;
+    if (large && a.degree() == 3 && b.degree() == 2 && filtered_last_members(a, b, divisor, chain)) break;
+    if (large && b.degree() == 1) {
       if (const int sign = filtered_linear_remainder_sign(a, b); sign != 0) {
+        // -prem(a, b) times a positive factor: lc(b)^(deg a) is negative only for an odd deg a.
         const bool factor_positive = !(sgn(b.leading()) < 0 && (a.degree() % 2 == 1));
         IntegerPolynomial last;
         last.c.assign(1, Integer(factor_positive ? -sign : sign));
@@ -405,21 +579,11 @@ std::vector<IntegerPolynomial> sturm_chain(const IntegerPolynomial& p) {
         break;
       }
     }
-    auto [remainder, factor_sign] = pseudo_remainder(a, b);
+    IntegerPolynomial remainder = subresultant_remainder(a, b, divisor);
     if (remainder.is_zero()) break;
     if (remainder.degree() == 0) {
-      // The last member: only its sign is read, which the positive divisor leaves as it is.
-      remainder.c[0] = factor_sign > 0 ? -sgn(remainder.c[0]) : sgn(remainder.c[0]);
       chain.push_back(std::move(remainder));
       break;
-    }
-    mpz_pow_ui(power.get_mpz_t(), h.get_mpz_t(), delta);
-    divisor = g * power;
-    if (divisor != 1) {
-      for (Integer& x : remainder.c) mpz_divexact(x.get_mpz_t(), x.get_mpz_t(), divisor.get_mpz_t());
-    }
-    if (factor_sign > 0) {
-      for (Integer& x : remainder.c) x = -x;
     }
     // g = |lc(b)|, h = h^(1 - delta) g^delta: both magnitudes of the sequence's own.
     g = abs(b.leading());
@@ -433,7 +597,9 @@ std::vector<IntegerPolynomial> sturm_chain(const IntegerPolynomial& p) {
     }
     chain.push_back(std::move(remainder));
   }
-  for (IntegerPolynomial& member : chain) member.prepare_filter();
+  for (IntegerPolynomial& member : chain) {
+    if (!member.pending) member.prepare_filter();  // a pending member's filter is formed already
+  }
   return chain;
 }
 

@@ -242,5 +242,33 @@ TEST(RealRootIsolation, CountsCloseRootsCorrectlyWhateverDecidesTheChainsLastMem
   }
 }
 
+
+// The member before the last (linear for a quartic) is kept as a multiprecision enclosure when the
+// filter decides the chain's end, its exact coefficients computed at the first sign its filter
+// cannot give: at its own root, a rational point found here from CGAL's Euclidean remainders
+// (the chain's members up to positive factors). A count with that point as an end must need, and
+// get, the exact member.
+TEST(RealRootIsolation, CountsExactlyAtTheRootOfAChainMemberKnownOnlyByItsEnclosure) {
+  std::mt19937_64 random(20170507);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  const Rational huge(std::ldexp(1.0, 1000));
+  for (int trial = 0; trial < 40; ++trial) {
+    const Rational first(unit(random)), second = first + Rational(std::ldexp(1.0, -39));
+    const Rational third(2 + unit(random)), fourth(-2 + unit(random));
+    const Polynomial f = linear(first) * linear(second) * linear(third) * linear(fourth) * Polynomial(huge * 3 + Rational(1));
+    Polynomial quotient, r2, r1;
+    Polynomial::euclidean_division(f, CGAL::differentiate(f), quotient, r2);
+    Polynomial::euclidean_division(CGAL::differentiate(f), r2, quotient, r1);
+    ASSERT_EQ(r1.degree(), 1);
+    const Rational member_root = -r1[0] / r1[1];
+    int below = 0;
+    for (const Rational& root : {first, second, third, fourth}) below += root <= member_root ? 1 : 0;
+    SCOPED_TRACE(trial);
+    const SturmSequence sturm(f);
+    EXPECT_EQ(sturm.roots_in(Rational(-8), member_root), below);
+    EXPECT_EQ(sturm.roots_in(member_root, Rational(8)), 4 - below);
+  }
+}
+
 }  // namespace
 }  // namespace clearjoint::geometry::detail
