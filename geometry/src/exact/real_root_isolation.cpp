@@ -638,6 +638,9 @@ struct Endpoint {
 /// at the point itself cancels to nothing, while the expansion decides down to |x - root| of about
 /// 2^-52 |c - root|. Decisions are exact either way (the exact sum decides where the filter cannot);
 /// the expansion only spares that sum.
+/// Resolution of LocalExpansion::approximate_root_pair's guesses, in bits of the searched width.
+constexpr int kPairGuessBits = 60;
+
 class LocalExpansion {
  public:
   LocalExpansion(const IntegerPolynomial& f, const Dyadic& centre) {
@@ -688,6 +691,40 @@ class LocalExpansion {
       ((value > 0.0 ? 1 : -1) == sign_high ? high : low) = middle;
     }
     return high;
+  }
+  /// Where G's rounded coefficients, in plain doubles, put two roots between the offsets low and
+  /// high: G' changes sign between them, then G on each side of that extremum (bisections). A
+  /// guess, which the caller proves or discards; false where the doubles show no such pair.
+  bool approximate_root_pair(double low, double high, double& first, double& second) const {
+    const auto value_at = [&](double s) {
+      double value = g_.scaled.back().value;
+      for (int i = g_.degree() - 1; i >= 0; --i) value = value * s + g_.scaled[static_cast<std::size_t>(i)].value;
+      return value;
+    };
+    const auto slope_at = [&](double s) {
+      double slope = g_.degree() * g_.scaled.back().value;
+      for (int i = g_.degree() - 1; i >= 1; --i) slope = slope * s + i * g_.scaled[static_cast<std::size_t>(i)].value;
+      return slope;
+    };
+    // Bisection of (a, b] on the sign of h towards b, down to 2^-kPairGuessBits of the whole
+    // width: the guesses' positions only matter to that resolution.
+    const double resolution = std::ldexp(high - low, -kPairGuessBits);
+    const auto sign_change = [&](const auto& h, double a, double b) {
+      const bool positive_at_b = h(b) > 0.0;
+      while (b - a > resolution) {
+        const double middle = 0.5 * (a + b);
+        if (!(middle > a && middle < b)) break;
+        ((h(middle) > 0.0) == positive_at_b ? b : a) = middle;
+      }
+      return b;
+    };
+    if (!(slope_at(low) * slope_at(high) < 0.0)) return false;
+    const double extremum = sign_change(slope_at, low, high), at_extremum = value_at(extremum);
+    if (!(at_extremum != 0.0 && std::isfinite(at_extremum))) return false;
+    if (!(value_at(low) * at_extremum < 0.0 && value_at(high) * at_extremum < 0.0)) return false;
+    first = sign_change(value_at, low, extremum);
+    second = sign_change(value_at, extremum, high);
+    return true;
   }
 
  private:
@@ -889,26 +926,94 @@ std::vector<double> monic_doubles(const IntegerPolynomial& f) {
   return out;
 }
 
+/// Levels of the isolation's walk the node descend_to_pair proves is left above the two roots'
+/// guessed separation: room for the guess's error.
+constexpr long kPairDescentMargin = 2;
+/// Fewest levels descend_to_pair skips: one proof costs two chain evaluations, as one level does.
+constexpr long kFewestPairDescentLevels = 2;
+
+/// The node the isolation's walk (isolate_factor) would reach from (low, high], which holds
+/// exactly two distinct roots of f, without its levels in between: where two roots lie close
+/// together, the walk halves the node some 30 times, each time evaluating the chain at the
+/// midpoint, before a midpoint separates them. The two roots are guessed from f expanded about
+/// the node's middle (LocalExpansion::approximate_root_pair), the deepest node of the walk's grid
+/// (a + j w 2^-K, a + (j + 1) w 2^-K] holding both guesses found from their binary digits, and
+/// that node, K - kPairDescentMargin levels down, proved to hold two roots by the chain's exact
+/// signs at its ends. Every node between (low, high] and it then holds both roots too, and each
+/// one's other half none: the walk would have split each of them and found their other halves
+/// empty, 2 K - 1 evaluations the budget is charged for (the node itself is charged when the walk
+/// takes it). The walk goes on from that node and isolates the same roots in the same intervals.
+/// Empty (nothing spent) where the guess is not proved or skips too few levels.
+std::optional<std::pair<Endpoint, Endpoint>> descend_to_pair(const IntegerPolynomial& f,
+                                                             const std::vector<IntegerPolynomial>& chain,
+                                                             const Endpoint& low, const Endpoint& high,
+                                                             EvaluationBudget& budget) {
+  const LocalExpansion expansion(f, midpoint(low.x, high.x));
+  const double from = expansion.offset(low.x).value, to = expansion.offset(high.x).value;
+  if (!(std::isfinite(from) && std::isfinite(to) && from < to)) return std::nullopt;
+  double first = 0.0, second = 0.0;
+  if (!expansion.approximate_root_pair(from, to, first, second)) return std::nullopt;
+  const double t1 = std::clamp((first - from) / (to - from), 0.0, 1.0);
+  const double t2 = std::clamp((second - from) / (to - from), 0.0, 1.0);
+  long common = 0;  // levels down which both guesses stay in one node
+  while (common < kMostJumpLevels &&
+         std::floor(std::ldexp(t1, static_cast<int>(common + 1))) == std::floor(std::ldexp(t2, static_cast<int>(common + 1)))) {
+    ++common;
+  }
+  const long levels = common - kPairDescentMargin;
+  if (levels < kFewestPairDescentLevels) return std::nullopt;
+  const double count = std::ldexp(1.0, static_cast<int>(levels));
+  const double index = std::min(std::floor(std::ldexp(t1, static_cast<int>(levels))), count - 1);
+  Dyadic step = high.x - low.x;
+  step.exponent -= levels;
+  const auto point = [&](double j) {  // low + j step, j a whole number below 2^kMostJumpLevels
+    Dyadic offset = step;
+    offset.mantissa *= Integer(j);
+    offset.normalise();
+    return low.x + offset;
+  };
+  Endpoint node_low{point(index), {}}, node_high{point(index + 1), {}};
+  node_low.signs = index == 0 ? low.signs : chain_signs(chain, node_low.x);
+  node_high.signs = index + 1 == count ? high.signs : chain_signs(chain, node_high.x);
+  if (node_low.signs.variations - node_high.signs.variations != 2) return std::nullopt;
+  budget.spend(static_cast<int>(2 * levels - 1));
+  return std::make_pair(std::move(node_low), std::move(node_high));
+}
+
 void isolate_factor(const std::shared_ptr<const SquareFreeFactor>& factor, const IntegerPolynomial& f,
                     const std::vector<IntegerPolynomial>& chain, const Dyadic& bound, std::vector<IsolatedRoot>& out,
                     EvaluationBudget& budget) {
   Dyadic width_goal = bound;
   width_goal.exponent -= kRefinementBits;
   const Dyadic lowest = -bound;
-  std::vector<std::pair<Endpoint, Endpoint>> pending;
-  pending.push_back({{lowest, chain_signs(chain, lowest)}, {bound, chain_signs(chain, bound)}});
+  // Nodes still to visit; a node below one where descend_to_pair was tried (and took the walk as
+  // far down as its guess allows, or failed) does not try again: the guess there would be the
+  // same pair, a few levels from its separation.
+  struct Node {
+    Endpoint low, high;
+    bool may_descend;
+  };
+  std::vector<Node> pending;
+  pending.push_back({{lowest, chain_signs(chain, lowest)}, {bound, chain_signs(chain, bound)}, true});
   std::vector<double> monic;
   while (!pending.empty()) {
-    auto [low, high] = std::move(pending.back());
+    auto [low, high, may_descend] = std::move(pending.back());
     pending.pop_back();
     budget.spend();
     const int n = low.signs.variations - high.signs.variations;
     if (n == 0) continue;
+    if (n == 2 && may_descend) {
+      may_descend = false;
+      if (auto node = descend_to_pair(f, chain, low, high, budget)) {
+        pending.push_back({std::move(node->first), std::move(node->second), false});
+        continue;
+      }
+    }
     if (n >= 2) {
       Dyadic middle = midpoint(low.x, high.x);
       const ChainSigns at_middle = chain_signs(chain, middle);
-      pending.push_back({std::move(low), {middle, at_middle}});
-      pending.push_back({{std::move(middle), at_middle}, std::move(high)});
+      pending.push_back({std::move(low), {middle, at_middle}, may_descend});
+      pending.push_back({{std::move(middle), at_middle}, std::move(high), may_descend});
       continue;
     }
     // One root in (low, high]: bisect on the sign of the square-free factor.
