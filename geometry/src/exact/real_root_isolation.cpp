@@ -361,6 +361,7 @@ class Ball {
   Ball() {
     mpfr_init2(mid_, kChainFilterBits);
     mpfr_init2(rad_, kRadiusBits);
+    mpfr_init2(scratch_, kRadiusBits);
     mpfr_set_zero(mid_, 1);
     mpfr_set_zero(rad_, 1);
   }
@@ -373,6 +374,7 @@ class Ball {
   ~Ball() {
     mpfr_clear(mid_);
     mpfr_clear(rad_);
+    mpfr_clear(scratch_);
   }
   /// A copy of x (exact: the same precisions).
   void assign(const Ball& x) {
@@ -387,16 +389,14 @@ class Ball {
   }
   /// x y: |x y - X Y| <= |x| rad(Y) + |y| rad(X) + rad(X) rad(Y) before the product's rounding.
   static void multiply(Ball& out, const Ball& x, const Ball& y) {
-    mpfr_t part;
-    mpfr_init2(part, kRadiusBits);
+    mpfr_ptr part = out.scratch_;
     mpfr_mul(out.rad_, x.rad_, y.rad_, MPFR_RNDU);
-    mpfr_abs_upper(part, x.mid_);
+    mpfr_abs(part, x.mid_, MPFR_RNDU);
     mpfr_mul(part, part, y.rad_, MPFR_RNDU);
     mpfr_add(out.rad_, out.rad_, part, MPFR_RNDU);
-    mpfr_abs_upper(part, y.mid_);
+    mpfr_abs(part, y.mid_, MPFR_RNDU);
     mpfr_mul(part, part, x.rad_, MPFR_RNDU);
     mpfr_add(out.rad_, out.rad_, part, MPFR_RNDU);
-    mpfr_clear(part);
     mpfr_mul(out.mid_, x.mid_, y.mid_, MPFR_RNDN);
     out.add_rounding();
   }
@@ -418,16 +418,13 @@ class Ball {
   long exponent() const { return mpfr_regular_p(mid_) ? mpfr_get_exp(mid_) : std::numeric_limits<long>::min(); }
 
  private:
-  static void mpfr_abs_upper(mpfr_ptr out, mpfr_srcptr x) { mpfr_abs(out, x, MPFR_RNDU); }
   void add_rounding() {
-    mpfr_t rounding;
-    mpfr_init2(rounding, kRadiusBits);
-    mpfr_abs(rounding, mid_, MPFR_RNDU);
-    mpfr_mul_2si(rounding, rounding, -static_cast<long>(kChainFilterBits), MPFR_RNDU);
-    mpfr_add(rad_, rad_, rounding, MPFR_RNDU);
-    mpfr_clear(rounding);
+    mpfr_abs(scratch_, mid_, MPFR_RNDU);
+    mpfr_mul_2si(scratch_, scratch_, -static_cast<long>(kChainFilterBits), MPFR_RNDU);
+    mpfr_add(rad_, rad_, scratch_, MPFR_RNDU);
   }
   mpfr_t mid_, rad_;
+  mpfr_t scratch_;  ///< a radius-precision temporary of the operations writing this ball
 };
 
 /// One step of the subresultant remainder sequence (sturm_chain): -prem(a, b) / (g h^delta), or
