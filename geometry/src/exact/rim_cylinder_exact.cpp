@@ -170,18 +170,6 @@ void add_graph_crossings(const RimConic& conic, const Polynomial& numerator, con
   out.push_back({x, y, root.multiplicity});
 }
 
-/// Exact sign of g at the rim point with rational X and Y of the given sign (Y^2 from E).
-int exact_sign_at(const RimConic& conic, const Rational& x, int y_sign) {
-  const Rational y2 = (conic.r2 - conic.a * x * x) / conic.b;
-  const Rational l = conic.L.evaluate(x);
-  const Rational m = conic.M.evaluate(x) * y_sign;
-  const int sl = CGAL::sign(l), sm = CGAL::sign(m);
-  if (sm == 0 || CGAL::sign(y2) == 0) return sl;
-  if (sl == 0 || sl == sm) return sl == 0 ? sm : sl;
-  // l + sqrt(y2) m with opposite signs: compare squares.
-  return sl * static_cast<int>(CGAL::sign(l * l - y2 * m * m));
-}
-
 }  // namespace
 
 namespace {
@@ -217,6 +205,46 @@ Rational rational(const Integer& x, int degree, long exponent) {
 /// The coefficient limit (kMaxCoefficientBits) on P = (b P) / b, from the integers of b P (degree
 /// 16) and of b (degree 4): P's coefficient k is scaled_p[k] 2^(12 E) / b in lowest terms, whose
 /// bits are at most those of the unreduced fraction; the gcd is taken only when that is too large.
+/// The conic's integers (below) that the sign of g at a rim point needs: b L = l0 + l1 X + l2 X^2
+/// and M = (m0 + m1 X) 2^(5 E) (their degrees in the inputs: 8 and 5), and the ellipse's a, b, r2.
+struct ConicIntegers {
+  const Integer &l0, &l1, &l2, &m0, &m1, &a, &b, &r2;
+};
+
+/// Exact sign of g at the rim point with X = x (a double, so dyadic) and Y of the given sign (Y^2
+/// from E): that of l + Y m with l = L(X), m = M(X), Y = +-sqrt(y2), y2 = (r2 - a X^2) / b.
+/// Written as X = n / 2^k (n an integer, k >= 0), each of them is a positive multiple of an
+/// integer sum, b > 0 and E's powers of two being positive factors:
+///   l ~ L' = l0 4^k + l1 n 2^k + l2 n^2,  m ~ M' = m0 2^k + m1 n,  y2 ~ Y' = r2 4^k - a n^2,
+/// and l^2 - y2 m^2 = 2^(8 E) (b L)^2 / b^2 - 2^(8 E) (r2 - a X^2) (m0 + m1 X)^2 / b has the sign
+/// of L'^2 - b Y' M'^2. So the sign needs no fraction (the rational form reduced one per
+/// operation, on numbers of a thousand bits near a tangency of the joint's rims).
+int exact_sign_at(const ConicIntegers& k, double x, int y_sign) {
+  int binary_exponent = 0;
+  const double fraction = std::frexp(x, &binary_exponent);
+  Integer n;
+  mpz_set_d(n.get_mpz_t(), std::ldexp(fraction, 53));  // exact: 53 bits
+  long shift = 53 - static_cast<long>(binary_exponent);  // X = n / 2^shift
+  if (shift < 0) {
+    mpz_mul_2exp(n.get_mpz_t(), n.get_mpz_t(), static_cast<mp_bitcnt_t>(-shift));
+    shift = 0;
+  }
+  const auto times_power = [](const Integer& value, long bits) {
+    Integer out;
+    mpz_mul_2exp(out.get_mpz_t(), value.get_mpz_t(), static_cast<mp_bitcnt_t>(bits));
+    return out;
+  };
+  const Integer n2 = n * n;
+  const Integer l = times_power(k.l0, 2 * shift) + times_power(k.l1 * n, shift) + k.l2 * n2;
+  const Integer m = times_power(k.m0, shift) + k.m1 * n;
+  const Integer y2 = times_power(k.r2, 2 * shift) - k.a * n2;
+  const int sl = sgn(l), sm = sgn(m) * y_sign;
+  if (sm == 0 || sgn(y2) == 0) return sl;
+  if (sl == 0 || sl == sm) return sl == 0 ? sm : sl;
+  // l + sqrt(y2) m with opposite signs: compare squares.
+  return sl * sgn(l * l - k.b * y2 * m * m);
+}
+
 void check_coefficient_size(const std::vector<Integer>& scaled_p, const Integer& b, long exponent) {
   const std::size_t power_bits = static_cast<std::size_t>(std::labs(12 * exponent)) + 2;
   const std::size_t b_bits = mpz_sizeinbase(b.get_mpz_t(), 2);
@@ -375,10 +403,10 @@ RimRoots exact_rim_roots_within_budget(const Circle3& circle, const Cylinder3& c
     }
   }
   const double sample = result.count == 0 ? 1.0 : gap_start + 0.5 * widest;
-  // A rational X on the rim with the sample's half: shrink by a part in 2^40 to stay on E.
-  const Rational x_sample =
-      Rational(finite_or_give_up(circle.radius * std::cos(sample) / u_norm * (1 - 0x1p-40)));
-  int sign = exact_sign_at(conic, x_sample, std::sin(sample) >= 0 ? 1 : -1);
+  // An X on the rim with the sample's half: shrink by a part in 2^40 to stay on E.
+  const double x_sample = finite_or_give_up(circle.radius * std::cos(sample) / u_norm * (1 - 0x1p-40));
+  int sign = exact_sign_at({scaled_l0, scaled_l1, scaled_l2, q01, q11, a, b, r2}, x_sample,
+                           std::sin(sample) >= 0 ? 1 : -1);
   if (result.count == 0) {
     result.side_without_roots = side_of_sign(sign);
     return result;
