@@ -9,9 +9,11 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <utility>
 
 #include <CGAL/Gmpq.h>
 #include <gmpxx.h>
+#include <mpfr.h>
 
 namespace clearjoint::geometry::detail {
 
@@ -68,6 +70,47 @@ inline CGAL::Gmpq exact_rational(const ExactDyadic& d) {
   if (d.exponent > 0) mpq_mul_2exp(out.mpq(), out.mpq(), static_cast<mp_bitcnt_t>(d.exponent));
   if (d.exponent < 0) mpq_div_2exp(out.mpq(), out.mpq(), static_cast<mp_bitcnt_t>(-d.exponent));
   return out;
+}
+
+/// CGAL::to_interval of the rational x 2^shift / d (d > 0), without forming that rational, whose
+/// reduction takes a gcd: the double nearest to it away from zero (MPFR, round away), beside its
+/// neighbour towards zero unless that rounding was exact. MPFR's correctly rounded x / d at 53
+/// bits, times 2^shift, is that double wherever the result is a normal double (a power of two
+/// commutes with the rounding there); elsewhere (subnormal, or beyond the double range) the
+/// rational is formed and CGAL::to_interval decides.
+inline std::pair<double, double> interval_of_quotient(const mpz_class& x, long shift, const mpz_class& d) {
+  if (sgn(x) == 0) return {0.0, 0.0};
+  const auto bits = [](const mpz_class& n) {
+    return std::max<mpfr_prec_t>(static_cast<mpfr_prec_t>(mpz_sizeinbase(n.get_mpz_t(), 2)), MPFR_PREC_MIN);
+  };
+  mpfr_t numerator, denominator, quotient;
+  mpfr_init2(numerator, bits(x));
+  mpfr_init2(denominator, bits(d));
+  mpfr_init2(quotient, 53);
+  mpfr_set_z(numerator, x.get_mpz_t(), MPFR_RNDN);  // exact: as many bits as x
+  mpfr_set_z(denominator, d.get_mpz_t(), MPFR_RNDN);
+  const int inexact = mpfr_div(quotient, numerator, denominator, MPFR_RNDA);
+  // The result lies in [2^(exponent - 1), 2^exponent); normal doubles in [2^-1022, 2^1024).
+  const long exponent = mpfr_get_exp(quotient) + shift;
+  const bool normal = exponent >= -1021 && exponent <= 1024;
+  double away = 0.0;
+  if (normal) {
+    mpfr_mul_2si(quotient, quotient, shift, MPFR_RNDN);  // exact: MPFR's exponent range is wider
+    away = mpfr_get_d(quotient, MPFR_RNDN);              // exact: a normal double's 53 bits
+  }
+  mpfr_clears(numerator, denominator, quotient, static_cast<mpfr_ptr>(nullptr));
+  if (!normal) {
+    CGAL::Gmpq value;
+    mpq_set_num(value.mpq(), x.get_mpz_t());
+    mpq_set_den(value.mpq(), d.get_mpz_t());
+    mpq_canonicalize(value.mpq());
+    if (shift > 0) mpq_mul_2exp(value.mpq(), value.mpq(), static_cast<mp_bitcnt_t>(shift));
+    if (shift < 0) mpq_div_2exp(value.mpq(), value.mpq(), static_cast<mp_bitcnt_t>(-shift));
+    return CGAL::to_interval(value);
+  }
+  if (inexact == 0) return {away, away};
+  const double toward = std::nextafter(away, 0.0);
+  return away < 0 ? std::pair<double, double>(away, toward) : std::pair<double, double>(toward, away);
 }
 
 /// Values x_i that all share one exponent E (the smallest exponent of a nonzero one; 0 when all

@@ -17,8 +17,10 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <memory>
 #include <numbers>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -42,16 +44,26 @@ double finite_or_give_up(double x) {
   return x;
 }
 
-Bounded to_bounded(const Rational& x) {
-  const std::pair<double, double> range = CGAL::to_interval(x);
+/// An enclosure [low, high] of doubles as a Bounded.
+Bounded to_bounded(const std::pair<double, double>& range) {
   const double middle = 0.5 * (range.first + range.second);
   return {middle, std::max(middle - range.first, range.second - middle) * kErrorInflation};
 }
+Bounded to_bounded(const Rational& x) { return to_bounded(CGAL::to_interval(x)); }
 
 /// The exact problem in (X, Y) coordinates.
 struct RimConic {
   Rational a, b, r2;  // ellipse a X^2 + b Y^2 = r2
-  Polynomial L, M;    // the cylinder modulo the ellipse: L(X) + Y M(X) = 0
+  Polynomial M;       // the cylinder modulo the ellipse: L(X) + Y M(X) = 0
+  /// L in rationals, formed at its first use (make_l): where M has no root in common with it,
+  /// the crossings need only its coefficients as Bounded, which the integers give without the
+  /// fraction each rational coefficient reduces.
+  const Polynomial& L() const {
+    if (!l_) l_ = make_l();
+    return *l_;
+  }
+  std::function<Polynomial()> make_l;
+  mutable std::optional<Polynomial> l_;
   Rational bound;     // a power of two with a bound^2 > r2: every real crossing has |X| < bound
   // a, b and r2 as Bounded (to_bounded), formed once for every crossing.
   Bounded a_bounded, b_bounded, r2_bounded;
@@ -143,7 +155,9 @@ void add_vertical_line_crossings(const RimConic& conic, const IsolatedRoot& root
 /// there, it cannot: then the exact signs of N and M at the root decide which half of the
 /// ellipse holds the crossing (an enclosure of Y symmetric about 0 would be rigorous but would put
 /// both crossings at the same angle with an error of a large part of the rim).
-void add_graph_crossings(const RimConic& conic, const Polynomial& numerator, const std::vector<Bounded>& numerator_bounded,
+/// `numerator()` gives N (formed only where the double enclosure cannot sign Y).
+template <class NumeratorOf>
+void add_graph_crossings(const RimConic& conic, const NumeratorOf& numerator, const std::vector<Bounded>& numerator_bounded,
                          const Polynomial& denominator, const std::vector<Bounded>& denominator_bounded,
                          const IsolatedRoot& root, std::vector<Crossing>& out, EvaluationBudget& budget) {
   Bounded x = bounded_x(root);
@@ -154,7 +168,7 @@ void add_graph_crossings(const RimConic& conic, const Polynomial& numerator, con
     if (height.error < y.error) y = y.sign() > 0 ? height : -height;
   } else {
     IsolatedRoot refined = root;
-    const int numerator_sign = sign_at_root(numerator, refined, budget);
+    const int numerator_sign = sign_at_root(numerator(), refined, budget);
     const int denominator_sign = sign_at_root(denominator, refined, budget);
     x = bounded_x(refined);
     height = ellipse_height(conic, x);
@@ -187,9 +201,25 @@ struct IntegerVector {
   Integer x, y, z;
 };
 IntegerVector operator-(const IntegerVector& a, const IntegerVector& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-Integer dot(const IntegerVector& a, const IntegerVector& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+// Products accumulated in place (mpz_addmul, mpz_submul): gmpxx's expressions form a temporary,
+// an allocation, per product.
+Integer dot(const IntegerVector& a, const IntegerVector& b) {
+  Integer out;
+  mpz_mul(out.get_mpz_t(), a.x.get_mpz_t(), b.x.get_mpz_t());
+  mpz_addmul(out.get_mpz_t(), a.y.get_mpz_t(), b.y.get_mpz_t());
+  mpz_addmul(out.get_mpz_t(), a.z.get_mpz_t(), b.z.get_mpz_t());
+  return out;
+}
+/// p q - r s
+Integer difference_of_products(const Integer& p, const Integer& q, const Integer& r, const Integer& s) {
+  Integer out;
+  mpz_mul(out.get_mpz_t(), p.get_mpz_t(), q.get_mpz_t());
+  mpz_submul(out.get_mpz_t(), r.get_mpz_t(), s.get_mpz_t());
+  return out;
+}
 IntegerVector cross(const IntegerVector& a, const IntegerVector& b) {
-  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+  return {difference_of_products(a.y, b.z, a.z, b.y), difference_of_products(a.z, b.x, a.x, b.z),
+          difference_of_products(a.x, b.y, a.y, b.x)};
 }
 
 /// x 2^(degree E): a quantity of that degree in the inputs, as a rational.
@@ -299,7 +329,9 @@ RimRoots exact_rim_roots_within_budget(const Circle3& circle, const Cylinder3& c
   conic.a = rational(a, 2, E);
   conic.b = rational(b, 4, E);
   conic.r2 = rational(r2, 2, E);
-  conic.L = Polynomial(rational(scaled_l0, 8, E) / conic.b, rational(q10, 4, E), rational(scaled_l2, 8, E) / conic.b);
+  conic.make_l = [&] {
+    return Polynomial(rational(scaled_l0, 8, E) / conic.b, rational(q10, 4, E), rational(scaled_l2, 8, E) / conic.b);
+  };
   conic.M = Polynomial(rational(q01, 5, E), rational(q11, 5, E));
   conic.a_bounded = to_bounded(conic.a);
   conic.b_bounded = to_bounded(conic.b);
@@ -314,7 +346,8 @@ RimRoots exact_rim_roots_within_budget(const Circle3& circle, const Cylinder3& c
 
   RimRoots result;
   result.proved = true;
-  if (conic.L.is_zero() && conic.M.is_zero()) {
+  const bool l_is_zero = sgn(scaled_l0) == 0 && sgn(scaled_l1) == 0 && sgn(scaled_l2) == 0;  // b > 0
+  if (l_is_zero && conic.M.is_zero()) {
     result.side_without_roots = RimSideWithoutRoots::on_surface;  // g vanishes on the whole rim
     return result;
   }
@@ -323,7 +356,7 @@ RimRoots exact_rim_roots_within_budget(const Circle3& circle, const Cylinder3& c
   std::vector<IsolatedRoot> roots;
   if (conic.M.is_zero()) {
     // The cylinder meets E along vertical lines L(X) = 0.
-    isolate_real_roots(conic.L, conic.bound * 2, roots, budget);
+    isolate_real_roots(conic.L(), conic.bound * 2, roots, budget);
     for (const IsolatedRoot& root : roots)
       add_vertical_line_crossings(conic, root, root.multiplicity, crossings, budget);
   } else {
@@ -341,13 +374,20 @@ RimRoots exact_rim_roots_within_budget(const Circle3& circle, const Cylinder3& c
           b * (a * m2) + scaled_l2 * scaled_l2};
       check_coefficient_size(scaled_p, b, E);
       isolate_real_roots(std::move(scaled_p), conic.bound, roots, budget);
-      const std::vector<Bounded> l = bounded_coefficients(conic.L), m = bounded_coefficients(conic.M);
-      for (const IsolatedRoot& root : roots) add_graph_crossings(conic, conic.L, l, conic.M, m, root, crossings, budget);
+      // L's coefficients (b L) 2^(4 E) / b, as to_bounded gives them, the zero ones on top left
+      // out as CGAL's polynomial drops them.
+      std::vector<Bounded> l = {to_bounded(interval_of_quotient(scaled_l0, 4 * E, b)),
+                                to_bounded(interval_of_quotient(scaled_l1, 4 * E, b)),
+                                to_bounded(interval_of_quotient(scaled_l2, 4 * E, b))};
+      while (l.size() > 1 && l.back().value == 0.0 && l.back().error == 0.0) l.pop_back();
+      const std::vector<Bounded> m = bounded_coefficients(conic.M);
+      const auto numerator = [&]() -> const Polynomial& { return conic.L(); };
+      for (const IsolatedRoot& root : roots) add_graph_crossings(conic, numerator, l, conic.M, m, root, crossings, budget);
     } else {
       // L = (X - X0) L1, M = q11 (X - X0): the line X = X0 and the line L1 + q11 Y = 0.
       const Rational x0 = -conic.M[0] / conic.M[1];
       Polynomial l1, remainder;
-      Polynomial::euclidean_division(conic.L, Polynomial(-x0, Rational(1)), l1, remainder);
+      Polynomial::euclidean_division(conic.L(), Polynomial(-x0, Rational(1)), l1, remainder);
       const Polynomial m1(conic.M[1]);
       std::vector<Crossing> on_lines;
       add_vertical_line_crossings(conic, {x0, x0, 1, nullptr}, 1, on_lines, budget);
@@ -364,7 +404,9 @@ RimRoots exact_rim_roots_within_budget(const Circle3& circle, const Cylinder3& c
           }
           continue;
         }
-        add_graph_crossings(conic, l1, bounded_coefficients(l1), m1, bounded_coefficients(m1), root, on_lines, budget);
+        add_graph_crossings(
+            conic, [&]() -> const Polynomial& { return l1; }, bounded_coefficients(l1), m1, bounded_coefficients(m1),
+            root, on_lines, budget);
       }
       crossings = std::move(on_lines);
     }

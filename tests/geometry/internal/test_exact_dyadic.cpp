@@ -1,0 +1,66 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Tests of geometry/src/exact/exact_dyadic.hpp: interval_of_quotient against CGAL::to_interval of
+// the same rational, formed and reduced, on random integers of up to thousands of bits and on
+// the edge cases (exact quotients, subnormal and out-of-range results, negative values).
+
+#include "exact_dyadic.hpp"
+
+#include <gtest/gtest.h>
+
+#include <CGAL/Gmpq.h>
+
+#include <random>
+#include <utility>
+
+namespace clearjoint::geometry::detail {
+namespace {
+
+/// x 2^shift / d as CGAL's canonical rational, and CGAL's enclosure of it.
+std::pair<double, double> cgal_interval(const mpz_class& x, long shift, const mpz_class& d) {
+  CGAL::Gmpq value(CGAL::Gmpz(x.get_mpz_t()), CGAL::Gmpz(d.get_mpz_t()));
+  if (shift > 0) mpq_mul_2exp(value.mpq(), value.mpq(), static_cast<mp_bitcnt_t>(shift));
+  if (shift < 0) mpq_div_2exp(value.mpq(), value.mpq(), static_cast<mp_bitcnt_t>(-shift));
+  return CGAL::to_interval(value);
+}
+
+void expect_cgal_interval(const mpz_class& x, long shift, const mpz_class& d) {
+  const std::pair<double, double> ours = interval_of_quotient(x, shift, d), cgal = cgal_interval(x, shift, d);
+  EXPECT_EQ(ours.first, cgal.first) << x << " 2^" << shift << " / " << d;
+  EXPECT_EQ(ours.second, cgal.second) << x << " 2^" << shift << " / " << d;
+}
+
+TEST(ExactDyadic, EnclosesAQuotientAsCgalDoesOnRandomIntegersOfManySizes) {
+  gmp_randclass random(gmp_randinit_default);
+  random.seed(20170508);
+  std::mt19937_64 small(20170508);
+  std::uniform_int_distribution<int> bits(1, 3000), shifts(-3000, 3000), sign(0, 1);
+  for (int trial = 0; trial < 2000; ++trial) {
+    mpz_class x = random.get_z_bits(bits(small)), d = random.get_z_bits(bits(small)) + 1;
+    if (sign(small) == 1) x = -x;
+    SCOPED_TRACE(trial);
+    expect_cgal_interval(x, shifts(small), d);
+  }
+}
+
+TEST(ExactDyadic, EnclosesExactSubnormalAndOutOfRangeQuotientsAsCgalDoes) {
+  const mpz_class three = 3, seven = 7, one = 1, zero = 0;
+  expect_cgal_interval(zero, 5, seven);        // zero
+  expect_cgal_interval(three * 8, -3, three);  // exactly 1
+  expect_cgal_interval(-seven, 10, one);       // an exact integer
+  expect_cgal_interval(one, -1074, one);       // the smallest subnormal, exact
+  expect_cgal_interval(one, -1060, three);     // a subnormal, rounded
+  expect_cgal_interval(one, -1021, three);     // just below the normal range
+  expect_cgal_interval(one, -1020, three);     // the smallest normal binade, rounded
+  expect_cgal_interval(one, -1100, three);     // below every double
+  expect_cgal_interval(seven, 1021, one);      // the largest binade, exact
+  expect_cgal_interval(seven, 1022, three);    // the largest binade, rounded
+  expect_cgal_interval(seven, 1023, three);    // beyond the largest double
+  expect_cgal_interval(-seven, 2000, three);   // far beyond, negative
+  // Just below 2^1024: rounded away from zero to 2^1024, beyond the range.
+  const mpz_class nearly_two = (mpz_class(1) << 200) - 1;
+  expect_cgal_interval(nearly_two, 1024 - 200, one);
+  expect_cgal_interval(-nearly_two, 1024 - 200, one);
+}
+
+}  // namespace
+}  // namespace clearjoint::geometry::detail
