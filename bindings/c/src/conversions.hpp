@@ -119,6 +119,7 @@ inline int32_t code_of(geo::CertificateReason reason) {
     case R::exact_intermediate_beyond_double_range: return CJ_REASON_EXACT_INTERMEDIATE_BEYOND_DOUBLE_RANGE;
     case R::contact_not_representable_in_world: return CJ_REASON_CONTACT_NOT_REPRESENTABLE_IN_WORLD;
     case R::axes_parallel_within_tolerance: return CJ_REASON_AXES_PARALLEL_WITHIN_TOLERANCE;
+    case R::beyond_model_undecided: return CJ_REASON_BEYOND_MODEL_UNDECIDED;
   }
   return CJ_REASON_NOT_DECIDED;
 }
@@ -141,6 +142,7 @@ inline constexpr geo::CertificateReason kAllReasons[] = {
     geo::CertificateReason::exact_intermediate_beyond_double_range,
     geo::CertificateReason::contact_not_representable_in_world,
     geo::CertificateReason::axes_parallel_within_tolerance,
+    geo::CertificateReason::beyond_model_undecided,
 };
 
 /// The sentence of each C reason code (the C++ to_string, a NUL-terminated literal), looked up

@@ -40,6 +40,7 @@ class CertificateReason(enum.IntEnum):
     exact_intermediate_beyond_double_range = 13
     contact_not_representable_in_world = 14
     axes_parallel_within_tolerance = 15
+    beyond_model_undecided = 16
 
 def certificate_reason_text(reason: CertificateReason) -> str: ...
 

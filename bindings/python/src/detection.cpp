@@ -89,7 +89,8 @@ void bind_enums(py::module_& m) {
       .value("exact_intermediate_beyond_double_range",
              geo::CertificateReason::exact_intermediate_beyond_double_range)
       .value("contact_not_representable_in_world", geo::CertificateReason::contact_not_representable_in_world)
-      .value("axes_parallel_within_tolerance", geo::CertificateReason::axes_parallel_within_tolerance);
+      .value("axes_parallel_within_tolerance", geo::CertificateReason::axes_parallel_within_tolerance)
+      .value("beyond_model_undecided", geo::CertificateReason::beyond_model_undecided);
   m.def("certificate_reason_text", [](geo::CertificateReason r) { return std::string(geo::to_string(r)); },
         py::arg("reason"), "The reason as a sentence (\"certificate switched off\", ...); empty for none.");
 

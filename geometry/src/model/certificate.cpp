@@ -43,6 +43,9 @@ std::string_view to_string(CertificateReason reason) noexcept {
     case R::axes_parallel_within_tolerance:
       return "axes treated as parallel within DetectionOptions::parallel_angle_tolerance (eq. 5 relaxed; "
              "decided in double precision)";
+    case R::beyond_model_undecided:
+      return "a contact's depth lies within its error bound of the clearance: whether the joint is beyond "
+             "the model (scenario beyond_model) is not proved; the contacts themselves are";
   }
   return "unknown";
 }

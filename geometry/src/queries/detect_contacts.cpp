@@ -31,6 +31,7 @@ using detail::set_up;
 
 constexpr CertificateReason kNotRepresentableInWorld = CertificateReason::contact_not_representable_in_world;
 constexpr CertificateReason kToleranceReason = CertificateReason::axes_parallel_within_tolerance;
+constexpr CertificateReason kBeyondModelUndecided = CertificateReason::beyond_model_undecided;
 
 /// The component of `offset` perpendicular to the unit axis `axis_hat`, written as
 /// axis x (offset x axis): no cancellation of nearly equal terms, unlike offset - (offset.a) a.
@@ -102,6 +103,33 @@ class CertificateAccumulator {
   Certificate overall_{};
   bool any_ = false;
 };
+
+/// What stands behind the beyond_model label (contact_scenario.hpp): a proved test (a rim with two
+/// penetration arcs or beyond a surface all round, or a depth whose bound keeps it clear of the
+/// clearance), or only depths that lie within their bound of the clearance.
+struct BeyondModelEvidence {
+  bool proved = false;
+  bool undecided = false;
+};
+
+/// A depth deeper than the clearance is beyond the model (eqs. 1-2). The computed depth decides
+/// it for the exact joint where its error bound keeps it clear of the clearance, itself Ri - Rj or
+/// (Li - Lj)/2 rounded once (within kClearanceRounding of the exact one); the difference is
+/// rounded once more, which kMarginShrink covers. Elsewhere the label follows the computed depth
+/// and is recorded as undecided.
+constexpr double kClearanceRounding = 2 * detail::kUnitRoundoff;  // > u, rounded up
+constexpr double kMarginShrink = 1 - 4 * detail::kUnitRoundoff;
+void compare_with_clearance(const Contact& contact, double clearance, ContactPresence& presence,
+                            BeyondModelEvidence& beyond) {
+  const bool deeper = contact.depth > clearance;
+  if (deeper) presence.beyond_model = true;
+  if (contact.certificate.level == Certainty::uncertain) return;  // the answer says so already
+  if (std::fabs(contact.depth - clearance) * kMarginShrink > contact.depth_error + kClearanceRounding * clearance) {
+    beyond.proved |= deeper;
+  } else {
+    beyond.undecided = true;
+  }
+}
 
 /// Crossings bounding `arc` (its ends are crossing angles, as the kernel builds them). Two
 /// crossings bound every arc but the full rim (both kernels build an arc between consecutive
@@ -341,7 +369,7 @@ Certificate clear_certificate(const DetectionOptions& options) {
 /// prefilter_if_ready computed it (the same as prove_candidates_clear's on these centres), or null.
 void detect_misaligned(const JointSetup& s, const DetectionOptions& options,
                        const detail::CandidatesClear* prefiltered, JointContacts& out,
-                       ContactPresence& presence, CertificateAccumulator& certificate) {
+                       ContactPresence& presence, BeyondModelEvidence& beyond, CertificateAccumulator& certificate) {
   // A rim proved to stay inside the wall or the base plane (the kernel's own first tests, here
   // for all four candidates at once and without the kernel's input checks, rescaling and result
   // assembly) has no contact there: in free flight this is the whole detection.
@@ -359,11 +387,11 @@ void detect_misaligned(const JointSetup& s, const DetectionOptions& options,
     if (hit.arc_count == 0) continue;
     (base == ContactBase::a ? presence.radial_at_a : presence.radial_at_b) = true;
     // Two arcs: four crossings; a full arc: the rim is beyond the wall all round.
-    if (hit.arc_count > 1 || hit.penetration_arcs[0].full) presence.beyond_model = true;
+    if (hit.arc_count > 1 || hit.penetration_arcs[0].full) presence.beyond_model = beyond.proved = true;
     for (int k = 0; k < hit.arc_count; ++k) {
       Contact& contact = out.contacts[out.contact_count++];
       radial_contact(s, base, rim, hit, hit.penetration_arcs[k], contact);
-      if (contact.depth > s.radial_clearance) presence.beyond_model = true;
+      compare_with_clearance(contact, s.radial_clearance, presence, beyond);
     }
   }
   for (const ContactBase base : {ContactBase::a, ContactBase::b}) {
@@ -376,10 +404,10 @@ void detect_misaligned(const JointSetup& s, const DetectionOptions& options,
     certificate.add(hit.certificate);
     if (!hit.has_penetration) continue;
     (base == ContactBase::a ? presence.axial_at_a : presence.axial_at_b) = true;
-    if (hit.penetration.full) presence.beyond_model = true;  // the rim is beyond the base
+    if (hit.penetration.full) presence.beyond_model = beyond.proved = true;  // the rim is beyond the base
     Contact& contact = out.contacts[out.contact_count++];
     axial_contact(s, base, rim, hit, contact);
-    if (contact.depth > s.axial_clearance) presence.beyond_model = true;
+    compare_with_clearance(contact, s.axial_clearance, presence, beyond);
   }
 }
 
@@ -413,7 +441,7 @@ void set_line_contact_errors(const JointSetup& s, const Vector3& offset, double 
 /// with the line's test on the mid-length section in its first lane.
 void detect_aligned(const JointSetup& s, const DetectionOptions& options, bool exactly_parallel,
                     const detail::CandidatesClear* prefiltered, JointContacts& out,
-                    ContactPresence& presence, CertificateAccumulator& certificate) {
+                    ContactPresence& presence, BeyondModelEvidence& beyond, CertificateAccumulator& certificate) {
   const Certificate tolerance_certificate{Certainty::uncertain, kToleranceReason};
   const Vector3 offset = s.p_WPj - s.p_WPi;
   const Vector3 radial = off_axis(offset, s.bearing_axis_hat_W);
@@ -457,7 +485,7 @@ void detect_aligned(const JointSetup& s, const DetectionOptions& options, bool e
     contact.p_WCj = s.p_WPj + s.journal_radius * contact.normal_W;            // eq. (8)
     contact.depth = std::max(0.0, eccentricity - s.radial_clearance);        // eq. (23)
     set_line_contact_errors(s, offset, eccentricity, contact);
-    if (contact.depth > s.radial_clearance) presence.beyond_model = true;
+    compare_with_clearance(contact, s.radial_clearance, presence, beyond);
     out.contacts[out.contact_count++] = contact;
   }
   // Face contacts: the journal base facing bearing base X lies beyond X's plane.
@@ -493,7 +521,7 @@ void detect_aligned(const JointSetup& s, const DetectionOptions& options, bool e
     const int k = base == ContactBase::a ? 0 : 1;
     set_plane_contact_errors(p_WBj, s.journal_rim_errors[k], bearing_base(s, base), s.bearing_base_errors[k],
                              beyond_base, face_certificate, contact);
-    if (contact.depth > s.axial_clearance) presence.beyond_model = true;
+    compare_with_clearance(contact, s.axial_clearance, presence, beyond);
     out.contacts[out.contact_count++] = contact;
   }
 }
@@ -574,6 +602,7 @@ void detect_contacts(const JointDimensions& dimensions, const PartPose& bearing,
 
   out.contact_count = 0;
   ContactPresence presence;
+  BeyondModelEvidence beyond;
   CertificateAccumulator certificate;
   const bool exactly_parallel =
       prefilter.ready ? prefilter.exactly_parallel : axes_exactly_parallel(bearing.axis_W, journal.axis_W);
@@ -586,10 +615,11 @@ void detect_contacts(const JointDimensions& dimensions, const PartPose& bearing,
   out.aligned = presence.aligned = aligned;
   const detail::CandidatesClear* prefiltered = prefilter.ready ? &prefilter.clear : nullptr;
   if (aligned) {
-    detect_aligned(setup, options, exactly_parallel, prefiltered, out, presence, certificate);
+    detect_aligned(setup, options, exactly_parallel, prefiltered, out, presence, beyond, certificate);
   } else {
-    detect_misaligned(setup, options, prefiltered, out, presence, certificate);
+    detect_misaligned(setup, options, prefiltered, out, presence, beyond, certificate);
   }
+  if (beyond.undecided && !beyond.proved) certificate.add({Certainty::uncertain, kBeyondModelUndecided});
   out.scenario = classify_scenario(presence);
   out.certificate = certificate.result();
   translate_to_world(bearing.p_WP, out);

@@ -83,6 +83,7 @@ int reason_code(const geo::Certificate& c) {
     case R::exact_intermediate_beyond_double_range: return CJ_REASON_EXACT_INTERMEDIATE_BEYOND_DOUBLE_RANGE;
     case R::contact_not_representable_in_world: return CJ_REASON_CONTACT_NOT_REPRESENTABLE_IN_WORLD;
     case R::axes_parallel_within_tolerance: return CJ_REASON_AXES_PARALLEL_WITHIN_TOLERANCE;
+    case R::beyond_model_undecided: return CJ_REASON_BEYOND_MODEL_UNDECIDED;
   }
   return -1;
 }

@@ -252,12 +252,14 @@ TEST(DetectContacts, PenetrationDeeperThanTheClearanceIsBeyondTheModel) {
   const PartPose journal{Vector3(0.0, 0.25, 0.0), Vector3::UnitZ()};
   const JointContacts result = detect_contacts(kTable2, bearing_on_z(), journal);
   EXPECT_EQ(result.scenario, ContactScenario::beyond_model);
+  EXPECT_EQ(result.certificate.level, Certainty::certified);  // 0.15 is far from 0.1: proved
   ASSERT_EQ(result.contact_count, 1);
   EXPECT_NEAR(result.contacts[0].depth, 0.15, kLengthTolerance);
   // Misaligned: radial depth at A is 0.2 + S(0.005) = 0.149 > cr.
   const TiltedJournal deep{0.2, 0.0, 0.005};
   const JointContacts misaligned = detect_contacts(kTable2, bearing_on_z(), deep.pose());
   EXPECT_EQ(misaligned.scenario, ContactScenario::beyond_model);
+  EXPECT_EQ(misaligned.certificate.level, Certainty::certified);
   const Contact* radial = find_contact(misaligned, ContactType::radial, ContactBase::a);
   ASSERT_NE(radial, nullptr);
   EXPECT_NEAR(radial->depth, analytic_contacts(kTable2, deep)[0].depth, kLengthTolerance);
@@ -709,7 +711,8 @@ TEST(DetectContacts, GivesTheSameAnswerForAJointFarFromTheOrigin) {
 // the contact must be listed (it was dropped, leaving a certified "none"), with a unit normal square
 // to the axis and a depth whose bound covers the exact depth. The exact depth, 7.2 clearances, is
 // beyond the model; the label follows the rounded depth, whose bound (~7e-9) spans the clearance
-// here, so either label is consistent with it.
+// here: either label is consistent with it, and the answer's certificate says that it is not
+// proved (beyond_model_undecided) while the contact's own certificate stays certified.
 TEST(DetectContacts, ListsTheLineContactWhereRoundingLosesTheWholeEccentricity) {
   const JointDimensions joint{
       .bearing_radius = 1e-3, .bearing_length = 4e6, .journal_radius = 1e-3 - 1e-11, .journal_length = 1e5};
@@ -723,6 +726,8 @@ TEST(DetectContacts, ListsTheLineContactWhereRoundingLosesTheWholeEccentricity) 
     EXPECT_TRUE(result.scenario == ContactScenario::line || result.scenario == ContactScenario::beyond_model)
         << "pose " << k << ": " << to_string(result.scenario);
     ASSERT_EQ(result.contact_count, 1) << "pose " << k;
+    EXPECT_EQ(result.certificate.level, Certainty::uncertain);
+    EXPECT_EQ(result.certificate.reason, CertificateReason::beyond_model_undecided);
     const Contact& c = result.contacts[0];
     EXPECT_EQ(c.base, ContactBase::mid);
     EXPECT_NE(c.certificate.level, Certainty::uncertain);

@@ -44,6 +44,7 @@ enum class CertificateReason : std::uint8_t {
   // Detection (eqs. 5-23):
   contact_not_representable_in_world,  ///< a point or bound overflows after the translation back
   axes_parallel_within_tolerance,      ///< DetectionOptions::parallel_angle_tolerance relaxed eq. (5)
+  beyond_model_undecided,  ///< a depth within its error bound of the clearance: beyond the model or not
 };
 
 /// A trust level and why it is not stronger. Default-constructed: `uncertain`, `not_decided`
