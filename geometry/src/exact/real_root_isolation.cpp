@@ -356,26 +356,26 @@ constexpr mpfr_prec_t kRadiusBits = 64;
 /// value, every operation on it rounded upwards. A rounding to nearest at p bits moves a result by
 /// at most 2^-p of its rounded magnitude, which each operation adds to rad. Where MPFR's exponent
 /// range is exceeded, rad or mid become infinite or NaN and no sign is decided.
+/// Limbs of an MPFR significand of this precision (mpfr_custom_get_size, in limbs).
+constexpr std::size_t limbs(mpfr_prec_t bits) { return static_cast<std::size_t>((bits + GMP_NUMB_BITS - 1) / GMP_NUMB_BITS); }
+
 class Ball {
  public:
   Ball() {
-    mpfr_init2(mid_, kChainFilterBits);
-    mpfr_init2(rad_, kRadiusBits);
-    mpfr_init2(scratch_, kRadiusBits);
-    mpfr_set_zero(mid_, 1);
-    mpfr_set_zero(rad_, 1);
+    // MPFR's custom interface: the significands live in the ball (no allocation per number).
+    mpfr_custom_init(mid_limbs_, kChainFilterBits);
+    mpfr_custom_init_set(mid_, MPFR_ZERO_KIND, 0, kChainFilterBits, mid_limbs_);
+    mpfr_custom_init(rad_limbs_, kRadiusBits);
+    mpfr_custom_init_set(rad_, MPFR_ZERO_KIND, 0, kRadiusBits, rad_limbs_);
+    mpfr_custom_init(scratch_limbs_, kRadiusBits);
+    mpfr_custom_init_set(scratch_, MPFR_ZERO_KIND, 0, kRadiusBits, scratch_limbs_);
   }
   explicit Ball(const mpz_class& x) : Ball() {
     mpfr_set_z(mid_, x.get_mpz_t(), MPFR_RNDN);
     add_rounding();
   }
-  Ball(const Ball&) = delete;
+  Ball(const Ball&) = delete;  // the numbers point into the ball's own storage
   Ball& operator=(const Ball&) = delete;
-  ~Ball() {
-    mpfr_clear(mid_);
-    mpfr_clear(rad_);
-    mpfr_clear(scratch_);
-  }
   /// A copy of x (exact: the same precisions).
   void assign(const Ball& x) {
     mpfr_set(mid_, x.mid_, MPFR_RNDN);
@@ -423,6 +423,9 @@ class Ball {
     mpfr_mul_2si(scratch_, scratch_, -static_cast<long>(kChainFilterBits), MPFR_RNDU);
     mpfr_add(rad_, rad_, scratch_, MPFR_RNDU);
   }
+  mp_limb_t mid_limbs_[limbs(kChainFilterBits)];
+  mp_limb_t rad_limbs_[limbs(kRadiusBits)];
+  mp_limb_t scratch_limbs_[limbs(kRadiusBits)];
   mpfr_t mid_, rad_;
   mpfr_t scratch_;  ///< a radius-precision temporary of the operations writing this ball
 };
