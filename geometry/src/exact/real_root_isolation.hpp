@@ -13,7 +13,10 @@
 // does the same work with a gcd per rational operation, which near a tangency of the joint's rims,
 // where the polynomial's coefficients reach thousands of bits and the isolation needs a hundred
 // signs, cost milliseconds per query. Every decision (root counts, signs) is exact, so the
-// intervals are those of the textbook algorithm, whatever decides them.
+// intervals are those of the textbook algorithm, whatever decides them: the chain's last members,
+// near close roots small next to their terms, come from multiprecision ball arithmetic where it
+// proves them (their exact coefficients only when a sign needs them), and the walk reaches the
+// node that separates a close pair of roots in one step, proved by the chain's signs at its ends.
 
 #include <memory>
 #include <vector>
