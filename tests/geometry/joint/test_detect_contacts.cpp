@@ -739,6 +739,29 @@ TEST(DetectContacts, ListsTheLineContactWhereRoundingLosesTheWholeEccentricity) 
   }
 }
 
+// From the detection suite's extreme family (cr/Ri = 1e-6): a rim just past a bearing base, its
+// two crossings so close that their enclosures are wide. The depth bound through the contact
+// point was 1.25e-4 m, ten thousand clearances, so the beyond-model label could not be proved and
+// the answer was uncertain; the kernel's own enclosure of the deepest reach gives 2e-11 m.
+TEST(DetectContacts, BoundsTheDepthOfAnAxialContactNearATangencyByTheDeepestReach) {
+  const JointDimensions joint{.bearing_radius = 0x1.47ae147ae147bp-7,
+                              .bearing_length = 0x1.47ae147ae147bp-6,
+                              .journal_radius = 0x1.47adff0152658p-7,
+                              .journal_length = 0x1.47adff0152658p-6};
+  const PartPose bearing{Vector3(-0x1.35aefbaaa87efp-3, -0x1.67ba9ddff9698p-6, -0x1.63b79b14aab3p-6),
+                         Vector3(0x1.37778ce8607d1p-2, 0x1.e0bbe38c5ce95p-1, -0x1.4981f5dfd3018p-3)};
+  const PartPose journal{Vector3(-0x1.35aefb9a2d224p-3, -0x1.67ba9a1d6be45p-6, -0x1.63b79c694e74ep-6),
+                         Vector3(0x1.377779e874fb6p-2, 0x1.e0bbea448281dp-1, -0x1.4981a0dc9d9abp-3)};
+  const JointContacts result = detect_contacts(joint, bearing, journal);
+  EXPECT_EQ(result.scenario, ContactScenario::single_axial);
+  EXPECT_NE(result.certificate.level, Certainty::uncertain) << result.certificate.reason_text();
+  ASSERT_EQ(result.contact_count, 1);
+  const Contact& c = result.contacts[0];
+  EXPECT_EQ(c.type, ContactType::axial);
+  EXPECT_LT(c.depth_error, 0.01 * joint.axial_clearance());
+  EXPECT_LT(c.depth + c.depth_error, joint.axial_clearance());  // within the model, proved
+}
+
 // Found by fuzzing `clearjoint detect`: joints whose numbers lie hundreds of orders of magnitude
 // apart crashed (SIGFPE inside GMP) or kept the exact tier busy for minutes. They must come back,
 // and every contact that is not marked uncertain must have finite numbers.
