@@ -343,6 +343,7 @@ void axial_contact(const JointSetup& s, ContactBase base, const Circle3& rim, co
 Plane3 base_plane_of(const JointSetup& s, ContactBase base) {
   return {bearing_base(s, base), outward_sign(base) * s.bearing_axis_W};
 }
+
 /// The whole kernel query, with the recipes and the depth.
 CirclePlaneIntersection whole_rim_against_base(const JointSetup& s, ContactBase base, const DetectionOptions& options) {
   const detail::RoundedPoint centre = rounded_centre(s, base);
@@ -350,6 +351,7 @@ CirclePlaneIntersection whole_rim_against_base(const JointSetup& s, ContactBase 
   return detail::intersect_circle_plane(journal_rim(s, base), base_plane_of(s, base), options.intersection, &centre,
                                         &point);
 }
+
 /// The kernel query of journal rim `base` against bearing base plane `base` (outward normal),
 /// with both centres' rounding bounds and exact recipes (rounded_point.hpp). First the kernel's
 /// detection entry, which needs no recipes and skips the depth (axial_contact takes it from the
@@ -515,7 +517,8 @@ void detect_aligned(const JointSetup& s, const DetectionOptions& options, bool e
     // loses all of it though the kernel proved the line on the exact joint: then any direction
     // square to the axis stands in, and the points carry no error bound (set_line_contact_errors),
     // so this is a convention; the depth's bound still covers the exact depth.
-    contact.normal_W = eccentricity > 0.0 ? Vector3(radial / eccentricity) : any_direction_off_axis(s.bearing_axis_hat_W);
+    contact.normal_W =
+        eccentricity > 0.0 ? Vector3(radial / eccentricity) : any_direction_off_axis(s.bearing_axis_hat_W);
     contact.p_WCi = s.p_WPi + offset.dot(s.bearing_axis_hat_W) * s.bearing_axis_hat_W +
                     s.bearing_radius * contact.normal_W;                       // eq. (7)
     contact.p_WCj = s.p_WPj + s.journal_radius * contact.normal_W;            // eq. (8)
