@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 #include <utility>
 
 #include <CGAL/Gmpq.h>
@@ -111,6 +112,39 @@ inline std::pair<double, double> interval_of_quotient(const mpz_class& x, long s
   if (inexact == 0) return {away, away};
   const double toward = std::nextafter(away, 0.0);
   return away < 0 ? std::pair<double, double>(away, toward) : std::pair<double, double>(toward, away);
+}
+
+/// CGAL::to_interval of x 2^shift (an integer times a power of two), without MPFR: the double
+/// nearest to it away from zero beside its neighbour towards zero, or that one double where it is
+/// exact. mpz_get_d_2exp truncates to 53 bits, which is the neighbour towards zero; the value is
+/// exact when no set bit lies below the top 53. Empty where the result is not safely a normal
+/// double (then the caller forms the rational and CGAL decides). CGAL converts a Gmpq through
+/// mpfr_set_q, whose cost (a division of the numerator by the denominator at 53 bits) dominated
+/// the exact tier's conversions of dyadic rationals: the isolation's endpoints, the conic's a, b
+/// and r^2.
+inline std::optional<std::pair<double, double>> interval_of_dyadic(mpz_srcptr x, long shift) {
+  if (mpz_sgn(x) == 0) return std::pair<double, double>(0.0, 0.0);
+  const long bits = static_cast<long>(mpz_sizeinbase(x, 2));
+  // |x 2^shift| lies in [2^(bits + shift - 1), 2^(bits + shift)); normal doubles from 2^-1022 up,
+  // finite below 2^1024. One binade of room at each end keeps the neighbours normal and finite.
+  if (bits + shift - 1 < -1021 || bits + shift > 1023) return std::nullopt;
+  long binary_exponent = 0;
+  const double fraction = mpz_get_d_2exp(&binary_exponent, x);  // truncated: |fraction| in [1/2, 1)
+  const double toward = std::ldexp(fraction, static_cast<int>(binary_exponent + shift));  // exact
+  const bool exact = bits <= 53 || static_cast<long>(mpz_scan1(x, 0)) >= bits - 53;
+  if (exact) return std::pair<double, double>(toward, toward);
+  const double away = std::nextafter(toward, mpz_sgn(x) > 0 ? HUGE_VAL : -HUGE_VAL);
+  return mpz_sgn(x) > 0 ? std::pair<double, double>(toward, away) : std::pair<double, double>(away, toward);
+}
+
+/// CGAL::to_interval(x), through interval_of_dyadic where x's denominator is a power of two.
+inline std::pair<double, double> interval_of(const CGAL::Gmpq& x) {
+  const mpz_srcptr denominator = mpq_denref(x.mpq());
+  const mp_bitcnt_t twos = mpz_scan1(denominator, 0);
+  if (twos + 1 == mpz_sizeinbase(denominator, 2)) {  // denominator == 2^twos
+    if (const auto range = interval_of_dyadic(mpq_numref(x.mpq()), -static_cast<long>(twos))) return *range;
+  }
+  return CGAL::to_interval(x);
 }
 
 /// Values x_i that all share one exponent E (the smallest exponent of a nonzero one; 0 when all

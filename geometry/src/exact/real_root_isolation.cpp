@@ -12,6 +12,7 @@
 #include <utility>
 
 #include "error_bounded.hpp"
+#include "exact_dyadic.hpp"
 
 namespace clearjoint::geometry::detail {
 
@@ -337,7 +338,7 @@ int sign_at(const IntegerPolynomial& p, const Point& x, const Bounded& approxima
 }
 
 Bounded bounded(const Rational& x) {
-  const std::pair<double, double> range = CGAL::to_interval(x);
+  const std::pair<double, double> range = interval_of(x);
   const double middle = 0.5 * (range.first + range.second);
   return {middle, std::max(middle - range.first, range.second - middle) * kErrorInflation};
 }

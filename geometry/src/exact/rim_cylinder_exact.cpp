@@ -49,7 +49,7 @@ Bounded to_bounded(const std::pair<double, double>& range) {
   const double middle = 0.5 * (range.first + range.second);
   return {middle, std::max(middle - range.first, range.second - middle) * kErrorInflation};
 }
-Bounded to_bounded(const Rational& x) { return to_bounded(CGAL::to_interval(x)); }
+Bounded to_bounded(const Rational& x) { return to_bounded(interval_of(x)); }
 
 /// The exact problem in (X, Y) coordinates.
 struct RimConic {

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// Tests of geometry/src/exact/exact_dyadic.hpp: interval_of_quotient against CGAL::to_interval of
-// the same rational, formed and reduced, on random integers of up to thousands of bits and on
-// the edge cases (exact quotients, subnormal and out-of-range results, negative values).
+// Tests of geometry/src/exact/exact_dyadic.hpp: interval_of_quotient and interval_of against
+// CGAL::to_interval of the same rational, formed and reduced, on random integers of up to
+// thousands of bits and on the edge cases (exact values, subnormal and out-of-range results,
+// negative values, ties of the 53-bit rounding).
 
 #include "exact_dyadic.hpp"
 
@@ -60,6 +61,57 @@ TEST(ExactDyadic, EnclosesExactSubnormalAndOutOfRangeQuotientsAsCgalDoes) {
   const mpz_class nearly_two = (mpz_class(1) << 200) - 1;
   expect_cgal_interval(nearly_two, 1024 - 200, one);
   expect_cgal_interval(-nearly_two, 1024 - 200, one);
+}
+
+/// x 2^shift as CGAL's canonical rational.
+CGAL::Gmpq dyadic_rational(const mpz_class& x, long shift) {
+  CGAL::Gmpq value(CGAL::Gmpz(x.get_mpz_t()));
+  if (shift > 0) mpq_mul_2exp(value.mpq(), value.mpq(), static_cast<mp_bitcnt_t>(shift));
+  if (shift < 0) mpq_div_2exp(value.mpq(), value.mpq(), static_cast<mp_bitcnt_t>(-shift));
+  return value;
+}
+
+void expect_cgal_interval_of(const CGAL::Gmpq& value) {
+  const std::pair<double, double> ours = interval_of(value), cgal = CGAL::to_interval(value);
+  EXPECT_EQ(ours.first, cgal.first) << value;
+  EXPECT_EQ(ours.second, cgal.second) << value;
+}
+
+TEST(ExactDyadic, EnclosesADyadicRationalAsCgalDoesOnRandomIntegersOfManySizes) {
+  gmp_randclass random(gmp_randinit_default);
+  random.seed(20170509);
+  std::mt19937_64 small(20170509);
+  std::uniform_int_distribution<int> bits(1, 3000), shifts(-3000, 3000), sign(0, 1);
+  for (int trial = 0; trial < 4000; ++trial) {
+    mpz_class x = random.get_z_bits(bits(small));
+    if (sign(small) == 1) x = -x;
+    SCOPED_TRACE(trial);
+    expect_cgal_interval_of(dyadic_rational(x, shifts(small)));
+  }
+}
+
+TEST(ExactDyadic, EnclosesDyadicRationalsAtTheEdgesAsCgalDoes) {
+  const mpz_class one = 1;
+  const mpz_class top = (one << 53) - 1;  // 53 bits, every one set
+  for (const long shift : {-1200L, -1126L, -1075L, -1074L, -1073L, -1023L, -1022L, -1021L, -1020L, -60L, 0L, 40L,
+                           969L, 970L, 971L, 1000L}) {
+    SCOPED_TRACE(shift);
+    expect_cgal_interval_of(dyadic_rational(0, shift));
+    expect_cgal_interval_of(dyadic_rational(one, shift));
+    expect_cgal_interval_of(dyadic_rational(-top, shift));
+    expect_cgal_interval_of(dyadic_rational(top, shift));
+    // 54 bits: a tie of the 53-bit rounding, the lowest bit set, and one bit beyond with the
+    // truncated part all ones.
+    expect_cgal_interval_of(dyadic_rational((top << 1) + 1, shift));
+    expect_cgal_interval_of(dyadic_rational(-((top << 1) + 1), shift));
+    expect_cgal_interval_of(dyadic_rational((one << 53) + 1, shift));
+    expect_cgal_interval_of(dyadic_rational((top << 20) + ((one << 20) - 1), shift - 20));
+  }
+  // Just below 2^1024 (rounded away to beyond the range) and a rational that is not dyadic.
+  expect_cgal_interval_of(dyadic_rational((one << 200) - 1, 1024 - 200));
+  expect_cgal_interval_of(dyadic_rational(-((one << 200) - 1), 1024 - 200));
+  expect_cgal_interval_of(CGAL::Gmpq(1, 3));
+  expect_cgal_interval_of(CGAL::Gmpq(-5, 12));
 }
 
 }  // namespace
