@@ -42,16 +42,21 @@ template <class APriori, class RunningError, class Decide, class Exact>
       [&] { return decide(floating_point_filter(a_priori_bounds_apply, a_priori, running_error)); }, exact);
 }
 
-/// What a tier of a query that fills its answer in place returns: decided (the answer filled), or
-/// left open, and why. The reason travels on: the exact tier's certificate names why the filter
-/// could not decide, and the fallback's why the last tier that ran could not.
+/// What a tier of a query that fills its answer in place returns: decided (the answer filled),
+/// left open and why, or declined. The reason travels on: the exact tier's certificate names why
+/// the filter could not decide, and the fallback's why the last tier that ran could not.
+/// Declined stops the cascade without an answer and without the fallback: the caller asked the
+/// tier not to run (the detection's first pass of the circle-plane query declines the exact tier,
+/// whose recipes it builds only then, and asks again).
 template <class Reason>
 struct TierVerdict {
-  bool decided = false;
-  Reason why_open{};  ///< when !decided
+  enum class Outcome : unsigned char { decided, open, declined };
+  Outcome outcome = Outcome::open;
+  Reason why_open{};  ///< when open
 
-  static TierVerdict done() { return {true, Reason{}}; }
-  static TierVerdict open(Reason why) { return {false, why}; }
+  static TierVerdict done() { return {Outcome::decided, Reason{}}; }
+  static TierVerdict open(Reason why) { return {Outcome::open, why}; }
+  static TierVerdict declined() { return {Outcome::declined, Reason{}}; }
 };
 
 /// The tiers in order, for a query whose exact tier can give up (CGAL's exact number types always
@@ -62,17 +67,20 @@ struct TierVerdict {
 ///  2. exact(filter's reason) -> TierVerdict, where `exact_tier_on` and the filter left it open;
 ///  3. fallback(reason of the last tier that ran): an approximate answer, marked uncertain.
 /// Each tier fills the answer itself: copying an answer out of a std::optional cost measurably on
-/// the hot paths (intersect_circle_plane.cpp).
+/// the hot paths (intersect_circle_plane.cpp). Returns whether the answer was filled: false only
+/// where a tier declined.
 template <class Reason, class Filter, class Exact, class Fallback>
-[[gnu::always_inline]] inline void filtered_exact_or_fallback(bool exact_tier_on, Filter&& filter, Exact&& exact,
+[[gnu::always_inline]] inline bool filtered_exact_or_fallback(bool exact_tier_on, Filter&& filter, Exact&& exact,
                                                               Fallback&& fallback) {
+  using Outcome = typename TierVerdict<Reason>::Outcome;
   TierVerdict<Reason> verdict = std::forward<Filter>(filter)();
-  if (verdict.decided) return;
+  if (verdict.outcome != Outcome::open) return verdict.outcome == Outcome::decided;
   if (exact_tier_on) {
     verdict = std::forward<Exact>(exact)(verdict.why_open);
-    if (verdict.decided) return;
+    if (verdict.outcome != Outcome::open) return verdict.outcome == Outcome::decided;
   }
   std::forward<Fallback>(fallback)(verdict.why_open);
+  return true;
 }
 
 }  // namespace clearjoint::geometry::detail

@@ -295,23 +295,19 @@ bool answer(const Circle3& circle_in, const Plane3& plane_in, const Intersection
   // decision copied out of a std::optional is a 16-byte load of two 8-byte stores that the store
   // buffer cannot forward, and the random-pose queries were measurably slower for it.
   Decision decision;
-  bool declined = false;
-  detail::filtered_exact_or_fallback<CertificateReason>(
+  const bool answered = detail::filtered_exact_or_fallback<CertificateReason>(
       options.certify && options.exact_fallback,
       [&] { return decide_by_filter(*circle, *plane, options, q, decision); },
       [&](CertificateReason filter_failure) {
-        // The detection's pass ends here, declined: it builds the exact tier's recipes only now
-        // and asks again for the whole query.
-        if (scope == Scope::detection) {
-          declined = true;
-          return Verdict::done();
-        }
+        // The detection's pass declines: it builds the exact tier's recipes only now and asks
+        // again for the whole query.
+        if (scope == Scope::detection) return Verdict::declined();
         decision = {detail::exact_circle_plane_topology(*circle, *plane, errors.centre_recipe, errors.point_recipe, e),
                     {Certainty::exact, filter_failure}};
         return Verdict::done();
       },
       [&](CertificateReason) { decision = approximate_decision(q); });
-  if (declined) return false;
+  if (!answered) return false;
   const bool with_depth = scope == Scope::whole_query;
   describe(*circle, options, scaled_centre_error, q, decision, with_depth, out);
   if (e != 0) {

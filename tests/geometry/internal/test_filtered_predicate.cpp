@@ -21,8 +21,10 @@ struct Cascade {
   std::string trace;
   Why exact_was_told = Why::none, fallback_was_told = Why::none;
 
+  bool answered = false;
+
   void run(bool exact_tier_on, Verdict filter_verdict, Verdict exact_verdict) {
-    filtered_exact_or_fallback<Why>(
+    answered = filtered_exact_or_fallback<Why>(
         exact_tier_on,
         [&] {
           trace += "filter ";
@@ -71,6 +73,38 @@ TEST(FilteredExactOrFallback, NeverRunsTheExactTierOrTheFallbackAfterADecisionEv
   Cascade c;
   c.run(false, Verdict::done(), Verdict::open(Why::exact_gave_up));
   EXPECT_EQ(c.trace, "filter ");
+}
+
+TEST(FilteredExactOrFallback, SaysTheAnswerIsFilledWhenATierDecidesOrTheFallbackRuns) {
+  for (const bool exact_tier_on : {true, false}) {
+    Cascade decided, fell_back;
+    decided.run(exact_tier_on, Verdict::open(Why::filter_open), Verdict::done());
+    fell_back.run(exact_tier_on, Verdict::open(Why::filter_open), Verdict::open(Why::exact_gave_up));
+    EXPECT_TRUE(decided.answered);
+    EXPECT_TRUE(fell_back.answered);
+  }
+}
+
+TEST(FilteredExactOrFallback, StopsWithoutAnAnswerOrTheFallbackWhenTheExactTierDeclines) {
+  Cascade c;
+  c.run(true, Verdict::open(Why::filter_open), Verdict::declined());
+  EXPECT_EQ(c.trace, "filter exact ");
+  EXPECT_FALSE(c.answered);
+  EXPECT_EQ(c.fallback_was_told, Why::none);
+}
+
+TEST(FilteredExactOrFallback, StopsWithoutAnAnswerWhenTheFilterDeclines) {
+  Cascade c;
+  c.run(true, Verdict::declined(), Verdict::done());
+  EXPECT_EQ(c.trace, "filter ");
+  EXPECT_FALSE(c.answered);
+}
+
+TEST(FilteredExactOrFallback, FallsBackWhenTheExactTierIsOffEvenIfItWouldDecline) {
+  Cascade c;
+  c.run(false, Verdict::open(Why::filter_open), Verdict::declined());
+  EXPECT_EQ(c.trace, "filter fallback ");
+  EXPECT_TRUE(c.answered);
 }
 
 TEST(FilteredPredicate, RunsTheAPrioriFilterInsideTheGuardAndTheRunningErrorOneOutside) {
