@@ -619,9 +619,9 @@ JointContacts detect_contacts(const JointDimensions& dimensions, const PartPose&
                               const PartPose& journal, const DetectionOptions& options) {
   // A fresh answer's defaults are not all zero bits (the error bounds' infinities, the
   // certificates' `uncertain`). GCC 12 writes them as some hundred plain stores. Clang 14 writes
-  // a memset of the whole 1.4 KB and then those stores over it, which made its free-flight
-  // detection 5-7 % slower; a copy of a default instance avoids the memset. Under GCC the copy
-  // is the slower of the two (bench_detect_contacts, side by side: free flight 1.08x).
+  // a memset of the whole 1.4 KB and then those stores over it, a sizeable part of a free-flight
+  // detection; a copy of a default instance avoids the memset. Under GCC the copy is the slower
+  // of the two (bench_detect_contacts, free flight, side by side).
 #if defined(__clang__)
   JointContacts out = default_joint_contacts();
 #else
