@@ -114,5 +114,22 @@ TEST(ExactDyadic, EnclosesDyadicRationalsAtTheEdgesAsCgalDoes) {
   expect_cgal_interval_of(CGAL::Gmpq(-5, 12));
 }
 
+TEST(ExactDyadic, EnclosesWithoutCgalInsideTheNormalRangeAndLeavesTheEdgesToIt) {
+  const mpz_class one = 1;
+  const mpz_class wide = (one << 120) + 12345;  // inexact at 53 bits
+  for (const long shift : {-1000L, -120L, 0L, 800L}) {
+    SCOPED_TRACE(shift);
+    const auto ours = interval_of_dyadic(wide.get_mpz_t(), shift);
+    ASSERT_TRUE(ours.has_value());
+    const std::pair<double, double> cgal = CGAL::to_interval(dyadic_rational(wide, shift));
+    EXPECT_EQ(ours->first, cgal.first);
+    EXPECT_EQ(ours->second, cgal.second);
+    EXPECT_LT(ours->first, ours->second);  // inexact: two neighbouring doubles
+  }
+  // Within a binade of the subnormals or of the overflow: CGAL decides.
+  EXPECT_FALSE(interval_of_dyadic(one.get_mpz_t(), -1022).has_value());
+  EXPECT_FALSE(interval_of_dyadic(wide.get_mpz_t(), 1023 - 121 + 1).has_value());
+}
+
 }  // namespace
 }  // namespace clearjoint::geometry::detail
