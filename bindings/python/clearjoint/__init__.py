@@ -14,11 +14,11 @@ axial clearances", Mechanism and Machine Theory 116 (2017) 123-144. docs/python.
 Lengths are in one unit of the caller's choice (metres in the shipped models), angles in radians,
 vectors in the world frame.
 """
-from ._core import (Certainty, Certificate, CertificateReason, CircleCylinderIntersection,
-                    CircleCylinderTopology, CirclePlaneIntersection, CirclePlaneTopology, Contact,
-                    ContactBase, ContactScenario, ContactType, JointContacts, JointDimensions,
-                    RimArc, RimCrossing, SolverError, __version__, certificate_reason_text,
-                    scenario_label)
+from ._core import (Certificate, CircleCylinderIntersection, CirclePlaneIntersection, Contact,
+                    JointContacts, JointDimensions, RimArc, RimCrossing, SolverError, __version__,
+                    certificate_reason_text, scenario_label)
+from ._enums import (Certainty, CertificateReason, CircleCylinderTopology, CirclePlaneTopology,
+                     ContactBase, ContactScenario, ContactType)
 from ._detect import (MAX_CONTACTS, CircleCylinderBatch, CirclePlaneBatch, DetectionBatch, detect,
                       intersect_circle_cylinder, intersect_circle_plane)
 from ._simulate import SimulationResult, simulate

@@ -2,20 +2,37 @@
 """clearjoint.detect and the kernel queries, on one pose or on NumPy batches."""
 from __future__ import annotations
 
-from typing import Any, Optional, Union
+import operator
+from collections.abc import Mapping
+from typing import Any, Dict, Iterator, Optional, Union
 
 import numpy as np
 
 from . import _core
 from ._arrays import ArrayResult
-from ._core import (CircleCylinderIntersection, CirclePlaneIntersection, ContactScenario,
-                    JointContacts, JointDimensions)
+from ._core import (CircleCylinderIntersection, CirclePlaneIntersection, JointContacts,
+                    JointDimensions)
+from ._enums import ContactScenario
 
 #: Room for contacts per pose: two radial per rim (beyond the model a rim may have two
 #: penetration arcs) plus two axial; C++ ``clearjoint::geometry::kMaxContacts``.
 MAX_CONTACTS = 6
 
 ArrayLike = Any
+
+#: DetectionBatch fields with one row per pose, in the order of ``poses()``.
+_POSE_FIELDS = ("scenario", "aligned", "certificate", "certificate_reason", "contact_count")
+#: Contact fields whose last axis is a vector (x, y, z) in ``contacts()``'s column names.
+_VECTOR_FIELDS = ("point_journal", "point_bearing", "normal", "crossing_point")
+
+
+def _table(columns: Dict[str, np.ndarray]) -> Any:
+    """A pandas DataFrame of the columns when pandas can be imported, else the dict itself."""
+    try:
+        import pandas
+    except ImportError:
+        return columns
+    return pandas.DataFrame(columns)
 
 
 class DetectionBatch(ArrayResult):
@@ -55,9 +72,84 @@ class DetectionBatch(ArrayResult):
     Packed rather than padded to (N, 6, ...): a padded batch writes about a kilobyte a pose, as
     much time as the detection of a realistic pose itself. ``padded(field)`` gives the (N, 6, ...)
     view of one field when that shape is handier.
+
+    A batch is also a sequence of poses: ``batch[n]`` (negative n counting from the end) is
+    pose n's :class:`JointContacts`, bit for bit the answer of ``detect`` on that pose alone,
+    and iterating gives them in order. ``poses()`` and ``contacts()`` give the arrays as two
+    tables (pandas DataFrames when pandas is installed).
     """
 
     _rows_field = "scenario"
+
+    def __getitem__(self, pose: int) -> JointContacts:
+        """Pose ``pose``'s contacts, as :func:`detect` gives them for that pose alone."""
+        try:
+            n = operator.index(pose)
+        except TypeError:
+            raise TypeError(f"DetectionBatch index {pose!r}: must be an integer (a pose number); "
+                            f"poses() and contacts() give tables to filter") from None
+        count = len(self)
+        if not -count <= n < count:
+            raise IndexError(f"pose {n} out of range for a batch of {count} poses")
+        n %= count
+        contacts = [self._contact_dict(k)
+                    for k in range(self.contact_start[n], self.contact_start[n + 1])]
+        return JointContacts._from_dict({
+            "scenario": int(self.scenario[n]), "aligned": bool(self.aligned[n]),
+            "certificate": int(self.certificate[n]),
+            "certificate_reason": int(self.certificate_reason[n]),
+            "contact_count": len(contacts), "contacts": contacts})
+
+    def __iter__(self) -> Iterator[JointContacts]:
+        return (self[n] for n in range(len(self)))
+
+    def _contact_dict(self, k: int) -> Dict[str, Any]:
+        """Contact row k in the form of :meth:`Contact.as_dict` (floats keep their bits)."""
+        crossings = [{"angle": float(self.crossing_angle[k, x]),
+                      "angle_error": float(self.crossing_angle_error[k, x]),
+                      "point": self.crossing_point[k, x].tolist(),
+                      "point_error": float(self.crossing_point_error[k, x]),
+                      "multiplicity": int(self.crossing_multiplicity[k, x])}
+                     for x in range(self.crossing_count[k])]
+        return {"type": int(self.contact_type[k]), "base": int(self.contact_base[k]),
+                "depth": float(self.depth[k]), "depth_error": float(self.depth_error[k]),
+                "point_journal": self.point_journal[k].tolist(),
+                "point_journal_error": float(self.point_journal_error[k]),
+                "point_bearing": self.point_bearing[k].tolist(),
+                "point_bearing_error": float(self.point_bearing_error[k]),
+                "normal": self.normal[k].tolist(), "crossings": crossings,
+                "certificate": int(self.contact_certificate[k]),
+                "certificate_reason": int(self.contact_certificate_reason[k])}
+
+    def poses(self) -> Any:
+        """One row per pose, the index the pose number: ``scenario``, ``aligned``,
+        ``certificate``, ``certificate_reason``, ``contact_count`` (codes as in the arrays).
+
+        A pandas DataFrame when pandas can be imported, else a dict of these arrays (no copies).
+        """
+        return _table({name: getattr(self, name) for name in _POSE_FIELDS})
+
+    def contacts(self) -> Any:
+        """One row per contact, packed in pose order: ``pose`` and ``slot`` (the contact's pose
+        and its index among that pose's contacts), then the contact fields without their
+        ``contact_`` prefix (``type``, ``base``, ``depth``, ..., ``certificate``,
+        ``certificate_reason``), wider fields spread over columns: ``normal_x``,
+        ``crossing_angle_0``, ``crossing_point_1_z``.
+
+        A pandas DataFrame when pandas can be imported, else a dict of equal-length arrays.
+        """
+        columns = {"pose": self.contact_pose, "slot": self.slot()}
+        for field in self._names:
+            values = getattr(self, field)
+            if field in ("contact_start", "contact_pose") or values.shape[:1] != self.contact_pose.shape:
+                continue
+            name = field[len("contact_"):] if field.startswith("contact_") else field
+            for index in np.ndindex(values.shape[1:]):
+                labels = [str(i) for i in index]
+                if field in _VECTOR_FIELDS:
+                    labels[-1] = "xyz"[index[-1]]
+                columns["_".join([name] + labels)] = values[(slice(None),) + index]
+        return _table(columns)
 
     def scenarios(self) -> list:
         """``scenario`` as :class:`ContactScenario` values (a list, length N)."""
@@ -117,7 +209,7 @@ class CircleCylinderBatch(ArrayResult):
 
 def detect(dims: JointDimensions, bearing_center: ArrayLike, bearing_axis: ArrayLike,
            journal_center: ArrayLike, journal_axis: ArrayLike, *, certify: bool = True,
-           parallel_angle_tolerance: float = 0.0,
+           exact_fallback: bool = True, parallel_angle_tolerance: float = 0.0,
            threads: Optional[int] = None) -> Union[JointContacts, DetectionBatch]:
     """Detect every contact between a journal and its bearing (paper Section 3, eqs. 3-26).
 
@@ -129,15 +221,20 @@ def detect(dims: JointDimensions, bearing_center: ArrayLike, bearing_axis: Array
         Each of shape (3,) (one pose, the same for every row) or (N, 3) (one per row): the centre
         P of the part's axis segment and its axis direction a (any non-zero length; only the
         direction counts), world frame. Base A of a part is at P + (L/2) a/|a| (eq. 3), base B at
-        P - (L/2) a/|a| (eq. 4). Lists and integer arrays are converted to float64.
+        P - (L/2) a/|a| (eq. 4). Lists and integer arrays are converted to float64; bools,
+        complex numbers, datetimes, strings and masked values are refused.
     certify:
         Prove every decision (default). False: plain floating point, every answer uncertain.
+    exact_fallback:
+        When a floating-point proof fails (near a tangency), decide with exact rational
+        arithmetic (default). False: such decisions come back uncertain, with the reason.
     parallel_angle_tolerance:
         Radians, in [0, pi/2). 0 (default): axes are parallel only when a_i x a_j = 0 exactly
         (eq. 5). Larger: nearly parallel axes are treated as parallel (eqs. 6-10) and their
         contacts are uncertain.
     threads:
-        Threads for a batch (default None: every core). The answers do not depend on it.
+        Threads for a batch (default None: every core; any positive integer, a limit capped at
+        1024). The answers do not depend on it.
 
     Returns
     -------
@@ -152,12 +249,20 @@ def detect(dims: JointDimensions, bearing_center: ArrayLike, bearing_axis: Array
         A bad value, naming the argument and the row: ``"journal_axis[7] = [0, 0, 0]: must not be
         the zero vector"``; a shape other than (3,) or (N, 3); batched arguments of different N.
     TypeError
-        Arguments that are not numbers.
+        Arguments that are not numbers (or ``dims`` not a :class:`JointDimensions`, a switch
+        not True or False, ``threads`` not an integer).
+    MemoryError
+        The batch's results do not fit in memory.
+    KeyboardInterrupt
+        Ctrl-C: a batch looks for it every 50 ms or so and stops.
 
     The detection runs without the GIL.
     """
+    if not isinstance(dims, JointDimensions):
+        hint = " (JointDimensions(**dims) for a dict)" if isinstance(dims, Mapping) else ""
+        raise TypeError(f"dims = {dims!r}: must be a clearjoint.JointDimensions{hint}")
     result = _core.detect(dims, bearing_center, bearing_axis, journal_center, journal_axis,
-                          certify, parallel_angle_tolerance, threads)
+                          certify, exact_fallback, parallel_angle_tolerance, threads)
     return DetectionBatch(result) if isinstance(result, dict) else result
 
 

@@ -6,6 +6,7 @@
 
 namespace clearjoint::python {
 
+void bind_enum_tables(pybind11::module_& module);     // enum_codes.cpp: _enum_tables()
 void bind_simulation(pybind11::module_& module);      // simulation.cpp
 void bind_types(pybind11::module_& module);           // detection.cpp: enums, dimensions, results
 void bind_detection_batch(pybind11::module_& module); // detection_batch.cpp

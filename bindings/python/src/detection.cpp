@@ -17,6 +17,8 @@
 #include "clearjoint/geometry/detect_contacts.hpp"
 #include "clearjoint/geometry/joint_geometry.hpp"
 #include "clearjoint/geometry/rim_arc.hpp"
+#include "numpy_views.hpp"
+#include "result_dicts.hpp"
 #include "result_types.hpp"
 
 namespace py = pybind11;
@@ -55,87 +57,45 @@ const char* base_name(geo::ContactBase b) {
   return b == geo::ContactBase::a ? "a" : b == geo::ContactBase::b ? "b" : "mid";
 }
 
-void bind_enums(py::module_& m) {
-  py::enum_<geo::Certainty>(m, "Certainty",
-                            "Trust in an answer, strongest first. Array results hold these codes "
-                            "as int8: exact 0, certified 1, uncertain 2.")
-      .value("exact", geo::Certainty::exact, "decided with exact rational arithmetic")
-      .value("certified", geo::Certainty::certified,
-             "proved in floating point with rigorous error bounds")
-      .value("uncertain", geo::Certainty::uncertain, "not proved; the certificate's reason says why");
-
-  // Every CertificateReason, in declaration order (array results hold the codes as int8).
-  py::enum_<geo::CertificateReason> reason(
-      m, "CertificateReason",
-      "Why an answer is uncertain, or, for an exact one, why the floating-point tiers did not "
-      "decide it; none for certified answers. Array results hold these codes as int8 (none 0). "
-      "certificate_reason_text(code) gives the sentence.");
-  reason.value("none", geo::CertificateReason::none)
-      .value("not_decided", geo::CertificateReason::not_decided)
-      .value("certificate_switched_off", geo::CertificateReason::certificate_switched_off)
-      .value("plane_filter_undecided", geo::CertificateReason::plane_filter_undecided)
-      .value("plane_filter_undecided_exact_fallback_off",
-             geo::CertificateReason::plane_filter_undecided_exact_fallback_off)
-      .value("plane_results_not_representable", geo::CertificateReason::plane_results_not_representable)
-      .value("subdivision_budget_exhausted", geo::CertificateReason::subdivision_budget_exhausted)
-      .value("more_than_four_roots", geo::CertificateReason::more_than_four_roots)
-      .value("interval_proof_failed_near_multiple_root",
-             geo::CertificateReason::interval_proof_failed_near_multiple_root)
-      .value("coefficient_overflow", geo::CertificateReason::coefficient_overflow)
-      .value("cylinder_points_not_representable", geo::CertificateReason::cylinder_points_not_representable)
-      .value("exact_root_isolation_budget_exhausted",
-             geo::CertificateReason::exact_root_isolation_budget_exhausted)
-      .value("exact_coefficients_too_large", geo::CertificateReason::exact_coefficients_too_large)
-      .value("exact_intermediate_beyond_double_range",
-             geo::CertificateReason::exact_intermediate_beyond_double_range)
-      .value("contact_not_representable_in_world", geo::CertificateReason::contact_not_representable_in_world)
-      .value("axes_parallel_within_tolerance", geo::CertificateReason::axes_parallel_within_tolerance)
-      .value("beyond_model_undecided", geo::CertificateReason::beyond_model_undecided);
-  m.def("certificate_reason_text", [](geo::CertificateReason r) { return std::string(geo::to_string(r)); },
-        py::arg("reason"), "The reason as a sentence (\"certificate switched off\", ...); empty for none.");
-
-  py::enum_<geo::ContactScenario>(
-      m, "ContactScenario",
-      "The contact scenarios of the paper's Fig. 2: (a)-(i) misaligned axes, (j)-(l) parallel "
-      "axes, plus none (free flight) and beyond_model. Array results hold the codes as int8, in "
-      "this order: none 0, single_radial 1 (a), ..., all_four 9 (i), line 10 (j), face 11 (k), "
-      "line_and_face 12 (l), beyond_model 13.")
-      .value("none", geo::ContactScenario::none, "free flight: no contact")
-      .value("single_radial", geo::ContactScenario::single_radial, "(a) one rim against the wall")
-      .value("single_axial", geo::ContactScenario::single_axial, "(b) one rim against a base")
-      .value("radial_at_both_bases", geo::ContactScenario::radial_at_both_bases,
-             "(c) both rims against the wall")
-      .value("axial_at_both_bases", geo::ContactScenario::axial_at_both_bases,
-             "(d) each rim against its base")
-      .value("radial_and_axial_same_base", geo::ContactScenario::radial_and_axial_same_base,
-             "(e) one rim against the wall and the base on its side")
-      .value("radial_and_axial_opposite_bases", geo::ContactScenario::radial_and_axial_opposite_bases,
-             "(f) one rim against the wall, the other against its base")
-      .value("two_radial_one_axial", geo::ContactScenario::two_radial_one_axial,
-             "(g) both rims against the wall, one against a base")
-      .value("one_radial_two_axial", geo::ContactScenario::one_radial_two_axial,
-             "(h) one rim against the wall, both against their bases")
-      .value("all_four", geo::ContactScenario::all_four, "(i) both rims against wall and bases")
-      .value("line", geo::ContactScenario::line, "(j) parallel axes, journal along the wall")
-      .value("face", geo::ContactScenario::face, "(k) parallel axes, journal base on a bearing base")
-      .value("line_and_face", geo::ContactScenario::line_and_face, "(l) (j) and (k) together")
-      .value("beyond_model", geo::ContactScenario::beyond_model,
-             "a configuration the paper's model does not cover (four wall crossings on a rim, a "
-             "rim wholly beyond a surface, a penetration deeper than the clearance)");
-  m.def("scenario_label", [](geo::ContactScenario s) { return std::string(geo::label(s)); },
+/// The functions that give an enum's text; the enum classes themselves are clearjoint/_enums.py's.
+void bind_enum_texts(py::module_& m) {
+  m.def("certificate_reason_text",
+        [](const py::handle& reason) {
+          return std::string(geo::to_string(enum_argument<geo::CertificateReason>(reason, "reason")));
+        },
+        py::arg("reason"),
+        "The reason (a CertificateReason or its code) as a sentence (\"certificate switched off\", "
+        "...); empty for none.");
+  m.def("scenario_label",
+        [](const py::handle& scenario) {
+          return std::string(geo::label(enum_argument<geo::ContactScenario>(scenario, "scenario")));
+        },
         py::arg("scenario"),
-        "The scenario's label for people: \"(a) single radial\", \"none\", ...; clearjoint detect "
-        "writes its key (\"a\").");
+        "The scenario's (a ContactScenario or its code) label for people: \"(a) single radial\", "
+        "\"none\", ...; clearjoint detect writes its key (\"a\").");
+}
 
-  py::enum_<geo::ContactType>(m, "ContactType", "radial 0: against the lateral wall; axial 1: against a base.")
-      .value("radial", geo::ContactType::radial, "against the lateral wall (eqs. 16-21; line: eqs. 6-8)")
-      .value("axial", geo::ContactType::axial, "against a base (eqs. 11-15; face: eqs. 9-10)");
-  py::enum_<geo::ContactBase>(m, "ContactBase",
-                              "a 0, b 1: at bearing base A (eq. 3) or B (eq. 4) and the journal "
-                              "rim facing it; mid 2: the journal's mid-length (line contact).")
-      .value("a", geo::ContactBase::a)
-      .value("b", geo::ContactBase::b)
-      .value("mid", geo::ContactBase::mid);
+std::string dimensions_call_error(const py::args& args, const py::kwargs& kwargs) {
+  const char* usage =
+      "JointDimensions(bearing_radius=Ri, bearing_length=Li, journal_radius=Rj, journal_length=Lj)";
+  if (args.size() == 1 && py::isinstance<py::dict>(args[0])) {
+    return std::string("JointDimensions takes keyword arguments, not a dict: write JointDimensions(**d) "
+                       "for a dict d with the keys of ") + usage;
+  }
+  if (!args.empty()) {
+    return std::string("JointDimensions takes keyword arguments only, to keep radii and lengths apart: ") + usage;
+  }
+  std::string message = "JointDimensions:";
+  for (const char* field : {"bearing_radius", "bearing_length", "journal_radius", "journal_length"}) {
+    if (!kwargs.contains(field)) message += std::string(" missing ") + field + ";";
+  }
+  for (const auto& item : kwargs) {
+    const std::string key = py::str(item.first);
+    if (key != "bearing_radius" && key != "bearing_length" && key != "journal_radius" && key != "journal_length") {
+      message += " unknown keyword " + key + ";";
+    }
+  }
+  return message + " write " + usage;
 }
 
 void bind_dimensions(py::module_& m) {
@@ -144,14 +104,22 @@ void bind_dimensions(py::module_& m) {
       "Bearing radius Ri and length Li, journal radius Rj and length Lj, in any one length unit "
       "(metres in the shipped models). Keyword arguments only. Raises ValueError naming the field "
       "unless all are finite, Ri > Rj > 0 and Li > Lj > 0.")
-      .def(py::init([](double bearing_radius, double bearing_length, double journal_radius,
-                       double journal_length) {
-             const geo::JointDimensions d{bearing_radius, bearing_length, journal_radius, journal_length};
+      .def(py::init([](const py::handle& bearing_radius, const py::handle& bearing_length,
+                       const py::handle& journal_radius, const py::handle& journal_length) {
+             const geo::JointDimensions d{number_argument(bearing_radius, "JointDimensions.bearing_radius"),
+                                          number_argument(bearing_length, "JointDimensions.bearing_length"),
+                                          number_argument(journal_radius, "JointDimensions.journal_radius"),
+                                          number_argument(journal_length, "JointDimensions.journal_length")};
              geo::validate(d, "JointDimensions");
              return d;
            }),
            py::kw_only(), py::arg("bearing_radius"), py::arg("bearing_length"),
            py::arg("journal_radius"), py::arg("journal_length"))
+      // Every other call (positional numbers, a dict, a missing or unknown keyword) lands here,
+      // for a message that says what to write instead of pybind11's list of signatures.
+      .def(py::init([](const py::args& args, const py::kwargs& kwargs) -> geo::JointDimensions {
+        throw py::type_error(dimensions_call_error(args, kwargs));
+      }))
       .def_readonly("bearing_radius", &geo::JointDimensions::bearing_radius, "Ri")
       .def_readonly("bearing_length", &geo::JointDimensions::bearing_length, "Li")
       .def_readonly("journal_radius", &geo::JointDimensions::journal_radius, "Rj")
@@ -171,23 +139,24 @@ void bind_dimensions(py::module_& m) {
             return py::make_tuple(d.bearing_radius, d.bearing_length, d.journal_radius, d.journal_length);
           },
           [](const py::tuple& t) {
-            const geo::JointDimensions d{t[0].cast<double>(), t[1].cast<double>(),
-                                         t[2].cast<double>(), t[3].cast<double>()};
+            const geo::JointDimensions d{number_argument(t[0], "bearing_radius"), number_argument(t[1], "bearing_length"),
+                                         number_argument(t[2], "journal_radius"), number_argument(t[3], "journal_length")};
             geo::validate(d, "JointDimensions");
             return d;
           }));
 }
 
 void bind_results(py::module_& m) {
-  py::class_<geo::Certificate>(m, "Certificate", "A trust level and, unless certified, why.")
+  add_as_dict_and_pickle(py::class_<geo::Certificate>(m, "Certificate", "A trust level and, unless certified, why.")
       .def_property_readonly("level", [](const geo::Certificate& c) { return c.level; })
       .def_property_readonly("reason", [](const geo::Certificate& c) { return c.reason; },
                              "A CertificateReason to branch on; none for certified answers.")
       .def_property_readonly("reason_text", [](const geo::Certificate& c) { return std::string(c.reason_text()); },
                              "The reason as a sentence for humans; empty for certified answers.")
-      .def("__repr__", [](const geo::Certificate& c) { return "Certificate(" + repr_certificate(c) + ")"; });
+      .def("__repr__", [](const geo::Certificate& c) { return "Certificate(" + repr_certificate(c) + ")"; }),
+      "{'level': Certainty, 'reason': CertificateReason}");
 
-  py::class_<geo::RimCrossing>(
+  add_as_dict_and_pickle(py::class_<geo::RimCrossing>(
       m, "RimCrossing",
       "A point where a rim meets a surface. When certified or exact, the true angle lies within "
       "angle_error of angle (radians) and the true point within point_error (length unit, "
@@ -202,9 +171,10 @@ void bind_results(py::module_& m) {
         return "RimCrossing(angle=" + repr_number(c.angle) + " +- " + repr_number(c.angle_error) +
                ", point=" + repr_vector(c.point) + " +- " + repr_number(c.point_error) +
                ", multiplicity=" + std::to_string(c.multiplicity) + ")";
-      });
+      }),
+      "The attributes as a dict, point a list of three floats.");
 
-  py::class_<geo::RimArc>(m, "RimArc",
+  add_as_dict_and_pickle(py::class_<geo::RimArc>(m, "RimArc",
                           "Rim angles swept counter-clockwise from begin to end (radians in "
                           "[0, 2 pi); end < begin when the arc passes angle 0); full: the whole rim.")
       .def_readonly("begin", &geo::RimArc::begin)
@@ -215,9 +185,10 @@ void bind_results(py::module_& m) {
       .def("__repr__", [](const geo::RimArc& a) {
         return "RimArc(begin=" + repr_number(a.begin) + ", end=" + repr_number(a.end) +
                (a.full ? ", full=True)" : ")");
-      });
+      }),
+      "{'begin', 'end', 'full'}");
 
-  py::class_<geo::Contact>(
+  add_as_dict_and_pickle(py::class_<geo::Contact>(
       m, "Contact",
       "One contact (eqs. 22-23): normal points out of the bearing, in the direction the journal "
       "penetrates; point_journal - point_bearing = depth * normal (up to rounding); the force on "
@@ -240,10 +211,14 @@ void bind_results(py::module_& m) {
         return std::string("Contact(") + type_name(c.type) + " at " + base_name(c.base) +
                ", depth=" + repr_number(c.depth) + ", point_journal=" + repr_vector(c.p_WCj) +
                ", normal=" + repr_vector(c.normal_W) + ", " + repr_certificate(c.certificate) + ")";
-      });
+      }),
+      "The attributes as a dict, named as DetectionBatch's contact columns less their prefix "
+      "(type, base, depth, ..., certificate, certificate_reason); vectors as lists of three "
+      "floats, crossings as a list of RimCrossing.as_dict().");
 
-  py::class_<geo::JointContacts>(m, "JointContacts",
-                                 "Every contact between a journal and its bearing in one pose.")
+  py::class_<geo::JointContacts> joint_contacts(m, "JointContacts",
+                                                "Every contact between a journal and its bearing in one pose.");
+  joint_contacts
       .def_readonly("scenario", &geo::JointContacts::scenario)
       .def_readonly("aligned", &geo::JointContacts::aligned,
                     "axes parallel (exactly, eq. 5, or within parallel_angle_tolerance)")
@@ -265,13 +240,20 @@ void bind_results(py::module_& m) {
                   base_name(c.base) + " depth " + repr_number(c.depth);
         }
         return text + ")";
-      });
+      })
+      // DetectionBatch rows are rebuilt through the dict of as_dict().
+      .def_static("_from_dict", &from_dict<geo::JointContacts>, py::arg("d"));
+  add_as_dict_and_pickle(joint_contacts,
+                         "{'scenario', 'aligned', 'certificate', 'certificate_reason', "
+                         "'contact_count', 'contacts': [Contact.as_dict(), ...]}: the columns of "
+                         "DetectionBatch.poses() and, per contact, of DetectionBatch.contacts(). "
+                         "Plain Python values (enums are IntEnums): json.dumps takes it.");
 }
 
 }  // namespace
 
 void bind_types(py::module_& module) {
-  bind_enums(module);
+  bind_enum_texts(module);
   bind_dimensions(module);
   bind_results(module);
 }

@@ -18,7 +18,7 @@
 #include <cstdint>
 #include <limits>
 #include <mutex>
-#include <optional>
+#include <new>
 #include <string>
 #include <vector>
 
@@ -27,6 +27,7 @@
 #include "array_block.hpp"
 #include "numpy_views.hpp"
 #include "parallel_chunks.hpp"
+#include "signal_check.hpp"
 
 namespace py = pybind11;
 
@@ -49,7 +50,7 @@ struct PoseRows {
   geo::PartPose journal(std::size_t n) const { return {journal_center[n], journal_axis[n]}; }
 };
 
-/// The first failure of a chunk: its row and message.
+/// A bad row, thrown by a chunk: its row and the library's message.
 struct RowError {
   std::size_t row = 0;
   std::string message;
@@ -158,8 +159,7 @@ void put_contact_columns(const std::vector<std::vector<geo::Contact>>& chunk_con
   s[0] = 0;
   {
     py::gil_scoped_release release;
-    std::atomic<bool> never{false};
-    for_each_chunk(chunk_contacts.size(), 1, threads, never, [&](std::size_t h, std::size_t, std::size_t) {
+    for_each_chunk(chunk_contacts.size(), 1, threads, [&](std::size_t h, std::size_t, std::size_t) {
       // This chunk's poses, rows [h * chunk, ...), own contact rows [first[h], first[h + 1]).
       std::size_t k = first[h];
       for (std::size_t r = h * chunk; r < std::min(rows, (h + 1) * chunk); ++r) {
@@ -257,34 +257,31 @@ py::dict detect_batch(const geo::JointDimensions& dimensions, const PoseRows& po
     std::vector<std::vector<geo::Contact>>& lists;
     ~GiveBack() { contact_list_cache().give_back(std::move(lists)); }
   } give_back{chunk_contacts};
-  std::vector<std::optional<RowError>> chunk_errors(chunks);
-  {
+  try {
     py::gil_scoped_release release;
-    std::atomic<bool> stop{false};
-    for_each_chunk(rows, chunk, threads, stop, [&](std::size_t c, std::size_t begin, std::size_t end) {
+    std::atomic<bool> interrupted{false};
+    for_each_chunk(rows, chunk, threads, interrupted, SignalCheck(),
+                   [&](std::size_t c, std::size_t begin, std::size_t end) {
       geo::JointContacts result;
       std::vector<geo::Contact>& contacts = chunk_contacts[c];
-      for (std::size_t n = begin; n < end; ++n) {
+      for (std::size_t n = begin; n < end && !interrupted.load(std::memory_order_relaxed); ++n) {
         try {
           geo::detect_contacts(dimensions, poses.bearing(n), poses.journal(n), result, options);
         } catch (const geo::InvalidInput& e) {
-          chunk_errors[c] = RowError{n, e.what(), true};
+          throw RowError{n, e.what(), true};
+        } catch (const std::bad_alloc&) {
+          throw;  // MemoryError, not a bad row
         } catch (const std::exception& e) {
-          chunk_errors[c] = RowError{n, e.what(), false};
-        }
-        if (chunk_errors[c]) {
-          stop = true;
-          return;
+          throw RowError{n, e.what(), false};
         }
         columns.write(n, result);
         contacts.insert(contacts.end(), result.contacts.begin(), result.contacts.begin() + result.contact_count);
       }
     });
-  }
-  // Chunks are handed out in order and finished once begun: the first error recorded is the
-  // first bad row of the batch, whatever the thread count.
-  for (const auto& error : chunk_errors) {
-    if (error) raise(*error, poses);
+  } catch (const RowError& error) {
+    // Chunks are handed out in order and finished once begun: the error rethrown is the first
+    // bad row of the batch, whatever the thread count.
+    raise(error, poses);
   }
   py::dict out;
   columns.put(out);
@@ -294,15 +291,16 @@ py::dict detect_batch(const geo::JointDimensions& dimensions, const PoseRows& po
 
 py::object detect(const geo::JointDimensions& dimensions, const py::handle& bearing_center,
                   const py::handle& bearing_axis, const py::handle& journal_center,
-                  const py::handle& journal_axis, bool certify, double parallel_angle_tolerance,
-                  const py::object& threads) {
+                  const py::handle& journal_axis, const py::handle& certify, const py::handle& exact_fallback,
+                  const py::handle& parallel_angle_tolerance, const py::object& threads) {
   const PoseRows poses{VectorRows(bearing_center, "bearing_center"), VectorRows(bearing_axis, "bearing_axis"),
                        VectorRows(journal_center, "journal_center"), VectorRows(journal_axis, "journal_axis")};
   const Broadcast shape =
       broadcast(poses.bearing_center, poses.bearing_axis, poses.journal_center, poses.journal_axis);
   geo::DetectionOptions options;
-  options.intersection.certify = certify;
-  options.parallel_angle_tolerance = parallel_angle_tolerance;
+  options.intersection.certify = flag_argument(certify, "certify");
+  options.intersection.exact_fallback = flag_argument(exact_fallback, "exact_fallback");
+  options.parallel_angle_tolerance = number_argument(parallel_angle_tolerance, "parallel_angle_tolerance");
   const unsigned thread_limit = thread_count(threads);
   if (shape.batched) return detect_batch(dimensions, poses, shape.rows, options, thread_limit);
   geo::JointContacts result;
@@ -320,7 +318,7 @@ py::object detect(const geo::JointDimensions& dimensions, const py::handle& bear
 void bind_detection_batch(py::module_& module) {
   module.def("detect", &detect, py::arg("dims"), py::arg("bearing_center"), py::arg("bearing_axis"),
              py::arg("journal_center"), py::arg("journal_axis"), py::arg("certify"),
-             py::arg("parallel_angle_tolerance"), py::arg("threads"),
+             py::arg("exact_fallback"), py::arg("parallel_angle_tolerance"), py::arg("threads"),
              "clearjoint.detect's compiled half: a JointContacts, or a dict of arrays for a batch.");
 }
 

@@ -13,6 +13,7 @@
 #include <atomic>
 #include <cstdint>
 #include <limits>
+#include <new>
 #include <optional>
 #include <string>
 #include <vector>
@@ -22,6 +23,8 @@
 #include "clearjoint/geometry/intersect_circle_plane.hpp"
 #include "numpy_views.hpp"
 #include "parallel_chunks.hpp"
+#include "signal_check.hpp"
+#include "result_dicts.hpp"
 #include "result_types.hpp"
 
 namespace py = pybind11;
@@ -87,38 +90,36 @@ struct CrossingColumns {
   }
 };
 
+/// A bad row, thrown by a chunk: its row and the library's message.
 struct RowError {
   std::size_t row = 0;
   std::string message;
   bool invalid_input = false;
 };
 
-/// Run `query(n)` over the rows in chunks without the GIL; returns the first failure, if any.
+/// Run `query(n)` over the rows in chunks without the GIL; returns the first bad row, if any.
+/// Other failures (MemoryError, KeyboardInterrupt) propagate.
 template <typename Query>
 std::optional<RowError> run_rows(std::size_t rows, unsigned threads, const Query& query) {
-  const std::size_t chunk = chunk_rows(rows, threads);
-  std::vector<std::optional<RowError>> errors((rows + chunk - 1) / chunk);
-  {
+  try {
     py::gil_scoped_release release;
-    std::atomic<bool> stop{false};
-    for_each_chunk(rows, chunk, threads, stop, [&](std::size_t c, std::size_t begin, std::size_t end) {
-      for (std::size_t n = begin; n < end; ++n) {
+    std::atomic<bool> interrupted{false};
+    for_each_chunk(rows, chunk_rows(rows, threads), threads, interrupted, SignalCheck(),
+                   [&](std::size_t, std::size_t begin, std::size_t end) {
+      for (std::size_t n = begin; n < end && !interrupted.load(std::memory_order_relaxed); ++n) {
         try {
           query(n);
         } catch (const geo::InvalidInput& e) {
-          errors[c] = RowError{n, e.what(), true};
+          throw RowError{n, e.what(), true};
+        } catch (const std::bad_alloc&) {
+          throw;  // MemoryError, not a bad row
         } catch (const std::exception& e) {
-          errors[c] = RowError{n, e.what(), false};
-        }
-        if (errors[c]) {
-          stop = true;
-          return;
+          throw RowError{n, e.what(), false};
         }
       }
     });
-  }
-  for (auto& error : errors) {
-    if (error) return error;
+  } catch (const RowError& error) {
+    return error;  // the first bad row: chunks are handed out in order and finished once begun
   }
   return std::nullopt;
 }
@@ -129,16 +130,16 @@ std::optional<RowError> run_rows(std::size_t rows, unsigned threads, const Query
   throw std::runtime_error(message);
 }
 
-geo::IntersectionOptions intersection_options(bool certify, bool exact_fallback) {
+geo::IntersectionOptions intersection_options(const py::handle& certify, const py::handle& exact_fallback) {
   geo::IntersectionOptions options;
-  options.certify = certify;
-  options.exact_fallback = exact_fallback;
+  options.certify = flag_argument(certify, "certify");
+  options.exact_fallback = flag_argument(exact_fallback, "exact_fallback");
   return options;
 }
 
 py::object circle_plane(const py::handle& circle_center, const py::handle& circle_normal,
                         const py::handle& circle_radius, const py::handle& plane_point,
-                        const py::handle& plane_normal, bool certify, bool exact_fallback,
+                        const py::handle& plane_normal, const py::handle& certify, const py::handle& exact_fallback,
                         const py::object& threads) {
   const VectorRows center(circle_center, "circle_center"), normal(circle_normal, "circle_normal");
   const ScalarRows radius(circle_radius, "circle_radius");
@@ -214,7 +215,7 @@ py::object circle_plane(const py::handle& circle_center, const py::handle& circl
 py::object circle_cylinder(const py::handle& circle_center, const py::handle& circle_normal,
                            const py::handle& circle_radius, const py::handle& cylinder_point,
                            const py::handle& cylinder_axis, const py::handle& cylinder_radius,
-                           bool certify, bool exact_fallback, const py::object& threads) {
+                           const py::handle& certify, const py::handle& exact_fallback, const py::object& threads) {
   const VectorRows center(circle_center, "circle_center"), normal(circle_normal, "circle_normal");
   const ScalarRows radius(circle_radius, "circle_radius");
   const VectorRows point(cylinder_point, "cylinder_point"), axis(cylinder_axis, "cylinder_axis");
@@ -285,20 +286,7 @@ py::object circle_cylinder(const py::handle& circle_center, const py::handle& ci
 }
 
 void bind_kernel_types(py::module_& m) {
-  py::enum_<geo::CirclePlaneTopology>(m, "CirclePlaneTopology",
-                                      "Codes in arrays: disjoint 0, tangent 1, two_crossings 2, circle_in_plane 3.")
-      .value("disjoint", geo::CirclePlaneTopology::disjoint, "no common point; side says where the circle is")
-      .value("tangent", geo::CirclePlaneTopology::tangent, "one common point of multiplicity 2")
-      .value("two_crossings", geo::CirclePlaneTopology::two_crossings, "the circle passes through the plane")
-      .value("circle_in_plane", geo::CirclePlaneTopology::circle_in_plane, "every rim point lies in the plane");
-  py::enum_<geo::CircleCylinderTopology>(m, "CircleCylinderTopology",
-                                         "Codes in arrays: inside 0, outside 1, crossing 2, on_surface 3.")
-      .value("inside", geo::CircleCylinderTopology::inside, "every rim point strictly inside the wall")
-      .value("outside", geo::CircleCylinderTopology::outside, "every rim point strictly beyond the wall")
-      .value("crossing", geo::CircleCylinderTopology::crossing, "1 to 4 distinct common points")
-      .value("on_surface", geo::CircleCylinderTopology::on_surface, "coaxial with equal radii");
-
-  py::class_<geo::CirclePlaneIntersection>(m, "CirclePlaneIntersection",
+  add_as_dict_and_pickle(py::class_<geo::CirclePlaneIntersection>(m, "CirclePlaneIntersection",
                                            "A circle against a plane (a rim against a base, eqs. 11-15).")
       .def_readonly("topology", &geo::CirclePlaneIntersection::topology)
       .def_property_readonly("side", [](const geo::CirclePlaneIntersection& r) { return static_cast<int>(r.side); },
@@ -323,9 +311,11 @@ void bind_kernel_types(py::module_& m) {
                ", side=" + std::to_string(static_cast<int>(r.side)) + ", crossings=" + std::to_string(r.crossing_count) +
                ", max_signed_distance=" + repr_number(r.max_signed_distance) + ", " +
                repr_certificate(r.certificate) + ")";
-      });
+      }),
+      "{'topology', 'side', 'crossings', 'penetration' (RimArc.as_dict() or None), "
+      "'max_signed_distance', 'max_signed_distance_error', 'certificate', 'certificate_reason'}");
 
-  py::class_<geo::CircleCylinderIntersection>(
+  add_as_dict_and_pickle(py::class_<geo::CircleCylinderIntersection>(
       m, "CircleCylinderIntersection", "A circle against a cylinder's lateral surface (a rim against the wall, eqs. 16-21).")
       .def_readonly("topology", &geo::CircleCylinderIntersection::topology)
       .def_property_readonly("crossings", [](const geo::CircleCylinderIntersection& r) {
@@ -345,7 +335,8 @@ void bind_kernel_types(py::module_& m) {
         return std::string("CircleCylinderIntersection(") + names[static_cast<int>(r.topology)] +
                ", crossings=" + std::to_string(r.crossing_count) + ", arcs=" + std::to_string(r.arc_count) +
                ", " + repr_certificate(r.certificate) + ")";
-      });
+      }),
+      "{'topology', 'crossings', 'penetration_arcs', 'certificate', 'certificate_reason'}");
 }
 
 }  // namespace

@@ -21,6 +21,7 @@ PYBIND11_MODULE(_core, module) {
       "The equations of motion cannot be solved from some time on: singular or inconsistent "
       "constraints, a collapsed step size, a state that stopped being finite. The message says "
       "when and why.";
+  clearjoint::python::bind_enum_tables(module);
   clearjoint::python::bind_types(module);
   clearjoint::python::bind_detection_batch(module);
   clearjoint::python::bind_kernel(module);

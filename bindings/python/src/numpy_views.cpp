@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "numpy_views.hpp"
 
+#include <algorithm>
 #include <string>
 #include <thread>
 
@@ -12,13 +13,38 @@ namespace {
 
 using DoubleArray = py::array_t<double, py::array::c_style | py::array::forcecast>;
 
-DoubleArray as_doubles(const py::handle& value, const char* name) {
-  DoubleArray array = DoubleArray::ensure(value);
-  if (!array) {
-    throw py::type_error(std::string(name) + ": must be numbers (an array of float), got " +
-                         std::string(py::str(py::type::of(value).attr("__name__"))));
+/// What a refused argument is, for messages: "an array of complex128", "NoneType", "list (dtype <U1)".
+std::string description(const py::handle& value, const py::array& converted) {
+  const std::string dtype = py::str(converted.dtype());
+  if (py::isinstance<py::array>(value)) return "an array of " + dtype;
+  const std::string type = py::str(py::type::of(value).attr("__name__"));
+  return converted.ndim() == 0 || converted.dtype().kind() == 'O' ? type : type + " (dtype " + dtype + ")";
+}
+
+/// `value` as a NumPy array of integers or floats, the dtypes that mean numbers. NumPy would
+/// also convert bools, complex numbers (dropping the imaginary part), datetimes (as day counts),
+/// strings of digits and None (as nan); a masked array would lose its mask. Those are refused.
+py::array numeric_array(const py::handle& value, const std::string& name) {
+  const py::module_ masked = py::module_::import("numpy.ma");
+  if (py::isinstance(value, masked.attr("MaskedArray"))) {
+    if (py::bool_(masked.attr("is_masked")(value))) {
+      throw py::value_error(name + ": a masked array with masked values; fill them (.filled()) or "
+                            "drop their rows (numpy.ma.compress_rows) first");
+    }
+    return numeric_array(value.attr("data"), name);
+  }
+  const py::array array = py::array::ensure(value);
+  if (!array) throw py::type_error(name + ": must be numbers (int or float), got " +
+                                   std::string(py::str(py::type::of(value).attr("__name__"))));
+  const char kind = array.dtype().kind();
+  if (kind != 'i' && kind != 'u' && kind != 'f') {
+    throw py::type_error(name + ": must be numbers (int or float), got " + description(value, array));
   }
   return array;
+}
+
+DoubleArray as_doubles(const py::handle& value, const char* name) {
+  return DoubleArray::ensure(numeric_array(value, name));
 }
 
 std::string shape_text(const py::array& array) {
@@ -69,14 +95,47 @@ std::string argument_message(const std::string& library_message, std::size_t row
   return "row " + std::to_string(row) + ": " + library_message;
 }
 
+double number_argument(const py::handle& value, const std::string& name) {
+  const auto refuse = [&] {
+    return py::type_error(name + " = " + std::string(py::repr(value)) + ": must be a number (int or float), got " +
+                          std::string(py::str(py::type::of(value).attr("__name__"))));
+  };
+  // Python ints beyond int64 are numbers too; NumPy would make them objects.
+  if (PyLong_Check(value.ptr()) && !PyBool_Check(value.ptr())) return value.cast<double>();
+  const py::array array = py::array::ensure(value);
+  if (!array || array.ndim() != 0) throw refuse();
+  const char kind = array.dtype().kind();
+  if (kind != 'i' && kind != 'u' && kind != 'f') throw refuse();
+  return *DoubleArray::ensure(array).data();
+}
+
+bool flag_argument(const py::handle& value, const char* name) {
+  if (PyBool_Check(value.ptr())) return value.ptr() == Py_True;
+  const py::array array = py::array::ensure(value);  // numpy.bool_ too
+  if (array && array.ndim() == 0 && array.dtype().kind() == 'b') return PyObject_IsTrue(value.ptr()) == 1;
+  throw py::type_error(std::string(name) + " = " + std::string(py::repr(value)) + ": must be True or False");
+}
+
 unsigned thread_count(const py::object& threads) {
   if (threads.is_none()) return std::max(1u, std::thread::hardware_concurrency());
-  if (!py::isinstance<py::int_>(threads) || py::isinstance<py::bool_>(threads)) {
-    throw py::type_error("threads = " + std::string(py::repr(threads)) + ": must be an int or None");
+  const auto refuse = [&] {
+    return py::type_error("threads = " + std::string(py::repr(threads)) + ": must be an int or None");
+  };
+  if (PyBool_Check(threads.ptr()) || py::isinstance(threads, py::module_::import("numpy").attr("bool_"))) {
+    throw refuse();
   }
-  const long long count = threads.cast<long long>();
-  if (count < 1) throw py::value_error("threads = " + std::to_string(count) + ": must be at least 1");
-  return static_cast<unsigned>(std::min<long long>(count, 1024));
+  // Any integer: int, numpy.int64, whatever implements __index__.
+  const auto count = py::reinterpret_steal<py::int_>(PyNumber_Index(threads.ptr()));
+  if (!count) {
+    PyErr_Clear();
+    throw refuse();
+  }
+  if (count < py::int_(1)) {
+    throw py::value_error("threads = " + std::string(py::repr(count)) + ": must be at least 1");
+  }
+  // A limit, not a demand: more threads than chunks are never started; beyond kMaxThreads the
+  // count is capped (2**70 means "as many as useful").
+  return count < py::int_(kMaxThreads) ? count.cast<unsigned>() : kMaxThreads;
 }
 
 }  // namespace clearjoint::python

@@ -15,8 +15,9 @@
 namespace clearjoint::python {
 
 /// What VectorRows and ScalarRows share: an argument held as a C-contiguous float64 array
-/// (converted from lists, integers, other dtypes on the way in) that is either one row, broadcast
-/// over every row of a batch, or N rows.
+/// (converted from lists and integer or floating dtypes on the way in; bools, complex numbers,
+/// datetimes, strings, None and masked values refused) that is either one row, broadcast over
+/// every row of a batch, or N rows.
 class BroadcastRows {
  public:
   bool batched() const { return batched_; }
@@ -97,8 +98,17 @@ struct FieldName {
 std::string argument_message(const std::string& library_message, std::size_t row,
                              std::initializer_list<FieldName> fields);
 
-/// Threads to use: None -> every core the machine reports; else a positive integer (ValueError
-/// "threads = 0: must be at least 1").
+/// A number given as a scalar: a Python int or float or a NumPy integer or floating scalar;
+/// TypeError naming `name` for anything else (bools, None, strings, complex).
+double number_argument(const pybind11::handle& value, const std::string& name);
+
+/// A switch: True or False (numpy.bool_ too); TypeError naming `name` for anything else (None, 2).
+bool flag_argument(const pybind11::handle& value, const char* name);
+
+/// Threads to use: None -> every core the machine reports; else any positive integer (int,
+/// numpy.int64, ...), capped at kMaxThreads. TypeError for non-integers and bools, ValueError
+/// "threads = 0: must be at least 1".
+inline constexpr unsigned kMaxThreads = 1024;
 unsigned thread_count(const pybind11::object& threads);
 
 }  // namespace clearjoint::python

@@ -8,6 +8,7 @@
 #include "clearjoint/geometry/certificate.hpp"
 #include "clearjoint/geometry/rim_arc.hpp"
 #include "clearjoint/geometry/vector3.hpp"
+#include "enum_codes.hpp"  // every file that binds results converts their enums the same way
 
 namespace clearjoint::python {
 

@@ -4,6 +4,7 @@ broadcasting, threads, and bad inputs."""
 import json
 import math
 import pickle
+import re
 import struct
 import subprocess
 
@@ -64,7 +65,7 @@ def test_every_scenario_case_equals_the_command_lines_answer_bit_for_bit(case, c
     expected = cli_answers[case.name]
     result = detect_case(case)
     assert result.aligned == expected["aligned"]
-    assert str(result.certificate.level).split(".")[1] == expected["certificate"]
+    assert result.certificate.level.name == expected["certificate"]
     assert result.certificate.reason_text == expected["certificate_reason"]
     assert (result.certificate.reason == clearjoint.CertificateReason.none) == (expected["certificate_reason"] == "")
     assert len(result.contacts) == len(expected["contacts"])
@@ -83,7 +84,7 @@ def test_every_scenario_case_equals_the_command_lines_answer_bit_for_bit(case, c
                                           want["crossing_errors"]):
             assert same_vector(crossing.point, point)
             assert bits(crossing.point_error) == bits(error)
-        assert str(contact.certificate.level).split(".")[1] == want["certificate"]
+        assert contact.certificate.level.name == want["certificate"]
         assert contact.certificate.reason_text == want["certificate_reason"]
 
 
@@ -341,8 +342,11 @@ def test_a_parallel_angle_tolerance_outside_its_range_raises_value_error(toleran
 @pytest.mark.parametrize("threads, error, message", [
     (0, ValueError, "threads = 0: must be at least 1"),
     (-2, ValueError, "threads = -2: must be at least 1"),
+    (-2**70, ValueError, f"threads = {-2**70}: must be at least 1"),
     ("2", TypeError, "threads = '2': must be an int or None"),
+    (2.0, TypeError, "threads = 2.0: must be an int or None"),
     (True, TypeError, "threads = True: must be an int or None"),
+    (np.bool_(True), TypeError, "threads = True: must be an int or None"),
 ])
 def test_a_bad_thread_count_raises(threads, error, message):
     with pytest.raises(error, match=message):
@@ -368,3 +372,86 @@ def test_dimensions_take_keyword_arguments_only():
     d = dims(TABLE2)
     assert (d.radial_clearance, d.axial_clearance) == (10.0 - 9.9, 0.5 * (20.0 - 19.8))
     assert pickle.loads(pickle.dumps(d)).journal_radius == 9.9
+
+
+@pytest.mark.parametrize("threads", [np.int64(2), np.uint8(3), 2**70, 10**6])
+def test_any_integer_is_a_thread_count_and_huge_ones_are_capped(threads):
+    poses = realistic_poses(3000, seed=13)
+    assert clearjoint.detect(METRES, *poses, threads=threads) == clearjoint.detect(METRES, *poses, threads=1)
+
+
+# ---- arguments NumPy would coerce: refused ---------------------------------------------------------
+
+@pytest.mark.parametrize("value, shown", [
+    (np.array(["2020-01-01", "2020-01-02", "2020-01-03"], dtype="datetime64[D]"), "an array of datetime64"),
+    (np.array([0, 0, 1 + 1e-9j]), "an array of complex128"),
+    ([0, 0, 1j], r"list \(dtype complex128\)"),
+    (np.array([False, False, True]), "an array of bool"),
+    ([False, False, True], r"list \(dtype bool\)"),
+    (["0", "0", "1"], r"list \(dtype <U1\)"),
+    ([0, None, 1], "list"),
+    (None, "NoneType"),
+])
+def test_values_that_are_not_real_numbers_raise_type_error_naming_the_argument(value, shown):
+    with pytest.raises(TypeError, match=f"^journal_axis: must be numbers \\(int or float\\), got {shown}"):
+        clearjoint.detect(METRES, [0, 0, 0], [0, 0, 1], [0, 0, 0], value)
+
+
+def test_a_masked_array_with_masked_values_raises_and_one_without_gives_its_data():
+    poses = list(realistic_poses(20, seed=14))
+    masked = np.ma.masked_array(poses[2], mask=np.zeros_like(poses[2], dtype=bool))
+    masked.mask[5, 1] = True
+    with pytest.raises(ValueError, match="journal_center: a masked array with masked values"):
+        clearjoint.detect(METRES, poses[0], poses[1], masked, poses[3])
+    masked.mask[5, 1] = False
+    assert clearjoint.detect(METRES, poses[0], poses[1], masked, poses[3]) == clearjoint.detect(METRES, *poses)
+
+
+@pytest.mark.parametrize("option", ["certify", "exact_fallback"])
+@pytest.mark.parametrize("value", [None, 2, 1, "yes"])
+def test_a_switch_that_is_not_true_or_false_raises_type_error(option, value):
+    with pytest.raises(TypeError, match=f"^{option} = {value!r}: must be True or False$"):
+        clearjoint.detect(METRES, [0, 0, 0], [0, 0, 1], [0, 0, 0], [0, 0, 1], **{option: value})
+
+
+def test_numpy_bools_are_switches():
+    single = clearjoint.detect(METRES, [0, 0, 0], [0, 0, 1], [0, 0, 0], [0, 0, 1], certify=np.bool_(False))
+    assert single.certificate.level == clearjoint.Certainty.uncertain
+
+
+@pytest.mark.parametrize("value", [True, None, "0.1", 1j])
+def test_a_parallel_angle_tolerance_that_is_not_a_number_raises_type_error(value):
+    with pytest.raises(TypeError, match=f"^parallel_angle_tolerance = {re.escape(repr(value))}: must be a number"):
+        clearjoint.detect(METRES, [0, 0, 0], [0, 0, 1], [0, 0, 0], [0, 0, 1],
+                          parallel_angle_tolerance=value)
+
+
+@pytest.mark.parametrize("value", [True, None, "10", 10 + 0j, np.array([10.0, 11.0])])
+def test_dimensions_that_are_not_numbers_raise_type_error_naming_the_field(value):
+    values = dict(bearing_radius=10.0, bearing_length=20.0, journal_radius=9.9, journal_length=19.8)
+    values["bearing_radius"] = value
+    with pytest.raises(TypeError, match="^JointDimensions.bearing_radius = .*: must be a number"):
+        clearjoint.JointDimensions(**values)
+
+
+def test_dimensions_take_numpy_scalars_and_python_ints():
+    d = clearjoint.JointDimensions(bearing_radius=np.float32(10), bearing_length=np.int64(20),
+                                   journal_radius=9.5, journal_length=19)
+    assert (d.bearing_radius, d.bearing_length, d.journal_radius, d.journal_length) == (10.0, 20.0, 9.5, 19.0)
+
+
+# ---- every DetectionOptions member -------------------------------------------------------------------
+
+def test_exact_fallback_false_leaves_a_tangency_uncertain_with_its_reason():
+    # A rim exactly tangent to bearing base A: journal axis (0, 3, 4) (a 3-4-5 triangle), its
+    # rim A of radius 5 centred 3 below the base, so its highest point lies on the base.
+    d = clearjoint.JointDimensions(bearing_radius=10.0, bearing_length=20.0, journal_radius=5.0,
+                                   journal_length=10.0)
+    decided = clearjoint.detect(d, [0, 0, 0], [0, 0, 1], [0, 1, 3], [0, 3, 4])
+    assert decided.certificate.level != clearjoint.Certainty.uncertain
+    assert decided.scenario == clearjoint.ContactScenario.single_axial
+    left = clearjoint.detect(d, [0, 0, 0], [0, 0, 1], [0, 1, 3], [0, 3, 4], exact_fallback=False)
+    assert left.certificate.level == clearjoint.Certainty.uncertain
+    assert left.certificate.reason == clearjoint.CertificateReason.plane_filter_undecided_exact_fallback_off
+    batch = clearjoint.detect(d, [0, 0, 0], [0, 0, 1], [[0, 1, 3], [0, 0, 0]], [0, 3, 4], exact_fallback=False)
+    assert batch.certificate_reason[0] == clearjoint.CertificateReason.plane_filter_undecided_exact_fallback_off

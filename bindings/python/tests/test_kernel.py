@@ -185,6 +185,21 @@ def test_a_radius_per_row_broadcasts_with_single_vectors():
      ValueError, r"circle_radius has 2 rows and circle_center 3"),
     (lambda: clearjoint.intersect_circle_plane([0, 0, 0], [0, 0, 1], "one", [0, 0, 0], [1, 0, 0]),
      TypeError, r"circle_radius: must be numbers"),
+    (lambda: clearjoint.intersect_circle_plane([0, 0, 0], [0, 0, 1], None, [0, 0, 0], [1, 0, 0]),
+     TypeError, r"^circle_radius: must be numbers \(int or float\), got NoneType$"),
+    (lambda: clearjoint.intersect_circle_plane([0, 0, 0], [0, 0, 1], True, [0, 0, 0], [1, 0, 0]),
+     TypeError, r"^circle_radius: must be numbers \(int or float\), got bool$"),
+    (lambda: clearjoint.intersect_circle_cylinder([0, 0, 0], [0, 0, 1], 1.0, [0, 0, 0], [0, 0, 1], 1 + 0j),
+     TypeError, r"^cylinder_radius: must be numbers \(int or float\), got complex$"),
+    (lambda: clearjoint.intersect_circle_cylinder([0, 0, 0], [0, 0, 1], 1.0, [0, 0, 0], [0, 0, 1], 1.0,
+                                                  certify=None),
+     TypeError, r"^certify = None: must be True or False$"),
+    (lambda: clearjoint.intersect_circle_plane([0, 0, 0], [0, 0, 1], 1.0, [0, 0, 0], [1, 0, 0],
+                                               exact_fallback=2),
+     TypeError, r"^exact_fallback = 2: must be True or False$"),
+    (lambda: clearjoint.intersect_circle_plane([0, 0, 0], [0, 0, 1], 1.0, [0, 0, 0], [1, 0, 0],
+                                               threads=np.float64(2)),
+     TypeError, r"^threads = 2.0: must be an int or None$"),
 ])
 def test_bad_inputs_raise_naming_the_argument_and_row(call, error, message):
     with pytest.raises(error, match=message):

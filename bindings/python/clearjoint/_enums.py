@@ -1,0 +1,33 @@
+# SPDX-License-Identifier: BSD-3-Clause
+"""The library's enums as :class:`enum.IntEnum` classes, built from the compiled module's table
+of member names and codes, so that each is written down once (bindings/python/src/enum_codes.cpp).
+
+Being IntEnums, members compare equal to their codes: ``batch.scenario ==
+ContactScenario.beyond_model`` compares element by element, ``np.isin`` works, and
+``ContactScenario(13)`` and ``int(ContactScenario.beyond_model)`` convert both ways.
+"""
+from __future__ import annotations
+
+import enum
+
+from . import _core
+
+
+def _int_enum(name: str, doc: str, members: list) -> type:
+    cls = enum.IntEnum(name, [(member, code) for member, code, _ in members], module="clearjoint",
+                       qualname=name)
+    listing = "\n".join(f"- ``{member}`` {code}" + (f": {text}" if text else "")
+                        for member, code, text in members)
+    cls.__doc__ = f"{doc}\n\n{listing}\n"
+    return cls
+
+
+_CLASSES = {name: _int_enum(name, doc, members) for name, doc, members in _core._enum_tables()}
+
+Certainty = _CLASSES["Certainty"]
+CertificateReason = _CLASSES["CertificateReason"]
+ContactScenario = _CLASSES["ContactScenario"]
+ContactType = _CLASSES["ContactType"]
+ContactBase = _CLASSES["ContactBase"]
+CirclePlaneTopology = _CLASSES["CirclePlaneTopology"]
+CircleCylinderTopology = _CLASSES["CircleCylinderTopology"]

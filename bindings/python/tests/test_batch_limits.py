@@ -1,0 +1,78 @@
+# SPDX-License-Identifier: BSD-3-Clause
+"""Batches that cannot finish: running out of memory raises MemoryError in the caller whatever
+the thread that ran out, and Ctrl-C raises KeyboardInterrupt within a fraction of a second. Each
+case runs in a child interpreter, which a failure here would abort or keep busy."""
+import os
+import signal
+import subprocess
+import sys
+import textwrap
+import time
+
+import pytest
+
+#: Joint of Table 2 in millimetres; a journal against the wall with its axis tilted by 1e-140:
+#: both rims touch the wall at a near-tangency, decided by the exact tier (~60 us a pose).
+SLOW_POSES = """
+import numpy as np
+import clearjoint
+dims = clearjoint.JointDimensions(bearing_radius=10.0, bearing_length=20.0, journal_radius=9.9,
+                                  journal_length=19.8)
+def slow_batch(rows, threads):
+    return clearjoint.detect(dims, [0, 0, 0], [0, 0, 1], np.tile([0.0, 0.1, 0.0], (rows, 1)),
+                             [0, 1e-140, 1], threads=threads)
+"""
+
+
+def child(script):
+    return subprocess.Popen([sys.executable, "-c", textwrap.dedent(SLOW_POSES + script)],
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                            env=dict(os.environ))
+
+
+@pytest.mark.parametrize("threads", [1, 2, 3])
+def test_a_batch_out_of_memory_raises_memory_error_on_any_thread_count(threads):
+    # The issue's batch: a million poses in scenario (i), four contacts each, about 1 GB of
+    # results, under an address-space limit 400 MB above what the interpreter holds already.
+    run = child(f"""
+import resource
+def address_space():
+    with open("/proc/self/status") as status:
+        return next(int(line.split()[1]) * 1024 for line in status if line.startswith("VmSize:"))
+limit = address_space() + 400 * 2**20
+resource.setrlimit(resource.RLIMIT_AS, (limit, limit))
+try:
+    clearjoint.detect(dims, [0, 0, 0], [0, 0, 1], np.zeros((1000000, 3)), [0, 0.013, 1.0],
+                      threads={threads})
+    print("finished")
+except MemoryError:
+    print("MemoryError")
+print(clearjoint.detect(dims, [0, 0, 0], [0, 0, 1], np.zeros((3, 3)), [0, 0.013, 1.0]).scenario[0])
+""")
+    out, err = run.communicate(timeout=300)
+    assert run.returncode == 0, err
+    assert out.split() == ["MemoryError", "9"], out  # and the interpreter carries on
+
+
+@pytest.mark.parametrize("threads", [1, 2])
+def test_ctrl_c_stops_a_long_batch_within_a_fraction_of_a_second(threads):
+    # 100,000 slow poses: about 6 s on one thread, if nothing stops them.
+    run = child(f"""
+import time
+slow_batch(1000, {threads})  # warm up
+print("ready", flush=True)
+start = time.monotonic()
+try:
+    slow_batch(100000, {threads})
+    print("finished", time.monotonic() - start)
+except KeyboardInterrupt:
+    print("interrupted", time.monotonic() - start)
+""")
+    assert run.stdout.readline().strip() == "ready"
+    time.sleep(0.5)
+    run.send_signal(signal.SIGINT)
+    sent = time.monotonic()
+    out, err = run.communicate(timeout=120)
+    waited = time.monotonic() - sent
+    assert out.split()[0] == "interrupted", (out, err)
+    assert waited < 1.0, waited
