@@ -15,6 +15,7 @@ packages=(
   python3 python3-matplotlib            # plots in docs/
   python3-jsonschema                    # tests: outputs and examples against docs/schema/
   python3-dev pybind11-dev python3-pybind11 python3-numpy python3-pytest  # the Python package
+  python3-pandas                        # Python: DetectionBatch tables as DataFrames
   octave octave-dev                     # MATLAB/Octave binding: octave-cli, mkoctfile (Debian 12's
                                         # liboctave-dev is only a transitional name for octave-dev)
   gfortran                              # Fortran binding

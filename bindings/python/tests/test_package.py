@@ -61,6 +61,28 @@ def test_every_public_name_is_in_the_type_stub():
     assert set(clearjoint.__all__) <= stubbed, set(clearjoint.__all__) - stubbed
 
 
+def test_the_type_stubs_enums_have_the_members_and_codes_of_the_package():
+    tree = ast.parse(STUB.read_text())
+    stubbed = {node.name: {item.targets[0].id: item.value.value for item in node.body
+                           if isinstance(item, ast.Assign)}
+               for node in tree.body if isinstance(node, ast.ClassDef)
+               and any(getattr(base, "attr", None) == "IntEnum" for base in node.bases)}
+    assert stubbed, "no IntEnum in the stub"
+    for name, members in stubbed.items():
+        assert members == {m.name: int(m) for m in getattr(clearjoint, name)}, name
+
+
+def test_every_public_method_of_a_class_is_in_the_type_stub():
+    tree = ast.parse(STUB.read_text())
+    methods = {node.name: {item.name for item in node.body if isinstance(item, ast.FunctionDef)}
+               for node in tree.body if isinstance(node, ast.ClassDef)}
+    for name in ("DetectionBatch", "JointContacts", "Contact", "CirclePlaneIntersection"):
+        cls = getattr(clearjoint, name)
+        public = {m for m in vars(cls) if not m.startswith("_") and callable(getattr(cls, m))}
+        inherited = methods.get("ArrayResult", set()) if name == "DetectionBatch" else set()
+        assert public <= methods[name] | inherited, (name, public - methods[name] - inherited)
+
+
 def test_the_version_is_the_projects():
     cmake = (ROOT / "CMakeLists.txt").read_text()
     assert clearjoint.__version__ == re.search(r"project\(clearjoint VERSION ([0-9.]+)", cmake).group(1)
