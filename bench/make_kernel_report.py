@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: BSD-3-Clause
-"""Writes docs/benchmarks-kernel.md from the JSON of bench_intersections and bench_detect_contacts.
+"""Writes docs/reports/benchmarks-kernel.md from the JSON of bench_intersections and
+bench_detect_contacts.
 
     python3 bench/make_kernel_report.py INTERSECTIONS.json DETECTION.json OUT.md
 
@@ -69,11 +70,11 @@ TEMPLATE = """# Kernel benchmarks: what a rim query and a detection cost
 {provenance}
 
 `bench/geometry/bench_intersections.cpp` (Google Benchmark) times the two queries of the geometry
-kernel, `intersect_circle_cylinder` and `intersect_circle_plane`, on the joint of the paper's
-Table 2, with the certificate on (the default), off (`certify = false`, the plain double
-pipeline), and with the exact fallback off. `bench/geometry/bench_detect_contacts.cpp` times the
-full-joint `detect_contacts` on Table 2 poses. Each binary runs all its rows in one run, their
-repetitions interleaved, so the ratios below compare like with like. docs/benchmarks.md holds the
+kernel, `intersect_circle_cylinder` and `intersect_circle_plane`, on the joint of the paper's Table
+2, with the certificate on (the default), off (`certify = false`, the plain double pipeline), and
+with the exact fallback off. `bench/geometry/bench_detect_contacts.cpp` times the full-joint
+`detect_contacts` on Table 2 poses. Each binary runs all its rows in one run, their repetitions
+interleaved, so the ratios below compare like with like. [benchmarks.md](benchmarks.md) holds the
 detection suite (accuracy against an MPFR reference, and the paper's method beside it).
 
 ## Running it
@@ -164,7 +165,8 @@ parts to see where it acts.
 * **The exact fallback is the expensive path,** hundreds of times a random wall query, and part of
   it is spent before it starts: the floating-point attempt that fails near a tangency (the
   `no_exact_fallback` rows). On inputs far from the paper's scale it is slower still, because its
-  rationals grow with the inputs' binary exponents (the `extreme` family of docs/benchmarks.md).
+  rationals grow with the inputs' binary exponents (the `extreme` family of
+  [benchmarks.md](benchmarks.md)).
 * **Why the first harmonic starts tier 1.** On realistic poses the rim distance polynomial is
   dominated by its first harmonic (offset term) next to the second (tilt term), so the roots of
   k0 + A cos(theta - phi) are within about 1e-3 rad of the true ones; two Halley steps from there

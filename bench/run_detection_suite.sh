@@ -2,14 +2,14 @@
 # SPDX-License-Identifier: BSD-3-Clause
 # The detection suite (issue 5): accuracy of the paper's Newton baseline, clearjoint uncertified
 # and clearjoint certified against an MPFR reference on five input families, their timings side by
-# side (Google Benchmark), the robustness export, then docs/benchmarks.md and its plots.
+# side (Google Benchmark), the robustness export, then docs/reports/benchmarks.md and its plots.
 #
 #   bash bench/run_detection_suite.sh            # full run, about 5 minutes on 2 cores
 #   bash bench/run_detection_suite.sh --quick    # under a minute once built; writes to the build tree
 #
-# Full run: regenerates docs/benchmarks.md and docs/figures/benchmarks-*.png. Quick run: the same
-# report into $BUILD_DIR/detection-quick/ (the committed docs are left alone). Raw outputs go to
-# $BUILD_DIR/detection[-quick]/: accuracy.json, timings.json (Google Benchmark), robustness/.
+# Full run: regenerates docs/reports/benchmarks.md and docs/figures/benchmarks-*.png. Quick run: the
+# same report into $BUILD_DIR/detection-quick/ (the committed docs are left alone). Raw outputs go
+# to $BUILD_DIR/detection[-quick]/: accuracy.json, timings.json (Google Benchmark), robustness/.
 # BUILD_DIR (default: build) selects the build tree, CMAKE_ARGS adds configure options. Two cores:
 # everything builds with -j2, the accuracy pass uses two threads, the timings one; keep the machine
 # otherwise idle while the timings run (the report quotes the load average).
@@ -33,7 +33,7 @@ cmake --build "$build_dir" -j2 --target detection_suite bench_detection
 
 if [[ $mode == full ]]; then
   out=$build_dir/detection
-  markdown=docs/benchmarks.md
+  markdown=docs/reports/benchmarks.md
   figures=docs/figures
   suite_flag=()
   repetitions=3

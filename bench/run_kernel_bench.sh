@@ -1,19 +1,20 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: BSD-3-Clause
 # Builds bench_intersections and bench_detect_contacts (Release), runs each with interleaved
-# repetitions (medians only on the console), and writes docs/benchmarks-kernel.md from their JSON
-# (bench/make_kernel_report.py).
+# repetitions (medians only on the console), and writes docs/reports/benchmarks-kernel.md from their
+# JSON (bench/make_kernel_report.py).
 #
 #   bash bench/run_kernel_bench.sh [extra benchmark flags, e.g. --benchmark_filter=circle_plane]
 #
 # BUILD_DIR (default: build) selects the build tree, CMAKE_ARGS adds configure options,
-# REPETITIONS (default 10) the repetitions, REPORT (default docs/benchmarks-kernel.md) the page.
+# REPETITIONS (default 10) the repetitions, REPORT (default docs/reports/benchmarks-kernel.md) the
+# page.
 # Two cores: build with -j2, and keep the machine otherwise idle while it runs.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build_dir=${BUILD_DIR:-build}
 repetitions=${REPETITIONS:-10}
-report=${REPORT:-docs/benchmarks-kernel.md}
+report=${REPORT:-docs/reports/benchmarks-kernel.md}
 
 # shellcheck disable=SC2086  # CMAKE_ARGS is a list of options
 cmake -S . -B "$build_dir" -DCMAKE_BUILD_TYPE=Release -DCLEARJOINT_BUILD_BENCHMARKS=ON ${CMAKE_ARGS:-} >/dev/null

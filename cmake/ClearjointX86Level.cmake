@@ -3,8 +3,8 @@
 # SSSE3, POPCNT; every x86-64 processor of the last fifteen years or so, and the baseline of
 # RHEL 9), not the original x86-64 that Debian's compilers target by default. With it GCC 12
 # writes the kernel's lane selects (pair_lanes.hpp) as SSE4.1 blends, a few per cent faster in
-# the contact cases (docs/benchmarks-kernel.md). The level has no fused multiply-add (that is
-# x86-64-v3), and the kernel is compiled with -ffp-contract=off anyway, so every result is the
+# the contact cases (docs/reports/benchmarks-kernel.md). The level has no fused multiply-add (that
+# is x86-64-v3), and the kernel is compiled with -ffp-contract=off anyway, so every result is the
 # same bit for bit (scripts/compare-answers.sh).
 #   OFF (default):  the compiler's default target, so that an installed library runs anywhere;
 #   ON:             on (a library built so stops with an illegal instruction on an older x86-64);

@@ -7,7 +7,7 @@
 # sweeps, 153 runs; studies/section6_settling.json: 11 variants behind the page's explanations)
 # on a local Dask cluster (one worker per core) or an existing one, then draw Figs. 7-11 and 13-19
 # and the ensemble figures into docs/figures/section6/ and regenerate the tables of
-# docs/reproduction.md from the stores.
+# docs/reports/reproduction.md from the stores.
 #
 #   bash scripts/reproduce-section6.sh                 # resumes: stored runs are not redone
 #   bash scripts/reproduce-section6.sh --force         # redo every run (after changing the code)
@@ -15,7 +15,7 @@
 #   BUILD_DIR=build-mine JOBS=1 bash scripts/reproduce-section6.sh
 #
 # Stores: results/section6_mechanisms/, results/section6_clearance/, results/section6_settling/
-# (docs/studies.md); the numbers quoted in docs/reproduction.md also go to
+# (docs/studies.md); the numbers quoted in docs/reports/reproduction.md also go to
 # results/section6/summary.json.
 set -euo pipefail
 cd "$(dirname "$0")/.."

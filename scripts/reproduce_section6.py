@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: BSD-3-Clause
 """Figures 7-11 and 13-19 of Marques et al. (2017), Section 6, and the numbers of
-docs/reproduction.md, from the stores of the two Section 6 studies:
+docs/reports/reproduction.md, from the stores of the two Section 6 studies:
 
     clearjoint study run studies/section6_mechanisms.json    # 37 runs: Figs. 7-19
     clearjoint study run studies/section6_clearance.json     # 153 runs: the ensembles (and their figures)
@@ -10,7 +10,7 @@ docs/reproduction.md, from the stores of the two Section 6 studies:
 
 (bash scripts/reproduce-section6.sh does all four.) Figures go to docs/figures/section6/, the
 measured numbers to results/section6/summary.json; --update-docs rewrites the generated tables of
-docs/reproduction.md (between its "generated" markers) from the stores.
+docs/reports/reproduction.md (between its "generated" markers) from the stores.
 
 Needs the clearjoint package (PYTHONPATH=build/bindings/python in a build tree) and matplotlib.
 """
@@ -81,7 +81,8 @@ def main():
     parser.add_argument("--figures", default=os.path.join(REPOSITORY, "docs", "figures", "section6"))
     parser.add_argument("--summary", default=os.path.join(REPOSITORY, "results", "section6", "summary.json"))
     parser.add_argument("--update-docs", action="store_true",
-                        help="rewrite the generated tables of docs/reproduction.md from the stores")
+                        help="rewrite the generated tables of docs/reports/reproduction.md from the "
+                             "stores")
     args = parser.parse_args()
     import section6_figures  # noqa: E402 (matplotlib only when drawing)
     import section6_settling  # noqa: E402
@@ -110,7 +111,7 @@ def main():
     os.replace(args.summary + ".partial", args.summary)
     print("figures in %s, numbers in %s" % (args.figures, args.summary), file=sys.stderr)
     if args.update_docs:
-        page = os.path.join(REPOSITORY, "docs", "reproduction.md")
+        page = os.path.join(REPOSITORY, "docs", "reports", "reproduction.md")
         section6_tables.update_page(page, load, ensembles, clearance.study, STUDY_MM, summary, len(attrs))
         print("tables of %s regenerated" % page, file=sys.stderr)
 

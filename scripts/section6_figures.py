@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """Figures 7-11 and 13-19 of Marques et al. (2017), Section 6, from the reduced runs of
-reproduce_section6.py, and the numbers docs/reproduction.md quotes.
+reproduce_section6.py, and the numbers docs/reports/reproduction.md quotes.
 
 Every figure is drawn from data, nothing is hand-placed. Units: m, m/s, m/s^2, J, s; clearances
 in mm in labels. Slider quantities are the world-x components of its position, velocity and
@@ -19,9 +19,9 @@ from mpl_toolkits.mplot3d import Axes3D  # noqa: E402,F401 (registers the 3d pro
 # Sec. 6.1: "the outputs only report a portion of the total simulations performed, which represents
 # a steady-state behavior following the initial impacts". The paper does not say which portion;
 # 0.1-0.2 s is shown here: the journal has been in continuous contact since its first milliseconds
-# (docs/reproduction.md, Sec. 6.1), and the misaligned journal's tilt has fallen from 0.2 to below
-# 1e-3 degrees. Later windows look the same except for a larger lag (friction in the joint keeps
-# removing energy from the free-running mechanism).
+# (docs/reports/reproduction.md, Sec. 6.1), and the misaligned journal's tilt has fallen from 0.2 to
+# below 1e-3 degrees. Later windows look the same except for a larger lag (friction in the joint
+# keeps removing energy from the free-running mechanism).
 PLANAR_WINDOW = (0.1, 0.2)
 # Fig. 14: "only data on the first 0.20 s is displayed".
 TRAJECTORY_WINDOW = 0.20

@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: BSD-3-Clause
-"""The numbers behind the explanations of docs/reproduction.md, from the store of
+"""The numbers behind the explanations of docs/reports/reproduction.md, from the store of
 studies/section6_settling.json: why the planar journal settles on the bearing wall, where the
 spatial mechanism's energy goes, and what the impact-speed floor of eq. (28) changes.
 

@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: BSD-3-Clause
-"""The tables of docs/reproduction.md, generated from the Section 6 study stores: each sits
+"""The tables of docs/reports/reproduction.md, generated from the Section 6 study stores: each sits
 between `<!-- generated: NAME -->` and `<!-- end generated: NAME -->` and is replaced whole."""
 import os
 import re
@@ -213,7 +213,7 @@ def replace_block(text, name, body):
     pattern = re.compile(r"(<!-- generated: %s -->\n).*?(\n<!-- end generated: %s -->)" % (
         re.escape(name), re.escape(name)), re.S)
     if not pattern.search(text):
-        raise SystemExit("docs/reproduction.md: no generated block %r" % name)
+        raise SystemExit("docs/reports/reproduction.md: no generated block %r" % name)
     return pattern.sub(lambda m: m.group(1) + body + m.group(2), text)
 
 

@@ -1,7 +1,8 @@
 # SPDX-License-Identifier: BSD-3-Clause
-"""docs/benchmarks-bindings.md from bench_c_api's JSON (and octave_batch_cost.m's, if given).
+"""docs/reports/benchmarks-bindings.md from bench_c_api's JSON (and octave_batch_cost.m's, if
+given).
 
-usage: make_bindings_table.py BENCH_C_API_JSON [OCTAVE_JSON] > docs/benchmarks-bindings.md
+usage: make_bindings_table.py BENCH_C_API_JSON [OCTAVE_JSON] > docs/reports/benchmarks-bindings.md
 """
 import json
 import sys

@@ -3,7 +3,7 @@
 # The bindings' costs: bench_c_api (the C API against the C++ call, 10 interleaved repetitions)
 # and, when the MEX files are built, octave_batch_cost.m (Octave's per-pose cost on 1e5 poses).
 # Writes build/bench_c_api.json, build/bench_octave_batch.json and, from them,
-# docs/benchmarks-bindings.md (make_bindings_table.py). Keep the machine otherwise idle.
+# docs/reports/benchmarks-bindings.md (make_bindings_table.py). Keep the machine otherwise idle.
 #
 #   bash bench/bindings/run_bindings_bench.sh
 #
@@ -33,5 +33,6 @@ if [[ -f "$build_dir/bindings/matlab/cj_detect_many.mex" ]]; then
     "addpath('$PWD/$build_dir/bindings/matlab', '$PWD/bench/bindings'); octave_batch_cost('$PWD/$octave_json')"
   cat "$octave_json"
 fi
-/usr/bin/python3 bench/bindings/make_bindings_table.py build/bench_c_api.json $octave_json > docs/benchmarks-bindings.md
-echo "docs/benchmarks-bindings.md written"
+report=docs/reports/benchmarks-bindings.md
+/usr/bin/python3 bench/bindings/make_bindings_table.py build/bench_c_api.json $octave_json > "$report"
+echo "$report written"

@@ -24,7 +24,7 @@ struct AccuracyOptions {
 };
 
 struct AccuracyResult {
-  Json report;  ///< the whole report (docs/benchmarks.md is generated from it)
+  Json report;  ///< the whole report (docs/reports/benchmarks.md is generated from it)
   /// Certified-pipeline failures against the joint as given (its certificates' claim), and
   /// against the joint with exactly normalised axes (a diagnostic), over all families.
   std::size_t certified_failures_as_given = 0;

@@ -3,7 +3,7 @@
 /// \file
 /// Scoring one detection answer against the multiprecision reference, and tallying the scores.
 ///
-/// Definitions (docs/benchmarks.md repeats them):
+/// Definitions (docs/reports/benchmarks.md repeats them):
 /// * wrong scenario: the answer's scenario differs from the reference's;
 /// * missed / spurious contact: contacts are keyed by (type, base); a reference contact with no
 ///   answer contact of its key is missed, an answer contact with no reference contact spurious

@@ -7,7 +7,7 @@
 //                            [--check]
 //   detection_suite export   [--quick] [--threads N] [--families a,b] --out-dir DIR
 //
-// docs/benchmarks.md describes the families, the scores and the file formats.
+// docs/reports/benchmarks.md describes the families, the scores and the file formats.
 
 #include <algorithm>
 #include <atomic>

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: BSD-3-Clause
-"""Writes docs/benchmarks.md and its plots from the detection suite's outputs.
+"""Writes docs/reports/benchmarks.md and its plots from the detection suite's outputs.
 
 Inputs: the accuracy report of `detection_suite accuracy` and the Google Benchmark JSON of
 `bench_detection`. Called by bench/run_detection_suite.sh; every number in the page comes from

@@ -5,13 +5,13 @@ answers of the detection suite's robustness export.
 
     python3 bench/detection/score_detect_answers.py REFERENCE.jsonl ANSWERS.jsonl [--list N]
 
-REFERENCE.jsonl: `<family>.reference.jsonl` from `detection_suite export`. ANSWERS.jsonl: one
-answer line per input line of `<family>.jsonl`, matched by "id". Scores with the definitions of
-docs/benchmarks.md: wrong scenario, missed and spurious contacts (keyed by type and base, two arcs
-of one rim matched by nearest journal point), the largest contact-point and crossing errors, and
-the depth relative errors. Contact points of a rim beyond a base all round (ill-conditioned when the
-rim is nearly parallel to the base) are tallied apart. Answers with "error" count as errors.
-Standard library only.
+REFERENCE.jsonl: `<family>.reference.jsonl` from `detection_suite export`. ANSWERS.jsonl: one answer
+line per input line of `<family>.jsonl`, matched by "id". Scores with the definitions of
+docs/reports/benchmarks.md: wrong scenario, missed and spurious contacts (keyed by type and base,
+two arcs of one rim matched by nearest journal point), the largest contact-point and crossing
+errors, and the depth relative errors. Contact points of a rim beyond a base all round
+(ill-conditioned when the rim is nearly parallel to the base) are tallied apart. Answers with
+"error" count as errors. Standard library only.
 Exit status: 0 when every answer has the reference scenario and contacts, 1 otherwise, 2 on bad
 files.
 """

@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: BSD-3-Clause
 """dynamics_slider_crank_bench from two builds side by side, the ratio of their median times as a
-Markdown table (docs/benchmarks-dynamics.md has one build's figures): bench/compare_builds.py with
-the dynamics' defaults, the output under build/bench-dynamics and the step counts beside the times.
+Markdown table (docs/reports/benchmarks-dynamics.md has one build's figures):
+bench/compare_builds.py with the dynamics' defaults, the output under build/bench-dynamics and the
+step counts beside the times.
 
   bench/dynamics/compare_builds.py --baseline OLD/build/bench/dynamics/dynamics_slider_crank_bench \\
       --candidate build/bench/dynamics/dynamics_slider_crank_bench --rounds 5

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: BSD-3-Clause
-"""Writes docs/benchmarks-dynamics.md from the JSON of dynamics_slider_crank_bench and, when given,
-a `perf report` of the spatial slider-crank with its clearance joint.
+"""Writes docs/reports/benchmarks-dynamics.md from the JSON of dynamics_slider_crank_bench and,
+when given, a `perf report` of the spatial slider-crank with its clearance joint.
 
     python3 bench/dynamics/make_report.py BENCH.json [PERF_REPORT.txt] OUT.md
 
@@ -115,7 +115,7 @@ Section 6 over its 1 s at the paper's settings (Table 2: Dormand-Prince 5(4), to
 dense output at every 1e-5 s report time, an observer that does nothing: the solver alone), and
 times one right-hand-side evaluation at the initial state. The models are the shipped files in
 `models/` and deterministic, so every iteration of a row is the same run and there is no seed.
-[dynamics.md](dynamics.md) describes the engine; [reproduction.md](reproduction.md) the runs of
+[dynamics.md](../dynamics.md) describes the engine; [reproduction.md](reproduction.md) the runs of
 Section 6 themselves.
 
 ## Running it

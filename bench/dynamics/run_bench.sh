@@ -2,17 +2,17 @@
 # SPDX-License-Identifier: BSD-3-Clause
 # Builds dynamics_slider_crank_bench (Release), runs it with interleaved repetitions, profiles the
 # spatial slider-crank with its clearance joint when perf is installed, and writes
-# docs/benchmarks-dynamics.md from the JSON (bench/dynamics/make_report.py).
+# docs/reports/benchmarks-dynamics.md from the JSON (bench/dynamics/make_report.py).
 #
 #   bash bench/dynamics/run_bench.sh [extra benchmark flags, e.g. --benchmark_filter=Derivative]
 #
 # BUILD_DIR (default: build) selects the build tree, REPETITIONS (default 5) the repetitions,
-# REPORT (default docs/benchmarks-dynamics.md) the page. Two cores: build with -j2.
+# REPORT (default docs/reports/benchmarks-dynamics.md) the page. Two cores: build with -j2.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 build_dir=${BUILD_DIR:-build}
 repetitions=${REPETITIONS:-5}
-report=${REPORT:-docs/benchmarks-dynamics.md}
+report=${REPORT:-docs/reports/benchmarks-dynamics.md}
 bench="$build_dir/bench/dynamics/dynamics_slider_crank_bench"
 json="$build_dir/dynamics_slider_crank_bench.json"
 profile="$build_dir/dynamics_slider_crank_bench.perf.txt"

@@ -2,7 +2,7 @@
 // Wall time per simulated second for the paper's slider-cranks at the paper's settings (Table 2:
 // tolerance 1e-7, reported step 1e-5 s): with ideal joints, and with their revolute clearance
 // joints (the figure, the steps, the contact detections and impacts behind it), side by side in
-// one run. bench/dynamics/run_bench.sh writes docs/benchmarks-dynamics.md from its JSON.
+// one run. bench/dynamics/run_bench.sh writes docs/reports/benchmarks-dynamics.md from its JSON.
 //
 //   dynamics_slider_crank_bench --benchmark_out=dynamics.json --benchmark_out_format=json
 //

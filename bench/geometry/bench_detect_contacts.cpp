@@ -7,7 +7,7 @@
 // filtered by the outcome of one certified call per pose; the timed loop cycles through the set.
 // Counters give the work behind a time: contacts per query and the share of each certificate
 // level. The certified and the plain double pipelines run on the same inputs in the same process:
-// compare them by their ratio. docs/benchmarks-kernel.md has the command and the table.
+// compare them by their ratio. docs/reports/benchmarks-kernel.md has the command and the table.
 //
 // Frames: the bearing is fixed (centre at the origin, axis +z); the journal centre P_j and axis a_j
 // are drawn at random.

@@ -6,11 +6,11 @@
 // headers), and the circle-plane query of each rim that crosses a base plane. `per_pose`: how
 // many of each a detection makes on average.
 //
-// Each loop repeats one part over many inputs, so consecutive calls can overlap in the
-// out-of-order core: these are throughput figures, and a change can speed a part up here and not
-// the detection (docs/benchmarks-kernel.md, "Third session of 2026-11-24": the proof by the slope
-// took the roots from 141 to 122 ns here while the detection got slower, until a compiler flag
-// was found). Use the rows to see where a change acts, and bench_detect_contacts to judge it.
+// Each loop repeats one part over many inputs, so consecutive calls can overlap in the out-of-order
+// core: these are throughput figures, and a change can speed a part up here and not the detection
+// (docs/reports/benchmarks-kernel.md, "Third session of 2026-11-24": the proof by the slope took
+// the roots from 141 to 122 ns here while the detection got slower, until a compiler flag was
+// found). Use the rows to see where a change acts, and bench_detect_contacts to judge it.
 
 #include <benchmark/benchmark.h>
 

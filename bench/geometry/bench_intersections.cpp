@@ -6,7 +6,8 @@
 // the share of its inputs per topology and per certificate level, computed outside the timed loop,
 // so that a time can be read together with the work it stands for. The certified and the plain
 // double pipelines run on the same inputs in the same process: compare them by their ratio, which
-// is steadier than either absolute time. docs/benchmarks-kernel.md has the command and the table.
+// is steadier than either absolute time. docs/reports/benchmarks-kernel.md has the command and the
+// table.
 //
 // Frames: the bearing frame is the world frame W. The bearing axis a_i is +z through the origin
 // P_i, its base B is the plane z = +Li/2 with its normal pointing out of the bearing. The journal

@@ -2,12 +2,13 @@
 #pragma once
 // A measuring stick, not a query to use: the circle-plane answer (topology, side, depth of the
 // deepest rim point, two crossing angles and points) in plain double with no error bound and no
-// proof, written as cheaply as we know how. Timed beside intersect_circle_plane on the same
-// inputs, it says how far the certified query is from the arithmetic its contract needs
-// (docs/benchmarks-kernel.md). Same formulas as geometry/src/queries/intersect_circle_plane.cpp and
-// docs/circle-plane.md (paper eqs. 11-15); tangency and a rim in the plane are read off exact
-// zeros of the computed values, so near them its answers can be wrong: that is the point of
-// comparing it with the certified query, not a shortcut the library may take.
+// proof, written as cheaply as we know how. Timed beside intersect_circle_plane on the same inputs,
+// it says how far the certified query is from the arithmetic its contract needs
+// (docs/reports/benchmarks-kernel.md). Same formulas as
+// geometry/src/queries/intersect_circle_plane.cpp and docs/circle-plane.md (paper eqs. 11-15);
+// tangency and a rim in the plane are read off exact zeros of the computed values, so near them its
+// answers can be wrong: that is the point of comparing it with the certified query, not a shortcut
+// the library may take.
 
 #include <cmath>
 #include <numbers>

@@ -2,8 +2,9 @@
 #pragma once
 // Exact tier for rim/cylinder: decides the crossings of the stored primitives exactly (the
 // polynomial in integers, its roots isolated by real_root_isolation.hpp; CGAL::Gmpq where a
-// quotient remains). Far costlier than the floating-point tiers (docs/benchmarks-kernel.md), so
-// only called when they cannot decide. docs/circle-cylinder.md, section 4.
+// quotient remains). Far costlier than the floating-point tiers
+// (docs/reports/benchmarks-kernel.md), so only called when they cannot decide.
+// docs/circle-cylinder.md, section 4.
 
 #include "certified_rim_roots.hpp"
 #include "rounded_point.hpp"

@@ -24,7 +24,7 @@
 /// centre carries a rigorous bound on its distance to the exact one (geometry/src/rounded_point.hpp):
 /// the kernel's proofs hold for every centre within that bound, crossing-point errors include it,
 /// and where the floating-point proofs fail (a rim within the rounding of touching) the exact tier
-/// decides on the exact centres, rebuilt in rationals. bench/detection (docs/benchmarks.md)
+/// decides on the exact centres, rebuilt in rationals. bench/detection (docs/reports/benchmarks.md)
 /// checks this against an MPFR reference of the joint as given.
 
 #include <array>
