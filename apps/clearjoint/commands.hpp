@@ -23,5 +23,12 @@ int run_simulate(Arguments args);
 /// (python3 -m clearjoint.study; docs/studies.md). Replaces this process with the interpreter.
 int run_study(Arguments args);
 #endif
+#ifdef CLEARJOINT_WITH_PLOT_VIEW
+/// clearjoint plot RUN_DIR: figures of a run's clearance joints (python3 -m clearjoint.plot;
+/// docs/viewing-runs.md). Replaces this process with the interpreter.
+int run_plot(Arguments args);
+/// clearjoint view RUN_DIR: the run animated in the browser (python3 -m clearjoint.view).
+int run_view(Arguments args);
+#endif
 
 }  // namespace clearjoint::app

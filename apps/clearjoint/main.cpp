@@ -28,6 +28,10 @@ constexpr Command kCommands[] = {
 #ifdef CLEARJOINT_WITH_STUDY
     {"study", clearjoint::app::run_study, "parameter studies on Dask: run, plot (python3 -m clearjoint.study)"},
 #endif
+#ifdef CLEARJOINT_WITH_PLOT_VIEW
+    {"plot", clearjoint::app::run_plot, "figures of a run's clearance joints, PNG and SVG (python3 -m clearjoint.plot)"},
+    {"view", clearjoint::app::run_view, "a run animated in 3-D in the browser (python3 -m clearjoint.view)"},
+#endif
 };
 
 int print_usage(std::FILE* to) {

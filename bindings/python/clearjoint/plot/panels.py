@@ -1,0 +1,120 @@
+# SPDX-License-Identifier: BSD-3-Clause
+"""The panels of a clearance joint's figure, each drawn on a matplotlib Axes it is given: the
+journal orbit in the clearance circle, the normal force, the axial position, the tilt and the
+slider's acceleration. Every curve of a joint is coloured by the contact scenario of its report
+time (scenario_colours.py) and impacts are marked where they began.
+"""
+from __future__ import annotations
+
+from typing import Optional, Sequence
+
+import numpy as np
+
+from .joint_series import ClearanceJointSeries
+from .scenario_colours import scenario_colour, scenario_name
+
+#: Look of the marks where an impact began and of the ideal joint's curve.
+IMPACT_MARK = dict(marker="o", facecolors="none", edgecolors="black", linewidths=0.6, s=14, zorder=4)
+IDEAL_CURVE = dict(color="0.3", linestyle="--", linewidth=1.0)
+CLEARANCE_CURVE = dict(color="tab:blue", linewidth=0.8)
+
+
+def _scenario_segments(ax, x: np.ndarray, y: np.ndarray, scenario: np.ndarray, linewidth: float = 1.0):
+    """A polyline whose segment k (from point k to k + 1) has the colour of scenario[k + 1], the
+    state the step arrived in, so that a contact shows from its first report time."""
+    from matplotlib.collections import LineCollection
+    if len(x) < 2:
+        ax.scatter(x, y, c=[scenario_colour(s) for s in scenario], s=4)
+        return
+    points = np.column_stack([x, y])
+    segments = np.stack([points[:-1], points[1:]], axis=1)
+    colours = [scenario_colour(s) for s in scenario[1:]]
+    ax.add_collection(LineCollection(segments, colors=colours, linewidths=linewidth))
+    ax.update_datalim(points)
+    ax.autoscale_view()
+
+
+def scenario_legend_handles(scenarios: Sequence[int], with_impacts: bool = True) -> list:
+    """Legend entries for the scenarios that occur (in code order), then the impact mark."""
+    from matplotlib.lines import Line2D
+    handles = [Line2D([], [], color=scenario_colour(code), linewidth=2.5, label=scenario_name(code))
+               for code in sorted(set(int(s) for s in scenarios))]
+    if with_impacts:
+        handles.append(Line2D([], [], linestyle="none", marker="o", markerfacecolor="none",
+                              markeredgecolor="black", markersize=5, label="impact began"))
+    return handles
+
+
+def plot_orbit(ax, series: ClearanceJointSeries, rim: str = "a", title: Optional[str] = None) -> None:
+    """The centre of the journal's rim facing bearing base ``rim`` ("a" or "b") in the bearing
+    frame, in units of the radial clearance (the clearance circle is the unit circle, Fig. 14), or
+    in millimetres when the model (hence cr) is not known."""
+    centre = series.rim_a if rim == "a" else series.rim_b
+    cr = series.radial_clearance
+    scale = 1.0 / cr if cr else 1e3
+    u, v = centre[:, 0] * scale, centre[:, 1] * scale
+    if cr:
+        angle = np.linspace(0.0, 2.0 * np.pi, 361)
+        ax.plot(np.cos(angle), np.sin(angle), color="0.4", linewidth=0.8, zorder=0)
+        ax.set_xlabel("u / c_r [-]")
+        ax.set_ylabel("v / c_r [-]")
+        ax.set_xlim(-1.15, 1.15)
+        ax.set_ylim(-1.15, 1.15)
+    else:
+        ax.set_xlabel("u [mm]")
+        ax.set_ylabel("v [mm]")
+    _scenario_segments(ax, u, v, series.scenario, linewidth=0.7)
+    if len(series.impact_rows):
+        ax.scatter(u[series.impact_rows], v[series.impact_rows], **IMPACT_MARK)
+    if cr:  # a tilted journal's rim may pass the circle by up to (Rj sin(tilt)); keep it framed
+        reach = max(1.15, 1.05 * float(np.nanmax(np.hypot(u, v), initial=0.0)))
+        ax.set_xlim(-reach, reach)
+        ax.set_ylim(-reach, reach)
+    ax.set_aspect("equal")
+    ax.set_title(title if title is not None else f"journal centre at base {rim.upper()}", fontsize=10)
+    ax.grid(True, linewidth=0.3, alpha=0.5)
+
+
+def plot_normal_force(ax, series: ClearanceJointSeries, x: np.ndarray, x_label: str) -> None:
+    """Total normal contact force F_N (eqs. 27-29, summed over the contacts) against x."""
+    _scenario_segments(ax, x, series.normal_force, series.scenario, linewidth=0.8)
+    if len(series.impact_rows):
+        ax.scatter(x[series.impact_rows], series.normal_force[series.impact_rows], **IMPACT_MARK)
+    ax.set_ylabel("normal force [N]")
+    ax.set_xlabel(x_label)
+    ax.grid(True, linewidth=0.3, alpha=0.5)
+
+
+def plot_axial_position(ax, series: ClearanceJointSeries, x: np.ndarray, x_label: str) -> None:
+    """The journal centre along the bearing axis, with the axial clearance +-c_a (eq. 2) dashed."""
+    ax.set_ylabel("axial position [mm]")
+    _scenario_segments(ax, x, series.axial_position * 1e3, series.scenario, linewidth=0.8)
+    ca = series.axial_clearance
+    if ca:
+        for side in (-1.0, 1.0):
+            ax.axhline(side * ca * 1e3, color="0.4", linestyle="--", linewidth=0.8)
+    ax.set_xlabel(x_label)
+    ax.grid(True, linewidth=0.3, alpha=0.5)
+
+
+def plot_tilt(ax, series: ClearanceJointSeries, x: np.ndarray, x_label: str) -> None:
+    """The angle between journal and bearing axes (Fig. 11(b))."""
+    _scenario_segments(ax, x, np.degrees(series.axis_angle), series.scenario, linewidth=0.8)
+    ax.set_ylabel("tilt [deg]")
+    ax.set_xlabel(x_label)
+    ax.grid(True, linewidth=0.3, alpha=0.5)
+
+
+def plot_slider_acceleration(ax, x: np.ndarray, acceleration: np.ndarray, x_label: str,
+                             ideal_x: Optional[np.ndarray] = None,
+                             ideal_acceleration: Optional[np.ndarray] = None,
+                             component: str = "x") -> None:
+    """The slider's acceleration with the clearance joint, and the ideal joint's when given
+    (paper Figs. 8, 13)."""
+    if ideal_x is not None and ideal_acceleration is not None:
+        ax.plot(ideal_x, ideal_acceleration, label="ideal joint", **IDEAL_CURVE)
+    ax.plot(x, acceleration, label="clearance joint", **CLEARANCE_CURVE)
+    ax.set_ylabel(f"slider acceleration {component} [m/s$^2$]")
+    ax.set_xlabel(x_label)
+    ax.legend(loc="upper right", fontsize=8)
+    ax.grid(True, linewidth=0.3, alpha=0.5)

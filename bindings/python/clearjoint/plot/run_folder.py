@@ -1,0 +1,195 @@
+# SPDX-License-Identifier: BSD-3-Clause
+"""A run as the figures and the viewer read it: the tables of ``clearjoint simulate`` (a run
+folder of CSV files, or the :class:`clearjoint.SimulationResult` of ``clearjoint.simulate``) and
+the model file that produced them, when it is known.
+
+Bad input ends in :class:`RunError` with one sentence for people (a folder that is not a run, a
+truncated table, a model that does not match the tables), never a NumPy traceback.
+"""
+from __future__ import annotations
+
+import json
+import os
+import re
+from dataclasses import dataclass, field
+from typing import Any, Dict, List, Mapping, Optional, Union
+
+import numpy as np
+
+Tables = Dict[str, Dict[str, np.ndarray]]
+
+#: The file a run folder may carry its model in; ``--model`` (``model=``) overrides it.
+MODEL_FILE_IN_RUN = "model.json"
+
+
+class RunError(ValueError):
+    """A run folder, table or model that cannot be read as a run of ``clearjoint simulate``."""
+
+
+@dataclass(frozen=True)
+class ClearanceJointModel:
+    """What the figures need of one ``clearance_revolute`` force element of the model file."""
+
+    name: str
+    table: str                 # its table: "force_" + the name, sanitised as the C++ side does
+    bearing_body: str
+    journal_body: str
+    bearing_point: np.ndarray  # P_i in the bearing body's frame [m]
+    bearing_axis: np.ndarray   # a_i in the bearing body's frame (unit)
+    journal_point: np.ndarray
+    journal_axis: np.ndarray
+    bearing_radius: float      # Ri [m]
+    bearing_length: float      # Li [m]
+    journal_radius: float      # Rj [m]
+    journal_length: float      # Lj [m]
+    parallel_angle_tolerance: float = 0.0
+
+    @property
+    def radial_clearance(self) -> float:
+        """cr = Ri - Rj [m] (paper eq. 1)."""
+        return self.bearing_radius - self.journal_radius
+
+    @property
+    def axial_clearance(self) -> float:
+        """ca = (Li - Lj) / 2 [m] (paper eq. 2)."""
+        return 0.5 * (self.bearing_length - self.journal_length)
+
+
+@dataclass(frozen=True)
+class Run:
+    """The tables of one run and, when known, its model (the parsed model-file dict)."""
+
+    tables: Tables
+    model: Optional[Dict[str, Any]] = None
+    source: str = "<run>"      # the folder, for messages
+    clearance_joints: List[ClearanceJointModel] = field(default_factory=list)
+
+    def table(self, name: str) -> Dict[str, np.ndarray]:
+        try:
+            return self.tables[name]
+        except KeyError:
+            raise RunError(f"{self.source}: has no table {name}.csv (tables: "
+                           f"{', '.join(sorted(self.tables)) or 'none'})") from None
+
+    def clearance_tables(self) -> List[str]:
+        """Tables of clearance joints (force_*.csv with a scenario column), in name order."""
+        return sorted(name for name, columns in self.tables.items()
+                      if name.startswith("force_") and "scenario" in columns and "rim_a_u" in columns)
+
+    def joint_model(self, table: str) -> Optional[ClearanceJointModel]:
+        for joint in self.clearance_joints:
+            if joint.table == table:
+                return joint
+        return None
+
+
+def table_name(prefix: str, name: str) -> str:
+    """A table's name as simulation.hpp forms it: characters other than letters, digits, - and _
+    become _."""
+    return prefix + re.sub(r"[^A-Za-z0-9_-]", "_", name)
+
+
+def _vector(value: Any, default: List[float]) -> np.ndarray:
+    return np.asarray(value if value is not None else default, dtype=float)
+
+
+def clearance_joints_of(model: Mapping[str, Any]) -> List[ClearanceJointModel]:
+    """The clearance joints of a model-file dict (docs/dynamics.md, model.schema.json)."""
+    joints = []
+    for element in model.get("forces", []):
+        if element.get("type") != "clearance_revolute":
+            continue
+        bearing, journal = element["bearing"], element["journal"]
+        axis_i = _vector(bearing.get("axis"), [0.0, 0.0, 1.0])
+        axis_j = _vector(journal.get("axis"), [0.0, 0.0, 1.0])
+        joints.append(ClearanceJointModel(
+            name=element["name"], table=table_name("force_", element["name"]),
+            bearing_body=bearing["body"], journal_body=journal["body"],
+            bearing_point=_vector(bearing.get("point"), [0.0, 0.0, 0.0]),
+            bearing_axis=axis_i / np.linalg.norm(axis_i),
+            journal_point=_vector(journal.get("point"), [0.0, 0.0, 0.0]),
+            journal_axis=axis_j / np.linalg.norm(axis_j),
+            bearing_radius=float(bearing["radius"]), bearing_length=float(bearing["length"]),
+            journal_radius=float(journal["radius"]), journal_length=float(journal["length"]),
+            parallel_angle_tolerance=float(
+                element.get("detection", {}).get("parallel_angle_tolerance", 0.0))))
+    return joints
+
+
+def _read_table(path: str) -> Dict[str, np.ndarray]:
+    with open(path, encoding="utf-8") as stream:
+        header = stream.readline().strip().split(",")
+        if header == [""]:
+            raise RunError(f"{path}: empty (a truncated table)")
+        try:
+            values = np.loadtxt(stream, delimiter=",", ndmin=2, dtype=float)
+        except ValueError as error:
+            raise RunError(f"{path}: truncated or damaged ({error})") from None
+    if values.size == 0:
+        values = np.zeros((0, len(header)))
+    if values.shape[1] != len(header):
+        raise RunError(f"{path}: {values.shape[1]} columns in the rows, {len(header)} in the header "
+                       "(a truncated or damaged table)")
+    return {name: np.ascontiguousarray(values[:, k]) for k, name in enumerate(header)}
+
+
+def _read_model(model: Union[str, "os.PathLike[str]", Mapping[str, Any], None]) -> Optional[Dict[str, Any]]:
+    if model is None or isinstance(model, Mapping):
+        return dict(model) if model is not None else None
+    try:
+        with open(model, encoding="utf-8") as stream:
+            return json.load(stream)
+    except OSError as error:
+        raise RunError(f"model {os.fspath(model)}: cannot be read ({error.strerror})") from None
+    except json.JSONDecodeError as error:
+        raise RunError(f"model {os.fspath(model)}: not JSON ({error})") from None
+
+
+def _check_rows(tables: Tables, source: str) -> None:
+    rows = {name: len(next(iter(columns.values()))) for name, columns in tables.items() if columns}
+    if not rows:
+        return
+    longest = max(rows.values())
+    for name, count in sorted(rows.items()):
+        if count != longest:
+            raise RunError(f"{source}: {name} has {count} rows where other tables have {longest} "
+                           "(a truncated table)")
+    if longest == 0:
+        raise RunError(f"{source}: the tables have no rows")
+
+
+def _with_model(tables: Tables, model: Optional[Dict[str, Any]], source: str) -> Run:
+    _check_rows(tables, source)
+    joints: List[ClearanceJointModel] = []
+    if model is not None:
+        try:
+            joints = clearance_joints_of(model)
+        except (KeyError, TypeError, ValueError) as error:
+            raise RunError(f"{source}: the model's clearance joint cannot be read ({error!r})") from None
+    return Run(tables=tables, model=model, source=source, clearance_joints=joints)
+
+
+def read_run(run: Any, model: Union[str, "os.PathLike[str]", Mapping[str, Any], None] = None) -> Run:
+    """A :class:`Run` from a run folder (str or os.PathLike), a :class:`clearjoint.SimulationResult`
+    (or anything with ``tables``), or a :class:`Run` (returned as it is unless ``model`` is given).
+
+    ``model``: the model file (path or dict) of the run. Default: ``model.json`` in the run folder
+    when there is one; without a model the figures still draw, in millimetres instead of
+    clearance units, and the viewer refuses (it needs the shapes).
+    """
+    if isinstance(run, Run):
+        return run if model is None else _with_model(run.tables, _read_model(model), run.source)
+    if hasattr(run, "tables"):
+        return _with_model(dict(run.tables), _read_model(model), "<simulation result>")
+    if not isinstance(run, (str, os.PathLike)):
+        raise TypeError(f"run = {type(run).__name__}: must be a run folder, a SimulationResult or a Run")
+    folder = os.fspath(run)
+    if not os.path.isdir(folder):
+        raise RunError(f"{folder}: no such folder (a run folder of clearjoint simulate --out)")
+    files = sorted(f for f in os.listdir(folder) if f.endswith(".csv"))
+    if "energy.csv" not in files:
+        raise RunError(f"{folder}: not a run folder of clearjoint simulate (no energy.csv)")
+    tables = {f[:-len(".csv")]: _read_table(os.path.join(folder, f)) for f in files}
+    if model is None and os.path.isfile(os.path.join(folder, MODEL_FILE_IN_RUN)):
+        model = os.path.join(folder, MODEL_FILE_IN_RUN)
+    return _with_model(tables, _read_model(model), folder)

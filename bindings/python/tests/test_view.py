@@ -1,0 +1,132 @@
+# SPDX-License-Identifier: BSD-3-Clause
+"""clearjoint.view without a browser: the frames the page animates say what the run's tables
+say, decimation keeps the force peaks, the server serves only its own files, and bad runs are
+refused in one sentence."""
+import json
+import shutil
+import subprocess
+import sys
+import urllib.error
+import urllib.request
+
+import numpy as np
+import pytest
+
+from clearjoint import view
+from clearjoint.plot import read_run, scenario_colour
+from clearjoint.view.frames import (CONTACT_FLOATS, JOINT_HEAD_FLOATS, MAX_CONTACTS,
+                                    inertia_box, nice_magnification, viewer_data)
+from run_fixtures import short_model, write_run
+
+JOINT_TABLE = "force_ground-crank_clearance"
+
+
+@pytest.fixture(scope="module")
+def run_folder(tmp_path_factory, models_dir, cli):
+    model = short_model(models_dir, "slider_crank_spatial_clearance.json")
+    return write_run(cli, model, tmp_path_factory.mktemp("view") / "run")
+
+
+def joint_block(data):
+    joint = data.manifest["joints"][0]
+    width = JOINT_HEAD_FLOATS + MAX_CONTACTS * CONTACT_FLOATS
+    return data.frames[:, joint["offset"]:joint["offset"] + width].astype(float)
+
+
+def test_every_frame_carries_the_scenario_and_contact_count_of_its_row(run_folder):
+    run = read_run(run_folder)
+    data = viewer_data(run)
+    table = run.table(JOINT_TABLE)
+    block = joint_block(data)
+    assert data.manifest["decimation_step"] == 1
+    np.testing.assert_array_equal(block[:, 0], table["scenario"])
+    np.testing.assert_array_equal(block[:, 1], table["contact_count"])
+
+
+def test_the_detection_on_the_recorded_poses_finds_the_contacts_of_the_table(run_folder):
+    run = read_run(run_folder)
+    block = joint_block(viewer_data(run))
+    contacts = block[:, JOINT_HEAD_FLOATS:].reshape(len(block), MAX_CONTACTS, CONTACT_FLOATS)
+    found = np.isfinite(contacts[:, :, 0]).sum(axis=1)
+    table = run.table(JOINT_TABLE)
+    # Away from grazing (depth above 1e-3 of the clearance) the recomputed pose gives the same set.
+    depths = np.column_stack([table[f"{s}.depth"] for s in ("radial_a", "radial_b", "line", "axial_a", "axial_b")])
+    clear = np.all(np.isnan(depths) | (depths > 1e-7), axis=1)
+    np.testing.assert_array_equal(found[clear], table["contact_count"][clear])
+    radial = np.hypot(contacts[:, :, 0], contacts[:, :, 1])
+    joint = run.clearance_joints[0]
+    wall = np.isfinite(radial) & (np.abs(contacts[:, :, 2]) < 0.5 * joint.bearing_length - 1e-6)
+    np.testing.assert_allclose(radial[wall], joint.bearing_radius, rtol=1e-3)
+
+
+def test_decimation_keeps_the_largest_force_of_each_frame(run_folder):
+    run = read_run(run_folder)
+    full, decimated = viewer_data(run), viewer_data(run, max_frames=37)
+    step = decimated.manifest["decimation_step"]
+    assert step == int(np.ceil(full.manifest["row_count"] / 37))
+    force = joint_block(full)[:, 8]
+    peaks = joint_block(decimated)[:, 9]
+    np.testing.assert_allclose(peaks, [force[k:k + step].max() for k in range(0, len(force), step)], rtol=1e-6)
+    assert peaks.max() == pytest.approx(force.max(), rel=1e-6)
+
+
+def test_bodies_are_boxes_with_their_mass_and_inertia():
+    a, b, c = inertia_box(0.12, [1e-4, 1e-4, 1e-5])  # the paper's crank (Table 3)
+    assert c == pytest.approx(0.0975, rel=1e-3) and a == b == pytest.approx(0.0224, rel=1e-2)
+    assert nice_magnification(15.0) == 10.0 and nice_magnification(0.5) == 1.0
+
+
+def test_the_server_serves_the_page_the_run_and_nothing_else(run_folder):
+    with view.serve(run_folder) as server:
+        assert server.url.startswith("http://127.0.0.1:")
+        page = urllib.request.urlopen(server.url).read().decode()
+        assert "vendor/three.bundle.min.js" in page
+        manifest = json.loads(urllib.request.urlopen(server.url + "run/manifest.json").read())
+        frames = urllib.request.urlopen(server.url + "run/frames.f32").read()
+        assert len(frames) == 4 * manifest["frame_count"] * manifest["stride"]
+        assert manifest["scenarios"][1]["colour"] == scenario_colour(1)
+        script = urllib.request.urlopen(server.url + "main.js")
+        assert script.headers["Content-Type"].startswith("text/javascript")
+        for path in ("../__init__.py", "%2e%2e/server.py", "run/../frames.py", "nothing"):
+            with pytest.raises(urllib.error.HTTPError) as error:
+                urllib.request.urlopen(server.url + path)
+            assert error.value.code == 404
+
+
+def test_the_vendored_library_ships_with_its_licence():
+    import clearjoint.view.server as server
+    vendor = server.WEB_DIRECTORY + "/vendor/"
+    assert "MIT License" in open(vendor + "three-LICENSE.txt").read()
+    assert open(vendor + "three.bundle.min.js").read(200).startswith("/* three.js ")
+
+
+def run_view(*args):
+    return subprocess.run([sys.executable, "-m", "clearjoint.view", "--no-browser", *map(str, args)],
+                          capture_output=True, text=True, timeout=60)
+
+
+def one_sentence_error(done, *words):
+    assert done.returncode == 1
+    assert "Traceback" not in done.stderr
+    assert done.stderr.startswith("clearjoint view: ") and done.stderr.count("\n") == 1, done.stderr
+    for word in words:
+        assert word in done.stderr
+
+
+def test_a_run_without_its_model_is_refused_in_one_sentence(run_folder, tmp_path):
+    bare = tmp_path / "bare"
+    shutil.copytree(run_folder, bare)
+    (bare / "model.json").unlink()
+    one_sentence_error(run_view(bare), "--model")
+
+
+def test_a_folder_that_is_not_a_run_is_refused_in_one_sentence(tmp_path):
+    one_sentence_error(run_view(tmp_path), "not a run folder")
+
+
+def test_a_truncated_table_is_refused_in_one_sentence(run_folder, tmp_path):
+    damaged = tmp_path / "damaged"
+    shutil.copytree(run_folder, damaged)
+    table = damaged / "body_crank.csv"
+    table.write_text(table.read_text()[:-25])
+    one_sentence_error(run_view(damaged), "truncated")
