@@ -173,8 +173,14 @@ def joint_figure(run: Any, joint: Optional[str] = None, *, model: Any = None, id
     if "orbit" not in wanted and time_panels:
         figure.axes[0].legend(handles=draw.scenario_legend_handles(series.scenario), fontsize=7,
                               loc="upper right", ncol=2)
+    # Tick labels and the x label on the bottom time panel only: the panels share their axis.
+    time_axes = figure.axes[-len(time_panels):] if time_panels else []
+    for ax in time_axes[:-1]:
+        ax.set_xlabel("")
+        ax.tick_params(labelbottom=False)
+    name = series.joint.name if series.joint is not None else series.name
     where = "" if series.radial_clearance else " (model unknown: lengths in mm)"
-    figure.suptitle(f"clearance joint '{series.name}'{where}", fontsize=11)
+    figure.suptitle(f"clearance joint '{name}'{where}", fontsize=11)
     return figure
 
 

@@ -14,8 +14,14 @@ from .joint_series import ClearanceJointSeries
 from .scenario_colours import scenario_colour, scenario_name
 
 #: Look of the marks where an impact began and of the ideal joint's curve.
-IMPACT_MARK = dict(marker="o", facecolors="none", edgecolors="black", linewidths=0.6, s=14, zorder=4)
-IDEAL_CURVE = dict(color="0.3", linestyle="--", linewidth=1.0)
+IMPACT_MARK = dict(marker="o", facecolors="none", edgecolors="black", linewidths=0.5, s=9, alpha=0.7,
+                   zorder=4)
+# On time axes an impact is a tick along the bottom edge: a mark at the force of its first report
+# time (nearly zero) would hide the curve's foot.
+IMPACT_TICK = dict(marker="|", color="black", markersize=5, markeredgewidth=0.6, linestyle="none",
+                   alpha=0.7)
+# The ideal joint's curve is drawn over the clearance joint's, which oscillates about it.
+IDEAL_CURVE = dict(color="black", linestyle="--", linewidth=0.9, zorder=3)
 CLEARANCE_CURVE = dict(color="tab:blue", linewidth=0.8)
 
 
@@ -41,7 +47,8 @@ def scenario_legend_handles(scenarios: Sequence[int], with_impacts: bool = True)
                for code in sorted(set(int(s) for s in scenarios))]
     if with_impacts:
         handles.append(Line2D([], [], linestyle="none", marker="o", markerfacecolor="none",
-                              markeredgecolor="black", markersize=5, label="impact began"))
+                              markeredgecolor="black", markersize=4,
+                              label="impact began (| on time axes)"))
     return handles
 
 
@@ -79,7 +86,8 @@ def plot_normal_force(ax, series: ClearanceJointSeries, x: np.ndarray, x_label: 
     """Total normal contact force F_N (eqs. 27-29, summed over the contacts) against x."""
     _scenario_segments(ax, x, series.normal_force, series.scenario, linewidth=0.8)
     if len(series.impact_rows):
-        ax.scatter(x[series.impact_rows], series.normal_force[series.impact_rows], **IMPACT_MARK)
+        ax.plot(x[series.impact_rows], np.zeros(len(series.impact_rows)),
+                transform=ax.get_xaxis_transform(), clip_on=False, **IMPACT_TICK)
     ax.set_ylabel("normal force [N]")
     ax.set_xlabel(x_label)
     ax.grid(True, linewidth=0.3, alpha=0.5)
