@@ -18,4 +18,12 @@ dims = clearjoint.JointDimensions(bearing_radius=10.0, bearing_length=20.0,
 result = clearjoint.detect(dims, [0, 0, 0], [0, 0, 1], [0, 0.15, 0.02], [0, 0, 1])
 assert result.scenario == clearjoint.ContactScenario.line, result
 print(f"clearjoint {clearjoint.__version__} imported from {clearjoint.__file__}: {result}")
+# The viewer page loads only what its server serves from the install (docs/viewing-runs.md).
+import os
+import clearjoint.view.server
+page = clearjoint.view.server.WEB_DIRECTORY
+assert page.startswith(sys.argv[1]), page
+for name in ("index.html", "main.js", "scene.js", "plots.js", "run_data.js", "viewer.css",
+             "vendor/three.bundle.min.js", "vendor/three-LICENSE.txt"):
+    assert os.path.isfile(os.path.join(page, name)), name
 PY

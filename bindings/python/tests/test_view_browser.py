@@ -118,6 +118,16 @@ def test_the_page_animates_a_short_run_with_the_tables_scenario_colours(browser,
         assert console_errors(browser) == []
 
 
+def test_a_run_without_clearance_joints_shows_its_bodies(browser, models_dir, cli, tmp_path):
+    folder = write_run(cli, short_model(models_dir, "slider_crank_spatial_ideal.json"), tmp_path / "ideal")
+    with view.serve(folder) as server:
+        _, state = open_page(browser, server.url)
+        assert state["frameCount"] == server.data.manifest["row_count"]
+        pixels = canvas_pixels(browser)
+        assert len(np.unique((pixels[:, :, :3] * 255).astype(np.uint8).reshape(-1, 3), axis=0)) > 50
+        assert console_errors(browser) == []
+
+
 def test_a_run_of_1e5_report_times_loads_and_its_load_time_is_reported(browser, models_dir, cli,
                                                                          tmp_path, artefacts):
     model = short_model(models_dir, "slider_crank_spatial_clearance.json", LARGE_END_TIME, LARGE_REPORT_STEP)

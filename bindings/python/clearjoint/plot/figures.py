@@ -10,7 +10,7 @@ from typing import Any, Dict, List, Optional, Sequence, Tuple
 import numpy as np
 
 from . import panels as draw
-from .joint_series import ClearanceJointSeries, joint_series, rotation_angle
+from .joint_series import ClearanceJointSeries, joint_series, rotation_angle, window_rows
 from .run_folder import Run, RunError, read_run
 
 #: Panels in the order they are drawn; ``panels=`` picks among them.
@@ -44,7 +44,7 @@ def _moving_body(run: Run, table: str) -> Optional[Tuple[str, np.ndarray]]:
 
 def _abscissa(run: Run, table: str, x: str, window: Window) -> Tuple[np.ndarray, str]:
     if x == "time":
-        return run.table(table)["time"][_mask(run.table(table)["time"], window)], "time [s]"
+        return run.table(table)["time"][window_rows(run.table(table)["time"], window)], "time [s]"
     if x == "angle":
         moving = _moving_body(run, table)
         if moving is None:
@@ -52,16 +52,6 @@ def _abscissa(run: Run, table: str, x: str, window: Window) -> Tuple[np.ndarray,
                            "joint's moving body (pass the model; output.bodies must list it)")
         return np.degrees(rotation_angle(run, moving[0], moving[1], window)), f"{moving[0]} angle [deg]"
     raise ValueError(f"x = {x!r}: must be 'time' or 'angle'")
-
-
-def _mask(time: np.ndarray, window: Window) -> np.ndarray:
-    start, end = window if window is not None else (None, None)
-    keep = np.ones(len(time), dtype=bool)
-    if start is not None:
-        keep &= time >= start
-    if end is not None:
-        keep &= time <= end
-    return keep
 
 
 def _slider_axis(run: Run, body: str) -> Tuple[np.ndarray, str]:
@@ -81,7 +71,7 @@ def _slider_axis(run: Run, body: str) -> Tuple[np.ndarray, str]:
 def slider_acceleration(run: Run, body: str, window: Window = None) -> Tuple[np.ndarray, np.ndarray, str]:
     """(time, acceleration along the guide [m/s^2], component name) of an output body."""
     columns = run.table("body_" + body)
-    keep = _mask(columns["time"], window)
+    keep = window_rows(columns["time"], window)
     axis, component = _slider_axis(run, body)
     acceleration = axis[0] * columns["ax"] + axis[1] * columns["ay"] + axis[2] * columns["az"]
     return columns["time"][keep], acceleration[keep], component

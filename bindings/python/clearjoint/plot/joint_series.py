@@ -44,7 +44,9 @@ class ClearanceJointSeries:
         return None if self.joint is None else self.joint.axial_clearance
 
 
-def _window_rows(time: np.ndarray, window: Optional[Tuple[Optional[float], Optional[float]]]) -> np.ndarray:
+def window_rows(time: np.ndarray, window: Optional[Tuple[Optional[float], Optional[float]]]) -> np.ndarray:
+    """Which report times lie in ``window`` = (start, end) seconds, either end None for open;
+    RunError when none does."""
     start, end = window if window is not None else (None, None)
     keep = np.ones(len(time), dtype=bool)
     if start is not None:
@@ -69,7 +71,7 @@ def joint_series(run: Run, table: str,
         raise RunError(f"{run.source}: {table} is not a clearance joint's table (no column "
                        f"{', '.join(missing)})")
     time = columns["time"]
-    keep = _window_rows(time, window)
+    keep = window_rows(time, window)
     depth = np.stack([columns[f"{s}.depth"] for s in CONTACT_SLOTS if f"{s}.depth" in columns], axis=1)
     in_contact = np.isfinite(depth)
     # An impact begins where a slot is in contact and was not at the report time before (the
@@ -99,7 +101,7 @@ def rotation_angle(run: Run, body: str, axis_B: np.ndarray,
     parameters, unwrapped [rad]: 2 atan2(e . n, e0), exact for a rotation about n and the crank
     angle of a crank that turns about n (the joint axis) with small wobble."""
     columns = run.table("body_" + body)
-    keep = _window_rows(columns["time"], window)
+    keep = window_rows(columns["time"], window)
     e0 = columns["e0"]
     along = columns["e1"] * axis_B[0] + columns["e2"] * axis_B[1] + columns["e3"] * axis_B[2]
     return np.unwrap(2.0 * np.arctan2(along, e0))[keep]
