@@ -16,6 +16,7 @@ from .scenario_colours import scenario_colour, scenario_name
 #: Look of the marks where an impact began and of the ideal joint's curve.
 IMPACT_MARK = dict(marker="o", facecolors="none", edgecolors="black", linewidths=0.5, s=9, alpha=0.7,
                    zorder=4)
+RASTERIZE_ABOVE_STEPS = 20_000
 # On time axes an impact is a tick along the bottom edge: a mark at the force of its first report
 # time (nearly zero) would hide the curve's foot.
 IMPACT_TICK = dict(marker="|", color="black", markersize=5, markeredgewidth=0.6, linestyle="none",
@@ -26,16 +27,24 @@ CLEARANCE_CURVE = dict(color="tab:blue", linewidth=0.8)
 
 
 def _scenario_segments(ax, x: np.ndarray, y: np.ndarray, scenario: np.ndarray, linewidth: float = 1.0):
-    """A polyline whose segment k (from point k to k + 1) has the colour of scenario[k + 1], the
-    state the step arrived in, so that a contact shows from its first report time."""
+    """A polyline whose step from point k to k + 1 has the colour of scenario[k + 1], the state
+    the step arrived in, so that a contact shows from its first report time. Steps are grouped
+    into one path per stretch of equal scenario: a run of 1e5 report times changes scenario a few
+    thousand times, and one matplotlib Path per step would take seconds to build and draw."""
     from matplotlib.collections import LineCollection
     if len(x) < 2:
         ax.scatter(x, y, c=[scenario_colour(s) for s in scenario], s=4)
         return
     points = np.column_stack([x, y])
-    segments = np.stack([points[:-1], points[1:]], axis=1)
-    colours = [scenario_colour(s) for s in scenario[1:]]
-    ax.add_collection(LineCollection(segments, colors=colours, linewidths=linewidth))
+    arrived = np.asarray(scenario[1:], dtype=int)
+    starts = np.concatenate([[0], np.flatnonzero(np.diff(arrived)) + 1])  # first step of a stretch
+    ends = np.concatenate([starts[1:], [len(arrived)]])
+    paths = [points[start:end + 1] for start, end in zip(starts, ends)]
+    colours = [scenario_colour(arrived[start]) for start in starts]
+    # A long run is drawn as an image inside the SVG (axes and text stay vector): 1e5 points per
+    # panel as vector paths make a file that viewers render slowly.
+    ax.add_collection(LineCollection(paths, colors=colours, linewidths=linewidth,
+                                     rasterized=len(arrived) > RASTERIZE_ABOVE_STEPS))
     ax.update_datalim(points)
     ax.autoscale_view()
 

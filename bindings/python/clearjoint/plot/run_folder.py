@@ -171,7 +171,8 @@ def _with_model(tables: Tables, model: Optional[Dict[str, Any]], source: str) ->
 
 def read_run(run: Any, model: Union[str, "os.PathLike[str]", Mapping[str, Any], None] = None) -> Run:
     """A :class:`Run` from a run folder (str or os.PathLike), a :class:`clearjoint.SimulationResult`
-    (or anything with ``tables``), or a :class:`Run` (returned as it is unless ``model`` is given).
+    (or anything with ``tables``), its ``tables`` dict, or a :class:`Run` (returned as it is unless
+    ``model`` is given).
 
     ``model``: the model file (path or dict) of the run. Default: ``model.json`` in the run folder
     when there is one; without a model the figures still draw, in millimetres instead of
@@ -181,6 +182,9 @@ def read_run(run: Any, model: Union[str, "os.PathLike[str]", Mapping[str, Any], 
         return run if model is None else _with_model(run.tables, _read_model(model), run.source)
     if hasattr(run, "tables"):
         return _with_model(dict(run.tables), _read_model(model), "<simulation result>")
+    if isinstance(run, Mapping):  # result.tables itself: table name -> column name -> array
+        return _with_model({name: dict(columns) for name, columns in run.items()}, _read_model(model),
+                           "<tables>")
     if not isinstance(run, (str, os.PathLike)):
         raise TypeError(f"run = {type(run).__name__}: must be a run folder, a SimulationResult or a Run")
     folder = os.fspath(run)

@@ -78,9 +78,10 @@ class ViewerServer:
         return f"http://{host}:{port}/"
 
     def start(self) -> "ViewerServer":
-        """Serve from a background thread (tests, notebooks)."""
-        self._thread = threading.Thread(target=self._server.serve_forever, daemon=True)
-        self._thread.start()
+        """Serve from a background thread (tests, notebooks); a started server stays as it is."""
+        if self._thread is None:
+            self._thread = threading.Thread(target=self._server.serve_forever, daemon=True)
+            self._thread.start()
         return self
 
     def serve_forever(self) -> None:
