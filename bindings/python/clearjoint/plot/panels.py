@@ -21,8 +21,9 @@ RASTERIZE_ABOVE_STEPS = 20_000
 # time (nearly zero) would hide the curve's foot.
 IMPACT_TICK = dict(marker="|", color="black", markersize=5, markeredgewidth=0.6, linestyle="none",
                    alpha=0.7)
-# The ideal joint's curve is drawn over the clearance joint's, which oscillates about it.
-IDEAL_CURVE = dict(color="black", linestyle="--", linewidth=0.9, zorder=3)
+# The ideal joint's curve is drawn over the clearance joint's, which oscillates about it; the
+# styles are scripts/section6_figures.py's.
+IDEAL_CURVE = dict(color="0.3", linestyle="--", linewidth=1.0, zorder=3)
 CLEARANCE_CURVE = dict(color="tab:blue", linewidth=0.8)
 
 
