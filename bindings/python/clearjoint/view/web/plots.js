@@ -107,7 +107,8 @@ export class ForcePlot {
     ctx.strokeRect(left, top, canvas.width - left - right, canvas.height - top - bottom);
     ctx.fillStyle = "#555";
     ctx.textAlign = "right";
-    ctx.fillText(this.top.toPrecision(3), left - 3, top + 9);
+    // Whole newtons from 100 N up, so that "4010" fits the margin where "4.01e+3" would not.
+    ctx.fillText(this.top >= 100 ? String(Math.round(this.top)) : this.top.toPrecision(3), left - 3, top + 9);
     ctx.fillText("0", left - 3, canvas.height - bottom);
     ctx.textAlign = "left";
     ctx.fillText(`${run.manifest.start_time.toPrecision(3)} s`, left, canvas.height - 4);
