@@ -24,9 +24,13 @@ namespace {
 namespace fs = std::filesystem;
 
 // Imports the runner and hands it the arguments; a missing package is reported in one line
-// instead of a traceback.
+// instead of a traceback. With -c, Python puts the current folder ('') first on sys.path, where a
+// folder named clearjoint would shadow the package this program was built with (PYTHONPATH puts
+// that first otherwise); the bootstrap drops it, as -P does from Python 3.11 on.
 constexpr const char* kBootstrap =
     "import sys\n"
+    "if sys.path and sys.path[0] == '':\n"
+    "    del sys.path[0]\n"
     "try:\n"
     "    from clearjoint.study.__main__ import main\n"
     "except ImportError as error:\n"
