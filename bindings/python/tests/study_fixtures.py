@@ -54,6 +54,34 @@ def write_study(directory, models_dir, radial=(0.05, 0.1, 0.3), members=3, name=
     return path
 
 
+def edit_study(path, edit):
+    """Applies edit(spec) to the study file at path; returns the path."""
+    with open(path) as f:
+        spec = json.load(f)
+    edit(spec)
+    with open(path, "w") as f:
+        json.dump(spec, f, indent=1)
+    return path
+
+
+def fake_result(reductions=None, series=None):
+    """What execute_run returns, without a simulation: for tests of the store alone."""
+    return {"reductions": reductions or {"x": 1.0}, "time_series": series or {},
+            "library_version": "v", "library_build": "b", "reduction_sha256": "r",
+            "host": "h", "pid": 0, "wall_seconds": 0.0, "simulate_seconds": 0.0}
+
+
+def edit_run_file(store, run_id, edit):
+    """Applies edit(h5py file) to a stored run and records the file's new checksum, as if it had
+    been written so: the store then takes it for its own."""
+    import h5py
+    from clearjoint.study.store import file_sha256
+    with h5py.File(store.run_path(run_id), "a") as f:
+        edit(f)
+    with open(store.checksum_path(run_id), "w") as f:
+        f.write("%s  %s.h5\n" % (file_sha256(store.run_path(run_id)), run_id))
+
+
 def study_command(*args):
     """The study runner as a separate process (the way a user starts it)."""
     return [sys.executable, "-m", "clearjoint.study", *args]

@@ -8,7 +8,7 @@ import h5py
 
 from clearjoint.study import Store, load_study, run_study
 from clearjoint.study.__main__ import main
-from study_fixtures import assert_store_matches, run_without_faults, write_study
+from study_fixtures import assert_store_matches, edit_run_file, run_without_faults, write_study
 
 
 def test_a_local_cluster_study_stores_every_run_as_a_direct_call_computes_it(tmp_path, models_dir):
@@ -39,8 +39,7 @@ def test_a_local_cluster_study_stores_every_run_as_a_direct_call_computes_it(tmp
 
     # A run stored by another build of the library (same version string) is run again, alone.
     stale = report.computed[4]
-    with h5py.File(store.run_path(stale), "a") as f:
-        f.attrs["library_build"] = "another build"
+    edit_run_file(store, stale, lambda f: f.attrs.__setitem__("library_build", "another build"))
     third = run_study(study, workers=1, progress=False)
     assert third.computed == [stale] and third.reused == 8
 
@@ -87,3 +86,66 @@ def test_a_second_client_on_a_store_in_use_is_refused_with_a_clear_error(tmp_pat
             run_study(study, workers=1, progress=False)
     finally:
         holder.close()
+
+
+def test_local_workers_get_a_memory_limit_that_a_study_or_option_can_set(tmp_path, models_dir):
+    import pytest
+    from clearjoint.study import StudyError
+    from clearjoint.study.runner import connect, worker_memory_limit
+    from distributed.system import MEMORY_LIMIT
+    from study_fixtures import edit_study
+    path = write_study(tmp_path, models_dir, radial=(0.1,), members=1)
+    study = load_study(path)
+    share = worker_memory_limit(study)
+    assert 0 < share <= MEMORY_LIMIT
+    assert worker_memory_limit(study, "0") == 0 and worker_memory_limit(study, "0.25") == int(0.25 * MEMORY_LIMIT)
+    edit_study(path, lambda s: s.update(worker_memory_limit="256MiB"))
+    study = load_study(path)
+    assert worker_memory_limit(study) == 2 ** 28 and worker_memory_limit(study, "auto") == share
+    with pytest.raises(StudyError, match="--memory-limit = 'lots': not a memory size"):
+        worker_memory_limit(study, "lots")
+    client, cluster = connect(workers=1, memory_limit=worker_memory_limit(study), dashboard_address=None)
+    try:
+        (worker,) = client.scheduler_info()["workers"].values()
+        assert worker["memory_limit"] == 2 ** 28
+    finally:
+        client.close()
+        cluster.close()
+
+
+def test_the_clearjoint_program_imports_its_own_package_from_a_folder_holding_another(tmp_path, cli):
+    import subprocess
+    (tmp_path / "clearjoint").mkdir()
+    (tmp_path / "clearjoint" / "__init__.py").write_text("raise ImportError('the wrong clearjoint')\n")
+    done = subprocess.run([str(cli), "study", "run", "absent.json"], cwd=tmp_path, capture_output=True, text=True,
+                          timeout=600)
+    assert done.returncode == 2 and "absent.json: cannot read the study file" in done.stderr, done.stderr
+
+
+def test_run_help_reads_as_the_command_line(capsys):
+    import pytest
+    with pytest.raises(SystemExit) as exit_status:
+        main(["run", "--help"])
+    assert exit_status.value.code == 0
+    out = capsys.readouterr().out
+    assert out.startswith("usage: clearjoint study run [-h]") and "--memory-limit LIMIT" in out
+
+
+def test_plot_on_a_study_without_plots_says_so_with_status_2(tmp_path, models_dir, capsys):
+    from study_fixtures import edit_study
+    path = edit_study(write_study(tmp_path, models_dir, radial=(0.1,), members=1),
+                      lambda s: s["designs"][0].pop("x"))
+    assert main(["plot", path]) == 2
+    assert "no figure to draw" in capsys.readouterr().err
+
+
+def test_plot_titles_and_labels_come_from_the_study(tmp_path, models_dir):
+    from clearjoint.study.plot import fill, plot_title, study_fields
+    from study_fixtures import TEST_END_TIME
+    study = load_study(write_study(tmp_path, models_dir, radial=(0.05, 0.3), members=3))
+    plot = {"file": "a.png", "designs": ["radial"], "statistics": ["peak"]}
+    fields = study_fields(study, plot)
+    assert plot_title(plot, fields) == "small: median and range of 3 members per point, %g s simulated" % TEST_END_TIME
+    plot["title"] = "{points} points x {members} runs over {end_time} s {not a field}"
+    assert plot_title(plot, fields) == "2 points x 3 runs over %g s {not a field}" % TEST_END_TIME
+    assert fill("peak |a| over {end_time} s", fields) == "peak |a| over %g s" % TEST_END_TIME

@@ -34,6 +34,24 @@ def library_build():
     return digest.hexdigest()
 
 
+# The Python source that turns a simulation into the stored values: this module (the tables) and
+# reduce.py (the reductions and kept samples). A change to either changes a stored run.
+REDUCING_SOURCES = ("execute.py", "reduce.py")
+
+
+@functools.lru_cache(maxsize=None)
+def reduction_code():
+    """SHA-256 of the reducing Python source this process runs (REDUCING_SOURCES), so that a
+    stored run is reused only when the same code reduced it."""
+    here = os.path.dirname(os.path.abspath(__file__))
+    digest = hashlib.sha256()
+    for name in REDUCING_SOURCES:
+        digest.update(name.encode())
+        with open(os.path.join(here, name), "rb") as f:
+            digest.update(hashlib.sha256(f.read()).digest())
+    return digest.hexdigest()
+
+
 def tables_of(result):
     """The simulation's tables as {name: {column: array}}, names without ".csv"."""
     tables = getattr(result, "tables", result)
@@ -65,5 +83,6 @@ def execute_run(payload):
             "wall_seconds": time.perf_counter() - start,
             "library_version": clearjoint.__version__,
             "library_build": library_build(),
+            "reduction_sha256": reduction_code(),
             "host": socket.gethostname(),
             "pid": os.getpid()}

@@ -1,7 +1,11 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """The standard figure of a study: each statistic against the design's x parameter, one line per
 design, the median of the members with bars from their minimum to their maximum and every member
-as a dot (docs/figures/section6/ensemble_vs_clearance.png is one)."""
+as a dot (docs/figures/section6/ensemble_vs_clearance.png is one).
+
+Titles and labels come from the study: a plot's title, x_label and the reductions' labels may name
+{study}, {points}, {members} and {end_time}, filled in from the study's expansion, so that a title
+does not state a member count or a simulated time that the file no longer has."""
 import math
 import os
 
@@ -17,6 +21,44 @@ def _pyplot():
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     return plt
+
+
+DEFAULT_TITLE = "{study}: median and range of {members} members per point, {end_time} s simulated"
+
+
+def _range_text(values):
+    values = sorted(set(v for v in values if v is not None))
+    if not values:
+        return "?"
+    return "%g" % values[0] if len(values) == 1 else "%g to %g" % (values[0], values[-1])
+
+
+def study_fields(study, plot):
+    """What a plot's title and labels may name: {study}, {points} (the plot's points), {members}
+    (members per point) and {end_time} (the runs' simulated end time, s)."""
+    from .expand import expand_study
+    points, runs, _ = expand_study(study)
+    mine = [p for p in points if set(plot["designs"]) & set(p.designs)]
+    ids = {p.point_id for p in mine}
+    end_times = [(r.model.get("solver") or {}).get("end_time") for r in runs if r.point_id in ids]
+    return {"study": study.name, "points": str(len(mine)), "members": _range_text(p.members for p in mine),
+            "end_time": _range_text(end_times)}
+
+
+def fill(text, fields):
+    """text with each {name} of fields replaced (other braces are left as written)."""
+    for name, value in fields.items():
+        text = text.replace("{%s}" % name, value)
+    return text
+
+
+def plot_title(plot, fields):
+    return fill(plot.get("title", DEFAULT_TITLE), fields)
+
+
+def plots_of(study):
+    """The study file's plots, or the default one; [] when there is nothing to plot."""
+    return study.spec.get("plots") or default_plots(study)
 
 
 def default_plots(study):
@@ -65,6 +107,7 @@ def draw(study, summary, plot, directory):
     xs = [x for d in designs for x in _series(study, summary, d, statistics[0])[0]]
     span = (max(xs) - min(xs)) if xs else 1.0
     reductions = {r["name"]: r for r in study.reductions}
+    fields = study_fields(study, plot)
     for ax, statistic in zip(axes.flat, statistics):
         for k, design in enumerate(designs):
             x, med, low, high, values = _series(study, summary, design, statistic)
@@ -80,14 +123,13 @@ def draw(study, summary, plot, directory):
                 ax.plot(np.full(len(v), xi), v, ".", color=colour, markersize=3, alpha=0.5)
         r = reductions[statistic]
         unit = " [%s]" % r["unit"] if "unit" in r else ""
-        ax.set_ylabel(r.get("label", statistic) + unit)
-        ax.set_xlabel(plot.get("x_label", designs[0]["x"]))
+        ax.set_ylabel(fill(r.get("label", statistic), fields) + unit)
+        ax.set_xlabel(fill(plot.get("x_label", designs[0]["x"]), fields))
         ax.grid(alpha=0.3)
     for ax in list(axes.flat)[len(statistics):]:
         ax.set_visible(False)
     axes.flat[0].legend(fontsize=7)
-    if "title" in plot:
-        fig.suptitle(plot["title"], fontsize=10)
+    fig.suptitle(plot_title(plot, fields), fontsize=10)
     fig.tight_layout()
     os.makedirs(directory, exist_ok=True)
     path = os.path.join(directory, plot["file"])
@@ -101,7 +143,7 @@ def draw(study, summary, plot, directory):
 def draw_all(study, summary, directory=None):
     """Every plot the study file lists (or the default one); returns the paths written."""
     paths = []
-    for plot in study.spec.get("plots") or default_plots(study):
+    for plot in plots_of(study):
         target = directory or (study.resolve(plot["directory"]) if "directory" in plot
                                else os.path.join(study.store_path, "figures"))
         paths.append(draw(study, summary, plot, target))

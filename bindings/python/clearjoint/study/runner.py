@@ -8,9 +8,9 @@ import sys
 import time
 from dataclasses import dataclass, field
 
-from .execute import execute_run, library_build
+from .execute import execute_run, library_build, reduction_code
 from .expand import expand_study, outputs_sha256, sha256_text
-from .store import Store, StoreBusy
+from .store import Store, StoreError
 from .study_file import StudyError
 from .summary import summarise
 
@@ -22,6 +22,7 @@ class RunReport:
     reused: int = 0
     computed: list = field(default_factory=list)      # run ids stored by this call, in order
     failed: dict = field(default_factory=dict)        # run id -> error text
+    set_aside: dict = field(default_factory=dict)     # run id -> (why, where its file went)
     seconds: float = 0.0
     workers: int = 0
 
@@ -31,9 +32,55 @@ def _library_version():
     return clearjoint.__version__
 
 
-def connect(scheduler=None, workers=None, dashboard_address=":8787"):
+def store_error(study, error):
+    """A store that cannot be used, as the study file's field at fault."""
+    return StudyError("%s: store = %r: %s" % (study.path, study.spec["store"], error))
+
+
+def reuse_key(run, outputs_hash):
+    """What decides a stored run's values, as the run file's attributes: a stored run is reused
+    only when all of them are equal."""
+    return {"model_sha256": run.model_sha256, "outputs_sha256": outputs_hash,
+            "library_version": _library_version(), "library_build": library_build(),
+            "reduction_sha256": reduction_code()}
+
+
+# The memory a local cluster's worker may use before Dask pauses it (80 %) and restarts it
+# (95 %), unless the study file or --memory-limit says otherwise: "auto", the machine's memory
+# shared out by core, so that one run that grows without bound fails alone instead of bringing
+# in the kernel's OOM killer.
+DEFAULT_MEMORY_LIMIT = "auto"
+
+
+def worker_memory_limit(study, option=None):
+    """The memory limit of a local cluster's workers in bytes (0: none): --memory-limit, else the
+    study's worker_memory_limit, else DEFAULT_MEMORY_LIMIT; in Dask's notation ("auto", "4GiB",
+    a share of the machine's memory up to 1, 0 for none)."""
+    from distributed.worker_memory import parse_memory_limit
+
+    if option is not None:
+        where, value = "--memory-limit", option
+    else:
+        where, value = "%s: worker_memory_limit" % study.path, study.spec.get("worker_memory_limit",
+                                                                               DEFAULT_MEMORY_LIMIT)
+    try:
+        number = float(value)
+    except (TypeError, ValueError):
+        number = None
+    if number is not None and not 0 <= number < float("inf"):
+        raise StudyError("%s = %r: must be 0 (no limit), a share of the memory up to 1, or a size" % (where, value))
+    try:
+        limit = parse_memory_limit(number if number is not None else value, 1, logger=logging.getLogger(__name__))
+    except (ValueError, TypeError) as error:
+        raise StudyError("%s = %r: not a memory size (%s); give \"auto\", a size like \"4GiB\", a share of the "
+                         "machine's memory up to 1, or 0 for no limit" % (where, value, error))
+    return limit or 0
+
+
+def connect(scheduler=None, workers=None, dashboard_address=":8787", memory_limit=0):
     """A Dask client: to the scheduler at `scheduler` (tcp://host:8786), or to a new LocalCluster
-    of `workers` single-threaded worker processes (default: one per core). Returns (client,
+    of `workers` single-threaded worker processes (default: one per core), each limited to
+    memory_limit bytes (0: no limit; worker_memory_limit gives the study's). Returns (client,
     cluster or None)."""
     from distributed import Client, LocalCluster
 
@@ -44,9 +91,9 @@ def connect(scheduler=None, workers=None, dashboard_address=":8787"):
             raise StudyError("--scheduler %s: cannot connect (%s)" % (scheduler, error))
     count = workers or os.cpu_count() or 1
     # One thread per worker: each run is one core's work, and processes keep a crashing run from
-    # taking the others with it. No memory limit: the runs are small, and a shared machine's
-    # memory pressure must not get workers restarted.
-    cluster = LocalCluster(n_workers=count, threads_per_worker=1, processes=True, memory_limit=0,
+    # taking the others with it. The memory limit counts the worker's own memory, not the
+    # machine's, so other work on a shared machine does not get workers restarted.
+    cluster = LocalCluster(n_workers=count, threads_per_worker=1, processes=True, memory_limit=memory_limit,
                            dashboard_address=dashboard_address, silence_logs=logging.ERROR)
     return Client(cluster), cluster
 
@@ -65,15 +112,18 @@ def dashboard_text(client):
 
 
 def run_study(study, scheduler=None, workers=None, progress=True, force=False, stream=sys.stderr,
-              client=None):
+              client=None, memory_limit=None):
     """Runs every run of the study that the store does not hold (all of them with force) on the
-    given client, or on a client of `scheduler`, or on a new local cluster of `workers`; returns a
-    RunReport. Runs that fail (a bad model, a solver error, a task Dask gave up) are reported in
-    it, the others are stored regardless. A stored run counts when it was written for the same
-    model, outputs and library build as this process's (workers should run the same build).
-    Raises StudyError when another client holds the store."""
+    given client, or on a client of `scheduler`, or on a new local cluster of `workers` (memory
+    limit: worker_memory_limit(study, memory_limit)); returns a RunReport. Runs that fail (a bad
+    model, a solver error, a task Dask gave up) are reported in it, the others are stored
+    regardless. A stored run counts when its file matches its checksum and was written under this
+    process's reuse_key (workers should run the same build and package); a file that does not
+    match is set aside and run again. Raises StudyError when the store cannot be used or another
+    client holds it."""
     start = time.monotonic()
     points, runs, membership = expand_study(study)
+    limit = worker_memory_limit(study, memory_limit) if client is None and not scheduler else 0
     store = Store(study.store_path)
     outputs_hash = outputs_sha256(study)
     with open(study.path) as f:
@@ -82,13 +132,13 @@ def run_study(study, scheduler=None, workers=None, progress=True, force=False, s
         store.open_for_writing({"name": study.name, "study_file": os.path.abspath(study.path),
                                 "study_sha256": study_sha256, "outputs_sha256": outputs_hash,
                                 "points": len(points), "runs": len(runs), "study": study.spec})
-    except StoreBusy as error:
-        raise StudyError(str(error))
+    except StoreError as error:
+        raise store_error(study, error)
     try:
-        version, build = _library_version(), library_build()
-        todo = [r for r in runs
-                if force or not store.is_current(r.run_id, r.model_sha256, outputs_hash, version, build)]
-        report = RunReport(total=len(runs), reused=len(runs) - len(todo))
+        report = RunReport(total=len(runs))
+        _set_aside_corrupt_runs(store, runs, report, stream)
+        todo = [r for r in runs if force or not store.is_current(r.run_id, reuse_key(r, outputs_hash))]
+        report.reused = len(runs) - len(todo)
         print("study %s: %d points, %d runs; %d stored, %d to run; store %s" % (
             study.name, len(points), len(runs), report.reused, len(todo), store.path), file=stream)
         if todo:
@@ -96,7 +146,7 @@ def run_study(study, scheduler=None, workers=None, progress=True, force=False, s
             own = client is None
             cluster = None
             if own:
-                client, cluster = connect(scheduler, workers)
+                client, cluster = connect(scheduler, workers, memory_limit=limit)
             try:
                 _submit_and_store(client, study, store, todo, values, outputs_hash, report, progress, stream)
             finally:
@@ -109,6 +159,22 @@ def run_study(study, scheduler=None, workers=None, progress=True, force=False, s
         store.close()
     report.seconds = time.monotonic() - start
     return report
+
+
+def _set_aside_corrupt_runs(store, runs, report, stream):
+    """Moves every stored run file of the study whose bytes do not match its checksum to the
+    quarantine, naming it: it is run again. A file without a checksum (an older store's) is
+    left in place and run again too, since it cannot be trusted either."""
+    stored = store.stored_ids()
+    for run in runs:
+        if run.run_id not in stored:
+            continue
+        why = store.verify(run.run_id) if store.has_checksum(run.run_id) else None
+        if why is None:
+            continue
+        where = store.set_aside(run.run_id)
+        report.set_aside[run.run_id] = (why, where)
+        print("run %s: %s; set aside as %s, running it again" % (run.run_id, why, where), file=stream)
 
 
 def _submit_and_store(client, study, store, todo, values, outputs_hash, report, progress, stream):

@@ -1,12 +1,15 @@
 # SPDX-License-Identifier: BSD-3-Clause
-"""The study store: one HDF5 file per run, published by rename.
+"""The study store: one HDF5 file per run, published by rename, with its checksum beside it.
 
-    STORE/study.json          the study file as last run, and its expansion's hashes
-    STORE/runs/<run id>.h5    one run: reduced outputs, kept time series, parameters, model
-    STORE/runs/.partial/      files being written (removed when a study starts)
-    STORE/writes.log          one JSON line per run written, appended after the rename
-    STORE/.lock               held (flock) by the client that runs the study
-    STORE/summary/            runs.csv, points.csv, trends.csv, summary.json (rewritten whole)
+    STORE/.clearjoint-study-store  the marker: this folder is a study store
+    STORE/study.json               the study file as last run, and its expansion's hashes
+    STORE/runs/<run id>.h5         one run: reduced outputs, kept time series, parameters, model
+    STORE/runs/<run id>.sha256     the SHA-256 of the run file's bytes (sha256sum's format)
+    STORE/runs/.partial/           files being written (removed when a study starts)
+    STORE/quarantine/              run files whose bytes no longer match their checksum
+    STORE/writes.log               one JSON line per run written, appended after the rename
+    STORE/.lock                    held (flock) by the client that runs the study
+    STORE/summary/                 runs.csv, points.csv, trends.csv, summary.json (rewritten whole)
 
 Why this shape. HDF5 (h5py) has no concurrent writers and no journal: a process killed while it
 writes into an HDF5 file can leave the whole file unreadable, not just the last group. Zarr
@@ -16,24 +19,50 @@ as results arrive, into a private file under runs/.partial/; the file is closed,
 renamed to runs/<run id>.h5, and the directory fsync'ed. rename(2) is atomic: a run is either
 absent or complete, whatever kills the client and when. The directory listing is the index; the
 summary tables are derived from it and rewritten whole (write then rename) at the end of a study.
-A run is reused when its file exists and was written for the same model, the same outputs and
-the same library (version and binaries, execute.library_build); otherwise it is run again and
-the file replaced. One client runs a
-study at a time: it holds an flock on STORE/.lock, which the kernel releases however it ends.
+
+A run file is read only after its bytes match its checksum: libhdf5 trusts its input, and one
+flipped byte in a header can crash the reading process instead of raising an error. The checksum
+is published before the run file (and an older run file removed first), so that whatever the
+moment of a kill, a run file present always has its own checksum beside it.
+
+A run is reused when its file exists, matches its checksum, and was written under the same reuse
+key (runner.reuse_key: model, outputs, library and reducing code); otherwise it is run again and
+the file replaced. One client runs a study at a time: it holds an flock on STORE/.lock, which the
+kernel releases however it ends.
+
+A store is a folder the study owns: one the runner created (it holds the marker) or an empty one;
+a folder holding anything else is refused, so that a mistyped store cannot scatter a study's files
+over a folder of the user's. When the store's folder is group-writable, everything the runner
+creates in it is group-writable too, whatever the umask, so that the members of a group can take
+turns running a study into a shared store.
 """
 import fcntl
+import hashlib
 import json
 import os
+import stat
 import time
 
 import h5py
 import numpy as np
 
-FORMAT = 1  # bump when the layout of a run file changes
+FORMAT = 2  # bump when the layout or the attributes of a run file change
+MARKER = ".clearjoint-study-store"
+# What a store made before the marker existed may hold; a folder holding only these is a store.
+STORE_ENTRIES = {MARKER, ".lock", "study.json", "writes.log", "runs", "summary", "figures", "quarantine"}
+REUSE_ATTRIBUTES = ("model_sha256", "outputs_sha256", "library_version", "library_build", "reduction_sha256")
 
 
-class StoreBusy(RuntimeError):
+class StoreError(RuntimeError):
+    """The store's folder cannot be used: not a folder, not a store, not writable."""
+
+
+class StoreBusy(StoreError):
     """Another process holds the store's lock."""
+
+
+class CorruptRun(StoreError):
+    """A run file whose bytes do not match its checksum, or that has none."""
 
 
 def _fsync_directory(path):
@@ -45,13 +74,22 @@ def _fsync_directory(path):
 
 
 def _write_json_atomically(path, value):
+    """Strict JSON (no NaN or Infinity, which strict parsers reject), written then renamed."""
+    text = json.dumps(value, indent=1, sort_keys=True, allow_nan=False) + "\n"
     partial = path + ".partial-%d" % os.getpid()
     with open(partial, "w") as f:
-        json.dump(value, f, indent=1, sort_keys=True)
-        f.write("\n")
+        f.write(text)
         f.flush()
         os.fsync(f.fileno())
     os.replace(partial, path)
+
+
+def file_sha256(path):
+    digest = hashlib.sha256()
+    with open(path, "rb") as f:
+        for block in iter(lambda: f.read(1 << 20), b""):
+            digest.update(block)
+    return digest.hexdigest()
 
 
 class Store:
@@ -59,48 +97,179 @@ class Store:
         self.path = path
         self.runs = os.path.join(path, "runs")
         self.partial = os.path.join(self.runs, ".partial")
+        self.quarantine_folder = os.path.join(path, "quarantine")
         self.summary = os.path.join(path, "summary")
         self.log = os.path.join(path, "writes.log")
         self._lock = None
+        self._group_writable = False
 
     def run_path(self, run_id):
         return os.path.join(self.runs, run_id + ".h5")
 
+    def checksum_path(self, run_id):
+        return os.path.join(self.runs, run_id + ".sha256")
+
+    # -- the folder -----------------------------------------------------------------------------
+
+    def check_folder(self, must_exist=False):
+        """Raises StoreError unless the path is a store, an empty folder, or (unless must_exist)
+        absent."""
+        if not os.path.lexists(self.path):
+            if must_exist:
+                raise StoreError("%s does not exist (no study has run into it yet)" % self.path)
+            return
+        if not os.path.isdir(self.path):
+            raise StoreError("%s is a file, not a folder" % self.path)
+        try:
+            entries = set(os.listdir(self.path))
+        except OSError as error:
+            raise StoreError("cannot read the folder %s (%s)" % (self.path, error.strerror))
+        foreign = sorted(entries - STORE_ENTRIES)
+        if MARKER not in entries and foreign:
+            raise StoreError("%s is a folder that holds other files (%s%s) and is not a study store (no %s); "
+                             "give a new or empty folder" % (self.path, ", ".join(foreign[:3]),
+                                                             ", ..." if len(foreign) > 3 else "", MARKER))
+
+    def _share(self, path):
+        """Makes what the runner created group-writable when the store's folder is."""
+        if self._group_writable:
+            mode = os.stat(path).st_mode
+            os.chmod(path, stat.S_IMODE(mode) | stat.S_IRGRP | stat.S_IWGRP
+                     | (stat.S_IXGRP if stat.S_ISDIR(mode) else 0))
+
+    def _make_folder(self, path):
+        if not os.path.isdir(path):
+            os.mkdir(path)
+            self._share(path)
+
+    def _create_store_folder(self):
+        parent = os.path.dirname(os.path.abspath(self.path))
+        os.makedirs(parent, exist_ok=True)
+        if not os.path.isdir(self.path):
+            os.mkdir(self.path)
+            if os.stat(parent).st_mode & stat.S_IWGRP:
+                os.chmod(self.path, stat.S_IMODE(os.stat(self.path).st_mode) | stat.S_IRWXG)
+        self._group_writable = bool(os.stat(self.path).st_mode & stat.S_IWGRP)
+
+    def _take_lock(self):
+        path = os.path.join(self.path, ".lock")
+        created = not os.path.exists(path)
+        try:
+            fd = os.open(path, os.O_RDWR | os.O_CREAT, 0o666)
+        except PermissionError:
+            # Another user's lock file that is not group-writable: flock needs no write access.
+            fd = os.open(path, os.O_RDONLY)
+        if created:
+            self._share(path)
+        try:
+            fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
+        except BlockingIOError:
+            os.close(fd)
+            raise StoreBusy("%s: another client is running a study into this store" % self.path)
+        self._lock = fd
+
     def open_for_writing(self, study_record):
-        """Takes the store's lock, creates the directories, removes what a killed client left
-        half-written, and records the study. Raises StoreBusy when another client holds it."""
-        for directory in (self.path, self.runs, self.partial, self.summary):
-            os.makedirs(directory, exist_ok=True)
-        if self._lock is None:
-            fd = os.open(os.path.join(self.path, ".lock"), os.O_RDWR | os.O_CREAT, 0o644)
-            try:
-                fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
-            except BlockingIOError:
-                os.close(fd)
-                raise StoreBusy("%s: another client is running a study into this store" % self.path)
-            self._lock = fd
-        for leftover in os.listdir(self.partial):
-            os.remove(os.path.join(self.partial, leftover))
-        _write_json_atomically(os.path.join(self.path, "study.json"), study_record)
+        """Checks that the folder is a store (or new, or empty), takes its lock, creates the
+        folders, removes what a killed client left half-written, and records the study. Raises
+        StoreBusy when another client holds it, StoreError when the folder cannot be a store."""
+        self.check_folder()
+        try:
+            self._create_store_folder()
+            if not os.access(self.path, os.W_OK | os.X_OK):
+                raise PermissionError(13, "Permission denied")
+            if self._lock is None:
+                self._take_lock()
+            marker = os.path.join(self.path, MARKER)
+            if not os.path.exists(marker):
+                with open(marker, "w") as f:
+                    f.write("A clearjoint study store (docs/studies.md); the study runner writes into this folder.\n")
+                self._share(marker)
+            for folder in (self.runs, self.partial, self.summary):
+                self._make_folder(folder)
+            for leftover in os.listdir(self.partial):
+                os.remove(os.path.join(self.partial, leftover))
+            study_json = os.path.join(self.path, "study.json")
+            _write_json_atomically(study_json, study_record)
+            self._share(study_json)
+        except OSError as error:
+            self.close()
+            raise StoreError("cannot write into %s (%s%s)" % (self.path, error.strerror or error, self._owner_text()))
+
+    def open_for_reading(self):
+        """Checks that the folder exists and is a store, for the commands that only read it (and
+        rewrite its summary)."""
+        self.check_folder(must_exist=True)
+        self._group_writable = bool(os.stat(self.path).st_mode & stat.S_IWGRP)
+
+    def _owner_text(self):
+        try:
+            st = os.stat(self.path)
+        except OSError:
+            return ""
+        return "; the folder belongs to user %d, group %d, mode %03o" % (st.st_uid, st.st_gid, stat.S_IMODE(st.st_mode))
+
+    # -- runs -----------------------------------------------------------------------------------
 
     def stored_ids(self):
         if not os.path.isdir(self.runs):
             return set()
         return {name[:-3] for name in os.listdir(self.runs) if name.endswith(".h5")}
 
-    def is_current(self, run_id, model_sha256, outputs_sha256, library_version, library_build):
-        """The run's file exists, reads, and was written for this model, outputs and library."""
+    def has_checksum(self, run_id):
+        return os.path.exists(self.checksum_path(run_id))
+
+    def verify(self, run_id):
+        """None when the run file's bytes match its checksum, else why not."""
+        try:
+            with open(self.checksum_path(run_id)) as f:
+                expected = f.read().split()[0]
+        except (OSError, IndexError):
+            return "no checksum beside it (%s)" % os.path.basename(self.checksum_path(run_id))
+        try:
+            actual = file_sha256(self.run_path(run_id))
+        except OSError as error:
+            return "unreadable (%s)" % error.strerror
+        if actual != expected:
+            return "its bytes do not match its checksum (SHA-256 %s, recorded %s)" % (actual[:12], expected[:12])
+        return None
+
+    def set_aside(self, run_id):
+        """Moves a run file (and its checksum) to STORE/quarantine/<run id>.<UTC time>.h5, where
+        nothing reads it; returns the new path."""
+        self._make_folder(self.quarantine_folder)
+        stamp = time.strftime("%Y%m%dT%H%M%SZ", time.gmtime())
+        target = os.path.join(self.quarantine_folder, "%s.%s.h5" % (run_id, stamp))
+        copy = 0
+        while os.path.exists(target):  # set aside twice within a second: keep both
+            copy += 1
+            target = os.path.join(self.quarantine_folder, "%s.%s-%d.h5" % (run_id, stamp, copy))
+        os.replace(self.run_path(run_id), target)
+        if os.path.exists(self.checksum_path(run_id)):
+            os.replace(self.checksum_path(run_id), target[:-3] + ".sha256")
+        _fsync_directory(self.runs)
+        return target
+
+    def is_current(self, run_id, key):
+        """The run's file matches its checksum and was written under this reuse key
+        ({attribute: value}, runner.reuse_key). Verify first: a file that fails is not opened."""
+        if self.verify(run_id) is not None:
+            return False
         try:
             with h5py.File(self.run_path(run_id), "r") as f:
                 a = f.attrs
-                return (int(a["format"]) == FORMAT and a["model_sha256"] == model_sha256
-                        and a["outputs_sha256"] == outputs_sha256 and a["library_version"] == library_version
-                        and a["library_build"] == library_build)
+                return int(a["format"]) == FORMAT and all(a[name] == value for name, value in key.items())
         except (OSError, KeyError):
             return False
 
+    def _publish(self, partial, target):
+        with open(partial, "rb") as f:
+            os.fsync(f.fileno())
+        os.replace(partial, target)
+        self._share(target)
+
     def write(self, run, values, result, outputs_sha256, study_name):
-        """Publishes one run: private file, fsync, rename, fsync the directory, then a log line."""
+        """Publishes one run: private file, fsync; its checksum, published first; the run file,
+        renamed into place; fsync the directory; then a log line."""
         partial = os.path.join(self.partial, "%s.%d.h5" % (run.run_id, os.getpid()))
         with h5py.File(partial, "w") as f:
             a = f.attrs
@@ -109,11 +278,12 @@ class Store:
             a["run_id"] = run.run_id
             a["point_id"] = run.point_id
             a["member"] = run.member
-            a["parameters"] = json.dumps(dict(values), sort_keys=True)
+            a["parameters"] = json.dumps(dict(values), sort_keys=True, allow_nan=False)
             a["model_sha256"] = run.model_sha256
             a["outputs_sha256"] = outputs_sha256
-            a["model"] = json.dumps(run.model, sort_keys=True)
-            for key in ("library_version", "library_build", "host", "pid", "wall_seconds", "simulate_seconds"):
+            a["model"] = json.dumps(run.model, sort_keys=True, allow_nan=False)
+            for key in ("library_version", "library_build", "reduction_sha256", "host", "pid", "wall_seconds",
+                        "simulate_seconds"):
                 a[key] = result[key]
             reductions = f.create_group("reductions")
             for name, value in result["reductions"].items():
@@ -124,27 +294,41 @@ class Store:
                 for name, data in columns.items():
                     group.create_dataset(name, data=np.asarray(data), compression="gzip", shuffle=True)
             f.flush()
-        with open(partial, "rb") as f:
-            os.fsync(f.fileno())
-        os.replace(partial, self.run_path(run.run_id))
+        checksum = partial[:-3] + ".sha256"
+        with open(checksum, "w") as f:
+            f.write("%s  %s.h5\n" % (file_sha256(partial), run.run_id))
+        if os.path.exists(self.run_path(run.run_id)):  # an older run: never beside the new checksum
+            os.remove(self.run_path(run.run_id))
+        self._publish(checksum, self.checksum_path(run.run_id))
+        self._publish(partial, self.run_path(run.run_id))
         _fsync_directory(self.runs)
         line = json.dumps({"run_id": run.run_id, "time": time.time(), "client_pid": os.getpid()}) + "\n"
         # One write(2) of a short line in append mode: a kill cannot tear it in the middle.
-        fd = os.open(self.log, os.O_WRONLY | os.O_APPEND | os.O_CREAT, 0o644)
+        created = not os.path.exists(self.log)
+        fd = os.open(self.log, os.O_WRONLY | os.O_APPEND | os.O_CREAT, 0o666)
         try:
             os.write(fd, line.encode())
         finally:
             os.close(fd)
+        if created:
+            self._share(self.log)
 
     def read(self, run_id, series=True):
-        """One stored run: attributes, reductions and (unless series=False) the time series."""
-        with h5py.File(self.run_path(run_id), "r") as f:
-            attrs = {k: (v.item() if hasattr(v, "item") else v) for k, v in f.attrs.items()}
-            attrs["parameters"] = json.loads(attrs["parameters"])
-            reductions = {k: float(v[()]) for k, v in f["reductions"].items()}
-            data = {}
-            if series:
-                data = {t: {c: g[c][()] for c in g} for t, g in f["time_series"].items()}
+        """One stored run: attributes, reductions and (unless series=False) the time series.
+        Raises CorruptRun, without opening it, for a file that does not match its checksum."""
+        reason = self.verify(run_id)
+        if reason is not None:
+            raise CorruptRun("%s: %s" % (self.run_path(run_id), reason))
+        try:
+            with h5py.File(self.run_path(run_id), "r") as f:
+                attrs = {k: (v.item() if hasattr(v, "item") else v) for k, v in f.attrs.items()}
+                attrs["parameters"] = json.loads(attrs["parameters"])
+                reductions = {k: float(v[()]) for k, v in f["reductions"].items()}
+                data = {}
+                if series:
+                    data = {t: {c: g[c][()] for c in g} for t, g in f["time_series"].items()}
+        except (OSError, KeyError, ValueError) as error:
+            raise CorruptRun("%s: not a run file of this format (%s)" % (self.run_path(run_id), error))
         return {"attrs": attrs, "reductions": reductions, "time_series": data}
 
     def write_log(self):
@@ -168,6 +352,9 @@ class Store:
             self._lock = None
 
     def write_summary_file(self, name, text_or_value):
+        """Writes summary/<name> whole (write, then rename); text as given, anything else as
+        strict JSON."""
+        self._make_folder(self.summary)
         path = os.path.join(self.summary, name)
         if isinstance(text_or_value, str):
             partial = path + ".partial-%d" % os.getpid()
@@ -176,4 +363,5 @@ class Store:
             os.replace(partial, path)
         else:
             _write_json_atomically(path, text_or_value)
+        self._share(path)
         return path

@@ -5,13 +5,21 @@
     summary/points.csv   one row per point and reduction: members stored, median, quartiles, range
     summary/trends.csv   per design with an x parameter, neighbouring points along x and first
                          against last: P(upper > lower) and the one-sided Mann-Whitney p-value
-    summary/summary.json all of it
+    summary/summary.json all of it, as strict JSON (no NaN or Infinity)
+
+A value that is absent is left out: a run not stored yet has no reductions in its row (an empty
+cell in runs.csv), a point without stored members no statistics. A stored reduction that is not a
+finite number (only runs stored before reductions had to be finite can hold one) counts as
+absent: null in summary.json, an empty cell in runs.csv, not in the statistics. A run file that
+does not match its checksum is not read; it is listed under "unreadable_runs".
 """
 import csv
 import io
+import math
 
 from .expand import member_offsets
 from .stats import p_value_greater, point_statistics, probability_greater
+from .store import CorruptRun
 
 
 def _csv(rows, columns):
@@ -23,25 +31,37 @@ def _csv(rows, columns):
     return out.getvalue()
 
 
+def _finite_or_none(value):
+    return value if math.isfinite(value) else None
+
+
 def collect(study, store, points, membership):
-    """Per point: its members' reductions as stored ({member: {reduction: value}}), complete or not."""
+    """Per point: its members' reductions as stored ({member: {reduction: value}}), complete or
+    not; the rows of runs.csv; and the stored runs that could not be read ({run id: why})."""
     stored = store.stored_ids()
     members = {}
     rows = []
+    unreadable = {}
     for point in points:
         members[point.point_id] = {}
         for k in member_offsets(point.members):
             run_id = membership[(point.point_id, k)]
             row = {"point_id": point.point_id, "designs": " ".join(point.designs), "member": k, "run_id": run_id}
             row.update(dict(point.values))
-            if run_id in stored:
-                run = store.read(run_id, series=False)
-                members[point.point_id][k] = run["reductions"]
-                row.update(run["reductions"])
+            if run_id in stored and run_id not in unreadable:
+                try:
+                    run = store.read(run_id, series=False)
+                except CorruptRun as error:
+                    unreadable[run_id] = str(error)
+                    rows.append(row)
+                    continue
+                reductions = {name: _finite_or_none(value) for name, value in run["reductions"].items()}
+                members[point.point_id][k] = reductions
+                row.update(reductions)
                 row.update({"wall_seconds": run["attrs"]["wall_seconds"], "host": run["attrs"]["host"],
                             "library_version": run["attrs"]["library_version"]})
             rows.append(row)
-    return members, rows
+    return members, rows, unreadable
 
 
 def trends(study, points, statistics):
@@ -71,7 +91,7 @@ def trends(study, points, statistics):
 
 def summarise(study, store, points, membership):
     """Writes the summary tables; returns the summary as a dict."""
-    members, rows = collect(study, store, points, membership)
+    members, rows, unreadable = collect(study, store, points, membership)
     names = [r["name"] for r in study.reductions]
     statistics = {}
     point_rows = []
@@ -79,7 +99,7 @@ def summarise(study, store, points, membership):
         stored = members[point.point_id]
         statistics[point.point_id] = {}
         for name in names:
-            values = [stored[k][name] for k in sorted(stored)]
+            values = [stored[k][name] for k in sorted(stored) if stored[k].get(name) is not None]
             if not values:
                 continue
             entry = point_statistics(values)
@@ -102,6 +122,7 @@ def summarise(study, store, points, membership):
     summary = {"study": study.name, "runs": rows, "points": statistics, "trends": trend_rows,
                "designs": {d["name"]: d for d in study.spec["designs"]},
                "stored_runs": len({r["run_id"] for r in rows if "wall_seconds" in r}),
-               "runs_in_study": len({r["run_id"] for r in rows})}
+               "runs_in_study": len({r["run_id"] for r in rows}),
+               "unreadable_runs": unreadable}
     store.write_summary_file("summary.json", summary)
     return summary

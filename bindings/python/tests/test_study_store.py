@@ -1,0 +1,259 @@
+# SPDX-License-Identifier: BSD-3-Clause
+"""The store: a folder the study owns, never one of the user's; run files read only when their
+bytes match their checksum (a corrupted one is set aside, named and run again); runs reused only
+under the same reuse key, reducing code included; folders a group shares stay writable by the
+group; a store that cannot be used is one line on stderr and status 2."""
+import io
+import json
+import os
+import shutil
+import stat
+import subprocess
+import sys
+import tempfile
+
+import h5py
+import pytest
+
+from clearjoint.study import Store, load_study, run_study
+from clearjoint.study.__main__ import main
+from clearjoint.study.expand import Run
+from study_fixtures import (assert_store_matches, edit_run_file, edit_study, fake_result, run_without_faults,
+                            study_command, write_study)
+
+RUN_ARGUMENTS = ["--workers", "1", "--no-progress", "--no-plot"]
+
+
+@pytest.fixture(scope="module")
+def client():
+    """One in-process worker thread: runs of a few milliseconds without starting processes."""
+    from distributed import Client, LocalCluster
+    cluster = LocalCluster(n_workers=1, threads_per_worker=1, processes=False, dashboard_address=None)
+    with Client(cluster) as c:
+        yield c
+    cluster.close()
+
+
+def snapshot(folder):
+    """{relative path: bytes, or None for a folder} of everything under folder."""
+    found = {}
+    for root, folders, files in os.walk(folder):
+        for name in folders:
+            found[os.path.relpath(os.path.join(root, name), folder)] = None
+        for name in files:
+            with open(os.path.join(root, name), "rb") as f:
+                found[os.path.relpath(os.path.join(root, name), folder)] = f.read()
+    return found
+
+
+def users_folder(tmp_path):
+    home = tmp_path / "home"
+    (home / "data").mkdir(parents=True)
+    (home / "thesis.tex").write_text("precious\n")
+    (home / "data" / "measured.csv").write_text("t,x\n0,1\n")
+    return home
+
+
+def one_line_error(capsys):
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "Traceback" not in err, err
+    return err
+
+
+# -- a folder the study owns ---------------------------------------------------------------------
+
+@pytest.mark.parametrize("store", ["home", "home/data", "."])
+def test_a_populated_folder_that_is_not_a_store_is_refused_and_left_as_it_was(tmp_path, models_dir, capsys, store):
+    home = users_folder(tmp_path)
+    path = edit_study(write_study(tmp_path, models_dir, radial=(0.1,), members=1), lambda s: s.update(store=store))
+    before = snapshot(tmp_path)
+    assert main(["run", path] + RUN_ARGUMENTS) == 2
+    err = one_line_error(capsys)
+    assert "store = %r" % store in err and "not a study store" in err
+    assert snapshot(tmp_path) == before
+    assert main(["summary", path]) == 2 and "store = %r" % store in one_line_error(capsys)
+    assert (home / "thesis.tex").read_text() == "precious\n"
+
+
+def test_the_root_folder_is_not_a_store(tmp_path):
+    from clearjoint.study.store import StoreError
+    with pytest.raises(StoreError, match="not a study store"):
+        Store("/").check_folder()
+
+
+def test_a_new_store_inside_a_users_folder_is_made_marked_and_reused_and_leaves_the_users_files(tmp_path, models_dir,
+                                                                                               client):
+    from clearjoint.study.store import MARKER
+    home = users_folder(tmp_path)
+    path = edit_study(write_study(tmp_path, models_dir, radial=(0.1,), members=1),
+                      lambda s: s.update(store="home/results"))
+    users_files = snapshot(home)
+    study = load_study(path)
+    assert run_study(study, client=client, progress=False).computed
+    assert os.path.exists(home / "results" / MARKER)
+    assert run_study(study, client=client, progress=False).reused == 1  # its own store: accepted
+    after = snapshot(home)
+    assert {k: v for k, v in after.items() if not k.startswith("results")} == users_files
+
+
+def test_an_empty_folder_and_a_store_of_an_earlier_version_are_accepted(tmp_path):
+    from clearjoint.study.store import MARKER
+    empty = tmp_path / "empty"
+    empty.mkdir()
+    Store(str(empty)).open_for_writing({})
+    assert os.path.exists(empty / MARKER)
+    earlier = tmp_path / "earlier"  # what a store held before it had a marker
+    (earlier / "runs").mkdir(parents=True)
+    (earlier / "study.json").write_text("{}")
+    (earlier / "writes.log").write_text("")
+    Store(str(earlier)).open_for_writing({})
+    assert os.path.exists(earlier / MARKER)
+
+
+def test_a_store_that_is_a_file_is_one_line_and_status_2(tmp_path, models_dir, capsys):
+    path = edit_study(write_study(tmp_path, models_dir, radial=(0.1,), members=1), lambda s: s.update(store="notes.txt"))
+    (tmp_path / "notes.txt").write_text("mine\n")
+    assert main(["run", path] + RUN_ARGUMENTS) == 2
+    assert "store = 'notes.txt'" in one_line_error(capsys)
+    assert (tmp_path / "notes.txt").read_text() == "mine\n"
+
+
+@pytest.fixture
+def shared_tmp():
+    """A folder every user can enter (pytest's tmp_path is private to its user)."""
+    folder = tempfile.mkdtemp(prefix="clearjoint-study-")
+    os.chmod(folder, 0o755)
+    yield folder
+    shutil.rmtree(folder)
+
+
+def _as_other_user(user):
+    """subprocess arguments that run as another user when this process may switch users (root),
+    else none (then the folders are made unwritable for this user instead)."""
+    return {"user": user, "group": 100, "extra_groups": [100], "umask": 0o022} if os.geteuid() == 0 else {}
+
+
+def test_a_store_this_user_cannot_write_is_one_line_and_status_2(models_dir, shared_tmp):
+    folder = shared_tmp
+    path = write_study(folder, models_dir, radial=(0.1,), members=1)
+    os.chmod(path, 0o644)
+    Store(load_study(path).store_path).open_for_writing({})  # another user's store, mode 0755
+    if os.geteuid() != 0:
+        os.chmod(load_study(path).store_path, 0o555)
+    done = subprocess.run(study_command("run", path, *RUN_ARGUMENTS), capture_output=True, text=True,
+                          timeout=600, env=dict(os.environ, HOME=folder), **_as_other_user(65534))
+    assert done.returncode == 2, done.stderr
+    assert done.stderr.count("\n") == 1 and "Traceback" not in done.stderr, done.stderr
+    assert "store = 'store_small'" in done.stderr and "Permission denied" in done.stderr
+
+
+SECOND_USER_WRITES = """
+import sys
+from clearjoint.study.store import Store
+from clearjoint.study.expand import Run
+sys.path.insert(0, sys.argv[3])
+from study_fixtures import fake_result
+store = Store(sys.argv[1])
+store.open_for_writing({})
+store.write(Run(sys.argv[2], "p", 0, {}, "m"), (), fake_result(), "o", "s")
+store.close()
+"""
+
+
+def test_a_store_in_a_group_writable_folder_is_group_writable_whatever_the_umask(shared_tmp):
+    shared = os.path.join(shared_tmp, "shared")
+    os.mkdir(shared)
+    os.chmod(shared, 0o2775)
+    old = os.umask(0o022)
+    try:
+        store = Store(os.path.join(shared, "store"))
+        store.open_for_writing({})
+        store.write(Run("first", "p", 0, {}, "m"), (), fake_result(), "o", "s")
+        store.close()
+    finally:
+        os.umask(old)
+    for root, folders, files in os.walk(store.path):
+        for name in folders + files:
+            mode = os.stat(os.path.join(root, name)).st_mode
+            assert mode & stat.S_IWGRP, (name, oct(mode))
+
+
+@pytest.mark.skipif(os.geteuid() != 0, reason="needs two users: runs as root only")
+def test_a_second_member_of_the_group_can_run_into_a_store_the_first_made(shared_tmp):
+    shared = os.path.join(shared_tmp, "shared")
+    os.mkdir(shared)
+    os.chown(shared, 0, 100)
+    os.chmod(shared, 0o2775)
+    store = os.path.join(shared, "store")
+    tests = os.path.dirname(os.path.abspath(__file__))
+    for user, run_id in ((65534, "first"), (65533, "second")):
+        done = subprocess.run([sys.executable, "-c", SECOND_USER_WRITES, store, run_id, tests], capture_output=True,
+                              text=True, timeout=120, env=dict(os.environ, HOME=shared), **_as_other_user(user))
+        assert done.returncode == 0, (user, done.stderr)
+    assert Store(store).stored_ids() == {"first", "second"}
+
+
+# -- checksums -----------------------------------------------------------------------------------
+
+def flip_byte(path, offset):
+    """The issue's corruption: 0x04 -> 0xF0 at byte 1714 of a run file (any change will do)."""
+    with open(path, "r+b") as f:
+        f.seek(offset)
+        byte = f.read(1)[0]
+        f.seek(offset)
+        f.write(bytes([byte ^ 0xF4]))
+
+
+def test_corrupted_run_files_are_set_aside_named_and_run_again(tmp_path, models_dir, client):
+    study = load_study(write_study(tmp_path, models_dir, radial=(0.05, 0.1, 0.3), members=1))
+    first = run_study(study, client=client, progress=False)
+    store = Store(study.store_path)
+    flipped, edited, intact = first.computed
+    flip_byte(store.run_path(flipped), 1714)
+    with h5py.File(store.run_path(edited), "a") as f:  # an intact file with another value in it
+        f["reductions"]["peak"][()] = 1.0
+    out = io.StringIO()
+    second = run_study(study, client=client, progress=False, stream=out)
+    assert set(second.set_aside) == {flipped, edited} and sorted(second.computed) == sorted([flipped, edited])
+    for run_id, (why, where) in second.set_aside.items():
+        assert "do not match its checksum" in why and os.path.exists(where)
+        assert "run %s" % run_id in out.getvalue() and where in out.getvalue()
+    assert second.reused == 1
+    assert_store_matches(store, run_without_faults(study))
+
+
+def test_study_summary_names_a_corrupted_run_file_instead_of_reading_it(tmp_path, models_dir, client):
+    path = write_study(tmp_path, models_dir, radial=(0.05, 0.1), members=1)
+    study = load_study(path)
+    corrupted = run_study(study, client=client, progress=False).computed[0]
+    flip_byte(Store(study.store_path).run_path(corrupted), 1714)
+    done = subprocess.run(study_command("summary", path), capture_output=True, text=True, timeout=600)
+    assert done.returncode == 1, done.stderr  # not 139 (a crash in libhdf5), not 0 (reused silently)
+    assert "Traceback" not in done.stderr and corrupted + ".h5" in done.stderr
+    with open(os.path.join(study.store_path, "summary", "summary.json")) as f:
+        summary = json.load(f)
+    assert list(summary["unreadable_runs"]) == [corrupted] and summary["stored_runs"] == 1
+
+
+def test_each_stored_run_has_a_checksum_sha256sum_verifies(tmp_path):
+    store = Store(str(tmp_path / "store"))
+    store.open_for_writing({})
+    store.write(Run("abc", "p", 0, {}, "m"), (), fake_result(), "o", "s")
+    done = subprocess.run(["sha256sum", "-c", "abc.sha256"], cwd=store.runs, capture_output=True, text=True)
+    assert done.returncode == 0 and "abc.h5: OK" in done.stdout
+
+
+# -- the reuse key -------------------------------------------------------------------------------
+
+def test_a_run_stored_by_other_reducing_code_is_run_again(tmp_path, models_dir, client):
+    from clearjoint.study.execute import REDUCING_SOURCES, reduction_code
+    study = load_study(write_study(tmp_path, models_dir, radial=(0.05, 0.1), members=1))
+    first = run_study(study, client=client, progress=False)
+    store = Store(study.store_path)
+    with h5py.File(store.run_path(first.computed[0]), "r") as f:
+        assert f.attrs["reduction_sha256"] == reduction_code()
+    assert set(REDUCING_SOURCES) >= {"reduce.py", "execute.py"}
+    stale = first.computed[1]
+    edit_run_file(store, stale, lambda f: f.attrs.__setitem__("reduction_sha256", "another reduce.py"))
+    again = run_study(study, client=client, progress=False)
+    assert again.computed == [stale] and again.reused == 1 and again.set_aside == {}
