@@ -2,6 +2,7 @@
 """Study files: schema and reference errors name the field and value; designs expand to the
 expected points; ensemble members and parameters write the expected model values."""
 import json
+import os
 
 import numpy as np
 import pytest
@@ -115,3 +116,77 @@ def test_a_missing_or_malformed_study_file_is_an_error_naming_the_file(tmp_path)
     (tmp_path / "bad.json").write_text("{not json")
     with pytest.raises(StudyError, match="bad.json: not JSON"):
         load_study(str(tmp_path / "bad.json"))
+
+
+def non_finite(text):
+    """Writes a study file whose grid holds a bare NaN, Infinity or -Infinity (Python's json
+    reads them; JSON has none)."""
+    def edit(tmp_path, models_dir):
+        path = write_study(tmp_path, models_dir)
+        with open(path) as f:
+            content = f.read()
+        with open(path, "w") as f:
+            f.write(content.replace("0.3", text, 1))
+        return path
+    return edit
+
+
+def a_billion_draws(spec):
+    design = spec["designs"][0]
+    del design["grid"]
+    design["random"] = {"draws": 10 ** 9, "seed": 1, "distributions": {"radial_clearance_mm": {"uniform": [0.05, 0.5]}}}
+
+
+def edited_by(edit):
+    return lambda tmp_path, models_dir: edited(tmp_path, models_dir, edit)
+
+
+@pytest.mark.parametrize("make, message", [
+    (non_finite("NaN"), "designs[0].grid.radial_clearance_mm[2]: NaN is not a JSON number"),
+    (non_finite("Infinity"), "designs[0].grid.radial_clearance_mm[2]: Infinity is not a JSON number"),
+    (edited_by(lambda s: s["designs"][0].update(members=1e9)), "3 points x 1000000000 members = 3000000000 runs"),
+    (edited_by(a_billion_draws), "more than the 100000 a study may hold"),
+    (edited_by(lambda s: s["outputs"]["time_series"].update(resolution=1e-300)),
+     "outputs.time_series.resolution = 1e-300 s"),
+    (edited_by(lambda s: s["outputs"]["reductions"][1].update(after=0.5)),
+     "outputs.reductions[1] ('p99'): after = 0.5 s is not before the end of the run"),
+])
+def test_a_study_that_cannot_run_is_one_line_naming_the_field_and_status_2_before_any_run(tmp_path, models_dir,
+                                                                                          capsys, make, message):
+    from clearjoint.study.__main__ import main
+    path = make(tmp_path, models_dir)
+    assert main(["run", path, "--workers", "1", "--no-progress", "--no-plot"]) == 2
+    err = capsys.readouterr().err
+    assert message in err and err.count("\n") == 1 and "Traceback" not in err, err
+    assert not os.path.exists(tmp_path / "store_small")
+
+
+def test_a_model_file_with_nan_is_an_error_naming_the_file_and_field(tmp_path, models_dir):
+    model = tmp_path / "model.json"
+    with open(os.path.join(str(models_dir), "slider_crank_spatial_clearance.json")) as f:
+        model.write_text(f.read().replace('"end_time": 1.0', '"end_time": NaN'))
+    with pytest.raises(StudyError, match=r"model.json: solver.end_time: NaN is not a JSON number"):
+        load_study(edited(tmp_path, models_dir, lambda s: s.update(model="model.json")))
+
+
+def test_counts_written_as_whole_floats_are_integers(tmp_path, models_dir):
+    study = load_study(edited(tmp_path, models_dir, lambda s: s["designs"][0].update(members=3.0)))
+    assert len(expand_study(study)[1]) == 9
+
+
+def test_the_documented_schema_validation_accepts_the_shipped_studies_and_names_a_bad_field(models_dir, monkeypatch,
+                                                                                            capsys):
+    """docs/studies.md shows how to validate a file in Python; its block runs as written."""
+    root = models_dir.parent
+    text = (root / "docs" / "studies.md").read_text()
+    block = text.split("<!-- schema validation example")[1].split("```python\n")[1].split("```")[0]
+    monkeypatch.chdir(root)
+    namespace = {}
+    exec(block, namespace)
+    assert capsys.readouterr().out == ""
+    for study in sorted((root / "studies").glob("*.json")):
+        assert list(namespace["study"].iter_errors(json.loads(study.read_text()))) == [], study
+    answer = namespace["validator"]("urn:clearjoint:schema:v1:detect-answer")  # refers to error-line by urn
+    assert list(answer.iter_errors({"v": 1, "id": None, "error": "line 1: not JSON"})) == []
+    assert list(answer.iter_errors({"v": 1, "id": None, "error": 3})) != []
+    assert [e.message for e in namespace["study"].iter_errors({"study_format": 2})] != []

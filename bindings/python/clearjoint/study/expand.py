@@ -17,6 +17,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from . import json_pointer
+from .preflight import check_runs
 from .study_file import StudyError
 
 
@@ -148,7 +149,8 @@ def outputs_sha256(study):
 
 def expand_study(study):
     """(points, runs, membership): membership maps (point id, member) to a run id; runs are
-    unique by run id, in the order first needed."""
+    unique by run id, in the order first needed. Raises StudyError for what preflight.check_runs
+    finds."""
     points = expand_points(study)
     outputs_hash = outputs_sha256(study)
     runs, membership = {}, {}
@@ -160,4 +162,5 @@ def expand_study(study):
             membership[(point.point_id, member)] = run_id
             if run_id not in runs:
                 runs[run_id] = Run(run_id, point.point_id, member, model, model_hash)
+    check_runs(study, runs.values())
     return points, list(runs.values()), membership

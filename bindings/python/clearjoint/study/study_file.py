@@ -4,12 +4,17 @@ checks a schema cannot express (names that must refer to each other). Every erro
 the field and the value."""
 import copy
 import json
+import math
 import os
 from dataclasses import dataclass, field
 
 import jsonschema
 
 SCHEMA_FILE = "study-v1.schema.json"
+# The most runs a study may expand to, counted before expanding (points x members per design):
+# each run is a file in one folder and a task on the scheduler, and a typo such as members = 1e9
+# should be an error, not the client running out of memory. Section 6's largest study has 153.
+MAX_RUNS = 100_000
 
 
 class StudyError(ValueError):
@@ -31,6 +36,39 @@ def _schema_path():
 def schema():
     with open(_schema_path()) as f:
         return json.load(f)
+
+
+class _NonFinite:
+    """NaN, Infinity or -Infinity as read (Python's json module accepts them; JSON has no such
+    numbers), kept as a marker so that the error can name the field."""
+
+    def __init__(self, text):
+        self.text = text
+
+
+def _read_json(path):
+    with open(path) as f:
+        return json.load(f, parse_constant=_NonFinite)
+
+
+def _non_finite_field(value, where=()):
+    """The path of the first NaN or Infinity in value, or None."""
+    if isinstance(value, _NonFinite):
+        return where, value.text
+    children = value.items() if isinstance(value, dict) else enumerate(value) if isinstance(value, list) else ()
+    for key, child in children:
+        found = _non_finite_field(child, where + (key,))
+        if found:
+            return found
+    return None
+
+
+def _reject_non_finite(path, what, value):
+    found = _non_finite_field(value)
+    if found:
+        where, text = found
+        raise StudyError("%s: %s%s: %s is not a JSON number (JSON has no NaN or Infinity; give a finite "
+                         "number)" % (path, what, _field_name(where), text))
 
 
 def _field_name(path):
@@ -86,12 +124,13 @@ def _load_model(study_path, where, model):
         return copy.deepcopy(model)
     path = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(study_path)), model))
     try:
-        with open(path) as f:
-            return json.load(f)
+        loaded = _read_json(path)
     except OSError as error:
         raise StudyError("%s: %s = %r: cannot read %s (%s)" % (study_path, where, model, path, error.strerror))
-    except json.JSONDecodeError as error:
+    except (json.JSONDecodeError, UnicodeDecodeError) as error:
         raise StudyError("%s: %s = %r: %s is not JSON (%s)" % (study_path, where, model, path, error))
+    _reject_non_finite(study_path, "%s = %r: %s: " % (where, model, path), loaded)
+    return loaded
 
 
 REDUCTION_NEEDS = {  # quantity -> fields it needs
@@ -162,21 +201,59 @@ def _check_references(path, spec):
                     path, i, name, ", ".join(rnames) or "none"))
 
 
+def _design_points(design):
+    """How many points a design has, before expanding it."""
+    if "grid" in design:
+        return math.prod(len(values) for values in design["grid"].values())
+    if "zip" in design:
+        return max((len(values) for values in design["zip"].values()), default=1)
+    if "random" in design:
+        return design["random"]["draws"]
+    return 1
+
+
+def _check_size(path, spec):
+    """At most MAX_RUNS runs, counted per design as points x members (points that designs share
+    are counted once per design: an upper bound)."""
+    total = 0
+    for i, design in enumerate(spec["designs"]):
+        points, members = _design_points(design), design.get("members", 1)
+        runs = points * members
+        if runs > MAX_RUNS:
+            raise StudyError("%s: designs[%d] (%r): %d points x %d members = %d runs, more than the %d a study "
+                             "may hold" % (path, i, design["name"], points, members, runs, MAX_RUNS))
+        total += runs
+    if total > MAX_RUNS:
+        raise StudyError("%s: designs: %d runs in all, more than the %d a study may hold" % (path, total, MAX_RUNS))
+
+
+def _integers(spec):
+    """JSON Schema counts 3.0 as an integer; the expansion needs Python ints."""
+    for design in spec["designs"]:
+        if "members" in design:
+            design["members"] = int(design["members"])
+        if "random" in design:
+            for key in ("draws", "seed"):
+                design["random"][key] = int(design["random"][key])
+
+
 def load_study(path):
     """Reads and checks a study file; raises StudyError naming the field and value at fault."""
     try:
-        with open(path) as f:
-            spec = json.load(f)
+        spec = _read_json(path)
     except OSError as error:
         raise StudyError("%s: cannot read the study file (%s)" % (path, error.strerror))
-    except json.JSONDecodeError as error:
+    except (json.JSONDecodeError, UnicodeDecodeError) as error:
         raise StudyError("%s: not JSON (%s)" % (path, error))
+    _reject_non_finite(path, "", spec)
     validator = jsonschema.Draft202012Validator(schema())
     errors = sorted(validator.iter_errors(spec), key=lambda e: list(e.absolute_path))
     if errors:
         e = jsonschema.exceptions.best_match(errors)
         raise StudyError("%s: %s: %s" % (path, _field_name(e.absolute_path), e.message))
+    _integers(spec)
     _check_references(path, spec)
+    _check_size(path, spec)
     study = Study(path=path, spec=spec)
     study.base_models[""] = _load_model(path, "model", spec["model"])
     for design in spec["designs"]:
