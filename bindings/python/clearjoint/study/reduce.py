@@ -4,6 +4,11 @@ scalars and the kept time series travel back.
 
 Tables are named as the files of ``clearjoint simulate``: body_<name>, energy, reactions,
 force_<name>; each is a mapping column -> 1-d array sharing the column "time".
+
+NaN in a column means "no value at this sample" (a contact slot's columns where the slot has no
+contact), so peak_abs, percentile_abs and rms skip NaN samples; a reduction left with no sample is
+an error naming the column, and so is any reduction whose value is not a finite number: a stored
+NaN would make every run succeed, the plot blank and the summary invalid JSON.
 """
 import fnmatch
 
@@ -72,6 +77,12 @@ def reduce_one(tables, spec):
         onsets = in_contact[1:] & ~in_contact[:-1]
         return float(onsets.sum() + in_contact[0].sum())
     values = _after(tables, spec, column(tables, spec["table"], spec["column"], purpose))
+    values = values[~np.isnan(values)]
+    if values.size == 0:
+        raise ReductionError("%s: column %r of table %r is NaN at every sample%s (no value there: a contact "
+                             "slot without contact, say); max_depth and impacts count a joint's contacts" % (
+                                 purpose, spec["column"], spec["table"],
+                                 " after t = %g s" % spec["after"] if "after" in spec else ""))
     if quantity == "peak_abs":
         return float(np.abs(values).max())
     if quantity == "percentile_abs":
@@ -110,6 +121,12 @@ def time_series(tables, spec):
 
 
 def reduce_run(tables, outputs):
-    reductions = {spec["name"]: reduce_one(tables, spec) for spec in outputs.get("reductions", [])}
+    reductions = {}
+    for spec in outputs.get("reductions", []):
+        value = reduce_one(tables, spec)
+        if not np.isfinite(value):
+            raise ReductionError("reduction %r: the value is %r, not a finite number (a column of the run is "
+                                 "not finite)" % (spec["name"], value))
+        reductions[spec["name"]] = value
     series = time_series(tables, outputs["time_series"]) if "time_series" in outputs else {}
     return reductions, series
