@@ -140,11 +140,12 @@ def test_a_store_this_user_cannot_write_is_one_line_and_status_2(models_dir, sha
     Store(load_study(path).store_path).open_for_writing({})  # another user's store, mode 0755
     if os.geteuid() != 0:
         os.chmod(load_study(path).store_path, 0o555)
-    done = subprocess.run(study_command("run", path, *RUN_ARGUMENTS), capture_output=True, text=True,
-                          timeout=600, env=dict(os.environ, HOME=folder), **_as_other_user(65534))
-    assert done.returncode == 2, done.stderr
-    assert done.stderr.count("\n") == 1 and "Traceback" not in done.stderr, done.stderr
-    assert "store = 'store_small'" in done.stderr and "Permission denied" in done.stderr
+    for command in (["run", path, *RUN_ARGUMENTS], ["summary", path]):
+        done = subprocess.run(study_command(*command), capture_output=True, text=True, timeout=600,
+                              env=dict(os.environ, HOME=folder), **_as_other_user(65534))
+        assert done.returncode == 2, done.stderr
+        assert done.stderr.count("\n") == 1 and "Traceback" not in done.stderr, done.stderr
+        assert "store = 'store_small'" in done.stderr and "Permission denied" in done.stderr
 
 
 SECOND_USER_WRITES = """

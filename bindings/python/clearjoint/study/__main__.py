@@ -6,11 +6,13 @@ import sys
 
 from .study_file import StudyError, load_study
 
-USAGE = """python3 -m clearjoint.study COMMAND STUDY [options]
+USAGE = """clearjoint study COMMAND STUDY [options]   (or python3 -m clearjoint.study ...)
   run STUDY      run every run the store does not hold yet (resumes an interrupted study),
                  then write the summary tables
   plot STUDY     draw the study's figures from the store (PNG)
   summary STUDY  rewrite the summary tables from the store and print where they are"""
+
+STUDY_HELP = "the study file (JSON; docs/studies.md)"
 
 
 def _parser():
@@ -22,7 +24,7 @@ def _parser():
     run = sub.add_parser("run", prog="clearjoint study run", help="run the study",
                          description="Runs every run the store does not hold yet, then writes the summary tables "
                                      "and draws the figures (docs/studies.md).")
-    run.add_argument("study")
+    run.add_argument("study", help=STUDY_HELP)
     run.add_argument("--scheduler", help="an existing Dask scheduler (tcp://host:8786); default: a local "
                      "cluster with one worker process per core")
     run.add_argument("--workers", type=int, help="local cluster: worker processes (default: one per core)")
@@ -36,11 +38,11 @@ def _parser():
     run.add_argument("--no-plot", action="store_true", help="do not draw the figures afterwards")
     plot = sub.add_parser("plot", prog="clearjoint study plot", help="draw the study's figures from the store",
                           description="Draws the study's figures from the store (PNG).")
-    plot.add_argument("study")
+    plot.add_argument("study", help=STUDY_HELP)
     plot.add_argument("--out", help="directory for the figures (default: as the study file says, or STORE/figures)")
     summary = sub.add_parser("summary", prog="clearjoint study summary", help="rewrite the summary tables from the store",
                              description="Rewrites the summary tables from the store and prints where they are.")
-    summary.add_argument("study")
+    summary.add_argument("study", help=STUDY_HELP)
     return parser
 
 

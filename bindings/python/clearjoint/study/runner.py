@@ -155,6 +155,8 @@ def run_study(study, scheduler=None, workers=None, progress=True, force=False, s
                     if cluster is not None:
                         cluster.close()
         summarise(study, store, points, membership)
+    except StoreError as error:  # the file system refused a run file or a summary
+        raise store_error(study, error)
     finally:
         store.close()
     report.seconds = time.monotonic() - start

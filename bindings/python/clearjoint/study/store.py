@@ -269,7 +269,14 @@ class Store:
 
     def write(self, run, values, result, outputs_sha256, study_name):
         """Publishes one run: private file, fsync; its checksum, published first; the run file,
-        renamed into place; fsync the directory; then a log line."""
+        renamed into place; fsync the directory; then a log line. Raises StoreError saying why
+        when the file system refuses (a full disk, say)."""
+        try:
+            self._write(run, values, result, outputs_sha256, study_name)
+        except OSError as error:
+            raise StoreError("cannot write run %s into %s (%s)" % (run.run_id, self.runs, error.strerror or error))
+
+    def _write(self, run, values, result, outputs_sha256, study_name):
         partial = os.path.join(self.partial, "%s.%d.h5" % (run.run_id, os.getpid()))
         with h5py.File(partial, "w") as f:
             a = f.attrs
@@ -353,15 +360,18 @@ class Store:
 
     def write_summary_file(self, name, text_or_value):
         """Writes summary/<name> whole (write, then rename); text as given, anything else as
-        strict JSON."""
-        self._make_folder(self.summary)
+        strict JSON. Raises StoreError saying why when the file system refuses."""
         path = os.path.join(self.summary, name)
-        if isinstance(text_or_value, str):
-            partial = path + ".partial-%d" % os.getpid()
-            with open(partial, "w") as f:
-                f.write(text_or_value)
-            os.replace(partial, path)
-        else:
-            _write_json_atomically(path, text_or_value)
-        self._share(path)
+        try:
+            self._make_folder(self.summary)
+            if isinstance(text_or_value, str):
+                partial = path + ".partial-%d" % os.getpid()
+                with open(partial, "w") as f:
+                    f.write(text_or_value)
+                os.replace(partial, path)
+            else:
+                _write_json_atomically(path, text_or_value)
+            self._share(path)
+        except OSError as error:
+            raise StoreError("cannot write %s (%s%s)" % (path, error.strerror or error, self._owner_text()))
         return path
