@@ -1,0 +1,57 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+/// \file
+/// The handbook query: a plain 360-degree journal bearing's non-dimensional characteristics.
+
+#include "clearjoint/lubrication/film_conditions.hpp"
+#include "clearjoint/lubrication/reynolds_grid.hpp"
+
+namespace clearjoint::lubrication {
+
+enum class BearingMotion {
+  rotation,  ///< steady spin omega, no squeeze
+  squeeze,   ///< pure approach along the line of centres at the rate d eps / dt > 0, no spin
+};
+
+enum class BearingMethod {
+  grid,           ///< finite width: ReynoldsGridSolver
+  short_bearing,  ///< Ocvirk closed form (half-Sommerfeld only)
+  long_bearing,   ///< Sommerfeld closed form (half-Sommerfeld only)
+};
+
+struct BearingCharacteristicsQuery {
+  double eccentricity_ratio = 0.0;  ///< eps in [0, 1)
+  double width_ratio = 1.0;         ///< B / D > 0
+  BearingMotion motion = BearingMotion::rotation;
+  CavitationModel cavitation = CavitationModel::mass_conserving;
+  BearingMethod method = BearingMethod::grid;
+  ReynoldsGridOptions grid = {};
+};
+
+/// What bearing handbooks tabulate. With the mass-conserving model the bearing is fed at ambient
+/// pressure along the thickest film (an axial line at psi = pi), the convention of Raimondi &
+/// Boyd (ASLE Trans. 1, 1958) whose tables docs/lubrication.md compares against.
+struct BearingCharacteristics {
+  /// So = F psi^2 / (B D eta omega), psi = c / R the relative clearance (for squeeze, d eps / dt
+  /// in place of omega). Raimondi & Boyd's S = (R/c)^2 eta N / P (N in rev/s, P = F / (B D)) is
+  /// 1 / (2 pi So).
+  double sommerfeld_number = 0.0;
+  double attitude_angle = 0.0;  ///< beta, rad: from the load to the line of centres
+  /// 2 pi Q_s / (R c omega B), Raimondi & Boyd's side-flow variable Q_s / (R c N B) (for
+  /// squeeze, d eps / dt in place of omega).
+  double side_flow_variable = 0.0;
+  double max_pressure_ratio = 0.0;  ///< p_max / (F / (B D)), the reciprocal of R & B's P / p_max
+  int iterations = 0;               ///< linear solves (grid only)
+  bool converged = true;            ///< grid only: see FilmLoad::converged
+};
+
+/// Throws geometry::InvalidInput naming the field for eps outside [0, 1), a non-positive or
+/// non-finite width ratio, a closed form asked for the mass-conserving model, or a bad grid.
+BearingCharacteristics bearing_characteristics(const BearingCharacteristicsQuery& query);
+
+/// The relative clearance c / R of the grid's bearing. The characteristics are independent of it
+/// to first order; the film thickness' exact geometry differs from h = c (1 - eps cos psi) by
+/// O(c / R) relatively, so 1e-4 keeps that effect below the grid's own error.
+inline constexpr double kCharacteristicsRelativeClearance = 1e-4;
+
+}  // namespace clearjoint::lubrication

@@ -1,0 +1,27 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+/// \file
+/// The long-bearing (Sommerfeld) closed form with the half-Sommerfeld (Guembel) condition.
+
+#include "clearjoint/lubrication/planar_film.hpp"
+
+namespace clearjoint::lubrication {
+
+/// The film load of an aligned journal when B / D -> infinity: the axial pressure flow is
+/// dropped, the Reynolds equation integrates in psi,
+///   p'(psi) = (6 eta R^2 / c^2) [Omega (3 eps^2 / (2 + eps^2) - eps cos psi) - 2 eps' sin psi]
+///             / (1 - eps cos psi)^3,   Omega = omega - 2 phi',
+/// with the constant fixed by a periodic pressure, and p = 0 (ambient) at the thickest film
+/// psi = pi, where a long bearing is fed. The force is the integral of p > 0 (Guembel) times the
+/// width B; pure rotation gives So = 3 eps sqrt(pi^2 (1 - eps^2) + 4 eps^2) /
+/// ((2 + eps^2)(1 - eps^2)) and tan beta = pi sqrt(1 - eps^2) / (2 eps).
+/// Cost: closed form for eps' = 0; with squeeze the second end of the positive region is found
+/// by safeguarded Newton iteration (kLongBearingRootTolerance). Side flow: 0 (no ends).
+PlanarFilmLoad long_bearing_load(const PlanarBearing& bearing, const PlanarFilmState& state,
+                                 double viscosity);
+
+/// Angle tolerance (rad) of the pressure root found with squeeze: 1e-13, a few hundred ulps of
+/// 2 pi; the force integrals' sensitivity to it is p' at the root times the tolerance, i.e. nil.
+inline constexpr double kLongBearingRootTolerance = 1e-13;
+
+}  // namespace clearjoint::lubrication

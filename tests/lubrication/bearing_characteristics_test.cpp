@@ -1,0 +1,119 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The handbook query against published finite-width bearing data: Raimondi & Boyd, "A solution
+// for the finite journal bearing and its application to analysis and design, parts I-III", ASLE
+// Transactions 1 (1958) 159-209, full (360 degree) bearing table as reproduced in Budynas &
+// Nisbett, Shigley's Mechanical Engineering Design, chapter 12 (the table behind its Figs.
+// 12-16 to 12-24). Columns used: h0/c (= 1 - eps), S = (r/c)^2 mu N / P and phi (degrees).
+// R & B feed the film at ambient pressure at the thickest film and rupture it with the Reynolds
+// condition, which the mass-conserving grid reproduces (bearing_characteristics.hpp).
+// The table has no B/D = 1/8 and no pure-squeeze data: those are not compared (docs/lubrication.md).
+#include "clearjoint/lubrication/bearing_characteristics.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "clearjoint/geometry/primitives.hpp"
+
+namespace clearjoint::lubrication {
+namespace {
+
+struct PublishedRow {
+  double width_ratio, eccentricity_ratio, raimondi_boyd_s, attitude_degrees;
+};
+
+// Raimondi & Boyd (1958), via Shigley ch. 12: l/d = 1, 1/2, 1/4; h0/c = 0.9, 0.8, 0.6, 0.4, 0.2, 0.1.
+constexpr PublishedRow kRaimondiBoyd[] = {
+    {1.0, 0.1, 1.33, 79.5},    {1.0, 0.2, 0.631, 74.02},  {1.0, 0.4, 0.264, 63.10},
+    {1.0, 0.6, 0.121, 50.58},  {1.0, 0.8, 0.0446, 36.24}, {1.0, 0.9, 0.0188, 26.45},
+    {0.5, 0.1, 4.31, 81.62},   {0.5, 0.2, 2.03, 74.94},   {0.5, 0.4, 0.779, 61.45},
+    {0.5, 0.6, 0.319, 48.14},  {0.5, 0.8, 0.0923, 33.31}, {0.5, 0.9, 0.0313, 23.66},
+    {0.25, 0.1, 16.2, 82.31},  {0.25, 0.2, 7.57, 75.18},  {0.25, 0.4, 2.83, 60.86},
+    {0.25, 0.6, 1.07, 46.72},  {0.25, 0.8, 0.261, 31.04}, {0.25, 0.9, 0.0736, 21.85},
+};
+
+// Issue 36's acceptance: So within 3 % on average and 5 % at worst, beta within 2 % and 4 %.
+constexpr double kMeanSommerfeldTolerance = 0.03, kWorstSommerfeldTolerance = 0.05;
+constexpr double kMeanAttitudeTolerance = 0.02, kWorstAttitudeTolerance = 0.04;
+
+TEST(BearingCharacteristics, AgreeWithRaimondiAndBoydForPureRotationWithMassConservation) {
+  double so_sum = 0, so_worst = 0, beta_sum = 0, beta_worst = 0;
+  for (const PublishedRow& row : kRaimondiBoyd) {
+    BearingCharacteristicsQuery query;
+    query.eccentricity_ratio = row.eccentricity_ratio;
+    query.width_ratio = row.width_ratio;
+    const BearingCharacteristics result = bearing_characteristics(query);
+    ASSERT_TRUE(result.converged);
+    const double published_so = 1.0 / (2.0 * std::numbers::pi * row.raimondi_boyd_s);
+    const double published_beta = row.attitude_degrees * std::numbers::pi / 180.0;
+    const double so_error = std::abs(result.sommerfeld_number - published_so) / published_so;
+    const double beta_error = std::abs(result.attitude_angle - published_beta) / published_beta;
+    so_sum += so_error;
+    beta_sum += beta_error;
+    so_worst = std::max(so_worst, so_error);
+    beta_worst = std::max(beta_worst, beta_error);
+    RecordProperty("so_error_bd" + std::to_string(row.width_ratio) + "_eps" +
+                       std::to_string(row.eccentricity_ratio),
+                   std::to_string(so_error));
+  }
+  const double rows = std::size(kRaimondiBoyd);
+  EXPECT_LT(so_sum / rows, kMeanSommerfeldTolerance);
+  EXPECT_LT(so_worst, kWorstSommerfeldTolerance);
+  EXPECT_LT(beta_sum / rows, kMeanAttitudeTolerance);
+  EXPECT_LT(beta_worst, kWorstAttitudeTolerance);
+}
+
+TEST(BearingCharacteristics, OfTheClosedFormsBracketTheFiniteHalfSommerfeldGrid) {
+  for (const double bd : {0.25, 1.0, 2.0}) {
+    BearingCharacteristicsQuery query;
+    query.eccentricity_ratio = 0.5;
+    query.width_ratio = bd;
+    query.cavitation = CavitationModel::half_sommerfeld;
+    const double grid = bearing_characteristics(query).sommerfeld_number;
+    query.method = BearingMethod::short_bearing;
+    const double short_so = bearing_characteristics(query).sommerfeld_number;
+    query.method = BearingMethod::long_bearing;
+    const double long_so = bearing_characteristics(query).sommerfeld_number;
+    // Per unit B/D^2 (short) the finite film carries less; per unit width (long) too.
+    EXPECT_LT(grid, short_so);
+    EXPECT_LT(grid, long_so);
+  }
+}
+
+TEST(BearingCharacteristics, OfPureSqueezeMatchTheShortBearingForANarrowBearing) {
+  BearingCharacteristicsQuery query;
+  query.eccentricity_ratio = 0.5;
+  query.width_ratio = 0.125;
+  query.motion = BearingMotion::squeeze;
+  query.cavitation = CavitationModel::half_sommerfeld;
+  query.grid.circumferential_cells = 128;
+  query.grid.axial_cells = 16;
+  const BearingCharacteristics grid = bearing_characteristics(query);
+  query.method = BearingMethod::short_bearing;
+  const BearingCharacteristics closed = bearing_characteristics(query);
+  EXPECT_NEAR(grid.sommerfeld_number, closed.sommerfeld_number, 0.05 * closed.sommerfeld_number);
+  EXPECT_NEAR(grid.attitude_angle, 0.0, 1e-6);  // pure squeeze: load along the line of centres
+}
+
+TEST(BearingCharacteristics, RefuseBadInputNamingIt) {
+  BearingCharacteristicsQuery query;
+  query.eccentricity_ratio = 1.0;
+  try {
+    bearing_characteristics(query);
+    FAIL();
+  } catch (const geometry::InvalidInput& error) {
+    EXPECT_NE(std::string(error.what()).find("eccentricity_ratio"), std::string::npos);
+  }
+  query.eccentricity_ratio = 0.5;
+  query.grid.circumferential_cells = 1;
+  query.grid.axial_cells = 1;
+  EXPECT_THROW(bearing_characteristics(query), geometry::InvalidInput);
+  query.grid = {};
+  query.method = BearingMethod::short_bearing;  // closed forms know no mass conservation
+  EXPECT_THROW(bearing_characteristics(query), geometry::InvalidInput);
+}
+
+}  // namespace
+}  // namespace clearjoint::lubrication
