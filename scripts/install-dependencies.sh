@@ -22,6 +22,7 @@ packages=(
   clang-14 libclang-rt-14-dev           # run-sanitizers.sh, fuzz/: ASan, UBSan, libFuzzer
   python3-distributed python3-h5py python3-jsonschema python3-scipy python3-tqdm  # clearjoint.study
   chromium chromium-driver python3-selenium  # the viewer's browser test (docs/viewing-runs.md)
+  libsimbody-dev libmujoco-dev          # the engine adapters (docs/engines.md)
 )
 
 missing=()

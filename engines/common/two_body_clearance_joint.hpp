@@ -1,0 +1,73 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+/// \file
+/// clearjoint's clearance revolute joint between two bodies whose poses and velocities come from
+/// another engine (Simbody, MuJoCo). The adapters own their bodies; this class turns two rigid
+/// motions into the joint's SystemKinematics (bearing = body 0, journal = body 1) and calls the
+/// joint itself, so that detection, contact kinematics, force laws and the impact-speed memory
+/// are clearjoint's own code, not a copy. Internal to the engine adapters (not installed).
+
+#include <span>
+#include <string>
+
+#include "clearjoint/dynamics/clearance_revolute_joint.hpp"
+#include "clearjoint/dynamics/system_kinematics.hpp"
+
+namespace clearjoint::engines {
+
+/// A body's motion as an engine gives it: the body frame's origin and orientation in the world,
+/// the origin's velocity and the angular velocity, both in the world frame.
+struct RigidMotion {
+  dynamics::Vector3 origin_W = dynamics::Vector3::Zero();
+  /// Unit quaternion (w, x, y, z) of the body-to-world rotation: clearjoint's Euler parameters.
+  dynamics::Vector4 orientation{1.0, 0.0, 0.0, 0.0};
+  dynamics::Vector3 velocity_W = dynamics::Vector3::Zero();
+  dynamics::Vector3 angular_velocity_W = dynamics::Vector3::Zero();
+};
+
+/// A contact force on the journal and where the two bodies receive it.
+struct ContactForce {
+  dynamics::Vector3 force_on_journal_W = dynamics::Vector3::Zero();  ///< the bearing gets -force
+  dynamics::Vector3 p_WCj = dynamics::Vector3::Zero();  ///< application point on the journal
+  dynamics::Vector3 p_WCi = dynamics::Vector3::Zero();  ///< application point on the bearing
+};
+
+class TwoBodyClearanceJoint {
+ public:
+  /// `bearing` and `journal` give P and a in each engine body's frame (their `body` fields are
+  /// ignored). Throws dynamics::ModelError naming "<name>.<field>" for unusable values.
+  TwoBodyClearanceJoint(const std::string& name, const dynamics::ClearanceJointPart& bearing,
+                        const dynamics::ClearanceJointPart& journal,
+                        const dynamics::ClearanceJointParameters& parameters);
+
+  /// Load the two bodies' motions at `time`; every call below reads them.
+  void set_motions(double time, const RigidMotion& bearing, const RigidMotion& journal);
+
+  /// The joint's full evaluation (contacts, forces per contact, slots, outputs' geometry) with
+  /// `impact_memory` (dynamics::kContactSlotCount values, 0 = none).
+  dynamics::ClearanceJointState evaluate(std::span<const double> impact_memory) const;
+  /// The contact forces of evaluate(); `out` holds geometry::kMaxContacts entries. Returns how
+  /// many were written.
+  int contact_forces(std::span<const double> impact_memory, std::span<ContactForce> out) const;
+  /// The elastic energy stored in the contacts (dynamics::ClearanceRevoluteJoint::potential_energy).
+  double potential_energy() const;
+  /// True when a contact is present in a slot without memory, or a slot remembers a contact that
+  /// is gone: the memory must be updated (update_impact_memory) at this instant.
+  bool memory_is_stale(std::span<const double> impact_memory) const;
+  /// Record delta_dot(-) for contacts that begin here, clear slots whose contact ended
+  /// (dynamics::ClearanceRevoluteJoint::update_extra_state). Returns true if it changed.
+  bool update_impact_memory(std::span<double> impact_memory);
+
+  /// dynamics::ClearanceRevoluteJoint::record_outputs at the loaded motions.
+  void record_outputs(std::span<const double> impact_memory, std::span<double> values) const;
+
+  const dynamics::ClearanceRevoluteJoint& joint() const { return joint_; }
+  double time() const { return time_; }
+
+ private:
+  dynamics::ClearanceRevoluteJoint joint_;
+  dynamics::SystemKinematics kinematics_{2};
+  double time_ = 0.0;
+};
+
+}  // namespace clearjoint::engines

@@ -1,0 +1,202 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "clearjoint/simbody/clearance_revolute_force.hpp"
+
+#include <array>
+
+#include "clearjoint/dynamics/errors.hpp"
+#include "two_body_clearance_joint.hpp"
+
+namespace clearjoint::simbody {
+
+namespace {
+
+using Memory = SimTK::Vec<dynamics::kContactSlotCount>;
+
+dynamics::Vector3 to_eigen(const SimTK::Vec3& v) { return {v[0], v[1], v[2]}; }
+SimTK::Vec3 to_simtk(const dynamics::Vector3& v) { return {v[0], v[1], v[2]}; }
+
+engines::RigidMotion motion_of(const SimTK::MobilizedBody& body, const SimTK::State& state) {
+  const SimTK::Transform& X_GB = body.getBodyTransform(state);
+  const SimTK::SpatialVec& V_GB = body.getBodyVelocity(state);
+  const SimTK::Quaternion q = X_GB.R().convertRotationToQuaternion();
+  return {to_eigen(X_GB.p()), {q[0], q[1], q[2], q[3]}, to_eigen(V_GB[1]), to_eigen(V_GB[0])};
+}
+
+dynamics::ClearanceJointPart part_of(const ClearancePartInBody& part) {
+  return {dynamics::kGround, to_eigen(part.point_B), to_eigen(part.axis_B)};
+}
+
+}  // namespace
+
+/// The force element proper. The joint and its kinematics are scratch of the evaluations (the
+/// joint caches its last detection), like any Simbody cache entry; the physics is a function of
+/// the State alone.
+class ClearanceRevoluteForce::Impl final : public SimTK::Force::Custom::Implementation {
+ public:
+  Impl(SimTK::SubsystemIndex forces, const std::string& name, const ClearancePartInBody& bearing,
+       const ClearancePartInBody& journal, const dynamics::ClearanceJointParameters& parameters)
+      : forces_(forces), bearing_(bearing), journal_(journal),
+        joint_(name, part_of(bearing), part_of(journal), parameters) {
+    if (bearing.body.getMobilizedBodyIndex() == journal.body.getMobilizedBodyIndex()) {
+      throw dynamics::ModelError(name + ".journal.body: the journal and the bearing must be on "
+                                        "different bodies");
+    }
+  }
+
+  void realizeTopology(SimTK::State& state) const override {
+    // A change of the memory invalidates Dynamics: the forces, and the witness below, which is
+    // evaluated at Dynamics, are computed again.
+    memory_index_ = state.allocateDiscreteVariable(forces_, SimTK::Stage::Dynamics,
+                                                   new SimTK::Value<Memory>(Memory(0.0)));
+  }
+
+  void calcForce(const SimTK::State& state, SimTK::Vector_<SimTK::SpatialVec>& body_forces,
+                 SimTK::Vector_<SimTK::Vec3>&, SimTK::Vector&) const override {
+    load(state);
+    std::array<engines::ContactForce, geometry::kMaxContacts> contacts;
+    const int count = joint_.contact_forces(memory(state), contacts);
+    if (count == 0) return;
+    const SimTK::Vec3 p_WJo = journal_.body.getBodyOriginLocation(state);
+    const SimTK::Vec3 p_WIo = bearing_.body.getBodyOriginLocation(state);
+    SimTK::SpatialVec& on_journal = body_forces[journal_.body.getMobilizedBodyIndex()];
+    SimTK::SpatialVec& on_bearing = body_forces[bearing_.body.getMobilizedBodyIndex()];
+    for (int c = 0; c < count; ++c) {
+      const SimTK::Vec3 force = to_simtk(contacts[c].force_on_journal_W);
+      on_journal += SimTK::SpatialVec((to_simtk(contacts[c].p_WCj) - p_WJo) % force, force);
+      on_bearing -= SimTK::SpatialVec((to_simtk(contacts[c].p_WCi) - p_WIo) % force, force);
+    }
+  }
+
+  SimTK::Real calcPotentialEnergy(const SimTK::State& state) const override {
+    load_positions(state);
+    return joint_.potential_energy();
+  }
+
+  void calcDecorativeGeometryAndAppend(const SimTK::State&, SimTK::Stage stage,
+                                       SimTK::Array_<SimTK::DecorativeGeometry>& geometry) const override {
+    if (stage != SimTK::Stage::Topology) return;
+    const geometry::JointDimensions& d = joint_.joint().parameters().dimensions;
+    // DecorativeCylinder lies along its y axis, centred on its origin.
+    auto cylinder = [&](const ClearancePartInBody& part, double radius, double length,
+                        const SimTK::Vec3& colour, double opacity) {
+      const SimTK::Rotation R_BC(SimTK::UnitVec3(part.axis_B), SimTK::YAxis);
+      geometry.push_back(SimTK::DecorativeCylinder(radius, 0.5 * length)
+                             .setBodyId(part.body.getMobilizedBodyIndex())
+                             .setTransform(SimTK::Transform(R_BC, part.point_B))
+                             .setColor(colour)
+                             .setOpacity(opacity));
+    };
+    cylinder(bearing_, d.bearing_radius, d.bearing_length, SimTK::Gray, 0.3);
+    cylinder(journal_, d.journal_radius, d.journal_length, SimTK::Orange, 1.0);
+  }
+
+  std::span<const double> memory(const SimTK::State& state) const {
+    const Memory& m = SimTK::Value<Memory>::downcast(state.getDiscreteVariable(forces_, memory_index_));
+    return {&m[0], dynamics::kContactSlotCount};
+  }
+
+  /// The witness of the onset handler: +1 when the memory must change at this state, else -1.
+  double memory_witness(const SimTK::State& state) const {
+    load(state);
+    return joint_.memory_is_stale(memory(state)) ? 1.0 : -1.0;
+  }
+
+  /// Record the onsets and clear the ended contacts at `state`; true if the memory changed.
+  bool update_memory(SimTK::State& state) const {
+    load(state);
+    Memory memory_now = SimTK::Value<Memory>::downcast(state.getDiscreteVariable(forces_, memory_index_));
+    if (!joint_.update_impact_memory({&memory_now[0], dynamics::kContactSlotCount})) return false;
+    SimTK::Value<Memory>::updDowncast(state.updDiscreteVariable(forces_, memory_index_)) = memory_now;
+    return true;
+  }
+
+  dynamics::ClearanceJointState evaluate(const SimTK::State& state) const {
+    load(state);
+    return joint_.evaluate(memory(state));
+  }
+  void record_outputs(const SimTK::State& state, std::span<double> values) const {
+    load(state);
+    joint_.record_outputs(memory(state), values);
+  }
+  const dynamics::ClearanceRevoluteJoint& joint() const { return joint_.joint(); }
+
+ private:
+  void load(const SimTK::State& state) const {
+    joint_.set_motions(state.getTime(), motion_of(bearing_.body, state), motion_of(journal_.body, state));
+  }
+  /// Positions only (potential energy is asked at Stage::Position); velocities zero.
+  void load_positions(const SimTK::State& state) const {
+    auto pose = [&](const SimTK::MobilizedBody& body) {
+      const SimTK::Transform& X_GB = body.getBodyTransform(state);
+      const SimTK::Quaternion q = X_GB.R().convertRotationToQuaternion();
+      engines::RigidMotion motion;
+      motion.origin_W = to_eigen(X_GB.p());
+      motion.orientation = {q[0], q[1], q[2], q[3]};
+      return motion;
+    };
+    joint_.set_motions(state.getTime(), pose(bearing_.body), pose(journal_.body));
+  }
+
+  SimTK::SubsystemIndex forces_;
+  ClearancePartInBody bearing_;
+  ClearancePartInBody journal_;
+  mutable engines::TwoBodyClearanceJoint joint_;
+  mutable SimTK::DiscreteVariableIndex memory_index_;
+};
+
+namespace {
+
+/// Locates a contact onset (or end) inside a step and updates the memory there.
+class ImpactMemoryHandler final : public SimTK::TriggeredEventHandler {
+ public:
+  explicit ImpactMemoryHandler(const ClearanceRevoluteForce::Impl& force)
+      : SimTK::TriggeredEventHandler(SimTK::Stage::Dynamics), force_(force) {
+    getTriggerInfo().setTriggerOnRisingSignTransition(true);
+    getTriggerInfo().setTriggerOnFallingSignTransition(false);
+  }
+  SimTK::Real getValue(const SimTK::State& state) const override { return force_.memory_witness(state); }
+  void handleEvent(SimTK::State& state, SimTK::Real, bool& should_terminate) const override {
+    should_terminate = false;
+    force_.update_memory(state);
+  }
+
+ private:
+  const ClearanceRevoluteForce::Impl& force_;
+};
+
+}  // namespace
+
+ClearanceRevoluteForce::ClearanceRevoluteForce(SimTK::MultibodySystem& system,
+                                               SimTK::GeneralForceSubsystem& forces,
+                                               const std::string& name,
+                                               const ClearancePartInBody& bearing,
+                                               const ClearancePartInBody& journal,
+                                               const dynamics::ClearanceJointParameters& parameters)
+    : SimTK::Force::Custom(forces, new Impl(forces.getMySubsystemIndex(), name, bearing, journal,
+                                            parameters)) {
+  system.addEventHandler(new ImpactMemoryHandler(impl()));
+}
+
+const ClearanceRevoluteForce::Impl& ClearanceRevoluteForce::impl() const {
+  return static_cast<const Impl&>(getImplementation());
+}
+
+void ClearanceRevoluteForce::initialize_impact_memory(SimTK::State& state) const {
+  impl().update_memory(state);
+}
+
+std::span<const double> ClearanceRevoluteForce::impact_memory(const SimTK::State& state) const {
+  return impl().memory(state);
+}
+
+dynamics::ClearanceJointState ClearanceRevoluteForce::evaluate(const SimTK::State& state) const {
+  return impl().evaluate(state);
+}
+
+void ClearanceRevoluteForce::record_outputs(const SimTK::State& state, std::span<double> values) const {
+  impl().record_outputs(state, values);
+}
+
+const dynamics::ClearanceRevoluteJoint& ClearanceRevoluteForce::joint() const { return impl().joint(); }
+
+}  // namespace clearjoint::simbody
