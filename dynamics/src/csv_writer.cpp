@@ -62,15 +62,20 @@ void CsvWriter::write_row(std::span<const double> values) {
 }
 
 void CsvWriter::commit() {
-  const bool written = std::fflush(file_) == 0 && std::ferror(file_) == 0;
-  const bool closed = std::fclose(file_) == 0;
+  // Each step keeps its errno: a full disk shows here (ENOSPC at the last flush or at close on
+  // some file systems), and the message must say so rather than only that writing failed.
+  int error_number = 0;
+  if (std::fflush(file_) != 0 || std::ferror(file_) != 0) error_number = errno != 0 ? errno : EIO;
+  if (std::fclose(file_) != 0 && error_number == 0) error_number = errno != 0 ? errno : EIO;
   file_ = nullptr;
   std::error_code error;
-  if (written && closed) std::filesystem::rename(temporary_, destination_, error);
-  if (!written || !closed || error) {
-    std::filesystem::remove(temporary_, error);
-    throw std::runtime_error(destination_.string() + ": cannot write the output file");
+  if (error_number == 0) {
+    std::filesystem::rename(temporary_, destination_, error);
+    if (!error) return;
   }
+  const std::string reason = error_number != 0 ? std::strerror(error_number) : error.message();
+  std::filesystem::remove(temporary_, error);
+  throw std::runtime_error(destination_.string() + ": cannot write the output file (" + reason + ")");
 }
 
 }  // namespace clearjoint::dynamics

@@ -67,6 +67,45 @@ void remove_stale_staging(const fs::path& destination) {
   }
 }
 
+/// Whether `path` is the current working folder or one of its ancestors: renaming it away would
+/// pull the floor from under the user's shell (`--out .`, `--out ..`, `--out ~` from inside it).
+bool holds_working_folder(const fs::path& path) {
+  std::error_code error;
+  const fs::path working = fs::current_path(error);
+  if (error) return false;
+  for (fs::path folder = working; !folder.empty(); folder = folder.parent_path()) {
+    if (fs::equivalent(folder, path, error)) return true;
+    if (folder == folder.root_path()) break;
+  }
+  return false;
+}
+
+/// Whether `path` is a mount point (its device differs from its parent's): a rename cannot
+/// replace it, so publish() would fail after the whole run.
+bool is_mount_point(const fs::path& path) {
+  struct stat own {}, parent {};
+  if (::lstat(path.c_str(), &own) != 0 || ::stat(path.parent_path().c_str(), &parent) != 0) return false;
+  return own.st_dev != parent.st_dev;
+}
+
+/// Whether `folder` is an earlier result: it holds the marker file as a regular file (not a
+/// link, so that a link cannot lend a user's folder the marker).
+bool is_earlier_result(const fs::path& folder) {
+  std::error_code error;
+  return fs::is_regular_file(fs::symlink_status(folder / OutputFolder::kMarkerName, error));
+}
+
+/// Refuses a destination that holds anything but an earlier result: --force replaces results,
+/// never a user's files (docs/command-line.md, "Output folder").
+void require_replaceable(const fs::path& destination) {
+  std::error_code error;
+  if (fs::is_empty(destination, error) || is_earlier_result(destination)) return;
+  throw std::runtime_error(destination.string() + ": holds files that are not a clearjoint result (no " +
+                           OutputFolder::kMarkerName +
+                           " marker); --force replaces only an earlier result: choose another --out, "
+                           "or move those files away yourself");
+}
+
 /// A name no other staging folder has: the process id and 64 random bits.
 fs::path fresh_staging(const fs::path& destination) {
   std::random_device device;
@@ -82,11 +121,26 @@ fs::path fresh_staging(const fs::path& destination) {
   throw std::runtime_error(destination.string() + ": cannot find a free staging folder name");
 }
 
+/// The marker that makes a published folder recognisable as a result.
+void write_marker(const fs::path& staging) {
+  const fs::path marker = staging / OutputFolder::kMarkerName;
+  std::FILE* file = std::fopen(marker.c_str(), "wx");
+  if (file == nullptr) throw failure(marker, "cannot create the result marker", errno);
+  const bool written = std::fputs("a clearjoint result folder: `clearjoint simulate --force` may replace it\n", file) >= 0;
+  if (std::fclose(file) != 0 || !written) throw failure(marker, "cannot write the result marker", errno);
+}
+
 }  // namespace
 
 OutputFolder::OutputFolder(const fs::path& destination, bool replace_existing)
     : destination_(normalised(destination)) {
   std::error_code error;
+  if (holds_working_folder(destination_)) {
+    throw std::runtime_error(destination.string() +
+                             ": is the current folder or one of its parents, which cannot be an "
+                             "output folder (publishing replaces the folder); choose a new folder "
+                             "inside it, e.g. --out results");
+  }
   if (!fs::is_directory(destination_.parent_path(), error)) {
     fs::create_directories(destination_.parent_path(), error);
     if (error) {
@@ -95,7 +149,9 @@ OutputFolder::OutputFolder(const fs::path& destination, bool replace_existing)
     }
   }
   const fs::path lock = sibling(destination_, ".lock");
-  lock_fd_ = ::open(lock.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0666);
+  // Read-only is enough for flock, so another user of a shared, group-writable folder can lock a
+  // lock file the first user created (with the usual umask, 0644).
+  lock_fd_ = ::open(lock.c_str(), O_RDONLY | O_CREAT | O_CLOEXEC, 0666);
   if (lock_fd_ < 0) throw failure(lock, "cannot create the lock file", errno);
   // flock is released by the kernel when the process ends, however it ends: a dead run never
   // leaves a stale lock.
@@ -117,13 +173,20 @@ OutputFolder::OutputFolder(const fs::path& destination, bool replace_existing)
       if (!fs::is_directory(status)) {
         throw std::runtime_error(destination_.string() + ": exists and is not a folder");
       }
+      if (is_mount_point(destination_)) {
+        throw std::runtime_error(destination_.string() +
+                                 ": is a mount point, which a run cannot replace (the results are "
+                                 "published by renaming a folder over it); choose a folder inside it");
+      }
       if (!replace_existing && !fs::is_empty(destination_, error)) {
         throw std::runtime_error(destination_.string() +
                                  ": the folder exists and is not empty (an earlier result?); "
                                  "use --force to replace it");
       }
+      require_replaceable(destination_);
     }
     staging_ = fresh_staging(destination_);
+    write_marker(staging_);
   } catch (...) {
     ::close(lock_fd_);
     throw;
@@ -139,12 +202,14 @@ OutputFolder::~OutputFolder() {
 }
 
 void OutputFolder::publish() {
+  // Checked again just before the swap: the folder may have been filled since the constructor.
+  std::error_code error;
+  if (fs::exists(fs::symlink_status(destination_, error))) require_replaceable(destination_);
   // Exchange when the destination exists: at every instant one of the two names holds the
   // complete previous result and the other the complete new one. renameat2(RENAME_EXCHANGE)
   // is Linux's (glibc 2.28+); std::filesystem has no atomic exchange, hence the system call.
   if (::renameat2(AT_FDCWD, staging_.c_str(), AT_FDCWD, destination_.c_str(), RENAME_EXCHANGE) == 0) {
     published_ = true;
-    std::error_code error;
     fs::remove_all(staging_, error);  // now the previous result; a leftover is removed next run
     return;
   }
@@ -161,7 +226,6 @@ void OutputFolder::publish() {
       throw failure(destination_, "cannot publish the results", error_number);
     }
     published_ = true;
-    std::error_code error;
     fs::remove_all(replaced, error);
     return;
   }

@@ -222,6 +222,64 @@ full_disk)
   expect_rc 2
   expect_in err.txt 'cannot write to standard output'
   ;;
+force_keeps_user_files)
+  # --force deleted whatever --out held: the current folder, its parents, any folder of a user's.
+  # It must replace only an earlier result (its marker file) and refuse the rest, touching nothing.
+  model "$ball" >m.json
+  echo precious >thesis.tex && mkdir data && echo raw >data/run1.txt
+  echo notes >../notes.txt
+  for target in . .. "$PWD" "$PWD/.." ../b; do
+    run "$clearjoint" simulate m.json --out "$target" --force
+    expect_rc 1
+    expect_in err.txt 'is the current folder or one of its parents'
+  done
+  mkdir -p ../home && echo mine >../home/.bashrc && mkdir ../home/src && echo code >../home/src/main.c
+  run "$clearjoint" simulate m.json --out ../home --force
+  expect_rc 1
+  expect_in err.txt 'holds files that are not a clearjoint result'
+  expect_in err.txt '.clearjoint-result'
+  [[ $(cat thesis.tex) == precious && $(cat data/run1.txt) == raw && $(cat ../notes.txt) == notes ]] ||
+    fail "a user file changed"
+  [[ $(cat ../home/.bashrc) == mine && $(cat ../home/src/main.c) == code && -f m.json ]] ||
+    fail "a file in the refused folder changed"
+  [[ -z $(ls -A .. | grep -e staging -e replaced) ]] || fail "left behind: $(ls -A ..)"
+  # An earlier result (with its marker) is replaced.
+  run "$clearjoint" simulate m.json --out out
+  expect_rc 0
+  [[ -f out/.clearjoint-result ]] || fail "the result has no marker"
+  run "$clearjoint" simulate m.json --out out --force
+  expect_rc 0
+  [[ -f out/body_ball.csv && -f out/.clearjoint-result ]] || fail "the result was not replaced"
+  # A marker that is a link does not make a user's folder a result.
+  mkdir linked && echo keep >linked/keep.txt && ln -s ../out/.clearjoint-result linked/.clearjoint-result
+  run "$clearjoint" simulate m.json --out linked --force
+  expect_rc 1
+  expect_in err.txt 'holds files that are not a clearjoint result'
+  [[ $(cat linked/keep.txt) == keep ]] || fail "the linked folder changed"
+  ;;
+mount_point_out)
+  # --out on a mount point ran the whole model, then failed to publish (EBUSY): refused up front.
+  # A private mount namespace keeps the tmpfs from outliving the test.
+  model "$ball" >m.json
+  mkdir disk
+  set +e
+  unshare -m bash -c "mount -t tmpfs -o size=1m tmpfs disk && '$clearjoint' simulate m.json --out disk --force" \
+    >out.txt 2>err.txt
+  rc=$?; set -e
+  expect_rc 1
+  expect_in err.txt 'is a mount point'
+  ;;
+full_disk_at_commit)
+  # A disk that fills while the result is written: the message gives the reason (ENOSPC).
+  model "$ball" "" "" "" '"end_time": 0.2, "report_step": 0.001' >m.json
+  mkdir small
+  set +e
+  unshare -m bash -c "mount -t tmpfs -o size=12k tmpfs small && '$clearjoint' simulate m.json --out small/out" \
+    >out.txt 2>err.txt
+  rc=$?; set -e
+  expect_rc 1
+  expect_in err.txt 'No space left on device'
+  ;;
 *) fail "unknown case" ;;
 esac
 echo "simulate_hostile_test [$case]: passed"

@@ -18,9 +18,16 @@ namespace clearjoint::dynamics {
 
 class OutputFolder {
  public:
+  /// The file every result folder holds (written into the staging folder): only a folder with it
+  /// (or an empty one) is replaced when `replace_existing` is set.
+  static constexpr const char* kMarkerName = ".clearjoint-result";
+
+
   /// Takes the destination's lock (throws std::runtime_error if another run holds it), removes
-  /// the staging folders of dead runs, refuses a destination that exists and is not an empty
-  /// folder unless `replace_existing`, and creates a fresh staging folder.
+  /// the staging folders of dead runs, and creates a fresh staging folder holding kMarkerName.
+  /// Refuses (std::runtime_error) the current folder and its parents, a mount point, a
+  /// destination that exists and is not an empty folder unless `replace_existing`, and, even
+  /// then, one that is not an earlier result (no kMarkerName).
   OutputFolder(const std::filesystem::path& destination, bool replace_existing);
   OutputFolder(const OutputFolder&) = delete;
   OutputFolder& operator=(const OutputFolder&) = delete;
@@ -32,7 +39,8 @@ class OutputFolder {
   const std::filesystem::path& destination() const { return destination_; }
 
   /// Makes the staging folder the destination in one rename (an atomic exchange when the
-  /// destination exists), then removes the previous result. Throws std::runtime_error.
+  /// destination exists), then removes the previous result. Checks again first that an existing
+  /// destination is empty or an earlier result. Throws std::runtime_error.
   void publish();
 
  private:
