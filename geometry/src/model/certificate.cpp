@@ -38,8 +38,8 @@ std::string_view to_string(CertificateReason reason) noexcept {
     case R::exact_intermediate_beyond_double_range:
       return "exact tier gave up: an intermediate value left the double range (input magnitudes too far apart)";
     case R::contact_not_representable_in_world:
-      return "crossing point or its error bound not representable in double after the translation to the "
-             "world frame (coordinates too large); the contact's existence is still decided";
+      return "a contact point, depth or error bound not representable in double (coordinates too "
+             "large for the joint's size); the contact's existence is still decided";
     case R::axes_parallel_within_tolerance:
       return "axes treated as parallel within DetectionOptions::parallel_angle_tolerance (eq. 5 relaxed; "
              "decided in double precision)";

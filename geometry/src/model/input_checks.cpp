@@ -39,4 +39,10 @@ void reject_not_positive(double x, std::string_view name, std::string_view field
   reject(name, field, format(x), std::isfinite(x) ? "must be positive" : "must be finite");
 }
 
+void reject_out_of_range(const std::string& value, std::string_view name, std::string_view field) {
+  reject(name, field, value,
+         "a magnitude outside [1e-150, 1e150], the range of lengths accepted (rescale the joint: "
+         "any unit will do; a coordinate may also be 0)");
+}
+
 }  // namespace clearjoint::geometry::detail

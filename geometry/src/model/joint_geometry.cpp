@@ -24,7 +24,10 @@ void validate(const JointDimensions& dimensions, std::string_view name) {
                                                        {dimensions.bearing_length, "bearing_length"},
                                                        {dimensions.journal_radius, "journal_radius"},
                                                        {dimensions.journal_length, "journal_length"}};
-  for (const auto& [value, field] : sizes) require_positive(value, name, field);
+  for (const auto& [value, field] : sizes) {
+    require_positive(value, name, field);
+    if (!detail::length_in_range(value)) detail::reject_out_of_range(format(value), name, field);
+  }
   // eqs. (1)-(2): the clearances must be positive.
   if (!(dimensions.journal_radius < dimensions.bearing_radius)) {
     reject(name, "journal_radius", format(dimensions.journal_radius),
@@ -38,6 +41,7 @@ void validate(const JointDimensions& dimensions, std::string_view name) {
 
 void validate(const PartPose& pose, std::string_view name) {
   detail::require_finite(pose.p_WP, name, "p_WP");
+  if (!detail::coordinates_in_range(pose.p_WP)) detail::reject_out_of_range(format(pose.p_WP), name, "p_WP");
   detail::require_finite(pose.axis_W, name, "axis_W");
   detail::require_nonzero(pose.axis_W, name, "axis_W");
 }

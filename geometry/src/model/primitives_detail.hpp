@@ -37,12 +37,22 @@ inline bool passes_validation(const Cylinder3& c) {
 }
 
 inline bool passes_validation(const JointDimensions& d) {
-  return finite_positive(d.bearing_radius) & finite_positive(d.bearing_length) &
-         finite_positive(d.journal_radius) & finite_positive(d.journal_length) &
+  // length_in_range implies finite and non-zero; with the ordering below, positive.
+  return length_in_range(d.bearing_radius) & length_in_range(d.bearing_length) &
+         length_in_range(d.journal_radius) & length_in_range(d.journal_length) &
+         (d.journal_radius > 0.0) & (d.journal_length > 0.0) &
          (d.journal_radius < d.bearing_radius) & (d.journal_length < d.bearing_length);
 }
 inline bool passes_validation(const PartPose& pose) {
-  return all_finite(pose.p_WP) & all_finite(pose.axis_W) & nonzero(pose.axis_W);
+  return coordinates_in_range(pose.p_WP) & all_finite(pose.axis_W) & nonzero(pose.axis_W);
+}
+
+/// The range of kSmallestAcceptedLength/kLargestAcceptedLength over a joint's lengths: the part of
+/// validation that the free-flight prefilter's guard does not imply.
+inline bool lengths_in_range(const JointDimensions& d, const PartPose& bearing, const PartPose& journal) {
+  return length_in_range(d.bearing_radius) & length_in_range(d.bearing_length) &
+         length_in_range(d.journal_radius) & length_in_range(d.journal_length) &
+         coordinates_in_range(bearing.p_WP) & coordinates_in_range(journal.p_WP);
 }
 
 }  // namespace detail

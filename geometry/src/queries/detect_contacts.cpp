@@ -567,8 +567,7 @@ void detect_aligned(const JointSetup& s, const DetectionOptions& options, bool e
 
 /// Back from the bearing-centred frame of set_up: each translated point is rounded once more,
 /// by at most half an ulp per component, u |x|_1 in length (|x|_1 rather than |x|, whose square
-/// overflows beyond 1e154). A crossing that the translation takes out of the double range, or
-/// whose bound does, is no longer an answer: its contact becomes uncertain.
+/// overflows beyond 1e154).
 void translate_to_world(const Vector3& p_WPi, JointContacts& out) {
   // Exactly zero: Eigen's isZero() is fuzzy (|x| <= 1e-12), which skipped the translation of a
   // whole joint smaller than that.
@@ -584,13 +583,33 @@ void translate_to_world(const Vector3& p_WPi, JointContacts& out) {
       RimCrossing& crossing = contact.crossings[k];
       crossing.point += p_WPi;
       crossing.point_error += kTranslationRounding * crossing.point.cwiseAbs().sum();
-      if (contact.certificate.level != Certainty::uncertain &&
-          !(crossing.point.allFinite() && std::isfinite(crossing.point_error))) {
-        contact.certificate = {Certainty::uncertain, kNotRepresentableInWorld};
-        contact.p_WCj_error = contact.p_WCi_error = contact.depth_error = kNoErrorBound;
-        out.certificate = {Certainty::uncertain, kNotRepresentableInWorld};
-      }
     }
+  }
+}
+
+/// Whether every number of `contact` that a certificate vouches for is a finite double.
+bool representable(const Contact& contact) {
+  bool finite = std::isfinite(contact.depth) & std::isfinite(contact.depth_error) &
+                std::isfinite(contact.p_WCj_error) & std::isfinite(contact.p_WCi_error) &
+                contact.p_WCj.allFinite() & contact.p_WCi.allFinite();
+  for (int k = 0; k < contact.crossing_count; ++k) {
+    const RimCrossing& crossing = contact.crossings[k];
+    finite &= crossing.point.allFinite() & std::isfinite(crossing.point_error);
+  }
+  return finite;
+}
+
+/// A contact whose points, depth or bounds overflowed (on the way, or in the translation back)
+/// is no longer an answer that a certificate can cover: it becomes uncertain, with infinite
+/// bounds, and so does the whole answer. Its existence was decided all the same.
+void withdraw_unrepresentable(JointContacts& out) {
+  for (int i = 0; i < out.contact_count; ++i) {
+    Contact& contact = out.contacts[i];
+    if (contact.certificate.level == Certainty::uncertain || representable(contact)) continue;
+    contact.certificate = {Certainty::uncertain, kNotRepresentableInWorld};
+    contact.p_WCj_error = contact.p_WCi_error = contact.depth_error = kNoErrorBound;
+    for (int k = 0; k < contact.crossing_count; ++k) contact.crossings[k].point_error = kNoErrorBound;
+    out.certificate = {Certainty::uncertain, kNotRepresentableInWorld};
   }
 }
 
@@ -634,6 +653,12 @@ JointContacts detect_contacts(const JointDimensions& dimensions, const PartPose&
 void detect_contacts(const JointDimensions& dimensions, const PartPose& bearing,
                      const PartPose& journal, JointContacts& out, const DetectionOptions& options) {
   // Every field the answer consists of is (re)set; contacts past contact_count are left alone.
+  // The accepted range first: the prefilter's guard below implies the rest of validation, not it.
+  if (!detail::lengths_in_range(dimensions, bearing, journal)) [[unlikely]] {
+    validate(dimensions);
+    validate(bearing, "bearing");
+    validate(journal, "journal");
+  }
   Prefilter prefilter;
   prefilter_if_ready(dimensions, bearing, journal, options, prefilter);
   if (prefilter.ready) {
@@ -679,6 +704,7 @@ void detect_contacts(const JointDimensions& dimensions, const PartPose& bearing,
   out.scenario = classify_scenario(presence);
   out.certificate = certificate.result();
   translate_to_world(bearing.p_WP, out);
+  withdraw_unrepresentable(out);
 }
 
 }  // namespace clearjoint::geometry

@@ -176,7 +176,10 @@ CJ_API const char* cj_circle_cylinder_topology_string(int topology);
 /* ---- Inputs ----------------------------------------------------------------------------------- */
 
 /** Bearing radius Ri and length Li, journal radius Rj and length Lj (eqs. 1-2).
- * Valid when finite, Ri > Rj > 0 and Li > Lj > 0. */
+ * Valid when Ri > Rj > 0, Li > Lj > 0 and each lies in [1e-150, 1e150], the range of lengths
+ * accepted (C++: kSmallestAcceptedLength, kLargestAcceptedLength): outside it the certified
+ * bounds are not promised, and cj_detect returns CJ_INVALID_INPUT naming the field. Any unit
+ * will do: rescale a joint outside the range. */
 typedef struct cj_dimensions {
   double bearing_radius;
   double bearing_length;
@@ -185,7 +188,8 @@ typedef struct cj_dimensions {
 } cj_dimensions;
 
 /** Where a part is: P, the centre of its axis segment, and its axis direction a (any nonzero
- * length; only its direction counts). Finite. */
+ * length; only its direction counts). Finite; each coordinate of P is 0 or of magnitude in
+ * [1e-150, 1e150] (see cj_dimensions). */
 typedef struct cj_pose {
   double p_WP[3];
   double axis_W[3];

@@ -42,7 +42,7 @@ enum class CertificateReason : std::uint8_t {
   exact_coefficients_too_large,
   exact_intermediate_beyond_double_range,
   // Detection (eqs. 5-23):
-  contact_not_representable_in_world,  ///< a point or bound overflows after the translation back
+  contact_not_representable_in_world,  ///< a contact's point, depth or bound has no finite double bound
   axes_parallel_within_tolerance,      ///< DetectionOptions::parallel_angle_tolerance relaxed eq. (5)
   beyond_model_undecided,  ///< a depth within its error bound of the clearance: beyond the model or not
 };

@@ -84,8 +84,11 @@ struct Contact {
   /// Error bounds in metres: the contact the joint as given defines (its exact centres and
   /// crossings, the paper's formulas evaluated in real arithmetic at the exact arc middle) has
   /// its journal point within p_WCj_error of p_WCj (Euclidean), its bearing point within
-  /// p_WCi_error of p_WCi and its depth within depth_error of depth. Certified enclosures when
-  /// `certificate` is exact or certified; kNoErrorBound when it is uncertain.
+  /// p_WCi_error of p_WCi and its depth within depth_error of depth. Certified enclosures, always
+  /// finite, when `certificate` is exact or certified; kNoErrorBound when it is uncertain. A
+  /// contact whose points or depth cannot be bounded in double (its direction lost in the
+  /// rounding of a joint far from the origin, or an overflow) is uncertain for that reason
+  /// (CertificateReason::contact_not_representable_in_world), though its existence was decided.
   double p_WCj_error = kNoErrorBound;
   double p_WCi_error = kNoErrorBound;
   double depth_error = kNoErrorBound;

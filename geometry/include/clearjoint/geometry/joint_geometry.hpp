@@ -11,8 +11,20 @@
 
 namespace clearjoint::geometry {
 
+/// The lengths detect_contacts accepts: every dimension, and every coordinate of a part's centre
+/// P, is 0 (coordinates only) or of magnitude in [kSmallestAcceptedLength, kLargestAcceptedLength].
+/// The certificates hold inside this range and are not promised outside it, where the error
+/// bounds, evaluated in double, under- or overflow (a scenario (a) pose scaled by a power of two
+/// broke its certified bounds from 2^-511 and from 2^520 times its size). Any unit will do:
+/// rescale a joint outside the range. The command line accepts the same range
+/// (docs/command-line.md, "Limits"); axes, which mean only a direction, may be any finite,
+/// non-zero vector.
+inline constexpr double kSmallestAcceptedLength = 1e-150;
+inline constexpr double kLargestAcceptedLength = 1e150;
+
 /// Bearing radius Ri and length Li, journal radius Rj and length Lj (metres, or any one unit).
-/// Preconditions (checked by validate()): finite, Ri > Rj > 0, Li > Lj > 0.
+/// Preconditions (checked by validate()): Ri > Rj > 0, Li > Lj > 0, each in
+/// [kSmallestAcceptedLength, kLargestAcceptedLength].
 struct JointDimensions {
   double bearing_radius = 0.0;   ///< Ri
   double bearing_length = 0.0;   ///< Li
@@ -27,7 +39,8 @@ struct JointDimensions {
 
 /// Where one part (bearing or journal) is: P, the centre of its axis segment, and a, its axis
 /// direction, both in the world frame W. The axis need not have unit length; it must be finite
-/// and non-zero.
+/// and non-zero. Each coordinate of P is 0 or of magnitude in [kSmallestAcceptedLength,
+/// kLargestAcceptedLength].
 ///
 /// The joint these numbers define (what detect_contacts certifies its answers about): the rim,
 /// wall and base-plane normals are the axes as given (any length: only their direction counts);
@@ -43,10 +56,11 @@ struct PartPose {
 };
 
 /// Throw InvalidInput naming the field and its value ("dimensions.journal_radius = 10: must be
-/// smaller than bearing_radius = 10") for non-finite values, non-positive sizes, or a journal
-/// not smaller than its bearing.
+/// smaller than bearing_radius = 10") for non-finite values, non-positive sizes, sizes outside
+/// the accepted range, or a journal not smaller than its bearing.
 void validate(const JointDimensions& dimensions, std::string_view name = "dimensions");
-/// Throw InvalidInput for a non-finite centre or axis, or a zero axis.
+/// Throw InvalidInput for a non-finite centre or axis, a zero axis, or a centre coordinate
+/// outside the accepted range.
 void validate(const PartPose& pose, std::string_view name = "pose");
 
 /// a / |a| rounded to double (rescaled first when |a|^2 would under- or overflow).
