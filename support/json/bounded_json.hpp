@@ -5,7 +5,8 @@
 // recurse once per nesting level: a line of 100,000 '[' overflows the stack in the first copy.
 // A nesting limit checked while parsing keeps every later step's recursion shallow. nlohmann-json
 // also reads a number that underflows (1e-400) as 0 without a word; the SAX handler below sees the
-// number's text and refuses it, naming the field. Limits are documented in docs/command-line.md
+// number's text and refuses it, naming the field. A key given twice in one object (nlohmann keeps
+// the last) is refused the same way. Limits are documented in docs/command-line.md
 // ("Limits") and docs/dynamics.md.
 
 #include <cmath>
@@ -13,6 +14,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <unordered_set>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -87,6 +89,12 @@ class BoundedSaxParser : public nlohmann::detail::json_sax_dom_parser<BasicJson>
   bool start_array(std::size_t n) { return open(true) && Base::start_array(n); }
   bool key(string_t& k) {
     frames_.back().key = k;
+    // nlohmann keeps the last of two equal keys and drops the first without a word ("gravity"
+    // given twice made a ball float): one of them is a mistake, and which one is for the user.
+    if (!frames_.back().keys.insert(k).second) {
+      throw JsonLimitError(excerpt(path(), 200) +
+                           ": key given twice in one object (each key may appear once)");
+    }
     return Base::key(k);
   }
   bool end_object() {
@@ -103,6 +111,7 @@ class BoundedSaxParser : public nlohmann::detail::json_sax_dom_parser<BasicJson>
     bool array = false;
     long index = -1;  // of the current element, arrays only
     std::string key;  // of the current member, objects only
+    std::unordered_set<std::string> keys;  // every member key so far, objects only
   };
 
   static bool has_nonzero_digit(const string_t& text) {
@@ -126,7 +135,7 @@ class BoundedSaxParser : public nlohmann::detail::json_sax_dom_parser<BasicJson>
       throw JsonLimitError("nesting deeper than " + std::to_string(kMaxNestingDepth) +
                            " levels of arrays and objects (the limit) at " + excerpt(where, 200));
     }
-    frames_.push_back({array, -1, {}});
+    frames_.push_back({array, -1, {}, {}});
     return true;
   }
 

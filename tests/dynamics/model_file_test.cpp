@@ -54,6 +54,22 @@ TEST(ModelFile, RejectsUnknownKeysAsLikelyTypos) {
             "m.json: bodies[0].mas: unknown key (a typo?)");
 }
 
+TEST(ModelFile, RejectsAKeyGivenTwiceNamingItsPath) {
+  // The last "gravity" won without a word, and a ball meant to fall floated.
+  EXPECT_EQ(error_of(R"({"gravity": [0, 0, -9.81], "bodies": [], "gravity": [0, 0, 0]})"),
+            "m.json: gravity: key given twice in one object (each key may appear once)");
+  EXPECT_EQ(error_of(R"({"bodies": [{"name": "b", "mass": 1, "mass": 2, "inertia": [1,1,1], "position": [0,0,0]}]})"),
+            "m.json: bodies[0].mass: key given twice in one object (each key may appear once)");
+}
+
+TEST(ModelFile, AcceptsTheSameKeyInDifferentObjects) {
+  const ModelDescription m = parse_model(R"({
+    "bodies": [{"name": "a", "mass": 1, "inertia": [1,1,1], "position": [0,0,0]},
+               {"name": "b", "mass": 2, "inertia": [1,1,1], "position": [1,0,0]}],
+    "solver": {"end_time": 0.5, "report_step": 0.01}})", "m.json");
+  EXPECT_EQ(m.bodies.size(), 2u);
+}
+
 TEST(ModelFile, RejectsUnknownJointTypes) {
   const std::string e = error_of(R"({"bodies": [], "joints": [{"name": "j", "type": "screw", "body_i": "a", "body_j": "b"}]})");
   EXPECT_NE(e.find("joints[0].type = \"screw\": unknown joint type"), std::string::npos) << e;
