@@ -4,6 +4,7 @@
 
 #include <unistd.h>
 
+#include <chrono>
 #include <cstdio>
 #include <cstring>
 #include <string>
@@ -28,16 +29,39 @@ constexpr const char* kUsage =
     "  --force        replace DIR if it exists and is not empty (otherwise an error)\n"
     "  --allow-large  run beyond the size guard (1000 s simulated, 1e7 report times, 4 GB of\n"
     "                 CSV files)\n"
-    "  A progress bar is drawn on standard error when it is a terminal.\n"
+    "  Progress goes to standard error: a bar on a terminal, else a line every 10 s.\n"
     "  Model file format: model.schema.json (JSON Schema 2020-12, in docs/schema/ and installed\n"
     "  in share/clearjoint/schema/); examples in models/; docs/dynamics.md.\n";
 
-/// A one-line bar redrawn in place; only on a terminal, so logs and pipes stay clean.
-class ProgressBar {
+/// Progress on standard error: a one-line bar redrawn in place on a terminal; elsewhere (a log,
+/// a batch job) one line every kLogInterval, so that a long run is seen to be alive without
+/// filling the log.
+class ProgressReport {
  public:
-  ProgressBar() : enabled_(::isatty(::fileno(stderr)) == 1) {}
+  ProgressReport() : terminal_(::isatty(::fileno(stderr)) == 1), start_(Clock::now()), last_log_(start_) {}
   void update(double fraction) {
-    if (!enabled_) return;
+    if (terminal_) {
+      draw_bar(fraction);
+      return;
+    }
+    const auto now = Clock::now();
+    if (now - last_log_ < kLogInterval) return;
+    last_log_ = now;
+    const double elapsed = std::chrono::duration<double>(now - start_).count();
+    std::fprintf(stderr, "clearjoint simulate: %.1f%% of the simulated time after %.0f s\n", 100.0 * fraction,
+                 elapsed);
+    std::fflush(stderr);
+  }
+  void finish() {
+    if (terminal_ && last_percent_ >= 0) std::fputc('\n', stderr);
+  }
+
+ private:
+  using Clock = std::chrono::steady_clock;
+  /// Between two log lines when standard error is not a terminal.
+  static constexpr std::chrono::seconds kLogInterval{10};
+
+  void draw_bar(double fraction) {
     const int percent = static_cast<int>(fraction * 100.0);
     if (percent == last_percent_) return;
     last_percent_ = percent;
@@ -47,12 +71,9 @@ class ProgressBar {
                  kWidth - filled, "", percent);
     std::fflush(stderr);
   }
-  void finish() {
-    if (enabled_ && last_percent_ >= 0) std::fputc('\n', stderr);
-  }
 
- private:
-  bool enabled_;
+  bool terminal_;
+  Clock::time_point start_, last_log_;
   int last_percent_ = -1;
 };
 
@@ -96,7 +117,7 @@ int run_simulate(Arguments args) {
   const dynamics::RunSize size = dynamics::estimate_run_size(model);
   if (!allow_large) dynamics::check_run_size(size);
   dynamics::OutputFolder folder(out_dir, force);
-  ProgressBar bar;
+  ProgressReport bar;
   dynamics::SimulationSummary summary;
   try {
     summary = dynamics::simulate(model, folder.staging(), [&bar](double f) { bar.update(f); });

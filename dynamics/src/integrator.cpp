@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <boost/numeric/odeint.hpp>
 #include <cmath>
+#include <cstdio>
+#include <string>
 
 #include "clearjoint/dynamics/errors.hpp"
 
@@ -54,6 +56,41 @@ double locate_onset(MultibodySystem& system, Stepper& stepper, std::pair<double,
   return after;
 }
 
+/// `x` with three significant digits: a rate and a projection, not values to read back.
+std::string three_digits(double x) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", x);
+  return text;
+}
+
+/// Every kStallWindowSteps accepted steps: whether the rest of the run, at the mean step of the
+/// window just ended, needs more steps than the budget allows. Stops it then, naming the step.
+class StepBudget {
+ public:
+  StepBudget(const IntegratorSettings& settings, double start_time)
+      : settings_(settings), window_start_(start_time) {}
+
+  void check(long steps, double time) {
+    if (steps % kStallWindowSteps != 0) return;
+    const double mean_step = (time - window_start_) / static_cast<double>(kStallWindowSteps);
+    window_start_ = time;
+    const double projected = static_cast<double>(steps) + (settings_.end_time - time) / mean_step;
+    if (!(projected > static_cast<double>(settings_.max_steps))) return;
+    throw SolverError("integration stopped at t = " + format_number(time) +
+                      ": the step size has collapsed to a mean of " + three_digits(mean_step) +
+                      " s over the last " + std::to_string(kStallWindowSteps) +
+                      " steps; at that rate the run needs about " + three_digits(projected) +
+                      " steps, more than solver.max_steps = " + std::to_string(settings_.max_steps) +
+                      ". Often a body starts far beyond a clearance or a contact is too stiff to "
+                      "resolve: check the initial conditions and the force laws, or raise "
+                      "solver.max_steps");
+  }
+
+ private:
+  const IntegratorSettings& settings_;
+  double window_start_;
+};
+
 }  // namespace
 
 void validate(const IntegratorSettings& s) {
@@ -78,7 +115,8 @@ void validate(const IntegratorSettings& s) {
 }
 
 IntegrationStatistics integrate(MultibodySystem& system, std::vector<double>& y,
-                                const IntegratorSettings& settings, const Observer& observer) {
+                                const IntegratorSettings& settings, const Observer& observer,
+                                const StepMonitor& monitor) {
   validate(settings);
   if (!all_finite(y)) throw SolverError("initial state is not finite");
   using State = std::vector<double>;
@@ -107,6 +145,7 @@ IntegrationStatistics integrate(MultibodySystem& system, std::vector<double>& y,
   State accepted(y.size());
   State onset(y.size());
   long k = 1;  // next report
+  StepBudget budget(settings, settings.start_time);
   while (k <= report_count) {
     std::pair<double, double> interval;
     for (;;) {
@@ -151,6 +190,7 @@ IntegrationStatistics integrate(MultibodySystem& system, std::vector<double>& y,
                         ": more than solver.max_steps = " + std::to_string(settings.max_steps) +
                         " steps");
     }
+    budget.check(stats.steps, interval.second);
     // A new event (contact onset) seen at the end of the step: bracket its first instant.
     double onset_time = stepper.current_time();
     bool located = false;
@@ -167,6 +207,7 @@ IntegrationStatistics integrate(MultibodySystem& system, std::vector<double>& y,
       stepper.calc_state(report_time(k), reported);
       observer(report_time(k), reported);
     }
+    if (monitor) monitor(reported_up_to);  // after the reports: times reach it in order
     if (k > report_count) break;
     // Record delta_dot(-) at the onset; then (keeping the end state) the usual update at the end
     // of the step adds events seen only there and clears those that ended.

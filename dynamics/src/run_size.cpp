@@ -20,7 +20,8 @@ constexpr int kEnergyColumns = 7;   // energy.csv
 constexpr int kReactionColumns = 6; // per joint in reactions.csv
 
 std::string lift_hint() {
-  return " (a guard against a slip of the exponent; pass --allow-large to run it anyway)";
+  return " (a guard against a slip of the exponent; pass --allow-large, or allow_large=True in "
+         "Python, to run it anyway)";
 }
 
 }  // namespace

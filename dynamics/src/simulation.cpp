@@ -2,6 +2,7 @@
 #include "clearjoint/dynamics/simulation.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cctype>
 #include <cmath>
 #include <memory>
@@ -110,6 +111,9 @@ class CsvDirectory final : public SimulationOutput {
   std::vector<std::unique_ptr<CsvWriter>> files_;
 };
 
+/// Wall-clock time between two progress calls made between report times.
+constexpr std::chrono::milliseconds kProgressInterval{100};
+
 /// The run itself, on a model already built (so that the CSV directory is created only for a
 /// model that builds).
 SimulationSummary run(const ModelDescription& model, BuiltModel built, SimulationOutput& output,
@@ -214,8 +218,18 @@ SimulationSummary run(const ModelDescription& model, BuiltModel built, Simulatio
     if (progress) progress((t - model.solver.start_time) / span);
   };
 
+  // Between report times too, so that a callback that throws on a user's interrupt stops a run
+  // whose report step is long (or whose steps have become tiny) within a fraction of a second.
+  auto last_progress = std::chrono::steady_clock::now();
+  auto monitor = [&](double t) {
+    const auto now = std::chrono::steady_clock::now();
+    if (now - last_progress < kProgressInterval) return;
+    last_progress = now;
+    progress((t - model.solver.start_time) / span);
+  };
+
   std::vector<double> y = built.initial_state;
-  summary.integration = integrate(system, y, model.solver, observe);
+  summary.integration = integrate(system, y, model.solver, observe, progress ? StepMonitor(monitor) : StepMonitor());
   output.commit();
   for (const auto& element : system.force_elements()) {
     std::string text = element->statistics_text();

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -131,6 +132,73 @@ TEST(Integrator, StopsWithAClearErrorWhenTheStepCollapses) {
   settings.report_step = 0.01;
   settings.minimum_step = 1e-9;
   EXPECT_THROW(integrate(system, y, settings, [](double, std::span<const double>) {}), SolverError);
+}
+
+/// A linear spring so stiff that the explicit stepper's stability limit keeps every step near
+/// 3e-10 s (omega = 1e10 rad/s): legal steps, far above minimum_step, and a run of hours.
+class VeryStiffSpring final : public ForceElement {
+ public:
+  std::string_view name() const override { return "stiff"; }
+  void add_forces(const ForceContext& context, GeneralisedForces& forces) const override {
+    const double x = context.kinematics.body(0).position_W.x();
+    forces.add_force(0, Vector3(-1e20 * x, 0.0, 0.0));
+  }
+};
+
+TEST(Integrator, StopsEarlyNamingTheStepWhenTheStepsLeftWouldExceedTheBudget) {
+  // The budget is projected every kStallWindowSteps steps: the run stops after the first window,
+  // not after max_steps, and says why.
+  std::vector<std::unique_ptr<ForceElement>> forces;
+  forces.push_back(std::make_unique<VeryStiffSpring>());
+  MultibodySystem system({{"ball", 1.0, Vector3(1, 1, 1)}}, {}, std::move(forces), {});
+  BodyState s;
+  s.position_W.x() = 1e-3;
+  std::vector<double> y = system.pack(std::vector<BodyState>{s});
+  IntegratorSettings settings;
+  settings.end_time = 0.01;  // some 3e7 steps of 3e-10 s
+  settings.report_step = 0.01;
+  settings.max_steps = 10'000'000;
+  long steps = 0;
+  try {
+    integrate(system, y, settings, [](double, std::span<const double>) {}, [&](double) { ++steps; });
+    FAIL() << "the run went on";
+  } catch (const SolverError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("the step size has collapsed to a mean of"), std::string::npos) << message;
+    EXPECT_NE(message.find("more than solver.max_steps = 10000000"), std::string::npos) << message;
+  }
+  EXPECT_EQ(steps, kStallWindowSteps - 1);  // the monitor is not called for the step that stopped it
+}
+
+TEST(Integrator, RunsOnWhenTheProjectedStepsStayWithinTheBudget) {
+  // The same spring over a span that fits the budget: 1e-5 s is some 30,000 steps.
+  std::vector<std::unique_ptr<ForceElement>> forces;
+  forces.push_back(std::make_unique<VeryStiffSpring>());
+  MultibodySystem system({{"ball", 1.0, Vector3(1, 1, 1)}}, {}, std::move(forces), {});
+  BodyState s;
+  s.position_W.x() = 1e-3;
+  std::vector<double> y = system.pack(std::vector<BodyState>{s});
+  IntegratorSettings settings;
+  settings.end_time = 1e-5;
+  settings.report_step = 1e-5;
+  settings.initial_step = 1e-12;
+  const IntegrationStatistics stats = integrate(system, y, settings, [](double, std::span<const double>) {});
+  EXPECT_GT(stats.steps, 1000);
+}
+
+TEST(Integrator, CallsTheStepMonitorWithTimesInOrderWithTheReports) {
+  // Reports inside a step come before the monitor's call for the step's end.
+  std::vector<std::unique_ptr<ForceElement>> forces;
+  MultibodySystem system({{"ball", 1.0, Vector3(1, 1, 1)}}, {}, std::move(forces), {});
+  std::vector<double> y = system.pack(std::vector<BodyState>{BodyState{}});
+  IntegratorSettings settings;
+  settings.end_time = 1.0;
+  settings.report_step = 1e-3;
+  std::vector<double> times;
+  integrate(system, y, settings, [&](double t, std::span<const double>) { times.push_back(t); },
+            [&](double t) { times.push_back(t); });
+  EXPECT_GT(times.size(), 1001u);
+  EXPECT_TRUE(std::is_sorted(times.begin(), times.end()));
 }
 
 /// Keeps a count of the accepted states it is shown (update_extra_state) in its one extra state

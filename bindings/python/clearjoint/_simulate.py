@@ -2,7 +2,9 @@
 """clearjoint.simulate: run a multibody model in process and get its time series as NumPy arrays."""
 from __future__ import annotations
 
+import errno
 import json
+import math
 import os
 import sys
 from dataclasses import dataclass, field
@@ -115,7 +117,48 @@ def _json_value(value: Any) -> Any:
     raise TypeError(f"model: a value of type {type(value).__name__} is not a JSON value")
 
 
-def simulate(model: Model, *, progress: Progress = False) -> SimulationResult:
+#: Deepest nesting of a model dict, as for model files (support/json/bounded_json.hpp).
+_MAX_NESTING_DEPTH = 64
+
+
+def _check_json_values(value: Any, path: str, depth: int = 0) -> None:
+    """Refuse what JSON cannot carry, naming the field: NaN and infinities (json.dumps writes them
+    as bare words, which the model reader then reports as a parse error at a column), and
+    nesting deeper than the model reader accepts."""
+    if depth > _MAX_NESTING_DEPTH:
+        raise ValueError(f"{path}: nesting deeper than {_MAX_NESTING_DEPTH} levels of lists and dicts (the limit)")
+    if isinstance(value, Mapping):
+        for key, item in value.items():
+            if not isinstance(key, str):
+                raise TypeError(f"{path}: key {key!r} is a {type(key).__name__}; model keys are strings")
+            _check_json_values(item, f"{path}.{key}" if path else key, depth + 1)
+    elif isinstance(value, (list, tuple)):
+        for index, item in enumerate(value):
+            _check_json_values(item, f"{path}[{index}]", depth + 1)
+    elif isinstance(value, np.ndarray):
+        if value.dtype.kind in "fc" and not np.all(np.isfinite(value)):
+            raise ValueError(f"{path} = {value.tolist()!r}: every value must be finite")
+    elif isinstance(value, (float, np.floating)) and not math.isfinite(value):
+        raise ValueError(f"{path} = {value!r}: must be finite")
+
+
+def _model_path(model: Union[str, "os.PathLike[str]"]) -> str:
+    """The path as a str, refusing what the C++ reader would misread: a NUL ends a C string
+    ('ball.json\\0/etc/passwd' would run ball.json). A missing file is FileNotFoundError, as
+    open() says it."""
+    path = os.fspath(model)
+    if isinstance(path, bytes):
+        path = os.fsdecode(path)
+    if "\0" in path:
+        raise ValueError(f"model = {path!r}: a path cannot contain a NUL character")
+    if not os.path.exists(path):
+        raise FileNotFoundError(errno.ENOENT, "model file not found", path)
+    if os.path.isdir(path):
+        raise IsADirectoryError(errno.EISDIR, "the model is a folder, not a model file", path)
+    return path
+
+
+def simulate(model: Model, *, progress: Progress = False, allow_large: bool = False) -> SimulationResult:
     """Run a multibody model in process and return its time series as NumPy arrays.
 
     Parameters
@@ -128,7 +171,12 @@ def simulate(model: Model, *, progress: Progress = False) -> SimulationResult:
         False (default) or None: silent. True: a progress bar over simulated time, tqdm's when
         tqdm is installed, else a one-line bar on standard error. A callable: called as
         ``progress(fraction)`` with the fraction of simulated time done, in [0, 1], at every
-        report time.
+        report time and, between them, every 0.1 s of wall time.
+    allow_large:
+        False (default): refuse a run beyond the size guard of ``clearjoint simulate``
+        (docs/command-line.md, "Size guard": more than 1000 s simulated, 1e7 report times or an
+        estimated 4 GB of tables) with ValueError naming the setting; True runs it anyway, as
+        ``--allow-large`` does.
 
     Returns
     -------
@@ -140,21 +188,27 @@ def simulate(model: Model, *, progress: Progress = False) -> SimulationResult:
     ------
     ValueError
         A bad model; the message names the field, e.g.
-        ``"<dict>: bodies[1].mass = -1: must be positive"``.
+        ``"<dict>: bodies[1].mass = -1: must be positive"`` or ``"bodies[0].mass = nan: must be
+        finite"``; a run beyond the size guard; a path with a NUL character.
+    FileNotFoundError
+        The model file does not exist.
     clearjoint.SolverError
         The equations could not be solved from some time on (a RuntimeError).
     KeyboardInterrupt
-        Ctrl-C: the run stops at the next report time; nothing is returned.
+        Ctrl-C: the run stops within about 0.1 s; nothing is returned.
 
     The integration runs without the GIL; other Python threads keep running.
     """
     bar = _progress_bar(progress)
     try:
+        if not isinstance(allow_large, bool):
+            raise TypeError(f"allow_large = {allow_large!r}: must be True or False")
         if isinstance(model, Mapping):
-            text = json.dumps(model, default=_json_value)
-            tables, summary = _core.simulate_text(text, "<dict>", bar)
+            _check_json_values(model, "")
+            text = json.dumps(model, default=_json_value, allow_nan=False)
+            tables, summary = _core.simulate_text(text, "<dict>", bar, allow_large)
         elif isinstance(model, (str, os.PathLike)):
-            tables, summary = _core.simulate_file(os.fspath(model), bar)
+            tables, summary = _core.simulate_file(_model_path(model), bar, allow_large)
         else:
             raise TypeError(f"model = {type(model).__name__}: must be a path or a dict in the "
                             "model-file format")

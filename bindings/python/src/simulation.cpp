@@ -9,6 +9,7 @@
 
 #include "bindings.hpp"
 #include "clearjoint/dynamics/model_file.hpp"
+#include "clearjoint/dynamics/run_size.hpp"
 #include "clearjoint/dynamics/simulation.hpp"
 #include "clearjoint/dynamics/simulation_output.hpp"
 
@@ -59,10 +60,13 @@ py::dict summary_to_python(const dynamics::SimulationSummary& s) {
   return d;
 }
 
-/// Run without the GIL. At every report time the callback takes the GIL back to let Python
-/// handle signals (Ctrl-C raises KeyboardInterrupt here, which unwinds the run: nothing is
-/// committed) and to call `progress(fraction)` unless it is None.
-py::tuple run(const dynamics::ModelDescription& model, const py::object& progress) {
+/// Run without the GIL. At every report time, and between them every 0.1 s of wall time
+/// (simulation.hpp), the callback takes the GIL back to let Python handle signals (Ctrl-C raises
+/// KeyboardInterrupt here, which unwinds the run: nothing is committed) and to call
+/// `progress(fraction)` unless it is None. The size guard of the command line (run_size.hpp)
+/// refuses a run far beyond any real study unless `allow_large`.
+py::tuple run(const dynamics::ModelDescription& model, const py::object& progress, bool allow_large) {
+  if (!allow_large) dynamics::check_run_size(dynamics::estimate_run_size(model));
   dynamics::TablesInMemory tables;
   dynamics::SimulationSummary summary;
   {
@@ -81,18 +85,18 @@ py::tuple run(const dynamics::ModelDescription& model, const py::object& progres
 void bind_simulation(py::module_& module) {
   module.def(
       "simulate_text",
-      [](const std::string& json_text, const std::string& source, const py::object& progress) {
-        return run(dynamics::parse_model(json_text, source), progress);
+      [](const std::string& json_text, const std::string& source, const py::object& progress, bool allow_large) {
+        return run(dynamics::parse_model(json_text, source), progress, allow_large);
       },
-      py::arg("json_text"), py::arg("source"), py::arg("progress") = py::none(),
+      py::arg("json_text"), py::arg("source"), py::arg("progress") = py::none(), py::arg("allow_large") = false,
       "Parse a model from JSON text (`source` names it in messages) and run it: "
       "(tables, summary), tables = {name: (header, values[columns, rows])}.");
   module.def(
       "simulate_file",
-      [](const std::string& path, const py::object& progress) {
-        return run(dynamics::read_model_file(path), progress);
+      [](const std::string& path, const py::object& progress, bool allow_large) {
+        return run(dynamics::read_model_file(path), progress, allow_large);
       },
-      py::arg("path"), py::arg("progress") = py::none(),
+      py::arg("path"), py::arg("progress") = py::none(), py::arg("allow_large") = false,
       "Read a model file and run it: (tables, summary) as simulate_text.");
 }
 

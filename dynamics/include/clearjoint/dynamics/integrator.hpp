@@ -36,13 +36,23 @@ struct IntegratorSettings {
   /// A proposed step below this [s] means the solution is no longer resolvable (a singularity or
   /// a blow-up): the run stops. 1e-14 s is ~100 ulps of t at t = 1 s; below it t + dt == t soon.
   double minimum_step = 1e-14;
-  long max_steps = 100'000'000;  ///< guard against a hang with a tiny but legal step
+  /// Most accepted steps. Also a budget checked ahead: every kStallWindowSteps steps the run
+  /// projects how many steps the rest of it needs at the mean step of that window, and stops
+  /// (SolverError naming the step size) when the projection exceeds this, long before the steps
+  /// are spent: a model that starts deep beyond a clearance takes steps of 1e-10 s and would run
+  /// for hours (docs/dynamics.md, "When a run stops").
+  long max_steps = 100'000'000;
   /// record_at_onset, chosen by measurement (docs/dynamics.md, "Contact onset"): both located
   /// variants give the exact restitution law to 1e-4 and the tight-tolerance impact speeds to
   /// 1 %, but restarting puts the interpolant's error at a non-smooth instant into the state
   /// (an elastic journal's energy drift over 57 impacts at 1e-11: 4.3e-6 against 2.1e-7).
   OnsetHandling onset = OnsetHandling::record_at_onset;
 };
+
+/// Steps between two projections of the step budget (IntegratorSettings::max_steps). Long enough
+/// that one impact's short steps (hundreds to a few thousand) do not make the projection, short
+/// enough that a collapsed run stops within seconds (some 20,000 steps a second).
+inline constexpr long kStallWindowSteps = 50'000;
 
 /// Throw ModelError naming the field unless the settings are usable (finite, ordered, positive).
 void validate(const IntegratorSettings& settings);
@@ -65,6 +75,9 @@ struct IntegrationStatistics {
 
 /// Called at start_time and at every report time up to end_time with the interpolated state.
 using Observer = std::function<void(double time, std::span<const double> state)>;
+/// Called after every accepted step with its end time (may be empty): cheap, so that a caller can
+/// look at a clock there, report progress between report times, or throw to stop the run.
+using StepMonitor = std::function<void(double time)>;
 
 /// Integrate y from start_time to end_time; on return y is the state at end_time.
 /// After every accepted step (and at the start) the force elements may change their extra state
@@ -76,9 +89,11 @@ using Observer = std::function<void(double time, std::span<const double> state)>
 /// bracket's upper end (the first probed instant with the event present).
 /// A right-hand side that throws SolverError at a trial stage rejects that step: it is retried
 /// with a quarter of the step size; only a failure that persists below minimum_step stops the run.
-/// Throws SolverError if the step collapses, max_steps is exceeded, the state stops being finite,
-/// or the right-hand side fails (e.g. singular constraints); the message gives the time.
+/// Throws SolverError if the step collapses (below minimum_step, or so small that the projected
+/// steps exceed max_steps), max_steps is exceeded, the state stops being finite, or the
+/// right-hand side fails (e.g. singular constraints); the message gives the time.
 IntegrationStatistics integrate(MultibodySystem& system, std::vector<double>& y,
-                                const IntegratorSettings& settings, const Observer& observer);
+                                const IntegratorSettings& settings, const Observer& observer,
+                                const StepMonitor& monitor = {});
 
 }  // namespace clearjoint::dynamics

@@ -37,8 +37,9 @@ struct SimulationSummary {
   std::vector<std::string> element_statistics;  ///< ForceElement::statistics_text(), non-empty ones
 };
 
-/// progress(fraction in [0, 1]) is called at report times (may be empty). It may throw to stop
-/// the run (a user's interrupt): the exception leaves simulate() and no output is committed.
+/// progress(fraction in [0, 1]) is called at report times and, between them, after an accepted
+/// step when 0.1 s of wall time has passed since the last such call (may be empty). It may throw to stop the run (a user's interrupt): the exception
+/// leaves simulate() and no output is committed.
 using ProgressCallback = std::function<void(double fraction)>;
 
 /// Run `model` and write the files above into `output_directory` (created if missing). Each file
