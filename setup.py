@@ -1,16 +1,22 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """`pip install .`: the clearjoint Python package, its compiled core built by CMake.
 
-A small setuptools command rather than scikit-build: Debian 12 ships scikit-build 0.16
-(python3-skbuild, not installed by default), the classic line that scikit-build-core has replaced,
-and either needs the same CMake call as below; this file is that call and nothing else. There is
-no pyproject.toml on purpose: with one, pip builds in an isolated environment and downloads
-setuptools from PyPI, which a machine with only Debian's packages cannot do. Without it, pip
-uses the setuptools already installed (python3-setuptools, or the copy in a virtual environment).
+pyproject.toml holds the metadata and the build system (setuptools); this file adds the two things
+a declarative file cannot say: the version, read from CMakeLists.txt, and a build_ext command that
+runs CMake. scikit-build-core would do the latter, but Debian 12 does not package it (it has only
+the classic scikit-build 0.16, python3-skbuild), and the CMake call below is all it would do.
 
-The extension is linked against static, position-independent copies of the clearjoint libraries,
-so the installed package does not depend on a `cmake --install` of the C++ libraries. docs/python.md
-gives the commands (a virtual environment with --system-site-packages for Debian's NumPy).
+Offline, with Debian's python3-setuptools and python3-wheel, in a virtual environment that sees
+Debian's NumPy (docs/python.md):
+
+    /usr/bin/python3 -m venv --system-site-packages V
+    V/bin/pip install --no-index --no-build-isolation .
+
+The extension is linked against static, position-independent copies of the clearjoint libraries
+(cmake/ClearjointPositionIndependent.cmake), so the installed package does not depend on a
+`cmake --install` of the C++ libraries. The CMake build folder is build/setuptools/temp.*/cmake,
+kept between runs: a second `pip install .` or `pip wheel .` recompiles only what changed.
+CMAKE_BUILD_PARALLEL_LEVEL sets the number of compile jobs (default: every core).
 """
 import os
 import pathlib
@@ -19,7 +25,7 @@ import shutil
 import subprocess
 import sys
 
-from setuptools import Extension, setup
+from setuptools import Extension, find_namespace_packages, setup
 from setuptools.command.build_ext import build_ext
 from setuptools.command.build_py import build_py
 
@@ -53,6 +59,11 @@ class CMakeBuild(build_ext):
                         "-DCLEARJOINT_BUILD_TESTS=OFF",
                         "-DCLEARJOINT_BUILD_BENCHMARKS=OFF",
                         "-DCLEARJOINT_BUILD_APPS=OFF",
+                        # Nor what the module does not link: the other bindings, the engines.
+                        "-DCLEARJOINT_BUILD_MATLAB=OFF",
+                        "-DCLEARJOINT_BUILD_FORTRAN=OFF",
+                        "-DCLEARJOINT_WITH_SIMBODY=OFF",
+                        "-DCLEARJOINT_WITH_MUJOCO=OFF",
                         "-DBUILD_SHARED_LIBS=OFF",
                         "-DCMAKE_POSITION_INDEPENDENT_CODE=ON"], check=True)
         subprocess.run(["cmake", "--build", str(build_dir), "--target", "clearjoint_python_core",
@@ -73,19 +84,20 @@ class BuildPy(build_py):
         shutil.copyfile(ROOT / "docs" / "schema" / "study-v1.schema.json", study / "study-v1.schema.json")
 
 
+# Name, description and dependencies: pyproject.toml. The packages are said here, not in its
+# [tool.setuptools] table, which Debian 12's setuptools 66 still calls a beta.
 setup(
-    name="clearjoint",
     version=project_version(),
-    description="Certified contact detection for spatial revolute joints with clearance",
-    license="BSD-3-Clause",
-    packages=["clearjoint", "clearjoint.study"],
-    package_dir={"clearjoint": "bindings/python/clearjoint"},
-    package_data={"clearjoint": ["py.typed", "__init__.pyi"]},
+    # Namespace packages too: the viewer's web/ folders hold data only (setuptools' advice).
+    packages=find_namespace_packages(where="bindings/python", include=["clearjoint", "clearjoint.*"],
+                                     exclude=["*.__pycache__"]),
+    package_dir={"": "bindings/python"},
+    package_data={"clearjoint": ["py.typed", "__init__.pyi"],
+                  "clearjoint.view.web": ["*.html", "*.js", "*.css"],
+                  "clearjoint.view.web.vendor": ["*.js", "*.txt"]},
+    zip_safe=False,
     ext_modules=[CMakeExtension()],
     cmdclass={"build_ext": CMakeBuild, "build_py": BuildPy},
-    python_requires=">=3.8",
-    install_requires=["numpy"],
-    zip_safe=False,
     # Beside, not inside, the CMake build tree the README uses (build/).
     options={"build": {"build_base": "build/setuptools"}},
 )
