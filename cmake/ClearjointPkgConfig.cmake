@@ -16,6 +16,11 @@
 # The file locates the install by its own place (${pcfiledir}), not by an absolute prefix: the
 # prefix is chosen at install time (`cmake --install build --prefix P`, CPack's /usr), after this
 # file is generated, and an installed tree may be moved.
+#
+# A shared library's Libs carry -Wl,-rpath,${libdir}, so that a program linked with them runs
+# without LD_LIBRARY_PATH, as programs built with the CMake package do; except when the install
+# prefix is /usr, whose library folder the dynamic loader searches anyway (Debian's policy forbids
+# a run path there). The prefix is known only when installing: the install step writes the file.
 include_guard(GLOBAL)
 include(GNUInstallDirs)
 
@@ -47,8 +52,14 @@ function(clearjoint_add_pkg_config)
     set(requires_line "Requires: ${requires}\n")
   endif()
 
+  set(rpath_placeholder "")
+  if(type STREQUAL "SHARED_LIBRARY")
+    set(rpath_placeholder "%CLEARJOINT_PKG_CONFIG_RPATH%")
+  endif()
+
   # file(GENERATE) resolves the library's file name (OUTPUT_NAME, without "lib" and suffix).
-  file(GENERATE OUTPUT ${CMAKE_CURRENT_BINARY_DIR}/${arg_NAME}.pc CONTENT
+  set(template ${CMAKE_CURRENT_BINARY_DIR}/pkgconfig/${arg_NAME}.pc.in)
+  file(GENERATE OUTPUT ${template} CONTENT
 "prefix=\${pcfiledir}/${to_prefix}
 libdir=\${prefix}/${CMAKE_INSTALL_LIBDIR}
 includedir=\${prefix}/${CMAKE_INSTALL_INCLUDEDIR}
@@ -57,8 +68,21 @@ Name: ${arg_NAME}
 Description: ${arg_DESCRIPTION}
 Version: ${PROJECT_VERSION}
 ${requires_line}Cflags: -I\${includedir}
-Libs: -L\${libdir} -l$<TARGET_FILE_BASE_NAME:${arg_TARGET}>
+Libs: -L\${libdir} -l$<TARGET_FILE_BASE_NAME:${arg_TARGET}>${rpath_placeholder}
 ${libs_private_line}")
-  install(FILES ${CMAKE_CURRENT_BINARY_DIR}/${arg_NAME}.pc
-          DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig)
+  # At install time, CMAKE_INSTALL_PREFIX is the prefix installed into (--prefix, CPack's). The
+  # placeholder is not @...@: the install script runs under CMake's old policy CMP0053, which
+  # would expand such a reference in the script's own text.
+  set(staged ${CMAKE_CURRENT_BINARY_DIR}/pkgconfig/install/${arg_NAME}.pc)
+  install(CODE "
+    if(CMAKE_INSTALL_PREFIX STREQUAL \"/usr\" OR CMAKE_INSTALL_PREFIX STREQUAL \"/usr/\")
+      set(CLEARJOINT_PKG_CONFIG_RPATH \"\")
+    else()
+      set(CLEARJOINT_PKG_CONFIG_RPATH \" -Wl,-rpath,\\\${libdir}\")
+    endif()
+    file(READ \"${template}\" content)
+    string(REPLACE \"%CLEARJOINT_PKG_CONFIG_RPATH%\" \"\${CLEARJOINT_PKG_CONFIG_RPATH}\" content \"\${content}\")
+    file(WRITE \"${staged}\" \"\${content}\")
+    file(INSTALL DESTINATION \"\${CMAKE_INSTALL_PREFIX}/${CMAKE_INSTALL_LIBDIR}/pkgconfig\"
+         TYPE FILE FILES \"${staged}\")")
 endfunction()

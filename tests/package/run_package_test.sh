@@ -82,25 +82,26 @@ pkg-config-consumer)
     [[ $(pkg-config --modversion "$module") == "$CLEARJOINT_VERSION" ]] ||
       fail "$module.pc says version $(pkg-config --modversion "$module"), the project $CLEARJOINT_VERSION"
   done
-  libdir=$(pkg-config --variable=libdir clearjoint-geometry)
   # shellcheck disable=SC2046 # the flags are separate words
   # shellcheck disable=SC2086 # CXXFLAGS holds separate words
   "$cxx" ${CXXFLAGS:-} ${LDFLAGS:-} -std=c++20 -o "$out/consumer" "$consumer/main.cpp" \
-    $(pkg-config "${static[@]}" --cflags --libs clearjoint-geometry) -Wl,-rpath,"$libdir"
+    $(pkg-config "${static[@]}" --cflags --libs clearjoint-geometry)
   # shellcheck disable=SC2046
   # shellcheck disable=SC2086
   "$cxx" ${CXXFLAGS:-} ${LDFLAGS:-} -std=c++20 -o "$out/dynamics_consumer" "$consumer/dynamics_main.cpp" \
-    $(pkg-config "${static[@]}" --cflags --libs clearjoint-dynamics) -Wl,-rpath,"$libdir"
+    $(pkg-config "${static[@]}" --cflags --libs clearjoint-dynamics)
   # The C API from C, compiled by the C compiler.
   # shellcheck disable=SC2046
   # shellcheck disable=SC2086
   "$cc" ${CFLAGS:-} ${LDFLAGS:-} -std=c99 -o "$out/c_consumer" "$consumer/c_main.c" \
-    $(pkg-config "${static[@]}" --cflags --libs clearjoint-c) -lm -Wl,-rpath,"$libdir"
+    $(pkg-config "${static[@]}" --cflags --libs clearjoint-c) -lm
   echo "pkg-config ${static[*]} --libs clearjoint-dynamics: $(pkg-config "${static[@]}" --libs clearjoint-dynamics)"
   echo "pkg-config ${static[*]} --libs clearjoint-c: $(pkg-config "${static[@]}" --libs clearjoint-c)"
-  "$out/consumer"
-  "$out/dynamics_consumer"
-  "$out/c_consumer"
+  # Shared: the .pc files' Libs give the programs a run path to the prefix's libraries; they run
+  # with an empty environment (no LD_LIBRARY_PATH).
+  env -i "$out/consumer"
+  env -i "$out/dynamics_consumer"
+  env -i "$out/c_consumer"
   ;;
 installed-program)
   source_dir=$1 build_program=$2
