@@ -1,0 +1,37 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "simulate_engine.hpp"
+
+#include <stdexcept>
+#include <string>
+
+#ifdef CLEARJOINT_WITH_SIMBODY
+#include "clearjoint/simbody/simulate_in_simbody.hpp"
+#endif
+
+namespace clearjoint::app {
+
+std::string engine_unavailable(std::string_view engine) {
+  if (engine == kDefaultEngine) return {};
+  if (engine == "simbody") {
+#ifdef CLEARJOINT_WITH_SIMBODY
+    return {};
+#else
+    return "--engine simbody: this clearjoint was built without Simbody (CLEARJOINT_WITH_SIMBODY; "
+           "Debian: libsimbody-dev, docs/engines.md)";
+#endif
+  }
+  return "--engine " + std::string(engine) + ": unknown engine; the engines are " + kEngineNames;
+}
+
+dynamics::SimulationSummary simulate_with_engine(std::string_view engine,
+                                                 const dynamics::ModelDescription& model,
+                                                 const std::filesystem::path& output_directory,
+                                                 const dynamics::ProgressCallback& progress) {
+  if (const std::string why = engine_unavailable(engine); !why.empty()) throw std::invalid_argument(why);
+#ifdef CLEARJOINT_WITH_SIMBODY
+  if (engine == "simbody") return simbody::simulate_in_simbody(model, output_directory, progress);
+#endif
+  return dynamics::simulate(model, output_directory, progress);
+}
+
+}  // namespace clearjoint::app

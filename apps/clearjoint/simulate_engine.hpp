@@ -1,0 +1,30 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+// The engine that integrates `clearjoint simulate --engine NAME`: clearjoint's own (the default)
+// or Simbody (engines/simbody, docs/engines.md), both writing the same tables.
+
+#include <filesystem>
+#include <string_view>
+
+#include "clearjoint/dynamics/simulation.hpp"
+
+namespace clearjoint::app {
+
+/// "clearjoint" or "simbody"; the names for a usage text.
+inline constexpr std::string_view kDefaultEngine = "clearjoint";
+inline constexpr const char* kEngineNames = "clearjoint (default), simbody";
+
+/// Empty when `engine` can run here; else why not ("unknown engine ...", "built without
+/// Simbody ...").
+std::string engine_unavailable(std::string_view engine);
+
+/// Run `model` with `engine` and write the tables into `output_directory`, as
+/// dynamics::simulate(model, output_directory, progress) does. Throws std::invalid_argument for
+/// an engine that engine_unavailable() refuses, and what the engine throws (a model feature the
+/// Simbody route does not support: clearjoint::simbody::UnsupportedFeature, a ModelError).
+dynamics::SimulationSummary simulate_with_engine(std::string_view engine,
+                                                 const dynamics::ModelDescription& model,
+                                                 const std::filesystem::path& output_directory,
+                                                 const dynamics::ProgressCallback& progress);
+
+}  // namespace clearjoint::app

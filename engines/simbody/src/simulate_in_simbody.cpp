@@ -1,0 +1,221 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "clearjoint/simbody/simulate_in_simbody.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "clearjoint/simbody/model_in_simbody.hpp"
+#include "csv_tables.hpp"
+
+namespace clearjoint::simbody {
+
+namespace {
+
+/// As dynamics::integrate(): a rounding excess of span / report_step adds no report time a few
+/// ulps before end_time.
+constexpr double kReportCountSlack = 1e-9;
+
+std::vector<std::string> body_header() {
+  return {"time", "x", "y", "z", "e0", "e1", "e2", "e3", "vx", "vy", "vz", "wx", "wy", "wz",
+          "ax", "ay", "az", "alphax", "alphay", "alphaz"};
+}
+
+/// A body table: its body, its table, and the last Euler parameters written (for their sign).
+struct BodyTable {
+  SimTK::MobilizedBody body;
+  std::size_t table = 0;
+  SimTK::Vec4 last_euler_parameters;
+};
+
+struct ForceTable {
+  const ClearanceRevoluteForce* joint = nullptr;
+  std::size_t width = 0;
+  std::size_t table = 0;
+};
+
+void append(std::vector<double>& row, const SimTK::Vec3& v) { row.insert(row.end(), {v[0], v[1], v[2]}); }
+
+/// Largest ||q| - 1| over the quaternions of Ball and Free mobilizers (their first four q).
+double quaternion_norm_drift(const SimTK::SimbodyMatterSubsystem& matter, const SimTK::State& state) {
+  double drift = 0.0;
+  for (SimTK::MobilizedBodyIndex b(1); b < matter.getNumBodies(); ++b) {
+    const SimTK::MobilizedBody& body = matter.getMobilizedBody(b);
+    if (body.getNumQ(state) == body.getNumU(state)) continue;  // no quaternion
+    SimTK::Vec4 q;
+    for (int k = 0; k < 4; ++k) q[k] = body.getOneQ(state, SimTK::MobilizerQIndex(k));
+    drift = std::max(drift, std::abs(q.norm() - 1.0));
+  }
+  return drift;
+}
+
+double largest_magnitude(const SimTK::Vector& v) {
+  double largest = 0.0;
+  for (int k = 0; k < v.size(); ++k) largest = std::max(largest, std::abs(v[k]));
+  return largest;
+}
+
+}  // namespace
+
+dynamics::SimulationSummary simulate_in_simbody(const dynamics::ModelDescription& model,
+                                                dynamics::SimulationOutput& output,
+                                                const dynamics::ProgressCallback& progress) {
+  SimbodyModel built(model);
+  SimTK::MultibodySystem& system = built.system();
+  const SimTK::SimbodyMatterSubsystem& matter = built.matter();
+
+  std::vector<BodyTable> bodies;
+  for (std::size_t k = 0; k < model.output_bodies.size(); ++k) {
+    const std::string& name = model.output_bodies[k];
+    const SimTK::MobilizedBody& body = built.body(name, "output.bodies[" + std::to_string(k) + "]");
+    const dynamics::Vector4 p0 = [&] {
+      for (const auto& b : model.bodies) {
+        if (b.properties.name == name) return b.initial.euler_parameters;
+      }
+      return dynamics::Vector4(1.0, 0.0, 0.0, 0.0);
+    }();
+    bodies.push_back({body, output.add_table(engines::table_name("body_", name), body_header()),
+                      SimTK::Vec4(p0[0], p0[1], p0[2], p0[3])});
+  }
+  const std::size_t energy_table =
+      output.add_table("energy", {"time", "kinetic", "potential", "total", "position_violation",
+                                  "velocity_violation", "euler_norm_drift"});
+  std::vector<std::string> reaction_header{"time"};
+  for (const JointInSimbody& joint : built.joints()) {
+    for (const char* c : {"fx", "fy", "fz", "mx", "my", "mz"}) reaction_header.push_back(joint.name + "." + c);
+  }
+  const std::size_t reaction_table = output.add_table("reactions", reaction_header);
+  std::vector<ForceTable> forces;
+  for (const auto& joint : built.clearance_joints()) {
+    const std::string name(joint->joint().name());
+    const auto& wanted = model.output_force_elements;
+    if (!model.output_all_force_elements && std::find(wanted.begin(), wanted.end(), name) == wanted.end()) {
+      continue;
+    }
+    std::vector<std::string> header = joint->joint().output_columns();
+    const std::size_t width = header.size();
+    header.insert(header.begin(), "time");
+    forces.push_back({joint.get(), width, output.add_table(engines::table_name("force_", name), header)});
+  }
+
+  dynamics::SimulationSummary summary;
+  summary.initial_conditions = built.initial_conditions();
+  summary.initial_energy = system.calcEnergy(built.initial_state());
+  const double span = model.solver.end_time - model.solver.start_time;
+  std::vector<double> row;
+  SimTK::Vector_<SimTK::SpatialVec> mobilizer_reactions;
+
+  auto observe = [&](const SimTK::State& state) {
+    system.realize(state, SimTK::Stage::Acceleration);
+    const double t = state.getTime();
+    for (BodyTable& b : bodies) {
+      const SimTK::Transform& X_GB = b.body.getBodyTransform(state);
+      const SimTK::SpatialVec& V = b.body.getBodyVelocity(state);
+      const SimTK::SpatialVec& A = b.body.getBodyAcceleration(state);
+      SimTK::Vec4 e = X_GB.R().convertRotationToQuaternion().asVec4();
+      if (~e * b.last_euler_parameters < 0.0) e = -e;  // q and -q are one rotation
+      b.last_euler_parameters = e;
+      row.assign({t});
+      append(row, X_GB.p());
+      row.insert(row.end(), {e[0], e[1], e[2], e[3]});
+      append(row, V[1]);
+      append(row, V[0]);
+      append(row, A[1]);
+      append(row, A[0]);
+      output.write_row(b.table, row);
+    }
+
+    matter.calcMobilizerReactionForces(state, mobilizer_reactions);
+    row.assign({t});
+    for (const JointInSimbody& joint : built.joints()) {
+      SimTK::Vec3 force, moment;
+      const SimTK::Vec3 p_GQ = joint.reported_body.findStationLocationInGround(state, joint.point_on_reported_body);
+      if (joint.closes_loop) {
+        force = joint.reported_body_is_child ? joint.loop.getBallReactionForceOnBody2(state)
+                                             : joint.loop.getBallReactionForceOnBody1(state);
+        moment = SimTK::Vec3(0.0);  // applied at the joint point itself
+      } else {
+        // The mobilizer's wrench on its child at M's origin; the parent gets the opposite.
+        const SimTK::SpatialVec& on_child = mobilizer_reactions[joint.mobilizer.getMobilizedBodyIndex()];
+        const SimTK::Vec3 p_GMo = joint.mobilizer.findStationLocationInGround(
+            state, joint.mobilizer.getOutboardFrame(state).p());
+        const double sign = joint.reported_body_is_child ? 1.0 : -1.0;
+        force = sign * on_child[1];
+        moment = sign * (on_child[0] + (p_GMo - p_GQ) % on_child[1]);
+      }
+      append(row, force);
+      append(row, moment);
+    }
+    output.write_row(reaction_table, row);
+
+    for (const ForceTable& f : forces) {
+      row.assign(f.width + 1, 0.0);
+      row[0] = t;
+      f.joint->record_outputs(state, std::span<double>(row).subspan(1));
+      output.write_row(f.table, row);
+    }
+
+    const double kinetic = system.calcKineticEnergy(state);
+    const double potential = system.calcPotentialEnergy(state);
+    const double position_violation = largest_magnitude(state.getQErr());
+    const double velocity_violation = largest_magnitude(state.getUErr());
+    const double drift = quaternion_norm_drift(matter, state);
+    output.write_row(energy_table, std::vector<double>{t, kinetic, potential, kinetic + potential,
+                                                       position_violation, velocity_violation, drift});
+    summary.max_energy_change =
+        std::max(summary.max_energy_change, std::abs(kinetic + potential - summary.initial_energy));
+    summary.max_position_violation = std::max(summary.max_position_violation, position_violation);
+    summary.max_velocity_violation = std::max(summary.max_velocity_violation, velocity_violation);
+    summary.max_euler_norm_drift = std::max(summary.max_euler_norm_drift, drift);
+    if (progress) progress((t - model.solver.start_time) / span);
+  };
+
+  SimTK::RungeKuttaMersonIntegrator integrator(system);
+  integrator.setAccuracy(model.solver.relative_tolerance);
+  integrator.setInitialStepSize(model.solver.initial_step);
+  integrator.setMinimumStepSize(model.solver.minimum_step);
+  integrator.setFinalTime(model.solver.end_time);
+  SimTK::TimeStepper stepper(system, integrator);
+  stepper.initialize(built.initial_state());
+  observe(stepper.getState());
+
+  const long report_count = std::max(
+      1L, std::lround(std::ceil(span / model.solver.report_step * (1.0 - kReportCountSlack))));
+  summary.integration.smallest_step = model.solver.report_step;
+  for (long k = 1; k <= report_count; ++k) {
+    const double t = k == report_count ? model.solver.end_time
+                                       : model.solver.start_time + double(k) * model.solver.report_step;
+    while (stepper.getTime() < t) {
+      const SimTK::Integrator::SuccessfulStepStatus status = stepper.stepTo(t);
+      if (status == SimTK::Integrator::EndOfSimulation && stepper.getTime() < t) {
+        throw dynamics::SolverError("Simbody stopped at t = " + dynamics::format_number(stepper.getTime()) +
+                                    ": " + integrator.getTerminationReasonString(integrator.getTerminationReason()));
+      }
+      const double step = integrator.getPreviousStepSizeTaken();
+      summary.integration.smallest_step = std::min(summary.integration.smallest_step, step);
+      summary.integration.largest_step = std::max(summary.integration.largest_step, step);
+    }
+    observe(stepper.getState());
+  }
+  output.commit();
+
+  summary.integration.steps = integrator.getNumStepsTaken();
+  summary.integration.derivative_calls = integrator.getNumRealizations();
+  for (const auto& joint : built.clearance_joints()) {
+    summary.integration.located_onsets += static_cast<long>(joint->joint().recorded_impacts().size());
+    std::string text = joint->joint().statistics_text();
+    if (!text.empty()) summary.element_statistics.push_back(std::move(text));
+  }
+  return summary;
+}
+
+dynamics::SimulationSummary simulate_in_simbody(const dynamics::ModelDescription& model,
+                                                const std::filesystem::path& output_directory,
+                                                const dynamics::ProgressCallback& progress) {
+  // The model is built twice (once here to check it before the directory exists): building is
+  // cheap beside the run.
+  { SimbodyModel check(model); }
+  engines::CsvTables files(output_directory);
+  return simulate_in_simbody(model, files, progress);
+}
+
+}  // namespace clearjoint::simbody
