@@ -1,0 +1,216 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "clearjoint/mujoco/clearance_joints.hpp"
+
+#include <algorithm>
+#include <array>
+#include <sstream>
+
+#include "clearjoint/dynamics/errors.hpp"
+#include "two_body_clearance_joint.hpp"
+
+namespace clearjoint::mujoco {
+
+namespace {
+
+constexpr std::string_view kPrefix = "clearance:";
+
+/// The installed adapters, one per model; mjcb_passive is a single global hook.
+std::vector<ClearanceJoints*>& installed() {
+  static std::vector<ClearanceJoints*> adapters;
+  return adapters;
+}
+std::vector<const mjModel*>& installed_models() {
+  static std::vector<const mjModel*> models;
+  return models;
+}
+
+void passive_callback(const mjModel* m, mjData* d) {
+  for (size_t k = 0; k < installed().size(); ++k) {
+    if (installed_models()[k] == m) installed()[k]->add_passive_forces(d);
+  }
+}
+
+std::string text_of(const mjModel* m, int id) {
+  // text_size counts the terminating zero.
+  return std::string(m->text_data + m->text_adr[id], std::max(0, m->text_size[id] - 1));
+}
+
+/// The values of the numeric element `name`, which must hold `count` of them; empty when the
+/// model has no such element.
+std::vector<double> numeric(const mjModel* m, const std::string& name, int count) {
+  const int id = mj_name2id(m, mjOBJ_NUMERIC, name.c_str());
+  if (id < 0) return {};
+  if (m->numeric_size[id] != count) {
+    throw ModelError("<numeric name=\"" + name + "\">: holds " + std::to_string(m->numeric_size[id]) +
+                     " values, needs " + std::to_string(count));
+  }
+  const mjtNum* data = m->numeric_data + m->numeric_adr[id];
+  return std::vector<double>(data, data + count);
+}
+
+int site(const mjModel* m, const std::string& name, const std::string& declaration) {
+  const int id = mj_name2id(m, mjOBJ_SITE, name.c_str());
+  if (id < 0) throw ModelError(declaration + ": no site named \"" + name + "\" in the model");
+  return id;
+}
+
+/// P and a of a site in its body's frame: the site's position and its frame's z axis.
+dynamics::ClearanceJointPart part_at(const mjModel* m, int site_id) {
+  const mjtNum z[3] = {0.0, 0.0, 1.0};
+  mjtNum axis[3];
+  mju_rotVecQuat(axis, z, m->site_quat + 4 * site_id);
+  const mjtNum* p = m->site_pos + 3 * site_id;
+  return {dynamics::kGround, dynamics::Vector3(p[0], p[1], p[2]),
+          dynamics::Vector3(axis[0], axis[1], axis[2])};
+}
+
+engines::RigidMotion motion_of(const mjModel* m, const mjData* d, int body) {
+  engines::RigidMotion motion;
+  const mjtNum* p = d->xpos + 3 * body;
+  const mjtNum* q = d->xquat + 4 * body;
+  motion.origin_W = {p[0], p[1], p[2]};
+  motion.orientation = {q[0], q[1], q[2], q[3]};
+  if (body != 0) {
+    mjtNum v[6];  // [angular; linear] at the body frame's origin, world axes
+    mj_objectVelocity(m, d, mjOBJ_XBODY, body, v, 0);
+    motion.angular_velocity_W = {v[0], v[1], v[2]};
+    motion.velocity_W = {v[3], v[4], v[5]};
+  }
+  return motion;
+}
+
+}  // namespace
+
+struct ClearanceJoints::Joint {
+  int bearing_body = 0;
+  int journal_body = 0;
+  mutable engines::TwoBodyClearanceJoint joint;
+  std::array<double, dynamics::kContactSlotCount> memory{};
+
+  void load(const mjModel* m, const mjData* d) const {
+    joint.set_motions(d->time, motion_of(m, d, bearing_body), motion_of(m, d, journal_body));
+  }
+};
+
+ClearanceJoints::ClearanceJoints(const mjModel* model) : model_(model) {
+  for (int t = 0; t < model->ntext; ++t) {
+    const char* text_name = mj_id2name(model, mjOBJ_TEXT, t);
+    if (text_name == nullptr) continue;
+    const std::string key(text_name);
+    if (key.rfind(kPrefix, 0) != 0 || key.find(':', kPrefix.size()) != std::string::npos) continue;
+    const std::string name = key.substr(kPrefix.size());
+    const std::string declaration = "<text name=\"" + key + "\">";
+    std::istringstream sites(text_of(model, t));
+    std::string bearing_site, journal_site, extra;
+    if (!(sites >> bearing_site >> journal_site) || (sites >> extra)) {
+      throw ModelError(declaration + ": data must name two sites, the bearing's then the journal's");
+    }
+    const int bearing = site(model, bearing_site, declaration);
+    const int journal = site(model, journal_site, declaration);
+
+    dynamics::ClearanceJointParameters parameters;
+    const std::string dimensions_key = key + ":dimensions";
+    const std::vector<double> dimensions = numeric(model, dimensions_key, 4);
+    if (dimensions.empty()) {
+      throw ModelError(declaration + ": needs <numeric name=\"" + dimensions_key +
+                       "\" data=\"Ri Li Rj Lj\"/> (metres)");
+    }
+    parameters.dimensions = {dimensions[0], dimensions[1], dimensions[2], dimensions[3]};
+    const int law = mj_name2id(model, mjOBJ_TEXT, (key + ":normal_force_model").c_str());
+    try {
+      if (law >= 0) {
+        parameters.normal.model =
+            dynamics::normal_force_model_from_string(text_of(model, law), key + ":normal_force_model");
+      }
+      if (const auto v = numeric(model, key + ":normal_force", 4); !v.empty()) {
+        parameters.normal.stiffness = v[0];
+        parameters.normal.exponent = v[1];
+        parameters.normal.restitution = v[2];
+        parameters.normal.minimum_impact_speed = v[3];
+      }
+      if (const auto v = numeric(model, key + ":friction", 2); !v.empty()) {
+        parameters.friction = {v[0], v[1]};
+      }
+      if (const auto v = numeric(model, key + ":parallel_angle_tolerance", 1); !v.empty()) {
+        parameters.detection.parallel_angle_tolerance = v[0];
+      }
+      const int bearing_body = model->site_bodyid[bearing];
+      const int journal_body = model->site_bodyid[journal];
+      if (bearing_body == journal_body) {
+        throw ModelError(declaration + ": sites \"" + bearing_site + "\" and \"" + journal_site +
+                         "\" are on one body; the bearing and the journal must be on two");
+      }
+      joints_.push_back(std::unique_ptr<Joint>(new Joint{
+          bearing_body, journal_body,
+          engines::TwoBodyClearanceJoint(name, part_at(model, bearing), part_at(model, journal), parameters),
+          {}}));
+    } catch (const dynamics::ModelError& e) {
+      // The joint's own checks name "<name>.<field>"; say where the joint was declared.
+      throw ModelError(declaration + ": " + e.what());
+    }
+  }
+}
+
+ClearanceJoints::~ClearanceJoints() {
+  if (!installed_) return;
+  for (size_t k = 0; k < installed().size(); ++k) {
+    if (installed()[k] == this) {
+      installed().erase(installed().begin() + static_cast<long>(k));
+      installed_models().erase(installed_models().begin() + static_cast<long>(k));
+      break;
+    }
+  }
+  if (installed().empty()) mjcb_passive = nullptr;
+}
+
+void ClearanceJoints::install() {
+  if (installed_) return;
+  installed().push_back(this);
+  installed_models().push_back(model_);
+  installed_ = true;
+  mjcb_passive = passive_callback;
+}
+
+void ClearanceJoints::add_passive_forces(mjData* data) const {
+  std::array<engines::ContactForce, geometry::kMaxContacts> contacts;
+  for (const auto& j : joints_) {
+    j->load(model_, data);
+    const int count = j->joint.contact_forces(j->memory, contacts);
+    const mjtNum zero[3] = {0.0, 0.0, 0.0};
+    for (int c = 0; c < count; ++c) {
+      const dynamics::Vector3& f = contacts[c].force_on_journal_W;
+      const mjtNum on_journal[3] = {f[0], f[1], f[2]};
+      const mjtNum on_bearing[3] = {-f[0], -f[1], -f[2]};
+      if (j->journal_body != 0) {
+        mj_applyFT(model_, data, on_journal, zero, contacts[c].p_WCj.data(), j->journal_body,
+                   data->qfrc_passive);
+      }
+      if (j->bearing_body != 0) {
+        mj_applyFT(model_, data, on_bearing, zero, contacts[c].p_WCi.data(), j->bearing_body,
+                   data->qfrc_passive);
+      }
+    }
+  }
+}
+
+bool ClearanceJoints::after_step(mjData* data) {
+  bool changed = false;
+  for (const auto& j : joints_) {
+    j->load(model_, data);
+    changed = j->joint.update_impact_memory(j->memory) || changed;
+  }
+  return changed;
+}
+
+int ClearanceJoints::count() const { return static_cast<int>(joints_.size()); }
+
+const dynamics::ClearanceRevoluteJoint& ClearanceJoints::joint(int k) const { return joints_[k]->joint.joint(); }
+
+std::span<const double> ClearanceJoints::impact_memory(int k) const { return joints_[k]->memory; }
+
+void ClearanceJoints::record_outputs(int k, const mjData* data, std::span<double> values) const {
+  joints_[k]->load(model_, data);
+  joints_[k]->joint.record_outputs(joints_[k]->memory, values);
+}
+
+}  // namespace clearjoint::mujoco
