@@ -21,8 +21,7 @@ void print(const char* title, const geo::JointContacts& found) {
     const geo::Contact& c = found.contacts[static_cast<std::size_t>(k)];
     std::printf("  %s contact at base %s: depth %.6e m (+- %.1e), normal (%.3f, %.3f, %.3f),\n"
                 "    journal point (%.6f, %.6f, %.6f), bearing point (%.6f, %.6f, %.6f), %s%s%s\n",
-                c.type == geo::ContactType::radial ? "radial" : "axial",
-                c.base == geo::ContactBase::a ? "A" : c.base == geo::ContactBase::b ? "B" : "mid",
+                std::string(geo::to_string(c.type)).c_str(), std::string(geo::to_string(c.base)).c_str(),
                 c.depth, c.depth_error, c.normal_W.x(), c.normal_W.y(), c.normal_W.z(),
                 c.p_WCj.x(), c.p_WCj.y(), c.p_WCj.z(), c.p_WCi.x(), c.p_WCi.y(), c.p_WCi.z(),
                 std::string(geo::to_string(c.certificate.level)).c_str(),

@@ -6,9 +6,7 @@
 // motions are given, the contact velocities (eqs. 24-26). The format (every field, the error
 // lines, the exit status) is specified in docs/command-line.md; keep the two in step.
 
-#include <cmath>
 #include <optional>
-#include <stdexcept>
 #include <string>
 
 #include "clearjoint/geometry/certificate.hpp"
@@ -18,6 +16,7 @@
 #include "clearjoint/geometry/joint_geometry.hpp"
 #include "commands.hpp"
 #include "json_lines.hpp"
+#include "result_json.hpp"
 
 namespace clearjoint::app {
 namespace {
@@ -113,68 +112,6 @@ geo::DetectionOptions read_options(const Json& query) {
   return options;
 }
 
-const char* label(geo::ContactType type) {
-  switch (type) {
-    case geo::ContactType::radial: return "radial";
-    case geo::ContactType::axial: return "axial";
-  }
-  throw std::logic_error("unknown ContactType");
-}
-
-const char* label(geo::ContactBase base) {
-  switch (base) {
-    case geo::ContactBase::a: return "A";
-    case geo::ContactBase::b: return "B";
-    case geo::ContactBase::mid: return "mid";
-  }
-  throw std::logic_error("unknown ContactBase");
-}
-
-std::string reason(const geo::Certificate& certificate) { return std::string(certificate.reason_text()); }
-
-/// Throws when a computed value is not finite. The contact points and velocities are
-/// double-precision evaluations of the paper's formulas (not the certified kernel); speeds near
-/// the limits of double (motions are not range-checked) overflow them, and a null in the answer
-/// would hide that.
-void require_finite(double value, const std::string& what) {
-  if (std::isfinite(value)) return;
-  throw LineError(what + " is " + (std::isnan(value) ? "NaN" : "infinite") +
-                  ": overflow or underflow in double arithmetic; rescale the input (any unit "
-                  "will do, e.g. millimetres instead of metres)");
-}
-
-void require_finite(const geo::Vector3& v, const std::string& what) {
-  for (int k = 0; k < 3; ++k) require_finite(v[k], what + "[" + std::to_string(k) + "]");
-}
-
-Json to_json(const geo::Contact& contact, const std::string& where) {
-  require_finite(contact.depth, where + ".depth");
-  require_finite(contact.p_WCj, where + ".point_journal");
-  require_finite(contact.p_WCi, where + ".point_bearing");
-  require_finite(contact.normal_W, where + ".normal");
-  Json crossings = Json::array();
-  Json crossing_errors = Json::array();
-  for (int k = 0; k < contact.crossing_count; ++k) {
-    const geo::RimCrossing& crossing = contact.crossings[static_cast<std::size_t>(k)];
-    require_finite(crossing.point, where + ".crossings[" + std::to_string(k) + "]");
-    crossings.push_back(app::to_json(crossing.point));
-    crossing_errors.push_back(error_bound(crossing.point_error));
-  }
-  return Json{{"type", label(contact.type)},
-              {"base", label(contact.base)},
-              {"depth", contact.depth},
-              {"depth_error", error_bound(contact.depth_error)},
-              {"point_journal", app::to_json(contact.p_WCj)},
-              {"point_bearing", app::to_json(contact.p_WCi)},
-              {"point_journal_error", error_bound(contact.p_WCj_error)},
-              {"point_bearing_error", error_bound(contact.p_WCi_error)},
-              {"normal", app::to_json(contact.normal_W)},
-              {"crossings", std::move(crossings)},
-              {"crossing_errors", std::move(crossing_errors)},
-              {"certificate", std::string(geo::to_string(contact.certificate.level))},
-              {"certificate_reason", reason(contact.certificate)}};
-}
-
 /// The answer to one joint line (JsonLinesCommand::answer).
 void answer_query(const Json& query, Json& answer) {
   check_object(query, "",
@@ -205,27 +142,19 @@ void answer_query(const Json& query, Json& answer) {
 
   const geo::JointContacts result =
       geo::detect_contacts(dimensions, bearing, journal, read_options(query));
-
-  Json contacts = Json::array();
+  write_result(result, ResultStyle::detect, answer);
+  if (!bearing_motion) return;
+  Json& contacts = answer["contacts"];
   for (int k = 0; k < result.contact_count; ++k) {
-    const geo::Contact& contact = result.contacts[static_cast<std::size_t>(k)];
     const std::string where = "contacts[" + std::to_string(k) + "]";
-    Json entry = to_json(contact, where);
-    if (bearing_motion) {
-      const geo::ContactKinematics kinematics =
-          geo::contact_kinematics(contact, *bearing_motion, *journal_motion);
-      require_finite(kinematics.approach_speed, where + ".approach_velocity");
-      require_finite(kinematics.tangential_velocity_W, where + ".tangential_velocity");
-      entry["approach_velocity"] = kinematics.approach_speed;                      // eq. (24)
-      entry["tangential_velocity"] = app::to_json(kinematics.tangential_velocity_W);  // eq. (26)
-    }
-    contacts.push_back(std::move(entry));
+    const geo::ContactKinematics kinematics =
+        geo::contact_kinematics(result.contacts[static_cast<std::size_t>(k)], *bearing_motion, *journal_motion);
+    require_finite(kinematics.approach_speed, where + ".approach_velocity");
+    require_finite(kinematics.tangential_velocity_W, where + ".tangential_velocity");
+    Json& entry = contacts[static_cast<std::size_t>(k)];
+    entry["approach_velocity"] = kinematics.approach_speed;                      // eq. (24)
+    entry["tangential_velocity"] = app::to_json(kinematics.tangential_velocity_W);  // eq. (26)
   }
-  answer["scenario"] = std::string(geo::to_string(result.scenario));
-  answer["aligned"] = result.aligned;
-  answer["certificate"] = std::string(geo::to_string(result.certificate.level));
-  answer["certificate_reason"] = reason(result.certificate);
-  answer["contacts"] = std::move(contacts);
 }
 
 }  // namespace

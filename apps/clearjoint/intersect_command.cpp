@@ -5,7 +5,6 @@
 // (every field, the error lines, the exit status) is specified in docs/command-line.md; keep the
 // two in step.
 
-#include <stdexcept>
 #include <string>
 
 #include "clearjoint/geometry/certificate.hpp"
@@ -15,12 +14,12 @@
 #include "clearjoint/geometry/rim_arc.hpp"
 #include "commands.hpp"
 #include "json_lines.hpp"
+#include "result_json.hpp"
 
 namespace clearjoint::app {
 namespace {
 
 namespace geo = clearjoint::geometry;
-using app::to_json;  // [x, y, z]; the overloads below would hide it
 
 constexpr const char* kUsage =
     "usage: clearjoint intersect [FILE]\n"
@@ -77,80 +76,20 @@ geo::IntersectionOptions read_options(const Json& query) {
   return options;
 }
 
-Json to_json(const geo::RimCrossing& crossing) {
-  return Json{{"angle", crossing.angle},
-              {"angle_error", error_bound(crossing.angle_error)},
-              {"point", to_json(crossing.point)},
-              {"point_error", error_bound(crossing.point_error)},
-              {"multiplicity", crossing.multiplicity}};
-}
-
-Json to_json(const geo::RimArc& arc) {
-  return Json{{"begin", arc.begin}, {"end", arc.end}, {"full", arc.full}, {"middle", arc.middle()}};
-}
-
-Json to_json(const geo::Certificate& certificate) {
-  return Json{{"level", std::string(geo::to_string(certificate.level))},
-              {"reason", std::string(certificate.reason_text())}};
-}
-
-const char* to_string(geo::CirclePlaneTopology topology) {
-  switch (topology) {
-    case geo::CirclePlaneTopology::disjoint: return "disjoint";
-    case geo::CirclePlaneTopology::tangent: return "tangent";
-    case geo::CirclePlaneTopology::two_crossings: return "two_crossings";
-    case geo::CirclePlaneTopology::circle_in_plane: return "circle_in_plane";
-  }
-  throw std::logic_error("unknown CirclePlaneTopology");
-}
-
-const char* to_string(geo::CircleCylinderTopology topology) {
-  switch (topology) {
-    case geo::CircleCylinderTopology::inside: return "inside";
-    case geo::CircleCylinderTopology::outside: return "outside";
-    case geo::CircleCylinderTopology::crossing: return "crossing";
-    case geo::CircleCylinderTopology::on_surface: return "on_surface";
-  }
-  throw std::logic_error("unknown CircleCylinderTopology");
-}
-
 void answer_plane(const geo::Circle3& circle, const Json& plane_json,
                   const geo::IntersectionOptions& options, Json& answer) {
   const geo::CirclePlaneIntersection hit =
       geo::intersect_circle_plane(circle, read_plane(plane_json), options);
-  Json crossings = Json::array();
-  for (int k = 0; k < hit.crossing_count; ++k) {
-    crossings.push_back(to_json(hit.crossings[static_cast<std::size_t>(k)]));
-  }
-  Json arcs = Json::array();
-  if (hit.has_penetration) arcs.push_back(to_json(hit.penetration));
   answer["query"] = "circle_plane";
-  answer["topology"] = to_string(hit.topology);
-  answer["side"] = static_cast<int>(hit.side);  // PlaneSide: -1, 0, +1
-  answer["crossings"] = std::move(crossings);
-  answer["penetration_arcs"] = std::move(arcs);
-  answer["max_signed_distance"] = hit.max_signed_distance;
-  answer["max_signed_distance_error"] = error_bound(hit.max_signed_distance_error);
-  answer["certificate"] = to_json(hit.certificate);
+  write_result(hit, ResultStyle::intersect, answer);
 }
 
 void answer_cylinder(const geo::Circle3& circle, const Json& cylinder_json,
                      const geo::IntersectionOptions& options, Json& answer) {
   const geo::CircleCylinderIntersection hit =
       geo::intersect_circle_cylinder(circle, read_cylinder(cylinder_json), options);
-  Json crossings = Json::array();
-  for (int k = 0; k < hit.crossing_count; ++k) {
-    crossings.push_back(to_json(hit.crossings[static_cast<std::size_t>(k)]));
-  }
-  Json arcs = Json::array();
-  for (int k = 0; k < hit.arc_count; ++k) {
-    arcs.push_back(to_json(hit.penetration_arcs[static_cast<std::size_t>(k)]));
-  }
   answer["query"] = "circle_cylinder";
-  answer["topology"] = to_string(hit.topology);
-  answer["crossings"] = std::move(crossings);
-  answer["penetration_arcs"] = std::move(arcs);
-  answer["certificate"] = to_json(hit.certificate);
+  write_result(hit, ResultStyle::intersect, answer);
 }
 
 /// The answer to one query line (JsonLinesCommand::answer).

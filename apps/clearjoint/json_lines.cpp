@@ -15,6 +15,7 @@
 
 #include "clearjoint/geometry/primitives.hpp"
 #include "json/bounded_json.hpp"
+#include "result_json.hpp"
 
 namespace clearjoint::app {
 namespace {
@@ -241,6 +242,17 @@ void read_optional_bool(const Json& object, const std::string& path, const char*
     throw LineError(field(path, key) + " = " + quote(*flag) + ": must be true or false");
   }
   out = flag->get<bool>();
+}
+
+void require_finite(double value, const std::string& what) {
+  if (std::isfinite(value)) return;
+  throw LineError(what + " is " + (std::isnan(value) ? "NaN" : "infinite") +
+                  ": overflow or underflow in double arithmetic; rescale the input (any unit "
+                  "will do, e.g. millimetres instead of metres)");
+}
+
+void require_finite(const geo::Vector3& v, const std::string& what) {
+  for (int k = 0; k < 3; ++k) require_finite(v[k], what + "[" + std::to_string(k) + "]");
 }
 
 Json to_json(const geo::Vector3& v) { return Json::array({v.x(), v.y(), v.z()}); }

@@ -25,8 +25,7 @@ std::string metres(double x) {
 }
 
 std::string key_name(ContactType type, ContactBase base) {
-  const char* b = base == ContactBase::a ? "A" : base == ContactBase::b ? "B" : "mid";
-  return std::string(type == ContactType::radial ? "radial" : "axial") + " at " + b;
+  return std::string(geometry::to_string(type)) + " at " + std::string(geometry::to_string(base));
 }
 
 /// The spacing of doubles at |x|: ulp(x) = nextafter(|x|, inf) - |x| (the smallest subnormal

@@ -52,8 +52,8 @@ Json reference_answer_line(const DetectionInput& input, const ReferenceAnswer& a
     Json crossings = Json::array();
     for (const RealVector& x : c.crossings) crossings.push_back(vector_json(x));
     contacts.push_back(Json{
-        {"type", c.type == ContactType::radial ? "radial" : "axial"},
-        {"base", c.base == ContactBase::a ? "A" : c.base == ContactBase::b ? "B" : "mid"},
+        {"type", std::string(geometry::to_string(c.type))},
+        {"base", std::string(geometry::to_string(c.base))},
         {"depth", c.depth.convert_to<double>()},
         {"point_journal", vector_json(c.p_WCj)},
         {"point_bearing", vector_json(c.p_WCi)},

@@ -7,7 +7,7 @@
  *   scenario (char, "none", "a" ... "l", "beyond_model"), scenario_code (cj_scenario), aligned (logical),
  *   certificate (struct: level, level_code, reason, reason_code), contact_count, contacts;
  * contacts is a contact_count x 1 struct array with fields
- *   type ("radial"/"axial"), base ("A"/"B"/"mid"), depth, depth_error_bound,
+ *   type ("radial"/"axial"), base ("a"/"b"/"mid"), depth, depth_error_bound,
  *   p_WCj, p_WCj_error_bound, p_WCi, p_WCi_error_bound, normal_W (1 x 3 each point),
  *   crossings (crossing_count x 1 struct array: angle, angle_error_bound, point, point_error_bound,
  *   multiplicity) and certificate.

@@ -4,8 +4,8 @@
 /// Conversions between the C API's plain structs and the C++ types they mirror. Inline: they sit
 /// on the path of every detection, and cj_detect may cost at most a few percent over the C++ call.
 ///
-/// Enum values are mapped by switch, not cast, so that the C codes stay fixed (they are ABI)
-/// whatever order the C++ enums take; each switch is an identity that the compiler folds away.
+/// Enum values are cast: the C codes are the codes of the library's enum tables, which never
+/// change once released (enum_table.hpp).
 
 #include "clearjoint/clearjoint.h"
 #include "clearjoint/geometry/certificate.hpp"
@@ -57,102 +57,20 @@ inline geo::DetectionOptions detection_options_of(const cj_options* options) {
   return out;
 }
 
-inline int32_t code_of(geo::ContactScenario s) {
-  switch (s) {
-    case geo::ContactScenario::none: return CJ_SCENARIO_NONE;
-    case geo::ContactScenario::single_radial: return CJ_SCENARIO_SINGLE_RADIAL;
-    case geo::ContactScenario::single_axial: return CJ_SCENARIO_SINGLE_AXIAL;
-    case geo::ContactScenario::radial_at_both_bases: return CJ_SCENARIO_RADIAL_AT_BOTH_BASES;
-    case geo::ContactScenario::axial_at_both_bases: return CJ_SCENARIO_AXIAL_AT_BOTH_BASES;
-    case geo::ContactScenario::radial_and_axial_same_base: return CJ_SCENARIO_RADIAL_AND_AXIAL_SAME_BASE;
-    case geo::ContactScenario::radial_and_axial_opposite_bases:
-      return CJ_SCENARIO_RADIAL_AND_AXIAL_OPPOSITE_BASES;
-    case geo::ContactScenario::two_radial_one_axial: return CJ_SCENARIO_TWO_RADIAL_ONE_AXIAL;
-    case geo::ContactScenario::one_radial_two_axial: return CJ_SCENARIO_ONE_RADIAL_TWO_AXIAL;
-    case geo::ContactScenario::all_four: return CJ_SCENARIO_ALL_FOUR;
-    case geo::ContactScenario::line: return CJ_SCENARIO_LINE;
-    case geo::ContactScenario::face: return CJ_SCENARIO_FACE;
-    case geo::ContactScenario::line_and_face: return CJ_SCENARIO_LINE_AND_FACE;
-    case geo::ContactScenario::beyond_model: return CJ_SCENARIO_BEYOND_MODEL;
-  }
-  return CJ_SCENARIO_BEYOND_MODEL;
+/// The C code of a C++ enum value: the value's code in its table (enum_table.hpp), which the C
+/// header's constants repeat; tests/bindings/enum_front_ends_test.cpp checks that they agree.
+template <geo::TabledEnum E>
+inline int32_t code_of(E value) {
+  return static_cast<int32_t>(value);
 }
 
-inline int32_t code_of(geo::Certainty level) {
-  switch (level) {
-    case geo::Certainty::exact: return CJ_CERTAINTY_EXACT;
-    case geo::Certainty::certified: return CJ_CERTAINTY_CERTIFIED;
-    case geo::Certainty::uncertain: return CJ_CERTAINTY_UNCERTAIN;
-  }
-  return CJ_CERTAINTY_UNCERTAIN;
-}
-
-inline int32_t code_of(geo::ContactType type) {
-  return type == geo::ContactType::radial ? CJ_CONTACT_RADIAL : CJ_CONTACT_AXIAL;
-}
-
-inline int32_t code_of(geo::ContactBase base) {
-  switch (base) {
-    case geo::ContactBase::a: return CJ_BASE_A;
-    case geo::ContactBase::b: return CJ_BASE_B;
-    case geo::ContactBase::mid: return CJ_BASE_MID;
-  }
-  return CJ_BASE_MID;
-}
-
-inline int32_t code_of(geo::CertificateReason reason) {
-  using R = geo::CertificateReason;
-  switch (reason) {
-    case R::none: return CJ_REASON_NONE;
-    case R::not_decided: return CJ_REASON_NOT_DECIDED;
-    case R::certificate_switched_off: return CJ_REASON_CERTIFICATE_SWITCHED_OFF;
-    case R::plane_filter_undecided: return CJ_REASON_PLANE_FILTER_UNDECIDED;
-    case R::plane_filter_undecided_exact_fallback_off: return CJ_REASON_PLANE_FILTER_UNDECIDED_EXACT_FALLBACK_OFF;
-    case R::plane_results_not_representable: return CJ_REASON_PLANE_RESULTS_NOT_REPRESENTABLE;
-    case R::subdivision_budget_exhausted: return CJ_REASON_SUBDIVISION_BUDGET_EXHAUSTED;
-    case R::more_than_four_roots: return CJ_REASON_MORE_THAN_FOUR_ROOTS;
-    case R::interval_proof_failed_near_multiple_root: return CJ_REASON_INTERVAL_PROOF_FAILED_NEAR_MULTIPLE_ROOT;
-    case R::coefficient_overflow: return CJ_REASON_COEFFICIENT_OVERFLOW;
-    case R::cylinder_points_not_representable: return CJ_REASON_CYLINDER_POINTS_NOT_REPRESENTABLE;
-    case R::exact_root_isolation_budget_exhausted: return CJ_REASON_EXACT_ROOT_ISOLATION_BUDGET_EXHAUSTED;
-    case R::exact_coefficients_too_large: return CJ_REASON_EXACT_COEFFICIENTS_TOO_LARGE;
-    case R::exact_intermediate_beyond_double_range: return CJ_REASON_EXACT_INTERMEDIATE_BEYOND_DOUBLE_RANGE;
-    case R::contact_not_representable_in_world: return CJ_REASON_CONTACT_NOT_REPRESENTABLE_IN_WORLD;
-    case R::axes_parallel_within_tolerance: return CJ_REASON_AXES_PARALLEL_WITHIN_TOLERANCE;
-    case R::beyond_model_undecided: return CJ_REASON_BEYOND_MODEL_UNDECIDED;
-  }
-  return CJ_REASON_NOT_DECIDED;
-}
-
-/// The reasons C++ has, in order: cj_reason_string finds a code's text through code_of.
-inline constexpr geo::CertificateReason kAllReasons[] = {
-    geo::CertificateReason::none,
-    geo::CertificateReason::not_decided,
-    geo::CertificateReason::certificate_switched_off,
-    geo::CertificateReason::plane_filter_undecided,
-    geo::CertificateReason::plane_filter_undecided_exact_fallback_off,
-    geo::CertificateReason::plane_results_not_representable,
-    geo::CertificateReason::subdivision_budget_exhausted,
-    geo::CertificateReason::more_than_four_roots,
-    geo::CertificateReason::interval_proof_failed_near_multiple_root,
-    geo::CertificateReason::coefficient_overflow,
-    geo::CertificateReason::cylinder_points_not_representable,
-    geo::CertificateReason::exact_root_isolation_budget_exhausted,
-    geo::CertificateReason::exact_coefficients_too_large,
-    geo::CertificateReason::exact_intermediate_beyond_double_range,
-    geo::CertificateReason::contact_not_representable_in_world,
-    geo::CertificateReason::axes_parallel_within_tolerance,
-    geo::CertificateReason::beyond_model_undecided,
-};
-
-/// The sentence of each C reason code (the C++ to_string, a NUL-terminated literal), looked up
-/// once when the library loads: asking the kernel library for it on every certificate was an
-/// out-of-line call across libraries, ~2 ns of a free-flight cj_detect.
-extern const char* const* const kReasonTexts;
-
+/// The reason's sentence is read from the library's table, which is inline (a copy in this
+/// library): calling the kernel library for it on every certificate was an out-of-line call
+/// across libraries, ~2 ns of a free-flight cj_detect.
 inline cj_certificate certificate_of(const geo::Certificate& c) {
   const int32_t reason = code_of(c.reason);
-  return {code_of(c.level), reason, kReasonTexts[reason]};
+  return {code_of(c.level), reason,
+          geo::EnumTable<geo::CertificateReason>::entries[static_cast<std::size_t>(reason)].label.data()};
 }
 
 inline void copy_crossing(const geo::RimCrossing& from, cj_crossing& to) {
@@ -191,6 +109,32 @@ inline void copy_result(const geo::JointContacts& from, cj_result& to) {
   to.contact_count = from.contact_count;
   to.certificate = certificate_of(from.certificate);
   for (int k = 0; k < from.contact_count; ++k) copy_contact(from.contacts[k], to.contacts[k]);
+}
+
+/// The kernel queries' answers; the reserved members are zero.
+inline cj_circle_plane_result circle_plane_result_of(const geo::CirclePlaneIntersection& found) {
+  cj_circle_plane_result out{};
+  out.topology = code_of(found.topology);
+  out.side = static_cast<int32_t>(found.side);  // PlaneSide's values are -1, 0, +1
+  for (int k = 0; k < 2; ++k) copy_crossing(found.crossings[k], out.crossings[k]);
+  out.crossing_count = found.crossing_count;
+  out.has_penetration = found.has_penetration ? 1 : 0;
+  out.penetration = arc_of(found.penetration);
+  out.max_signed_distance = found.max_signed_distance;
+  out.max_signed_distance_error_bound = found.max_signed_distance_error;
+  out.certificate = certificate_of(found.certificate);
+  return out;
+}
+
+inline cj_circle_cylinder_result circle_cylinder_result_of(const geo::CircleCylinderIntersection& found) {
+  cj_circle_cylinder_result out{};
+  out.topology = code_of(found.topology);
+  for (int k = 0; k < 4; ++k) copy_crossing(found.crossings[k], out.crossings[k]);
+  out.crossing_count = found.crossing_count;
+  for (int k = 0; k < 2; ++k) out.penetration_arcs[k] = arc_of(found.penetration_arcs[k]);
+  out.arc_count = found.arc_count;
+  out.certificate = certificate_of(found.certificate);
+  return out;
 }
 
 }  // namespace clearjoint::c_api

@@ -52,11 +52,6 @@ std::vector<geo::RimCrossing> first_crossings(const geo::RimCrossing* crossings,
 
 namespace {
 
-const char* type_name(geo::ContactType t) { return t == geo::ContactType::radial ? "radial" : "axial"; }
-const char* base_name(geo::ContactBase b) {
-  return b == geo::ContactBase::a ? "a" : b == geo::ContactBase::b ? "b" : "mid";
-}
-
 /// The functions that give an enum's text; the enum classes themselves are clearjoint/_enums.py's.
 void bind_enum_texts(py::module_& m) {
   m.def("certificate_reason_text",
@@ -208,7 +203,7 @@ void bind_results(py::module_& m) {
           "the rim crossings bounding the penetration arc (none for line and face contacts)")
       .def_readonly("certificate", &geo::Contact::certificate)
       .def("__repr__", [](const geo::Contact& c) {
-        return std::string("Contact(") + type_name(c.type) + " at " + base_name(c.base) +
+        return "Contact(" + std::string(geo::to_string(c.type)) + " at " + std::string(geo::to_string(c.base)) +
                ", depth=" + repr_number(c.depth) + ", point_journal=" + repr_vector(c.p_WCj) +
                ", normal=" + repr_vector(c.normal_W) + ", " + repr_certificate(c.certificate) + ")";
       }),
@@ -236,8 +231,8 @@ void bind_results(py::module_& m) {
                            (r.aligned ? ", aligned" : "") + ", " + repr_certificate(r.certificate);
         for (int k = 0; k < r.contact_count; ++k) {
           const geo::Contact& c = r.contacts[k];
-          text += std::string(k == 0 ? ";" : ",") + " " + type_name(c.type) + " at " +
-                  base_name(c.base) + " depth " + repr_number(c.depth);
+          text += std::string(k == 0 ? ";" : ",") + " " + std::string(geo::to_string(c.type)) + " at " +
+                  std::string(geo::to_string(c.base)) + " depth " + repr_number(c.depth);
         }
         return text + ")";
       })

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The library's enums in Python: real enum.IntEnum classes (comparing equal to their codes, as
-// NumPy arrays of codes need), built by clearjoint/_enums.py from the (name, code) table this
-// module exports, so that the member names are written down once. A type caster turns each C++
-// value into its class's member and takes integer codes back.
+// NumPy arrays of codes need), built by clearjoint/_enums.py from the (name, code, label) rows
+// this module exports, which are the library's enum tables. A type caster turns each C++ value
+// into its class's member and takes integer codes back.
 
 #include <pybind11/pybind11.h>
 
@@ -11,29 +11,22 @@
 
 #include "clearjoint/geometry/certificate.hpp"
 #include "clearjoint/geometry/contact_scenario.hpp"
+#include "clearjoint/geometry/enum_table.hpp"
 #include "clearjoint/geometry/detect_contacts.hpp"
 #include "clearjoint/geometry/intersect_circle_cylinder.hpp"
 #include "clearjoint/geometry/intersect_circle_plane.hpp"
 
 namespace clearjoint::python {
 
-/// The Python class name and member count of each enum with a table in enum_codes.cpp.
+/// Every enum with a table in the library (clearjoint/geometry/enum_table.hpp) is an IntEnum
+/// class of the table's type name, with the table's names as members and its codes as values.
 template <typename E>
 struct PythonEnum : std::false_type {};
-#define CLEARJOINT_PYTHON_ENUM(Type, count_)                \
-  template <>                                               \
-  struct PythonEnum<geometry::Type> : std::true_type {      \
-    static constexpr const char* name = #Type;              \
-    static constexpr int count = count_;                    \
-  };
-CLEARJOINT_PYTHON_ENUM(Certainty, 3)
-CLEARJOINT_PYTHON_ENUM(CertificateReason, 17)
-CLEARJOINT_PYTHON_ENUM(ContactScenario, 14)
-CLEARJOINT_PYTHON_ENUM(ContactType, 2)
-CLEARJOINT_PYTHON_ENUM(ContactBase, 3)
-CLEARJOINT_PYTHON_ENUM(CirclePlaneTopology, 4)
-CLEARJOINT_PYTHON_ENUM(CircleCylinderTopology, 4)
-#undef CLEARJOINT_PYTHON_ENUM
+template <geometry::TabledEnum E>
+struct PythonEnum<E> : std::true_type {
+  static constexpr const char* name = geometry::EnumTable<E>::type_name.data();
+  static constexpr int count = geometry::enum_count<E>();
+};
 
 /// clearjoint.<name>, the enum.IntEnum class clearjoint/_enums.py built.
 pybind11::object python_enum_class(const char* name);

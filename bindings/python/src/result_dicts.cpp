@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "result_dicts.hpp"
 
+#include "clearjoint/geometry/result_fields.hpp"
+
 #include <pybind11/stl.h>
 
-#include <array>
+#include <string_view>
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -22,48 +24,111 @@ py::list vector_list(const geo::Vector3& v) {
   return out;
 }
 
-double number(const py::dict& d, const char* key) { return py::cast<double>(d[key]); }
+/// Writes the fields it visits into a dict: vectors as lists, enums as their IntEnum members, a
+/// certificate inside a result as two keys ("certificate": level, "certificate_reason"), lists
+/// and optional values as (lists of) dicts.
+class DictWriter {
+ public:
+  explicit DictWriter(py::dict& out) : out_(out) {}
 
-geo::Vector3 vector(const py::dict& d, const char* key) {
-  const auto values = py::cast<std::vector<double>>(d[key]);
-  if (values.size() != 3) throw py::value_error(std::string(key) + ": must hold 3 numbers");
-  return {values[0], values[1], values[2]};
-}
-
-/// d[key] as a list of at most `capacity` dicts.
-py::list dict_list(const py::dict& d, const char* key, std::size_t capacity) {
-  auto list = py::cast<py::list>(d[key]);
-  if (list.size() > capacity) {
-    throw py::value_error(std::string(key) + ": at most " + std::to_string(capacity) + " entries");
+  void operator()(std::string_view key, const double& x) { out_[name(key)] = x; }
+  void operator()(std::string_view key, const int& n) { out_[name(key)] = n; }
+  void operator()(std::string_view key, const bool& b) { out_[name(key)] = b; }
+  void operator()(std::string_view key, const geo::Vector3& v) { out_[name(key)] = vector_list(v); }
+  void operator()(std::string_view key, const geo::PlaneSide& side) { out_[name(key)] = static_cast<int>(side); }
+  template <geo::TabledEnum E>
+  void operator()(std::string_view key, const E& value) {
+    out_[name(key)] = py::cast(value);
   }
-  return list;
+  void operator()(std::string_view key, geo::ErrorBound<const double> bound) { out_[name(key)] = bound.value; }
+  void operator()(std::string_view key, const geo::Certificate& c) {
+    out_[name(key)] = py::cast(c.level);
+    out_[py::str(std::string(key) + "_reason")] = py::cast(c.reason);
+  }
+  template <class Array>
+  void operator()(std::string_view key, geo::FieldList<const Array, const int> list) {
+    py::list items;
+    for (int k = 0; k < list.count; ++k) items.append(as_dict(list.items[static_cast<std::size_t>(k)]));
+    out_[name(key)] = items;
+  }
+  template <class Value>
+  void operator()(std::string_view key, geo::OptionalField<const Value, const bool> optional) {
+    out_[name(key)] = optional.present ? py::object(as_dict(optional.value)) : py::none();
+  }
+
+ private:
+  static py::str name(std::string_view key) { return py::str(key.data(), key.size()); }
+  py::dict& out_;
+};
+
+/// The inverse of DictWriter: sets the fields it visits from a dict (TypeError, KeyError or
+/// ValueError naming the key for another dict).
+class DictReader {
+ public:
+  explicit DictReader(const py::dict& in) : in_(in) {}
+
+  void operator()(std::string_view key, double& x) { x = py::cast<double>(item(key)); }
+  void operator()(std::string_view key, int& n) { n = py::cast<int>(item(key)); }
+  void operator()(std::string_view key, bool& b) { b = py::cast<bool>(item(key)); }
+  void operator()(std::string_view key, geo::Vector3& v) {
+    const auto values = py::cast<std::vector<double>>(item(key));
+    if (values.size() != 3) throw py::value_error(std::string(key) + ": must hold 3 numbers");
+    v = {values[0], values[1], values[2]};
+  }
+  void operator()(std::string_view key, geo::PlaneSide& side) {
+    const int code = py::cast<int>(item(key));
+    if (code < -1 || code > 1) throw py::value_error(std::string(key) + ": must be -1, 0 or 1");
+    side = static_cast<geo::PlaneSide>(code);
+  }
+  template <geo::TabledEnum E>
+  void operator()(std::string_view key, E& value) {
+    value = enum_argument<E>(item(key), std::string(key).c_str());
+  }
+  void operator()(std::string_view key, geo::ErrorBound<double> bound) { (*this)(key, bound.value); }
+  void operator()(std::string_view key, geo::Certificate& c) {
+    (*this)(key, c.level);
+    (*this)(std::string(key) + "_reason", c.reason);
+  }
+  template <class Array>
+  void operator()(std::string_view key, geo::FieldList<Array, int> list) {
+    const auto items = py::cast<py::list>(item(key));
+    if (items.size() > list.items.size()) {
+      throw py::value_error(std::string(key) + ": at most " + std::to_string(list.items.size()) + " entries");
+    }
+    for (std::size_t k = 0; k < items.size(); ++k) {
+      list.items[k] = from_dict<typename Array::value_type>(py::cast<py::dict>(items[k]));
+    }
+    list.count = static_cast<int>(items.size());
+  }
+  template <class Value>
+  void operator()(std::string_view key, geo::OptionalField<Value, bool> optional) {
+    const py::object value = item(key);
+    optional.present = !value.is_none();
+    if (optional.present) optional.value = from_dict<Value>(py::cast<py::dict>(value));
+  }
+
+ private:
+  py::object item(std::string_view key) const { return in_[py::str(key.data(), key.size())]; }
+  const py::dict& in_;
+};
+
+template <class Result>
+py::dict dict_of(const Result& r) {
+  py::dict d;
+  geo::visit_fields(r, DictWriter(d));
+  return d;
 }
 
-geo::Certificate certificate(const py::dict& d, const char* level, const char* reason) {
-  return {enum_argument<geo::Certainty>(d[level], level), enum_argument<geo::CertificateReason>(d[reason], reason)};
-}
-
-void put_certificate(py::dict& d, const geo::Certificate& c) {
-  d["certificate"] = py::cast(c.level);
-  d["certificate_reason"] = py::cast(c.reason);
-}
-
-template <std::size_t N>
-py::list crossing_list(const std::array<geo::RimCrossing, N>& crossings, int count) {
-  py::list out;
-  for (int k = 0; k < count; ++k) out.append(as_dict(crossings[k]));
-  return out;
-}
-
-template <std::size_t N>
-int read_crossings(const py::dict& d, std::array<geo::RimCrossing, N>& crossings) {
-  const py::list list = dict_list(d, "crossings", N);
-  for (std::size_t k = 0; k < list.size(); ++k) crossings[k] = from_dict<geo::RimCrossing>(py::cast<py::dict>(list[k]));
-  return static_cast<int>(list.size());
+template <class Result>
+Result result_of(const py::dict& d) {
+  Result r;
+  geo::visit_fields(r, DictReader(d));
+  return r;
 }
 
 }  // namespace
 
+/// A Certificate on its own is {"level", "reason"}, its two fields.
 py::dict as_dict(const geo::Certificate& c) {
   py::dict d;
   d["level"] = py::cast(c.level);
@@ -71,154 +136,43 @@ py::dict as_dict(const geo::Certificate& c) {
   return d;
 }
 
-py::dict as_dict(const geo::RimCrossing& c) {
-  py::dict d;
-  d["angle"] = c.angle;
-  d["angle_error"] = c.angle_error;
-  d["point"] = vector_list(c.point);
-  d["point_error"] = c.point_error;
-  d["multiplicity"] = c.multiplicity;
-  return d;
-}
-
-py::dict as_dict(const geo::RimArc& a) {
-  py::dict d;
-  d["begin"] = a.begin;
-  d["end"] = a.end;
-  d["full"] = a.full;
-  return d;
-}
-
-py::dict as_dict(const geo::Contact& c) {
-  py::dict d;
-  d["type"] = py::cast(c.type);
-  d["base"] = py::cast(c.base);
-  d["depth"] = c.depth;
-  d["depth_error"] = c.depth_error;
-  d["point_journal"] = vector_list(c.p_WCj);
-  d["point_journal_error"] = c.p_WCj_error;
-  d["point_bearing"] = vector_list(c.p_WCi);
-  d["point_bearing_error"] = c.p_WCi_error;
-  d["normal"] = vector_list(c.normal_W);
-  d["crossings"] = crossing_list(c.crossings, c.crossing_count);
-  put_certificate(d, c.certificate);
-  return d;
-}
+py::dict as_dict(const geo::RimCrossing& c) { return dict_of(c); }
+py::dict as_dict(const geo::RimArc& a) { return dict_of(a); }
+py::dict as_dict(const geo::Contact& c) { return dict_of(c); }
+py::dict as_dict(const geo::CirclePlaneIntersection& r) { return dict_of(r); }
+py::dict as_dict(const geo::CircleCylinderIntersection& r) { return dict_of(r); }
 
 py::dict as_dict(const geo::JointContacts& r) {
-  py::dict d;
-  d["scenario"] = py::cast(r.scenario);
-  d["aligned"] = r.aligned;
-  put_certificate(d, r.certificate);
+  py::dict d = dict_of(r);
   d["contact_count"] = r.contact_count;
-  py::list contacts;
-  for (int k = 0; k < r.contact_count; ++k) contacts.append(as_dict(r.contacts[k]));
-  d["contacts"] = contacts;
-  return d;
-}
-
-py::dict as_dict(const geo::CirclePlaneIntersection& r) {
-  py::dict d;
-  d["topology"] = py::cast(r.topology);
-  d["side"] = static_cast<int>(r.side);
-  d["crossings"] = crossing_list(r.crossings, r.crossing_count);
-  d["penetration"] = r.has_penetration ? py::object(as_dict(r.penetration)) : py::none();
-  d["max_signed_distance"] = r.max_signed_distance;
-  d["max_signed_distance_error"] = r.max_signed_distance_error;
-  put_certificate(d, r.certificate);
-  return d;
-}
-
-py::dict as_dict(const geo::CircleCylinderIntersection& r) {
-  py::dict d;
-  d["topology"] = py::cast(r.topology);
-  d["crossings"] = crossing_list(r.crossings, r.crossing_count);
-  py::list arcs;
-  for (int k = 0; k < r.arc_count; ++k) arcs.append(as_dict(r.penetration_arcs[k]));
-  d["penetration_arcs"] = arcs;
-  put_certificate(d, r.certificate);
   return d;
 }
 
 template <>
 geo::Certificate from_dict(const py::dict& d) {
-  return certificate(d, "level", "reason");
+  return {enum_argument<geo::Certainty>(d["level"], "level"),
+          enum_argument<geo::CertificateReason>(d["reason"], "reason")};
 }
 
 template <>
-geo::RimCrossing from_dict(const py::dict& d) {
-  geo::RimCrossing c;
-  c.angle = number(d, "angle");
-  c.angle_error = number(d, "angle_error");
-  c.point = vector(d, "point");
-  c.point_error = number(d, "point_error");
-  c.multiplicity = py::cast<int>(d["multiplicity"]);
-  return c;
-}
-
+geo::RimCrossing from_dict(const py::dict& d) { return result_of<geo::RimCrossing>(d); }
 template <>
-geo::RimArc from_dict(const py::dict& d) {
-  return {number(d, "begin"), number(d, "end"), py::cast<bool>(d["full"])};
-}
-
+geo::RimArc from_dict(const py::dict& d) { return result_of<geo::RimArc>(d); }
 template <>
-geo::Contact from_dict(const py::dict& d) {
-  geo::Contact c;
-  c.type = enum_argument<geo::ContactType>(d["type"], "type");
-  c.base = enum_argument<geo::ContactBase>(d["base"], "base");
-  c.depth = number(d, "depth");
-  c.depth_error = number(d, "depth_error");
-  c.p_WCj = vector(d, "point_journal");
-  c.p_WCj_error = number(d, "point_journal_error");
-  c.p_WCi = vector(d, "point_bearing");
-  c.p_WCi_error = number(d, "point_bearing_error");
-  c.normal_W = vector(d, "normal");
-  c.crossing_count = read_crossings(d, c.crossings);
-  c.certificate = certificate(d, "certificate", "certificate_reason");
-  return c;
+geo::Contact from_dict(const py::dict& d) { return result_of<geo::Contact>(d); }
+template <>
+geo::CirclePlaneIntersection from_dict(const py::dict& d) { return result_of<geo::CirclePlaneIntersection>(d); }
+template <>
+geo::CircleCylinderIntersection from_dict(const py::dict& d) {
+  return result_of<geo::CircleCylinderIntersection>(d);
 }
 
 template <>
 geo::JointContacts from_dict(const py::dict& d) {
-  geo::JointContacts r;
-  r.scenario = enum_argument<geo::ContactScenario>(d["scenario"], "scenario");
-  r.aligned = py::cast<bool>(d["aligned"]);
-  r.certificate = certificate(d, "certificate", "certificate_reason");
-  const py::list contacts = dict_list(d, "contacts", geo::kMaxContacts);
-  for (std::size_t k = 0; k < contacts.size(); ++k) r.contacts[k] = from_dict<geo::Contact>(py::cast<py::dict>(contacts[k]));
-  r.contact_count = static_cast<int>(contacts.size());
+  geo::JointContacts r = result_of<geo::JointContacts>(d);
   if (py::cast<int>(d["contact_count"]) != r.contact_count) {
     throw py::value_error("contact_count: must be the number of contacts");
   }
-  return r;
-}
-
-template <>
-geo::CirclePlaneIntersection from_dict(const py::dict& d) {
-  geo::CirclePlaneIntersection r;
-  r.topology = enum_argument<geo::CirclePlaneTopology>(d["topology"], "topology");
-  const int side = py::cast<int>(d["side"]);
-  if (side < -1 || side > 1) throw py::value_error("side: must be -1, 0 or 1");
-  r.side = static_cast<geo::PlaneSide>(side);
-  r.crossing_count = read_crossings(d, r.crossings);
-  const py::object penetration = d["penetration"];
-  r.has_penetration = !penetration.is_none();
-  if (r.has_penetration) r.penetration = from_dict<geo::RimArc>(py::cast<py::dict>(penetration));
-  r.max_signed_distance = number(d, "max_signed_distance");
-  r.max_signed_distance_error = number(d, "max_signed_distance_error");
-  r.certificate = certificate(d, "certificate", "certificate_reason");
-  return r;
-}
-
-template <>
-geo::CircleCylinderIntersection from_dict(const py::dict& d) {
-  geo::CircleCylinderIntersection r;
-  r.topology = enum_argument<geo::CircleCylinderTopology>(d["topology"], "topology");
-  r.crossing_count = read_crossings(d, r.crossings);
-  const py::list arcs = dict_list(d, "penetration_arcs", r.penetration_arcs.size());
-  for (std::size_t k = 0; k < arcs.size(); ++k) r.penetration_arcs[k] = from_dict<geo::RimArc>(py::cast<py::dict>(arcs[k]));
-  r.arc_count = static_cast<int>(arcs.size());
-  r.certificate = certificate(d, "certificate", "certificate_reason");
   return r;
 }
 

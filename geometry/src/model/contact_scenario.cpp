@@ -3,46 +3,9 @@
 
 namespace clearjoint::geometry {
 
-std::string_view to_string(ContactScenario scenario) noexcept {
-  switch (scenario) {
-    case ContactScenario::none: return "none";
-    case ContactScenario::single_radial: return "a";
-    case ContactScenario::single_axial: return "b";
-    case ContactScenario::radial_at_both_bases: return "c";
-    case ContactScenario::axial_at_both_bases: return "d";
-    case ContactScenario::radial_and_axial_same_base: return "e";
-    case ContactScenario::radial_and_axial_opposite_bases: return "f";
-    case ContactScenario::two_radial_one_axial: return "g";
-    case ContactScenario::one_radial_two_axial: return "h";
-    case ContactScenario::all_four: return "i";
-    case ContactScenario::line: return "j";
-    case ContactScenario::face: return "k";
-    case ContactScenario::line_and_face: return "l";
-    case ContactScenario::beyond_model: return "beyond_model";
-  }
-  return "unknown";
-}
+std::string_view to_string(ContactScenario scenario) noexcept { return key_of(scenario); }
 
-std::string_view label(ContactScenario scenario) noexcept {
-  switch (scenario) {
-    case ContactScenario::none: return "none";
-    case ContactScenario::single_radial: return "(a) single radial";
-    case ContactScenario::single_axial: return "(b) single axial";
-    case ContactScenario::radial_at_both_bases: return "(c) radial at both bases";
-    case ContactScenario::axial_at_both_bases: return "(d) axial at both bases";
-    case ContactScenario::radial_and_axial_same_base: return "(e) radial and axial at the same base";
-    case ContactScenario::radial_and_axial_opposite_bases:
-      return "(f) radial and axial at opposite bases";
-    case ContactScenario::two_radial_one_axial: return "(g) two radial, one axial";
-    case ContactScenario::one_radial_two_axial: return "(h) one radial, two axial";
-    case ContactScenario::all_four: return "(i) all four";
-    case ContactScenario::line: return "(j) line";
-    case ContactScenario::face: return "(k) face";
-    case ContactScenario::line_and_face: return "(l) line and face";
-    case ContactScenario::beyond_model: return "beyond model";
-  }
-  return "unknown";
-}
+std::string_view label(ContactScenario scenario) noexcept { return label_of(scenario); }
 
 ContactScenario classify_scenario(const ContactPresence& presence) noexcept {
   if (presence.beyond_model) return ContactScenario::beyond_model;

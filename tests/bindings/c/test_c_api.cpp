@@ -365,7 +365,9 @@ TEST(CApi, NamesEveryEnumValueAndSaysUnknownForOthers) {
   EXPECT_STREQ(cj_base_string(CJ_BASE_MID), "mid");
   EXPECT_STREQ(cj_base_string(3), "unknown");
   EXPECT_STREQ(cj_circle_plane_topology_string(CJ_CIRCLE_PLANE_TANGENT), "tangent");
-  EXPECT_STREQ(cj_circle_cylinder_topology_string(CJ_CIRCLE_CYLINDER_ON_SURFACE), "on surface");
+  EXPECT_STREQ(cj_circle_cylinder_topology_string(CJ_CIRCLE_CYLINDER_ON_SURFACE), "on_surface");
+  EXPECT_STREQ(cj_circle_plane_topology_string(CJ_CIRCLE_PLANE_TWO_CROSSINGS), "two_crossings");
+  EXPECT_STREQ(cj_base_string(CJ_BASE_A), "a");
   EXPECT_STREQ(cj_status_string(CJ_INVALID_INPUT), "invalid input");
   EXPECT_STREQ(cj_status_string(42), "unknown");
 }

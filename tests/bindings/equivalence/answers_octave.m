@@ -76,7 +76,7 @@ function code = type_code(name)
 end
 
 function code = base_code(name)
-  code = find(strcmp(name, {'A', 'B', 'mid'})) - 1;
+  code = find(strcmp(name, {'a', 'b', 'mid'})) - 1;
 end
 
 function write_batch_lines(out, first_index, r)

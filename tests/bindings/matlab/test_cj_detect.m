@@ -13,8 +13,8 @@ function test_cj_detect()
   assert(strcmp(r.scenario, 'e'));
   assert(r.scenario_code == 5 && ~r.aligned && r.contact_count == 2);
   assert(strcmp(r.certificate.level, 'certified') && strcmp(r.certificate.reason, ''));
-  assert(strcmp(r.contacts(1).type, 'radial') && strcmp(r.contacts(1).base, 'A'));
-  assert(strcmp(r.contacts(2).type, 'axial') && strcmp(r.contacts(2).base, 'A'));
+  assert(strcmp(r.contacts(1).type, 'radial') && strcmp(r.contacts(1).base, 'a'));
+  assert(strcmp(r.contacts(2).type, 'axial') && strcmp(r.contacts(2).base, 'a'));
   assert(numel(r.contacts(1).crossings) == 2 && r.contacts(1).crossings(1).multiplicity == 1);
   c = r.contacts(1);
   % p_WCj - p_WCi = depth * normal_W (eqs. 22-23), up to rounding of O(10) mm coordinates.

@@ -161,10 +161,13 @@ typedef enum cj_circle_cylinder_topology {
   CJ_CIRCLE_CYLINDER_ON_SURFACE = 3
 } cj_circle_cylinder_topology;
 
-/** Static strings; "unknown" for a value this version does not know. A scenario's text is its
- * key, as C++ to_string and `clearjoint detect` write it: "none", "a" ... "l" (the letters of the
- * paper's Fig. 2), "beyond_model". The others are the C++ to_string ones: "exact", "certified",
- * "uncertain"; a reason's sentence ("certificate switched off"; "" for CJ_REASON_NONE). */
+/** Static strings; "unknown" for a value this version does not know. Each is the value's key in
+ * the C++ library's enum table (clearjoint/geometry/enum_table.hpp), the one spelling that
+ * `clearjoint detect` and `clearjoint intersect` write and Python's members are named by:
+ * scenarios "none", "a" ... "l" (the letters of the paper's Fig. 2), "beyond_model"; "exact",
+ * "certified", "uncertain"; "radial", "axial"; bases "a", "b", "mid"; "disjoint", "tangent",
+ * "two_crossings", "circle_in_plane"; "inside", "outside", "crossing", "on_surface". A reason's
+ * text is its sentence ("certificate switched off"; "" for CJ_REASON_NONE). */
 CJ_API const char* cj_scenario_string(int scenario);
 CJ_API const char* cj_certainty_string(int certainty);
 CJ_API const char* cj_reason_string(int reason);

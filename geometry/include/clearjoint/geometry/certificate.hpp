@@ -3,8 +3,11 @@
 /// \file
 /// How far a numeric answer can be trusted, and why it is not trusted more.
 
+#include <array>
 #include <cstdint>
 #include <string_view>
+
+#include "clearjoint/geometry/enum_table.hpp"
 
 namespace clearjoint::geometry {
 
@@ -47,6 +50,66 @@ enum class CertificateReason : std::uint8_t {
   beyond_model_undecided,  ///< a depth within its error bound of the clearance: beyond the model or not
 };
 
+template <>
+struct EnumTable<Certainty> {
+  static constexpr std::string_view type_name = "Certainty";
+  static constexpr auto entries = std::to_array({
+      named_entry(Certainty::exact, "exact", "decided with exact rational arithmetic"),
+      named_entry(Certainty::certified, "certified", "proved in floating point with rigorous error bounds"),
+      named_entry(Certainty::uncertain, "uncertain", "not proved; the certificate's reason says why"),
+  });
+};
+static_assert(entries_in_code_order<Certainty>());
+
+/// A reason's label is its sentence ("" for `none`), which the outputs write.
+template <>
+struct EnumTable<CertificateReason> {
+  using R = CertificateReason;
+  static constexpr std::string_view type_name = "CertificateReason";
+  static constexpr auto entries = std::to_array({
+      named_entry(R::none, "none",
+                  ""),
+      named_entry(R::not_decided, "not_decided",
+                  "not decided (a default-constructed certificate)"),
+      named_entry(R::certificate_switched_off, "certificate_switched_off",
+                  "certificate switched off"),
+      named_entry(R::plane_filter_undecided, "plane_filter_undecided",
+                  "floating-point filter could not decide (tangent or parallel)"),
+      named_entry(R::plane_filter_undecided_exact_fallback_off, "plane_filter_undecided_exact_fallback_off",
+                  "floating-point filter could not decide and the exact fallback is off"),
+      named_entry(R::plane_results_not_representable, "plane_results_not_representable",
+                  "crossing points, depth or their error bounds not representable in double (intermediate "
+                  "under- or overflow: input magnitudes too far apart); the topology is still decided"),
+      named_entry(R::subdivision_budget_exhausted, "subdivision_budget_exhausted",
+                  "subdivision budget exhausted (roots too close: near tangency)"),
+      named_entry(R::more_than_four_roots, "more_than_four_roots",
+                  "more than four roots found (cannot happen for a proper rim)"),
+      named_entry(R::interval_proof_failed_near_multiple_root, "interval_proof_failed_near_multiple_root",
+                  "interval proof failed near a multiple root (tangency)"),
+      named_entry(R::coefficient_overflow, "coefficient_overflow",
+                  "coefficient overflow in double precision"),
+      named_entry(R::cylinder_points_not_representable, "cylinder_points_not_representable",
+                  "crossing points or their error bounds not representable in double (intermediate under- or "
+                  "overflow: input magnitudes too far apart); the root count is still decided"),
+      named_entry(R::exact_root_isolation_budget_exhausted, "exact_root_isolation_budget_exhausted",
+                  "exact tier gave up: root isolation exceeded its budget (input magnitudes too far apart)"),
+      named_entry(R::exact_coefficients_too_large, "exact_coefficients_too_large",
+                  "exact tier gave up: polynomial coefficients too large (input magnitudes too far apart)"),
+      named_entry(R::exact_intermediate_beyond_double_range, "exact_intermediate_beyond_double_range",
+                  "exact tier gave up: an intermediate value left the double range (input magnitudes too far apart)"),
+      named_entry(R::contact_not_representable_in_world, "contact_not_representable_in_world",
+                  "a contact point, depth or error bound not representable in double (coordinates too "
+                  "large for the joint's size); the contact's existence is still decided"),
+      named_entry(R::axes_parallel_within_tolerance, "axes_parallel_within_tolerance",
+                  "axes treated as parallel within DetectionOptions::parallel_angle_tolerance (eq. 5 relaxed; "
+                  "decided in double precision)"),
+      named_entry(R::beyond_model_undecided, "beyond_model_undecided",
+                  "a contact's depth lies within its error bound of the clearance: whether the joint is beyond "
+                  "the model (scenario beyond_model) is not proved; the contacts themselves are"),
+  });
+};
+static_assert(entries_in_code_order<CertificateReason>());
+
 /// A trust level and why it is not stronger. Default-constructed: `uncertain`, `not_decided`
 /// (nothing has been proved about a certificate no query filled in).
 struct Certificate {
@@ -57,8 +120,10 @@ struct Certificate {
   std::string_view reason_text() const noexcept;
 };
 
+/// The level's key: "exact", "certified", "uncertain".
 std::string_view to_string(Certainty level) noexcept;
-/// The reason as a sentence ("certificate switched off", ...); empty for `none`.
+/// The reason as a sentence ("certificate switched off", ...), its label; empty for `none`. The
+/// one to_string that gives a label rather than a key: the outputs write the sentence.
 std::string_view to_string(CertificateReason reason) noexcept;
 
 /// The weaker of two certificates (used to combine the parts of one answer). Inline: detection

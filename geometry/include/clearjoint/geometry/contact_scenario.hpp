@@ -4,7 +4,10 @@
 /// The contact scenarios of the paper's Fig. 2, (a) to (l), plus free flight and "beyond the
 /// model", and the rule that names the scenario from the contacts found.
 
+#include <array>
 #include <string_view>
+
+#include "clearjoint/geometry/enum_table.hpp"
 
 namespace clearjoint::geometry {
 
@@ -28,6 +31,31 @@ enum class ContactScenario {
   /// deeper than the clearance in its direction (radial cr, eq. 1; axial ca, eq. 2).
   beyond_model,
 };
+
+/// Keys: "none", the letter of the paper's Fig. 2 ("a" ... "l"), "beyond_model".
+template <>
+struct EnumTable<ContactScenario> {
+  using S = ContactScenario;
+  static constexpr std::string_view type_name = "ContactScenario";
+  static constexpr auto entries = std::to_array<EnumEntry<S>>({
+      {S::none, "none", "none", "none"},
+      {S::single_radial, "single_radial", "a", "(a) single radial"},
+      {S::single_axial, "single_axial", "b", "(b) single axial"},
+      {S::radial_at_both_bases, "radial_at_both_bases", "c", "(c) radial at both bases"},
+      {S::axial_at_both_bases, "axial_at_both_bases", "d", "(d) axial at both bases"},
+      {S::radial_and_axial_same_base, "radial_and_axial_same_base", "e", "(e) radial and axial at the same base"},
+      {S::radial_and_axial_opposite_bases, "radial_and_axial_opposite_bases", "f",
+       "(f) radial and axial at opposite bases"},
+      {S::two_radial_one_axial, "two_radial_one_axial", "g", "(g) two radial, one axial"},
+      {S::one_radial_two_axial, "one_radial_two_axial", "h", "(h) one radial, two axial"},
+      {S::all_four, "all_four", "i", "(i) all four"},
+      {S::line, "line", "j", "(j) line"},
+      {S::face, "face", "k", "(k) face"},
+      {S::line_and_face, "line_and_face", "l", "(l) line and face"},
+      {S::beyond_model, "beyond_model", "beyond_model", "beyond model"},
+  });
+};
+static_assert(entries_in_code_order<ContactScenario>());
 
 /// The scenario's key, the one spelling used by the command line's output, the C API and the
 /// docs: "none", the letter of the paper's Fig. 2 ("a" ... "l"), or "beyond_model".

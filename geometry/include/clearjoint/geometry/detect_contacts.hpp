@@ -28,9 +28,11 @@
 /// checks this against an MPFR reference of the joint as given.
 
 #include <array>
+#include <string_view>
 
 #include "clearjoint/geometry/certificate.hpp"
 #include "clearjoint/geometry/contact_scenario.hpp"
+#include "clearjoint/geometry/enum_table.hpp"
 #include "clearjoint/geometry/intersection_options.hpp"
 #include "clearjoint/geometry/joint_geometry.hpp"
 #include "clearjoint/geometry/rim_arc.hpp"
@@ -58,6 +60,32 @@ enum class ContactBase {
   b,    ///< at bearing base B (eq. 4) and the journal rim facing it
   mid,  ///< at the journal's mid-length (aligned line contact, eqs. 6-8)
 };
+
+template <>
+struct EnumTable<ContactType> {
+  static constexpr std::string_view type_name = "ContactType";
+  static constexpr auto entries = std::to_array({
+      named_entry(ContactType::radial, "radial", "against the lateral wall (eqs. 16-21; line: eqs. 6-8)"),
+      named_entry(ContactType::axial, "axial", "against a base (eqs. 11-15; face: eqs. 9-10)"),
+  });
+};
+static_assert(entries_in_code_order<ContactType>());
+
+/// The bases' keys are lower case, as the enumerators: "a", "b", "mid".
+template <>
+struct EnumTable<ContactBase> {
+  static constexpr std::string_view type_name = "ContactBase";
+  static constexpr auto entries = std::to_array({
+      named_entry(ContactBase::a, "a", "at bearing base A (eq. 3) and the journal rim facing it"),
+      named_entry(ContactBase::b, "b", "at bearing base B (eq. 4) and the journal rim facing it"),
+      named_entry(ContactBase::mid, "mid", "at the journal's mid-length (line contact, eqs. 6-8)"),
+  });
+};
+static_assert(entries_in_code_order<ContactBase>());
+
+/// The keys: "radial", "axial"; "a", "b", "mid".
+constexpr std::string_view to_string(ContactType type) noexcept { return key_of(type); }
+constexpr std::string_view to_string(ContactBase base) noexcept { return key_of(base); }
 
 /// One contact.
 ///

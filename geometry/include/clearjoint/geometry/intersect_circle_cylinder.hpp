@@ -9,8 +9,10 @@
 /// docs/circle-cylinder.md derives the method.
 
 #include <array>
+#include <string_view>
 
 #include "clearjoint/geometry/certificate.hpp"
+#include "clearjoint/geometry/enum_table.hpp"
 #include "clearjoint/geometry/intersection_options.hpp"
 #include "clearjoint/geometry/primitives.hpp"
 #include "clearjoint/geometry/rim_arc.hpp"
@@ -23,6 +25,22 @@ enum class CircleCylinderTopology {
   crossing,    ///< 1 to 4 distinct common points, each with its multiplicity
   on_surface   ///< every rim point lies on the cylinder (coaxial, equal radii)
 };
+
+template <>
+struct EnumTable<CircleCylinderTopology> {
+  using T = CircleCylinderTopology;
+  static constexpr std::string_view type_name = "CircleCylinderTopology";
+  static constexpr auto entries = std::to_array({
+      named_entry(T::inside, "inside", "every rim point strictly inside the wall"),
+      named_entry(T::outside, "outside", "every rim point strictly beyond the wall"),
+      named_entry(T::crossing, "crossing", "1 to 4 distinct common points"),
+      named_entry(T::on_surface, "on_surface", "coaxial with equal radii"),
+  });
+};
+static_assert(entries_in_code_order<CircleCylinderTopology>());
+
+/// The key: "inside", "outside", "crossing", "on_surface".
+constexpr std::string_view to_string(CircleCylinderTopology topology) noexcept { return key_of(topology); }
 
 struct CircleCylinderIntersection {
   CircleCylinderTopology topology = CircleCylinderTopology::inside;

@@ -1,0 +1,135 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The C API and the Fortran module against the library's descriptions of its enums and results
+// (clearjoint/geometry/enum_table.hpp, result_fields.hpp). Both list codes and copy fields by
+// hand, as C and Fortran must; these tests fail when a value or a field the library has is
+// missing from them:
+//  - every enum value has its constant, CJ_<ENUM>_<NAME> = code, in clearjoint.h (and in the
+//    Fortran module for the enums it declares), and its key from the cj_*_string functions;
+//  - copying a result into its C struct carries every field: changing any one field of the C++
+//    result changes the bytes of the C struct.
+
+#include <cctype>
+#include <cstring>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "clearjoint/geometry/result_field_changes.hpp"
+#include "conversions.hpp"
+
+namespace {
+
+namespace geo = clearjoint::geometry;
+
+std::string read_file(const char* path) {
+  std::ifstream file(path);
+  std::ostringstream text;
+  text << file.rdbuf();
+  return text.str();
+}
+
+std::string upper(std::string_view text) {
+  std::string out(text);
+  for (char& c : out) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  return out;
+}
+
+/// Whether `source` declares `constant` = `code` (C: `NAME = 3`, Fortran: `NAME = 3`).
+bool declares(const std::string& source, const std::string& constant, int code) {
+  const std::regex pattern("\\b" + constant + "\\s*=\\s*" + std::to_string(code) + "\\b");
+  return std::regex_search(source, pattern);
+}
+
+/// Every value of E has its C constant, and the Fortran one when `in_fortran`.
+template <geo::TabledEnum E>
+void expect_constants(const char* prefix, bool in_fortran, const char* (*to_text)(int)) {
+  const std::string header = read_file(CLEARJOINT_C_HEADER);
+  const std::string fortran = read_file(CLEARJOINT_FORTRAN_MODULE);
+  ASSERT_FALSE(header.empty()) << CLEARJOINT_C_HEADER;
+  for (const geo::EnumEntry<E>& entry : geo::EnumTable<E>::entries) {
+    const int code = static_cast<int>(entry.value);
+    const std::string constant = std::string(prefix) + upper(entry.name);
+    EXPECT_TRUE(declares(header, constant, code))
+        << "clearjoint.h lacks " << constant << " = " << code << " (" << geo::EnumTable<E>::type_name << "::"
+        << entry.name << ")";
+    if (in_fortran) {
+      EXPECT_TRUE(declares(fortran, constant, code)) << "clearjoint.f90 lacks " << constant << " = " << code;
+    }
+    const bool is_reason = std::is_same_v<E, geo::CertificateReason>;
+    EXPECT_EQ(std::string(to_text(code)), std::string(is_reason ? entry.label : entry.key)) << constant;
+  }
+  EXPECT_STREQ(to_text(geo::enum_count<E>()), "unknown");
+  EXPECT_STREQ(to_text(-1), "unknown");
+}
+
+TEST(CDescriptions, EveryEnumValueHasItsConstantAndItsKey) {
+  expect_constants<geo::ContactScenario>("CJ_SCENARIO_", true, cj_scenario_string);
+  expect_constants<geo::Certainty>("CJ_CERTAINTY_", true, cj_certainty_string);
+  expect_constants<geo::CertificateReason>("CJ_REASON_", true, cj_reason_string);
+  expect_constants<geo::ContactType>("CJ_CONTACT_", true, cj_contact_type_string);
+  expect_constants<geo::ContactBase>("CJ_BASE_", true, cj_base_string);
+  // The Fortran module has no kernel queries.
+  expect_constants<geo::CirclePlaneTopology>("CJ_CIRCLE_PLANE_", false, cj_circle_plane_topology_string);
+  expect_constants<geo::CircleCylinderTopology>("CJ_CIRCLE_CYLINDER_", false,
+                                                cj_circle_cylinder_topology_string);
+}
+
+template <class CStruct>
+bool same_bytes(const CStruct& a, const CStruct& b) {
+  return std::memcmp(&a, &b, sizeof a) == 0;
+}
+
+TEST(CDescriptions, CopyingADetectionCarriesEveryField) {
+  const auto base = geo::result_with_every_field_set<geo::JointContacts>();
+  cj_result base_copy{};
+  clearjoint::c_api::copy_result(base, base_copy);
+  int changes = 0;
+  geo::for_each_field_change(base, [&](std::string_view field, const geo::JointContacts& changed) {
+    cj_result copy{};
+    clearjoint::c_api::copy_result(changed, copy);
+    EXPECT_FALSE(same_bytes(copy, base_copy)) << "cj_result does not carry " << field;
+    ++changes;
+  });
+  EXPECT_EQ(changes, 30);  // one contact with one crossing: 30 leaves, each reached
+}
+
+TEST(CDescriptions, CopyingACrossingCarriesEveryField) {
+  const auto base = geo::result_with_every_field_set<geo::RimCrossing>();
+  cj_crossing base_copy{};
+  clearjoint::c_api::copy_crossing(base, base_copy);
+  geo::for_each_field_change(base, [&](std::string_view field, const geo::RimCrossing& changed) {
+    cj_crossing copy{};
+    clearjoint::c_api::copy_crossing(changed, copy);
+    EXPECT_FALSE(same_bytes(copy, base_copy)) << "cj_crossing does not carry " << field;
+  });
+}
+
+TEST(CDescriptions, CopyingAnArcCarriesEveryField) {
+  const auto base = geo::result_with_every_field_set<geo::RimArc>();
+  const cj_arc base_copy = clearjoint::c_api::arc_of(base);
+  geo::for_each_field_change(base, [&](std::string_view field, const geo::RimArc& changed) {
+    const cj_arc copy = clearjoint::c_api::arc_of(changed);
+    EXPECT_FALSE(same_bytes(copy, base_copy)) << "cj_arc does not carry " << field;
+  });
+}
+
+TEST(CDescriptions, CopyingTheKernelAnswersCarriesEveryField) {
+  const auto plane = geo::result_with_every_field_set<geo::CirclePlaneIntersection>();
+  const cj_circle_plane_result plane_copy = clearjoint::c_api::circle_plane_result_of(plane);
+  geo::for_each_field_change(plane, [&](std::string_view field, const geo::CirclePlaneIntersection& changed) {
+    EXPECT_FALSE(same_bytes(clearjoint::c_api::circle_plane_result_of(changed), plane_copy))
+        << "cj_circle_plane_result does not carry " << field;
+  });
+
+  const auto cylinder = geo::result_with_every_field_set<geo::CircleCylinderIntersection>();
+  const cj_circle_cylinder_result cylinder_copy = clearjoint::c_api::circle_cylinder_result_of(cylinder);
+  geo::for_each_field_change(cylinder, [&](std::string_view field, const geo::CircleCylinderIntersection& changed) {
+    EXPECT_FALSE(same_bytes(clearjoint::c_api::circle_cylinder_result_of(changed), cylinder_copy))
+        << "cj_circle_cylinder_result does not carry " << field;
+  });
+}
+
+}  // namespace
