@@ -227,12 +227,12 @@ constexpr bool lists_every_member() {
 }  // namespace detail
 
 // A member added to one of these structs needs its line in the struct's field list above.
-static_assert(detail::lists_every_member<Certificate>());
-static_assert(detail::lists_every_member<RimCrossing>());
-static_assert(detail::lists_every_member<RimArc>());
-static_assert(detail::lists_every_member<Contact>());
-static_assert(detail::lists_every_member<JointContacts>());
-static_assert(detail::lists_every_member<CirclePlaneIntersection>());
-static_assert(detail::lists_every_member<CircleCylinderIntersection>());
+static_assert(detail::lists_every_member<Certificate>(), "a member of Certificate is missing from its field list");
+static_assert(detail::lists_every_member<RimCrossing>(), "a member of RimCrossing is missing from its field list");
+static_assert(detail::lists_every_member<RimArc>(), "a member of RimArc is missing from its field list");
+static_assert(detail::lists_every_member<Contact>(), "a member of Contact is missing from its field list");
+static_assert(detail::lists_every_member<JointContacts>(), "a member of JointContacts is missing from its field list");
+static_assert(detail::lists_every_member<CirclePlaneIntersection>(), "a member of CirclePlaneIntersection is missing from its field list");
+static_assert(detail::lists_every_member<CircleCylinderIntersection>(), "a member of CircleCylinderIntersection is missing from its field list");
 
 }  // namespace clearjoint::geometry
