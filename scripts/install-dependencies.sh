@@ -12,6 +12,7 @@ packages=(
   libgtest-dev libbenchmark-dev         # tests and benchmarks
   nlohmann-json3-dev                    # JSON Lines and model files
   pkgconf                               # packaging test: a consumer built with pkg-config
+  lintian                               # scripts/check-deb.sh: the Debian packages' checks
   python3 python3-matplotlib            # plots in docs/
   python3-jsonschema                    # tests: outputs and examples against docs/schema/
   python3-dev pybind11-dev python3-pybind11 python3-numpy python3-pytest  # the Python package
