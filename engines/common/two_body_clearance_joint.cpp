@@ -13,15 +13,15 @@ dynamics::ClearanceJointPart on_body(dynamics::ClearanceJointPart part, dynamics
   return part;
 }
 
-dynamics::BodyState body_state(const RigidMotion& motion) {
-  dynamics::BodyState state;
-  state.position_W = motion.origin_W;
-  state.euler_parameters = motion.orientation;
-  state.velocity_W = motion.velocity_W;
-  // SystemKinematics keeps omega in the body frame (eq. 33's omega'); the rotation is A(p).
-  state.angular_velocity_B =
-      dynamics::rotation_from_euler_parameters(motion.orientation).transpose() * motion.angular_velocity_W;
-  return state;
+/// The engine's rotation matrix as it is, without a round trip through Euler parameters.
+dynamics::BodyKinematics body_kinematics(const RigidMotion& motion) {
+  dynamics::BodyKinematics k;
+  k.position_W = motion.origin_W;
+  k.rotation = motion.rotation;
+  k.velocity_W = motion.velocity_W;
+  k.angular_velocity_W = motion.angular_velocity_W;
+  k.angular_velocity_B = motion.rotation.transpose() * motion.angular_velocity_W;
+  return k;
 }
 
 }  // namespace
@@ -35,23 +35,20 @@ TwoBodyClearanceJoint::TwoBodyClearanceJoint(const std::string& name,
 void TwoBodyClearanceJoint::set_motions(double time, const RigidMotion& bearing,
                                         const RigidMotion& journal) {
   time_ = time;
-  kinematics_.set(kBearing, body_state(bearing));
-  kinematics_.set(kJournal, body_state(journal));
+  kinematics_.set_kinematics(kBearing, body_kinematics(bearing));
+  kinematics_.set_kinematics(kJournal, body_kinematics(journal));
 }
 
 dynamics::ClearanceJointState TwoBodyClearanceJoint::evaluate(std::span<const double> impact_memory) const {
   return joint_.evaluate(time_, kinematics_, impact_memory);
 }
 
-int TwoBodyClearanceJoint::contact_forces(std::span<const double> impact_memory,
-                                          std::span<ContactForce> out) const {
-  const dynamics::ClearanceJointState state = evaluate(impact_memory);
-  const int count = state.contacts.contact_count;
-  for (int c = 0; c < count; ++c) {
-    out[c] = {state.contact_force_on_journal_W[c], state.contacts.contacts[c].p_WCj,
-              state.contacts.contacts[c].p_WCi};
-  }
-  return count;
+BodyWrenches TwoBodyClearanceJoint::wrenches(std::span<const double> impact_memory) const {
+  forces_.clear();
+  double unused_rate[dynamics::kContactSlotCount] = {};  // the memory's rate: zero, never written
+  joint_.add_forces({time_, kinematics_, impact_memory, unused_rate}, forces_);
+  return {forces_.force_W(kBearing), forces_.moment_W(kBearing), forces_.force_W(kJournal),
+          forces_.moment_W(kJournal)};
 }
 
 double TwoBodyClearanceJoint::potential_energy() const { return joint_.potential_energy(kinematics_); }

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "clearjoint/dynamics/clearance_revolute_joint.hpp"
+#include "clearjoint/dynamics/generalised_forces.hpp"
 #include "clearjoint/dynamics/system_kinematics.hpp"
 
 namespace clearjoint::engines {
@@ -19,17 +20,19 @@ namespace clearjoint::engines {
 /// the origin's velocity and the angular velocity, both in the world frame.
 struct RigidMotion {
   dynamics::Vector3 origin_W = dynamics::Vector3::Zero();
-  /// Unit quaternion (w, x, y, z) of the body-to-world rotation: clearjoint's Euler parameters.
-  dynamics::Vector4 orientation{1.0, 0.0, 0.0, 0.0};
+  /// Body-to-world rotation (orthonormal).
+  dynamics::Matrix3 rotation = dynamics::Matrix3::Identity();
   dynamics::Vector3 velocity_W = dynamics::Vector3::Zero();
   dynamics::Vector3 angular_velocity_W = dynamics::Vector3::Zero();
 };
 
-/// A contact force on the journal and where the two bodies receive it.
-struct ContactForce {
-  dynamics::Vector3 force_on_journal_W = dynamics::Vector3::Zero();  ///< the bearing gets -force
-  dynamics::Vector3 p_WCj = dynamics::Vector3::Zero();  ///< application point on the journal
-  dynamics::Vector3 p_WCi = dynamics::Vector3::Zero();  ///< application point on the bearing
+/// The joint's resultant on each body: a force and its moment about the body frame's origin
+/// (RigidMotion::origin_W), world frame.
+struct BodyWrenches {
+  dynamics::Vector3 force_on_bearing_W = dynamics::Vector3::Zero();
+  dynamics::Vector3 moment_on_bearing_W = dynamics::Vector3::Zero();
+  dynamics::Vector3 force_on_journal_W = dynamics::Vector3::Zero();
+  dynamics::Vector3 moment_on_journal_W = dynamics::Vector3::Zero();
 };
 
 class TwoBodyClearanceJoint {
@@ -46,9 +49,10 @@ class TwoBodyClearanceJoint {
   /// The joint's full evaluation (contacts, forces per contact, slots, outputs' geometry) with
   /// `impact_memory` (dynamics::kContactSlotCount values, 0 = none).
   dynamics::ClearanceJointState evaluate(std::span<const double> impact_memory) const;
-  /// The contact forces of evaluate(); `out` holds geometry::kMaxContacts entries. Returns how
-  /// many were written.
-  int contact_forces(std::span<const double> impact_memory, std::span<ContactForce> out) const;
+  /// The joint's forces on both bodies at the loaded motions, through
+  /// dynamics::ClearanceRevoluteJoint::add_forces itself (the path of clearjoint's own
+  /// integrator: no outputs computed, the detection's work space reused).
+  BodyWrenches wrenches(std::span<const double> impact_memory) const;
   /// The elastic energy stored in the contacts (dynamics::ClearanceRevoluteJoint::potential_energy).
   double potential_energy() const;
   /// True when a contact is present in a slot without memory, or a slot remembers a contact that
@@ -67,6 +71,7 @@ class TwoBodyClearanceJoint {
  private:
   dynamics::ClearanceRevoluteJoint joint_;
   dynamics::SystemKinematics kinematics_{2};
+  mutable dynamics::GeneralisedForces forces_{kinematics_};
   double time_ = 0.0;
 };
 

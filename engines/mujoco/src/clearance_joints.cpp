@@ -67,9 +67,9 @@ dynamics::ClearanceJointPart part_at(const mjModel* m, int site_id) {
 engines::RigidMotion motion_of(const mjModel* m, const mjData* d, int body) {
   engines::RigidMotion motion;
   const mjtNum* p = d->xpos + 3 * body;
-  const mjtNum* q = d->xquat + 4 * body;
   motion.origin_W = {p[0], p[1], p[2]};
-  motion.orientation = {q[0], q[1], q[2], q[3]};
+  // xmat is row-major.
+  motion.rotation = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(d->xmat + 9 * body);
   if (body != 0) {
     mjtNum v[6];  // [angular; linear] at the body frame's origin, world axes
     mj_objectVelocity(m, d, mjOBJ_XBODY, body, v, 0);
@@ -172,23 +172,17 @@ void ClearanceJoints::install() {
 }
 
 void ClearanceJoints::add_passive_forces(mjData* data) const {
-  std::array<engines::ContactForce, geometry::kMaxContacts> contacts;
   for (const auto& j : joints_) {
     j->load(model_, data);
-    const int count = j->joint.contact_forces(j->memory, contacts);
-    const mjtNum zero[3] = {0.0, 0.0, 0.0};
-    for (int c = 0; c < count; ++c) {
-      const dynamics::Vector3& f = contacts[c].force_on_journal_W;
-      const mjtNum on_journal[3] = {f[0], f[1], f[2]};
-      const mjtNum on_bearing[3] = {-f[0], -f[1], -f[2]};
-      if (j->journal_body != 0) {
-        mj_applyFT(model_, data, on_journal, zero, contacts[c].p_WCj.data(), j->journal_body,
-                   data->qfrc_passive);
-      }
-      if (j->bearing_body != 0) {
-        mj_applyFT(model_, data, on_bearing, zero, contacts[c].p_WCi.data(), j->bearing_body,
-                   data->qfrc_passive);
-      }
+    // Force and moment about each body's frame origin (xpos): one mj_applyFT per body.
+    const engines::BodyWrenches w = j->joint.wrenches(j->memory);
+    if (j->journal_body != 0) {
+      mj_applyFT(model_, data, w.force_on_journal_W.data(), w.moment_on_journal_W.data(),
+                 data->xpos + 3 * j->journal_body, j->journal_body, data->qfrc_passive);
+    }
+    if (j->bearing_body != 0) {
+      mj_applyFT(model_, data, w.force_on_bearing_W.data(), w.moment_on_bearing_W.data(),
+                 data->xpos + 3 * j->bearing_body, j->bearing_body, data->qfrc_passive);
     }
   }
 }

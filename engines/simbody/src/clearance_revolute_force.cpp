@@ -1,8 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "clearjoint/simbody/clearance_revolute_force.hpp"
 
-#include <array>
-
 #include "clearjoint/dynamics/errors.hpp"
 #include "two_body_clearance_joint.hpp"
 
@@ -15,11 +13,20 @@ using Memory = SimTK::Vec<dynamics::kContactSlotCount>;
 dynamics::Vector3 to_eigen(const SimTK::Vec3& v) { return {v[0], v[1], v[2]}; }
 SimTK::Vec3 to_simtk(const dynamics::Vector3& v) { return {v[0], v[1], v[2]}; }
 
+dynamics::Matrix3 to_eigen(const SimTK::Rotation& R) {
+  dynamics::Matrix3 m;
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) m(i, j) = R[i][j];
+  }
+  return m;
+}
+
 engines::RigidMotion motion_of(const SimTK::MobilizedBody& body, const SimTK::State& state) {
+  // The ground is the world frame at rest: no cache lookups (a bearing is often grounded).
+  if (body.isGround()) return {};
   const SimTK::Transform& X_GB = body.getBodyTransform(state);
   const SimTK::SpatialVec& V_GB = body.getBodyVelocity(state);
-  const SimTK::Quaternion q = X_GB.R().convertRotationToQuaternion();
-  return {to_eigen(X_GB.p()), {q[0], q[1], q[2], q[3]}, to_eigen(V_GB[1]), to_eigen(V_GB[0])};
+  return {to_eigen(X_GB.p()), to_eigen(X_GB.R()), to_eigen(V_GB[1]), to_eigen(V_GB[0])};
 }
 
 dynamics::ClearanceJointPart part_of(const ClearancePartInBody& part) {
@@ -52,19 +59,17 @@ class ClearanceRevoluteForce::Impl final : public SimTK::Force::Custom::Implemen
 
   void calcForce(const SimTK::State& state, SimTK::Vector_<SimTK::SpatialVec>& body_forces,
                  SimTK::Vector_<SimTK::Vec3>&, SimTK::Vector&) const override {
+    add_body_forces(state, body_forces);
+  }
+
+  void add_body_forces(const SimTK::State& state, SimTK::Vector_<SimTK::SpatialVec>& body_forces) const {
     load(state);
-    std::array<engines::ContactForce, geometry::kMaxContacts> contacts;
-    const int count = joint_.contact_forces(memory(state), contacts);
-    if (count == 0) return;
-    const SimTK::Vec3 p_WJo = journal_.body.getBodyOriginLocation(state);
-    const SimTK::Vec3 p_WIo = bearing_.body.getBodyOriginLocation(state);
-    SimTK::SpatialVec& on_journal = body_forces[journal_.body.getMobilizedBodyIndex()];
-    SimTK::SpatialVec& on_bearing = body_forces[bearing_.body.getMobilizedBodyIndex()];
-    for (int c = 0; c < count; ++c) {
-      const SimTK::Vec3 force = to_simtk(contacts[c].force_on_journal_W);
-      on_journal += SimTK::SpatialVec((to_simtk(contacts[c].p_WCj) - p_WJo) % force, force);
-      on_bearing -= SimTK::SpatialVec((to_simtk(contacts[c].p_WCi) - p_WIo) % force, force);
-    }
+    // Force and moment about each body's origin: Simbody's body forces exactly.
+    const engines::BodyWrenches w = joint_.wrenches(memory(state));
+    body_forces[journal_.body.getMobilizedBodyIndex()] +=
+        SimTK::SpatialVec(to_simtk(w.moment_on_journal_W), to_simtk(w.force_on_journal_W));
+    body_forces[bearing_.body.getMobilizedBodyIndex()] +=
+        SimTK::SpatialVec(to_simtk(w.moment_on_bearing_W), to_simtk(w.force_on_bearing_W));
   }
 
   SimTK::Real calcPotentialEnergy(const SimTK::State& state) const override {
@@ -91,7 +96,10 @@ class ClearanceRevoluteForce::Impl final : public SimTK::Force::Custom::Implemen
   }
 
   std::span<const double> memory(const SimTK::State& state) const {
-    const Memory& m = SimTK::Value<Memory>::downcast(state.getDiscreteVariable(forces_, memory_index_));
+    // static_cast: realizeTopology allocated exactly this type (downcast() would check it with
+    // a dynamic_cast on every evaluation).
+    const Memory& m =
+        static_cast<const SimTK::Value<Memory>&>(state.getDiscreteVariable(forces_, memory_index_)).get();
     return {&m[0], dynamics::kContactSlotCount};
   }
 
@@ -128,10 +136,9 @@ class ClearanceRevoluteForce::Impl final : public SimTK::Force::Custom::Implemen
   void load_positions(const SimTK::State& state) const {
     auto pose = [&](const SimTK::MobilizedBody& body) {
       const SimTK::Transform& X_GB = body.getBodyTransform(state);
-      const SimTK::Quaternion q = X_GB.R().convertRotationToQuaternion();
       engines::RigidMotion motion;
       motion.origin_W = to_eigen(X_GB.p());
-      motion.orientation = {q[0], q[1], q[2], q[3]};
+      motion.rotation = to_eigen(X_GB.R());
       return motion;
     };
     joint_.set_motions(state.getTime(), pose(bearing_.body), pose(journal_.body));
@@ -191,6 +198,11 @@ std::span<const double> ClearanceRevoluteForce::impact_memory(const SimTK::State
 
 dynamics::ClearanceJointState ClearanceRevoluteForce::evaluate(const SimTK::State& state) const {
   return impl().evaluate(state);
+}
+
+void ClearanceRevoluteForce::add_body_forces(const SimTK::State& state,
+                                             SimTK::Vector_<SimTK::SpatialVec>& body_forces) const {
+  impl().add_body_forces(state, body_forces);
 }
 
 void ClearanceRevoluteForce::record_outputs(const SimTK::State& state, std::span<double> values) const {

@@ -51,6 +51,10 @@ class SystemKinematics {
   void update(double time, std::span<const double> y);
   /// Set one body directly (used when building models and in tests).
   void set(BodyIndex b, const BodyState& state);
+  /// Set one body's kinematics as another engine computed them (engines/: Simbody, MuJoCo give
+  /// rotation matrices, not Euler parameters). Precondition: rotation orthonormal and
+  /// angular_velocity_W == rotation * angular_velocity_B.
+  void set_kinematics(BodyIndex b, const BodyKinematics& kinematics) { bodies_[b] = kinematics; }
 
   const BodyKinematics& body(BodyIndex b) const { return b == kGround ? ground_ : bodies_[b]; }
   int body_count() const { return static_cast<int>(bodies_.size()); }

@@ -54,6 +54,11 @@ class ClearanceRevoluteForce : public SimTK::Force::Custom {
   std::span<const double> impact_memory(const SimTK::State& state) const;
   /// The joint at `state` (realised to Velocity): contacts, forces, slots, the outputs' geometry.
   dynamics::ClearanceJointState evaluate(const SimTK::State& state) const;
+  /// Add the joint's forces at `state` (realised to Velocity) to `body_forces` (one entry per
+  /// mobilized body, ground frame, moment first): what Simbody's calcForce does when it
+  /// realises Dynamics, without Force::calcForceContribution's temporaries. For callers that
+  /// assemble forces themselves, and for benchmarks.
+  void add_body_forces(const SimTK::State& state, SimTK::Vector_<SimTK::SpatialVec>& body_forces) const;
   /// The values of dynamics::ClearanceRevoluteJoint::output_columns() at `state` (realised to
   /// Velocity): the columns of clearjoint's force_<name>.csv.
   void record_outputs(const SimTK::State& state, std::span<double> values) const;
