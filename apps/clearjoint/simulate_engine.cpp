@@ -5,6 +5,7 @@
 #include <string>
 
 #ifdef CLEARJOINT_WITH_SIMBODY
+#include "clearjoint/simbody/model_in_simbody.hpp"
 #include "clearjoint/simbody/simulate_in_simbody.hpp"
 #endif
 
@@ -21,6 +22,15 @@ std::string engine_unavailable(std::string_view engine) {
 #endif
   }
   return "--engine " + std::string(engine) + ": unknown engine; the engines are " + kEngineNames;
+}
+
+void check_model_for_engine(std::string_view engine, const dynamics::ModelDescription& model) {
+  if (const std::string why = engine_unavailable(engine); !why.empty()) throw std::invalid_argument(why);
+#ifdef CLEARJOINT_WITH_SIMBODY
+  if (engine == "simbody") simbody::SimbodyModel check(model);
+#else
+  (void)model;
+#endif
 }
 
 dynamics::SimulationSummary simulate_with_engine(std::string_view engine,

@@ -18,6 +18,11 @@ inline constexpr const char* kEngineNames = "clearjoint (default), simbody";
 /// Simbody ...").
 std::string engine_unavailable(std::string_view engine);
 
+/// Throw what running `model` with `engine` would throw for a model feature the engine does not
+/// support (clearjoint::simbody::UnsupportedFeature, naming it), before any output folder exists.
+/// Builds the model in that engine (cheap beside a run); nothing for the default engine.
+void check_model_for_engine(std::string_view engine, const dynamics::ModelDescription& model);
+
 /// Run `model` with `engine` and write the tables into `output_directory`, as
 /// dynamics::simulate(model, output_directory, progress) does. Throws std::invalid_argument for
 /// an engine that engine_unavailable() refuses, and what the engine throws (a model feature the
