@@ -96,6 +96,31 @@ TEST(MujocoClearanceJoints, ExampleSliderCranksFirstImpactSpeedsAgreeWithClearjo
               model->opt.timestep, kReferenceTolerance, kComparedImpacts, worst_speed, worst_time);
 }
 
+TEST(MujocoClearanceJoints, OnlyAfterStepChangesTheImpactMemoryNeverAnIntegratorStage) {
+  const ModelPointer model = load(kExample);
+  ASSERT_TRUE(model);
+  ClearanceJoints clearance(model.get());
+  std::unique_ptr<mjData, DataDeleter> data(mj_makeData(model.get()));
+  mj_resetDataKeyframe(model.get(), data.get(), 0);
+  clearance.install();
+  mj_forward(model.get(), data.get());
+  clearance.after_step(data.get());
+  // Up to the first impact: its speed is remembered.
+  while (clearance.joint(0).recorded_impacts().empty() && data->time < kLongestRun) {
+    mj_step(model.get(), data.get());
+    clearance.after_step(data.get());
+  }
+  ASSERT_EQ(clearance.joint(0).recorded_impacts().size(), 1u);
+  const std::vector<double> remembered(clearance.impact_memory(0).begin(), clearance.impact_memory(0).end());
+  // Ten RK4 steps (forty force evaluations) deeper into the contact without after_step: the
+  // passive-force callback reads the memory and never writes it.
+  for (int k = 0; k < 10; ++k) mj_step(model.get(), data.get());
+  EXPECT_TRUE(std::equal(remembered.begin(), remembered.end(), clearance.impact_memory(0).begin()));
+  // The same contact at the next accepted state: nothing new to record.
+  EXPECT_FALSE(clearance.after_step(data.get()));
+  EXPECT_EQ(clearance.joint(0).recorded_impacts().size(), 1u);
+}
+
 /// The example with `from` replaced by `to`, written to a temporary file; the error its
 /// ClearanceJoints throws.
 std::string error_for_edited_example(const std::string& from, const std::string& to) {
