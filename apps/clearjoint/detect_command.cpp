@@ -56,7 +56,7 @@ constexpr const char* kUsage =
 double read_positive(const Json& object, const std::string& path, const char* key) {
   const Json& value = member(object, path, key);
   const double x = read_number(value, field(path, key));
-  if (!(x > 0.0)) throw LineError(field(path, key) + " = " + quote(value) + ": must be positive");
+  if (!(x > 0.0)) throw LineError(field(path, key), " = " + quote(value) + ": must be positive");
   return read_geometric_number(value, field(path, key));
 }
 
@@ -69,7 +69,7 @@ geo::Vector3 read_pose_vector(const Json& object, const std::string& path, const
 /// the clearances of eqs. (1)-(2) must be positive.
 void require_smaller(const Json& journal, const Json& bearing, const char* key) {
   if (journal[key].get<double>() < bearing[key].get<double>()) return;
-  throw LineError(std::string("journal.") + key + " = " + quote(journal[key]) +
+  throw LineError(std::string("journal.") + key, " = " + quote(journal[key]) +
                   ": must be smaller than bearing." + key + " = " + quote(bearing[key]));
 }
 
@@ -83,7 +83,7 @@ geo::PartPose read_part(const Json& object, const std::string& path, double& rad
   pose.p_WP = read_pose_vector(object, path, "center");
   pose.axis_W = read_pose_vector(object, path, "axis");
   if (pose.axis_W.x() == 0.0 && pose.axis_W.y() == 0.0 && pose.axis_W.z() == 0.0) {
-    throw LineError(path + ".axis = " + quote(object["axis"]) + ": must not be the zero vector");
+    throw LineError(path + ".axis", " = " + quote(object["axis"]) + ": must not be the zero vector");
   }
   return pose;
 }
@@ -130,8 +130,8 @@ void answer_query(const Json& query, Json& answer) {
   const bool has_bearing_motion = query.contains("bearing_motion");
   const bool has_journal_motion = query.contains("journal_motion");
   if (has_bearing_motion != has_journal_motion) {
-    throw LineError(std::string(has_bearing_motion ? "journal_motion" : "bearing_motion") +
-                    ": missing (" + (has_bearing_motion ? "bearing_motion" : "journal_motion") +
+    throw LineError(has_bearing_motion ? "journal_motion" : "bearing_motion",
+                    std::string(": missing (") + (has_bearing_motion ? "bearing_motion" : "journal_motion") +
                     " is given; give both motions or neither)");
   }
   std::optional<geo::BodyMotion> bearing_motion, journal_motion;

@@ -91,9 +91,7 @@ Json answer_line(const JsonLinesCommand& command, const std::string& line, long 
     command.answer(query, answer);
     failed = false;
     return answer;
-  } catch (const LineError& e) {
-    error = e.what();
-  } catch (const geo::InvalidInput& e) {
+  } catch (const ValidationError& e) {  // LineError, or the library's InvalidInput
     error = e.what();
   } catch (const std::exception& e) {
     // Not the input's fault as far as we can tell: say so, keep answering the other lines.
@@ -180,8 +178,8 @@ std::string field(const std::string& path, std::string_view key) {
 void check_object(const Json& object, const std::string& path,
                   std::initializer_list<std::string_view> allowed) {
   if (!object.is_object()) {
-    throw LineError(path.empty() ? "the line " + quote(object) + " is not a JSON object"
-                                 : path + " = " + quote(object) + ": must be a JSON object");
+    if (path.empty()) throw LineError("the line " + quote(object) + " is not a JSON object");
+    throw LineError(path, " = " + quote(object) + ": must be a JSON object");
   }
   for (const auto& item : object.items()) {
     bool known = false;
@@ -189,25 +187,25 @@ void check_object(const Json& object, const std::string& path,
     if (!known) {
       std::string list;
       for (std::string_view key : allowed) list += (list.empty() ? "" : ", ") + std::string(key);
-      throw LineError(field(path, item.key()) + ": unknown field (expected " + list + ")");
+      throw LineError(field(path, item.key()), ": unknown field (expected " + list + ")");
     }
   }
 }
 
 const Json& member(const Json& object, const std::string& path, const char* key) {
   const auto found = object.find(key);
-  if (found == object.end()) throw LineError(field(path, key) + ": missing");
+  if (found == object.end()) throw LineError(field(path, key), ": missing");
   return *found;
 }
 
 double read_number(const Json& value, const std::string& path) {
-  if (!value.is_number()) throw LineError(path + " = " + quote(value) + ": must be a number");
+  if (!value.is_number()) throw LineError(path, " = " + quote(value) + ": must be a number");
   return value.get<double>();
 }
 
 geo::Vector3 read_vector(const Json& value, const std::string& path) {
   if (!value.is_array() || value.size() != 3) {
-    throw LineError(path + " = " + quote(value) + ": must be an array of 3 numbers");
+    throw LineError(path, " = " + quote(value) + ": must be an array of 3 numbers");
   }
   geo::Vector3 v;
   for (int k = 0; k < 3; ++k) {
@@ -222,7 +220,7 @@ double read_geometric_number(const Json& value, const std::string& path) {
   if (magnitude == 0.0 || (magnitude >= kSmallestMagnitude && magnitude <= kLargestMagnitude)) {
     return x;
   }
-  throw LineError(path + " = " + quote(value) +
+  throw LineError(path, " = " + quote(value) +
                   ": magnitude outside [1e-150, 1e150], the range accepted (rescale the input, "
                   "or write 0 for a negligible component)");
 }
@@ -239,14 +237,14 @@ void read_optional_bool(const Json& object, const std::string& path, const char*
   const auto flag = object.find(key);
   if (flag == object.end()) return;
   if (!flag->is_boolean()) {
-    throw LineError(field(path, key) + " = " + quote(*flag) + ": must be true or false");
+    throw LineError(field(path, key), " = " + quote(*flag) + ": must be true or false");
   }
   out = flag->get<bool>();
 }
 
 void require_finite(double value, const std::string& what) {
   if (std::isfinite(value)) return;
-  throw LineError(what + " is " + (std::isnan(value) ? "NaN" : "infinite") +
+  throw LineError(what, std::string(" is ") + (std::isnan(value) ? "NaN" : "infinite") +
                   ": overflow or underflow in double arithmetic; rescale the input (any unit "
                   "will do, e.g. millimetres instead of metres)");
 }

@@ -15,6 +15,7 @@
 
 #include "clearjoint/geometry/certificate.hpp"
 #include "clearjoint/geometry/vector3.hpp"
+#include "clearjoint/validation_error.hpp"
 #include "commands.hpp"
 
 namespace clearjoint::app {
@@ -30,10 +31,13 @@ using Json = nlohmann::ordered_json;
 /// of the output (a field removed, renamed or retyped) increases it.
 inline constexpr int kFormatVersion = 1;
 
-/// A query line that cannot be answered; what() names the field and the offending value.
-class LineError : public std::runtime_error {
+/// A query line that cannot be answered: a ValidationError whose path names the field in the
+/// line ("bearing.center[2]") and whose message the offending value too; an error about the line
+/// as a whole (malformed JSON) has an empty path. answer_line formats it, and the library's
+/// InvalidInput likewise, as an error line.
+class LineError : public ValidationError {
  public:
-  using std::runtime_error::runtime_error;
+  using ValidationError::ValidationError;
 };
 
 /// Longest query line read (bytes, without its newline). A longer line gets an error line and the

@@ -38,12 +38,12 @@ void validate_dimensions(const geometry::JointDimensions& d, const std::string& 
   require_positive(name + ".journal.radius", d.journal_radius);
   require_positive(name + ".journal.length", d.journal_length);
   if (!(d.journal_radius < d.bearing_radius)) {
-    throw ModelError(name + ".journal.radius = " + format_number(d.journal_radius) +
+    throw ModelError(name + ".journal.radius", " = " + format_number(d.journal_radius) +
                      ": must be smaller than bearing.radius = " + format_number(d.bearing_radius) +
                      " (the radial clearance Ri - Rj, eq. 1, must be positive)");
   }
   if (!(d.journal_length < d.bearing_length)) {
-    throw ModelError(name + ".journal.length = " + format_number(d.journal_length) +
+    throw ModelError(name + ".journal.length", " = " + format_number(d.journal_length) +
                      ": must be smaller than bearing.length = " + format_number(d.bearing_length) +
                      " (the axial clearance (Li - Lj)/2, eq. 2, must be positive)");
   }
@@ -87,7 +87,7 @@ ClearanceRevoluteJoint::ClearanceRevoluteJoint(std::string name, const Clearance
   validate_part(bearing_, name_ + ".bearing");
   validate_part(journal_, name_ + ".journal");
   if (bearing_.body == journal_.body) {
-    throw ModelError(name_ + ".journal.body: the journal and the bearing must be on different bodies");
+    throw ModelError(name_ + ".journal.body", ": the journal and the bearing must be on different bodies");
   }
   validate_dimensions(parameters_.dimensions, name_);
   validate(parameters_.normal, name_ + ".normal_force");
@@ -95,8 +95,8 @@ ClearanceRevoluteJoint::ClearanceRevoluteJoint(std::string name, const Clearance
   const double tolerance = parameters_.detection.parallel_angle_tolerance;
   require_finite(name_ + ".detection.parallel_angle_tolerance", tolerance);
   if (!(tolerance >= 0.0 && tolerance < 0.5 * std::numbers::pi)) {
-    throw ModelError(name_ + ".detection.parallel_angle_tolerance = " + format_number(tolerance) +
-                     ": must lie in [0, pi/2) radians");
+    throw ModelError(name_ + ".detection.parallel_angle_tolerance",
+                     " = " + format_number(tolerance) + ": must lie in [0, pi/2) radians");
   }
   // Output frame (u, v, a) of the bearing: u is the body axis least aligned with a (first on
   // ties), made perpendicular to a; v = a x u. For a bearing along z that is (x, y, z).

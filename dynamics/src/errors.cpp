@@ -23,20 +23,20 @@ std::string format_vector(const Eigen::Ref<const Eigen::VectorXd>& v) {
 
 void require_finite(std::string_view field, double value) {
   if (!std::isfinite(value)) {
-    throw ModelError(std::string(field) + " = " + format_number(value) + ": must be finite");
+    throw ModelError(field, " = " + format_number(value) + ": must be finite");
   }
 }
 
 void require_finite(std::string_view field, const Eigen::Ref<const Eigen::VectorXd>& v) {
   if (!v.allFinite()) {
-    throw ModelError(std::string(field) + " = " + format_vector(v) + ": must be finite");
+    throw ModelError(field, " = " + format_vector(v) + ": must be finite");
   }
 }
 
 void require_positive(std::string_view field, double value) {
   require_finite(field, value);
   if (!(value > 0.0)) {
-    throw ModelError(std::string(field) + " = " + format_number(value) + ": must be positive");
+    throw ModelError(field, " = " + format_number(value) + ": must be positive");
   }
 }
 
@@ -45,7 +45,7 @@ void require_nonzero(std::string_view field, const Eigen::Ref<const Eigen::Vecto
   // A direction is only used after normalisation; an exact zero has none. Tiny but non-zero
   // vectors are accepted: their direction is still defined in floating point.
   if (v.squaredNorm() == 0.0) {
-    throw ModelError(std::string(field) + " = " + format_vector(v) + ": must not be zero");
+    throw ModelError(field, " = " + format_vector(v) + ": must not be zero");
   }
 }
 

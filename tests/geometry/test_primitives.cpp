@@ -309,5 +309,18 @@ TEST(PointAt, StaysOnTheRimAndAgreesWithTheDocumentedParametrisation) {
   }
 }
 
+// ---- the error carries the field's path ---------------------------------------------------------
+
+TEST(InvalidInput, IsAValidationErrorWhosePathNamesTheField) {
+  try {
+    validate(Circle3{Vector3::Zero(), Vector3::UnitZ(), -1.0}, "rim A");
+    ADD_FAILURE() << "validate accepted a negative radius";
+  } catch (const ValidationError& e) {
+    EXPECT_EQ(e.field_path(), "rim A.radius");
+    EXPECT_EQ(e.detail(), " = -1: must be positive");
+    EXPECT_STREQ(e.what(), "rim A.radius = -1: must be positive");
+  }
+}
+
 }  // namespace
 }  // namespace clearjoint::geometry

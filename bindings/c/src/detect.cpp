@@ -37,10 +37,10 @@ extern "C" cj_status cj_detect(const cj_dimensions* dimensions, const cj_pose* b
                                const cj_pose* journal, const cj_options* options,
                                cj_result* result, char* message, size_t message_capacity) {
   return reporting_failures(message, message_capacity, [&] {
-    require_not_null(dimensions, "dimensions = NULL: must point to the joint's dimensions");
-    require_not_null(bearing, "bearing = NULL: must point to the bearing's pose");
-    require_not_null(journal, "journal = NULL: must point to the journal's pose");
-    require_not_null(result, "result = NULL: must point to a cj_result to fill");
+    require_not_null(dimensions, "dimensions", "the joint's dimensions");
+    require_not_null(bearing, "bearing", "the bearing's pose");
+    require_not_null(journal, "journal", "the journal's pose");
+    require_not_null(result, "result", "a cj_result to fill");
     geo::JointContacts& found = scratch.answer();
     geo::detect_contacts(dimensions_of(*dimensions), pose_of(*bearing), pose_of(*journal), found,
                          detection_options_of(options));

@@ -23,11 +23,11 @@ geo::PartPose pose_at(const cj_pose_array& poses, size_t k) {
 }
 
 void require_components(const cj_pose_array* poses, const char* name) {
-  if (poses == nullptr) throw geo::InvalidInput(std::string(name) + " = NULL: must point to a cj_pose_array");
+  require_not_null(poses, name, "a cj_pose_array");
   for (int c = 0; c < 6; ++c) {
     if (poses->component[c] == nullptr) {
-      throw geo::InvalidInput(std::string(name) + ".component[" + std::to_string(c) +
-                              "] = NULL: must point to the first pose's value");
+      throw clearjoint::ValidationError(std::string(name) + ".component[" + std::to_string(c) + "]",
+                                        " = NULL: must point to the first pose's value");
     }
   }
 }
@@ -40,11 +40,11 @@ extern "C" cj_status cj_detect_many(const cj_dimensions* dimensions, const cj_po
                                     size_t* processed, char* message, size_t message_capacity) {
   size_t done = 0;
   const cj_status status = reporting_failures(message, message_capacity, [&] {
-    require_not_null(dimensions, "dimensions = NULL: must point to the joint's dimensions");
+    require_not_null(dimensions, "dimensions", "the joint's dimensions");
     if (count == 0) return;
     require_components(bearings, "bearings");
     require_components(journals, "journals");
-    require_not_null(results, "results = NULL: must point to count cj_result");
+    require_not_null(results, "results", "count cj_result");
     const geo::JointDimensions joint = dimensions_of(*dimensions);
     geo::validate(joint);  // before the loop: not a pose's fault, so not named after one
     const geo::DetectionOptions detection = detection_options_of(options);
@@ -57,7 +57,7 @@ extern "C" cj_status cj_detect_many(const cj_dimensions* dimensions, const cj_po
         geo::detect_contacts(joint, fixed_bearing ? first_bearing : pose_at(*bearings, done),
                              fixed_journal ? first_journal : pose_at(*journals, done), found, detection);
       } catch (const geo::InvalidInput& e) {
-        throw geo::InvalidInput("poses[" + std::to_string(done) + "]: " + e.what());
+        throw geo::InvalidInput("poses[" + std::to_string(done) + "]", std::string(": ") + e.what());
       }
       copy_result(found, results[done]);
     }

@@ -22,9 +22,9 @@ extern "C" cj_status cj_intersect_circle_plane(const cj_circle* circle, const cj
                                                cj_circle_plane_result* result, char* message,
                                                size_t message_capacity) {
   return reporting_failures(message, message_capacity, [&] {
-    require_not_null(circle, "circle = NULL: must point to the circle");
-    require_not_null(plane, "plane = NULL: must point to the plane");
-    require_not_null(result, "result = NULL: must point to a cj_circle_plane_result to fill");
+    require_not_null(circle, "circle", "the circle");
+    require_not_null(plane, "plane", "the plane");
+    require_not_null(result, "result", "a cj_circle_plane_result to fill");
     const geo::CirclePlaneIntersection found = geo::intersect_circle_plane(
         circle_of(*circle), {vector_of(plane->point), vector_of(plane->normal)}, intersection_options_of(options));
     *result = circle_plane_result_of(found);
@@ -36,9 +36,9 @@ extern "C" cj_status cj_intersect_circle_cylinder(const cj_circle* circle, const
                                                   cj_circle_cylinder_result* result, char* message,
                                                   size_t message_capacity) {
   return reporting_failures(message, message_capacity, [&] {
-    require_not_null(circle, "circle = NULL: must point to the circle");
-    require_not_null(cylinder, "cylinder = NULL: must point to the cylinder");
-    require_not_null(result, "result = NULL: must point to a cj_circle_cylinder_result to fill");
+    require_not_null(circle, "circle", "the circle");
+    require_not_null(cylinder, "cylinder", "the cylinder");
+    require_not_null(result, "result", "a cj_circle_cylinder_result to fill");
     const geo::CircleCylinderIntersection found = geo::intersect_circle_cylinder(
         circle_of(*circle), {vector_of(cylinder->axis_point), vector_of(cylinder->axis), cylinder->radius},
         intersection_options_of(options));

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // cj_default_options and the rejection of reserved option fields.
 #include <sstream>
+#include <string>
 
 #include "conversions.hpp"
 
@@ -11,12 +12,12 @@ void reject_reserved(const cj_options& options) {
     if (options.reserved[k] != 0.0) {
       std::ostringstream message;
       message.precision(17);
-      message << "options.reserved[" << k << "] = " << options.reserved[k]
+      message << " = " << options.reserved[k]
               << ": must be 0 (start from cj_default_options() or a zero-initialised struct)";
-      throw geometry::InvalidInput(message.str());
+      throw ValidationError("options.reserved[" + std::to_string(k) + "]", message.str());
     }
   }
-  throw geometry::InvalidInput("options.reserved: must be 0");
+  throw ValidationError("options.reserved", ": must be 0");
 }
 
 }  // namespace clearjoint::c_api

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <string>
 
 namespace clearjoint::c_api {
 
@@ -11,6 +12,10 @@ void write_message(char* message, std::size_t capacity, std::string_view text) n
   const std::size_t length = std::min(text.size(), capacity - 1);
   std::memcpy(message, text.data(), length);
   message[length] = '\0';
+}
+
+void reject_null(const char* name, const char* must_point_to) {
+  throw ValidationError(name, std::string(" = NULL: must point to ") + must_point_to);
 }
 
 }  // namespace clearjoint::c_api

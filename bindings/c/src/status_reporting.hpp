@@ -9,7 +9,7 @@
 #include <string_view>
 
 #include "clearjoint/clearjoint.h"
-#include "clearjoint/geometry/primitives.hpp"
+#include "clearjoint/validation_error.hpp"
 
 namespace clearjoint::c_api {
 
@@ -17,26 +17,18 @@ namespace clearjoint::c_api {
 /// Nothing is written when the buffer is NULL or its capacity 0.
 void write_message(char* message, std::size_t capacity, std::string_view text) noexcept;
 
-/// An input the C layer itself rejects (a NULL pointer, a nonzero reserved field), with the
-/// message that names it; reported as CJ_INVALID_INPUT like the kernel's InvalidInput.
-struct RejectedInput {
-  const char* text;
-};
-
 /// Run `body` (which returns nothing or throws) and map what it throws to a status:
-/// InvalidInput -> CJ_INVALID_INPUT, bad_alloc -> CJ_OUT_OF_MEMORY, anything else ->
-/// CJ_INTERNAL_ERROR. The message buffer gets the exception's text, or "" on success.
+/// ValidationError (the kernel's InvalidInput, or this layer's own checks) -> CJ_INVALID_INPUT,
+/// bad_alloc -> CJ_OUT_OF_MEMORY, anything else -> CJ_INTERNAL_ERROR. The message buffer gets
+/// the exception's text, or "" on success.
 template <class Body>
 cj_status reporting_failures(char* message, std::size_t capacity, Body&& body) noexcept {
   try {
     body();
     if (capacity > 0 && message != nullptr) message[0] = '\0';
     return CJ_OK;
-  } catch (const geometry::InvalidInput& e) {
+  } catch (const ValidationError& e) {
     write_message(message, capacity, e.what());
-    return CJ_INVALID_INPUT;
-  } catch (const RejectedInput& e) {
-    write_message(message, capacity, e.text);
     return CJ_INVALID_INPUT;
   } catch (const std::bad_alloc&) {
     write_message(message, capacity, "out of memory in the exact arithmetic fallback");
@@ -50,9 +42,13 @@ cj_status reporting_failures(char* message, std::size_t capacity, Body&& body) n
   }
 }
 
-/// Throw RejectedInput("<name> = NULL: ...") when `pointer` is NULL.
-inline void require_not_null(const void* pointer, const char* message_when_null) {
-  if (pointer == nullptr) throw RejectedInput{message_when_null};
+/// Throws ValidationError(name, " = NULL: must point to <must_point_to>"); out of line, so that
+/// the checks on the path of every call stay a compare and a branch.
+[[noreturn]] void reject_null(const char* name, const char* must_point_to);
+
+/// reject_null(name, must_point_to) when `pointer` is NULL.
+inline void require_not_null(const void* pointer, const char* name, const char* must_point_to) {
+  if (pointer == nullptr) [[unlikely]] reject_null(name, must_point_to);
 }
 
 }  // namespace clearjoint::c_api

@@ -50,27 +50,13 @@ struct PoseRows {
   geo::PartPose journal(std::size_t n) const { return {journal_center[n], journal_axis[n]}; }
 };
 
-/// A bad row, thrown by a chunk: its row and the library's message.
-struct RowError {
-  std::size_t row = 0;
-  std::string message;
-  bool invalid_input = false;
-};
-
-/// The library's field names in messages, as the Python arguments.
-std::string python_message(const RowError& error, const PoseRows& poses) {
-  return argument_message(error.message, error.row,
-                          {{"bearing.p_WP", "bearing_center", poses.bearing_center.batched()},
-                           {"bearing.axis_W", "bearing_axis", poses.bearing_axis.batched()},
-                           {"journal.p_WP", "journal_center", poses.journal_center.batched()},
-                           {"journal.axis_W", "journal_axis", poses.journal_axis.batched()},
-                           {"options.parallel_angle_tolerance", "parallel_angle_tolerance", false}});
-}
-
+/// The library's field paths, as the Python arguments.
 [[noreturn]] void raise(const RowError& error, const PoseRows& poses) {
-  const std::string message = python_message(error, poses);
-  if (error.invalid_input) throw py::value_error(message);
-  throw std::runtime_error(message);
+  raise(error, {{"bearing.p_WP", "bearing_center", poses.bearing_center.batched()},
+                {"bearing.axis_W", "bearing_axis", poses.bearing_axis.batched()},
+                {"journal.p_WP", "journal_center", poses.journal_center.batched()},
+                {"journal.axis_W", "journal_axis", poses.journal_axis.batched()},
+                {"options.parallel_angle_tolerance", "parallel_angle_tolerance", false}});
 }
 
 /// Per-pose outputs in one block, written by the workers through raw pointers (disjoint rows).
@@ -265,15 +251,7 @@ py::dict detect_batch(const geo::JointDimensions& dimensions, const PoseRows& po
       geo::JointContacts result;
       std::vector<geo::Contact>& contacts = chunk_contacts[c];
       for (std::size_t n = begin; n < end && !interrupted.load(std::memory_order_relaxed); ++n) {
-        try {
-          geo::detect_contacts(dimensions, poses.bearing(n), poses.journal(n), result, options);
-        } catch (const geo::InvalidInput& e) {
-          throw RowError{n, e.what(), true};
-        } catch (const std::bad_alloc&) {
-          throw;  // MemoryError, not a bad row
-        } catch (const std::exception& e) {
-          throw RowError{n, e.what(), false};
-        }
+        answer_row(n, [&] { geo::detect_contacts(dimensions, poses.bearing(n), poses.journal(n), result, options); });
         columns.write(n, result);
         contacts.insert(contacts.end(), result.contacts.begin(), result.contacts.begin() + result.contact_count);
       }
@@ -307,8 +285,8 @@ py::object detect(const geo::JointDimensions& dimensions, const py::handle& bear
   try {
     py::gil_scoped_release release;
     geo::detect_contacts(dimensions, poses.bearing(0), poses.journal(0), result, options);
-  } catch (const geo::InvalidInput& e) {
-    raise(RowError{0, e.what(), true}, poses);
+  } catch (const ValidationError& e) {
+    raise(RowError::invalid(0, e), poses);
   }
   return py::cast(result);
 }

@@ -90,13 +90,6 @@ struct CrossingColumns {
   }
 };
 
-/// A bad row, thrown by a chunk: its row and the library's message.
-struct RowError {
-  std::size_t row = 0;
-  std::string message;
-  bool invalid_input = false;
-};
-
 /// Run `query(n)` over the rows in chunks without the GIL; returns the first bad row, if any.
 /// Other failures (MemoryError, KeyboardInterrupt) propagate.
 template <typename Query>
@@ -107,27 +100,13 @@ std::optional<RowError> run_rows(std::size_t rows, unsigned threads, const Query
     for_each_chunk(rows, chunk_rows(rows, threads), threads, interrupted, SignalCheck(),
                    [&](std::size_t, std::size_t begin, std::size_t end) {
       for (std::size_t n = begin; n < end && !interrupted.load(std::memory_order_relaxed); ++n) {
-        try {
-          query(n);
-        } catch (const geo::InvalidInput& e) {
-          throw RowError{n, e.what(), true};
-        } catch (const std::bad_alloc&) {
-          throw;  // MemoryError, not a bad row
-        } catch (const std::exception& e) {
-          throw RowError{n, e.what(), false};
-        }
+        answer_row(n, [&] { query(n); });
       }
     });
   } catch (const RowError& error) {
     return error;  // the first bad row: chunks are handed out in order and finished once begun
   }
   return std::nullopt;
-}
-
-[[noreturn]] void raise(const RowError& error, std::initializer_list<FieldName> fields) {
-  const std::string message = argument_message(error.message, error.row, fields);
-  if (error.invalid_input) throw py::value_error(message);
-  throw std::runtime_error(message);
 }
 
 geo::IntersectionOptions intersection_options(const py::handle& certify, const py::handle& exact_fallback) {
@@ -161,8 +140,8 @@ py::object circle_plane(const py::handle& circle_center, const py::handle& circl
       py::gil_scoped_release release;
       try {
         result = geo::intersect_circle_plane(circle(0), plane(0), options);
-      } catch (const geo::InvalidInput& e) {
-        error = RowError{0, e.what(), true};
+      } catch (const ValidationError& e) {
+        error = RowError::invalid(0, e);
       }
     }
     if (error) raise(*error, fields);
@@ -239,8 +218,8 @@ py::object circle_cylinder(const py::handle& circle_center, const py::handle& ci
       py::gil_scoped_release release;
       try {
         result = geo::intersect_circle_cylinder(circle(0), cylinder(0), options);
-      } catch (const geo::InvalidInput& e) {
-        error = RowError{0, e.what(), true};
+      } catch (const ValidationError& e) {
+        error = RowError::invalid(0, e);
       }
     }
     if (error) raise(*error, fields);

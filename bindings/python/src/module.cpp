@@ -14,8 +14,9 @@ PYBIND11_MODULE(_core, module) {
   module.doc() = "Compiled core of the clearjoint package; use the `clearjoint` package itself.";
   // The linked library's version, not the headers': the two agree in any consistent install.
   module.attr("__version__") = clearjoint::version_string();
-  // geometry::InvalidInput and dynamics::ModelError derive from std::invalid_argument, which
-  // pybind11 already turns into ValueError; a solver failure gets its own RuntimeError subclass.
+  // clearjoint::ValidationError (geometry::InvalidInput, dynamics::ModelError) derives from
+  // std::invalid_argument, which pybind11 already turns into ValueError; a solver failure gets its
+  // own RuntimeError subclass.
   py::register_exception<clearjoint::dynamics::SolverError>(module, "SolverError", PyExc_RuntimeError)
       .attr("__doc__") =
       "The equations of motion cannot be solved from some time on: singular or inconsistent "

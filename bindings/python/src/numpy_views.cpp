@@ -82,17 +82,20 @@ void throw_length_mismatch(const char* first, std::size_t first_rows, const char
                         ": batched arguments must have the same length N (a single row broadcasts)");
 }
 
-std::string argument_message(const std::string& library_message, std::size_t row,
-                             std::initializer_list<FieldName> fields) {
+std::string argument_message(const RowError& error, std::initializer_list<FieldName> fields) {
   for (const FieldName& field : fields) {
-    const std::string prefix(field.library);
-    // Followed by " =": "cylinder.axis" must not match "cylinder.axis_point = ...".
-    if (library_message.compare(0, prefix.size() + 2, prefix + " =") == 0) {
-      return field.argument + (field.batched ? "[" + std::to_string(row) + "]" : std::string()) +
-             library_message.substr(prefix.size());
+    if (error.invalid_input && error.field_path == field.library) {
+      return field.argument + (field.batched ? "[" + std::to_string(error.row) + "]" : std::string()) +
+             error.message.substr(error.field_path.size());
     }
   }
-  return "row " + std::to_string(row) + ": " + library_message;
+  return "row " + std::to_string(error.row) + ": " + error.message;
+}
+
+void raise(const RowError& error, std::initializer_list<FieldName> fields) {
+  const std::string message = argument_message(error, fields);
+  if (error.invalid_input) throw py::value_error(message);
+  throw std::runtime_error(message);
 }
 
 double number_argument(const py::handle& value, const std::string& name) {

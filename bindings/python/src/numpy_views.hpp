@@ -7,10 +7,13 @@
 #include <pybind11/pybind11.h>
 
 #include <cstddef>
+#include <exception>
 #include <initializer_list>
+#include <new>
 #include <string>
 
 #include "clearjoint/geometry/vector3.hpp"
+#include "clearjoint/validation_error.hpp"
 
 namespace clearjoint::python {
 
@@ -87,16 +90,48 @@ Broadcast broadcast(const Inputs&... inputs) {
   return result;
 }
 
-/// Turn a library message about a field into one about the Python argument and its row:
-/// "bearing.axis_W = [0, 0, 0]: must not be ..." with {"bearing.axis_W", bearing_axis} becomes
-/// "bearing_axis[7] = [0, 0, 0]: must not be ..." (no index for a broadcast argument).
+/// A row a batch could not answer, thrown by a worker: its row, the library's message and, for
+/// bad input (a ValidationError, raised as ValueError), the path of the field at fault.
+struct RowError {
+  std::size_t row = 0;
+  std::string message;
+  std::string field_path;
+  bool invalid_input = false;
+
+  static RowError invalid(std::size_t row, const ValidationError& e) {
+    return {row, e.what(), std::string(e.field_path()), true};
+  }
+  static RowError failed(std::size_t row, const std::exception& e) { return {row, e.what(), "", false}; }
+};
+
+/// Runs `query` for row n, turning what it throws into a RowError; bad_alloc passes through
+/// (MemoryError, not a bad row).
+template <class Query>
+void answer_row(std::size_t n, Query&& query) {
+  try {
+    query();
+  } catch (const ValidationError& e) {
+    throw RowError::invalid(n, e);
+  } catch (const std::bad_alloc&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw RowError::failed(n, e);
+  }
+}
+
+/// Turn a library message about a field into one about the Python argument and its row: the
+/// field "bearing.axis_W" of "bearing.axis_W = [0, 0, 0]: must not be ..." is, with
+/// {"bearing.axis_W", bearing_axis}, "bearing_axis[7] = [0, 0, 0]: must not be ..." (no index
+/// for a broadcast argument); any other message gets "row 7: " before it.
 struct FieldName {
-  const char* library;  ///< prefix in the library's message, "bearing.axis_W"
+  const char* library;  ///< the library's field path, "bearing.axis_W"
   const char* argument; ///< the Python argument, "bearing_axis"
   bool batched;
 };
-std::string argument_message(const std::string& library_message, std::size_t row,
-                             std::initializer_list<FieldName> fields);
+std::string argument_message(const RowError& error, std::initializer_list<FieldName> fields);
+
+/// ValueError (bad input) or RuntimeError with argument_message's text.
+[[noreturn]] void raise(const RowError& error, std::initializer_list<FieldName> fields);
 
 /// A number given as a scalar: a Python int or float or a NumPy integer or floating scalar;
 /// TypeError naming `name` for anything else (bools, None, strings, complex).

@@ -22,9 +22,9 @@ std::string format(const Vector3& v) {
 
 void reject(std::string_view name, std::string_view field, const std::string& value,
             std::string_view why) {
-  std::ostringstream message;
-  message << name << '.' << field << " = " << value << ": " << why;
-  throw InvalidInput(message.str());
+  std::string path(name);
+  path.append(".").append(field);
+  throw InvalidInput(path, " = " + value + ": " + std::string(why));
 }
 
 void reject_not_finite(const Vector3& v, std::string_view name, std::string_view field) {

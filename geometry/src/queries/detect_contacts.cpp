@@ -618,9 +618,8 @@ void validate(const DetectionOptions& options) {
   if (!(tolerance >= 0.0 && tolerance < 0.5 * std::numbers::pi)) {
     std::ostringstream message;
     message.precision(17);
-    message << "options.parallel_angle_tolerance = " << tolerance
-            << ": must lie in [0, pi/2) radians";
-    throw InvalidInput(message.str());
+    message << " = " << tolerance << ": must lie in [0, pi/2) radians";
+    throw InvalidInput("options.parallel_angle_tolerance", message.str());
   }
 }
 

@@ -8,13 +8,17 @@
 #include <string>
 #include <string_view>
 
+#include "clearjoint/validation_error.hpp"
+
 namespace clearjoint::dynamics {
 
-/// Bad input: a model, body, joint or setting that cannot describe a mechanism. what() names the
-/// field and the offending value, e.g. "bodies[1].mass = -0.3: must be positive".
-class ModelError : public std::invalid_argument {
+/// Bad input: a model, body, joint or setting that cannot describe a mechanism. A
+/// ValidationError: its field path names the field ("bodies[1].mass") and what() the offending
+/// value too, e.g. "bodies[1].mass = -0.3: must be positive". (The model file reader's own JSON
+/// checks give the message only, with an empty path.)
+class ModelError : public ValidationError {
  public:
-  using std::invalid_argument::invalid_argument;
+  using ValidationError::ValidationError;
 };
 
 /// The equations cannot be solved from here on: singular or inconsistent constraints, a collapsed

@@ -7,11 +7,10 @@
 /// stored doubles. Nothing is normalised on the way in: a normal or axis need not have unit
 /// length, and every certified or exact answer is about that set, not about a rounded copy.
 
-#include <stdexcept>
-#include <string>
 #include <string_view>
 
 #include "clearjoint/geometry/vector3.hpp"
+#include "clearjoint/validation_error.hpp"
 
 namespace clearjoint::geometry {
 
@@ -39,11 +38,11 @@ struct Cylinder3 {
   double radius = 0.0;
 };
 
-/// Thrown for bad input; what() names the field and the offending value,
-/// e.g. "circle.radius = -1: must be positive".
-class InvalidInput : public std::invalid_argument {
+/// Thrown for bad input to the kernel: a ValidationError whose field path names the field
+/// ("circle.radius") and whose message its value, e.g. "circle.radius = -1: must be positive".
+class InvalidInput : public ValidationError {
  public:
-  using std::invalid_argument::invalid_argument;
+  using ValidationError::ValidationError;
 };
 
 /// Check a primitive; `name` prefixes the field in the message ("rim A" gives "rim A.radius").

@@ -1,0 +1,40 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+/// \file
+/// The one error type for bad input, whichever check finds it: the kernel's (geometry::
+/// InvalidInput), the model reader's and the clearance joint's (dynamics::ModelError), the command
+/// line's JSON Lines reader (app::LineError), the C API's own checks. It carries the path of the
+/// offending field and a message naming it and its value; each front-end only formats it (C: the
+/// message buffer and CJ_INVALID_INPUT; Python: ValueError, with the field spelt as the Python
+/// argument; the command line: an error line).
+
+#include <cstddef>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+namespace clearjoint {
+
+/// Bad input. The message is the field's path followed by what is wrong with it:
+///   ValidationError("bodies[1].mass", " = -0.3: must be positive")
+/// has what() "bodies[1].mass = -0.3: must be positive", field_path() "bodies[1].mass" and
+/// detail() " = -0.3: must be positive". The path is in the caller's terms: members joined by
+/// '.', array entries by [k] ("journal.axis_W", "options.parallel_angle_tolerance",
+/// "contacts[0].depth"). An error about no one field (text that is not JSON) has an empty path.
+class ValidationError : public std::invalid_argument {
+ public:
+  ValidationError(std::string_view field_path, std::string_view detail)
+      : std::invalid_argument(std::string(field_path).append(detail)), path_length_(field_path.size()) {}
+  /// An error about no one field: what() is `message`, the path is empty.
+  explicit ValidationError(const std::string& message) : std::invalid_argument(message) {}
+
+  /// The path of the offending field; empty when no one field is at fault.
+  std::string_view field_path() const noexcept { return std::string_view(what(), path_length_); }
+  /// The message after the path.
+  std::string_view detail() const noexcept { return std::string_view(what()).substr(path_length_); }
+
+ private:
+  std::size_t path_length_ = 0;
+};
+
+}  // namespace clearjoint
