@@ -26,8 +26,9 @@ step=$1 scratch=$2
 shift 2
 here=$(cd "$(dirname "$0")" && pwd)
 fail() { echo "FAIL: $*" >&2; exit 1; }
-pip_offline=(--no-index --disable-pip-version-check --no-input)
-# Only what Debian installed, as on a machine without PyPI: no local wheel folders either.
+# Only what Debian installed, as on a machine without PyPI: no index, no local wheel folders, no
+# wheels cached by an earlier run.
+pip_offline=(--no-index --no-cache-dir --disable-pip-version-check --no-input)
 unset PIP_FIND_LINKS PIP_INDEX_URL PIP_EXTRA_INDEX_URL
 
 new_venv() {  # new_venv DIR PYTHON
