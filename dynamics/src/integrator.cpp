@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <boost/numeric/odeint.hpp>
 #include <cmath>
+#include <memory>
 #include <cstdio>
 #include <string>
 
@@ -114,124 +115,195 @@ void validate(const IntegratorSettings& s) {
   if (s.max_steps <= 0) throw ModelError("solver.max_steps = " + std::to_string(s.max_steps) + ": must be positive");
 }
 
+/// The dense-output stepper and everything one accepted step needs, behind Integrator's pimpl
+/// (odeint's types stay out of the header).
+struct Integrator::Impl {
+  using State = std::vector<double>;
+  using Stepper = decltype(odeint::make_dense_output(1.0, 1.0, odeint::runge_kutta_dopri5<State>()));
+
+  Impl(MultibodySystem& s, const IntegratorSettings& settings_in)
+      : system(s),
+        settings(settings_in),
+        stepper(odeint::make_dense_output(settings.absolute_tolerance, settings.relative_tolerance,
+                                          odeint::runge_kutta_dopri5<State>())),
+        budget(settings, settings.start_time) {}
+
+  MultibodySystem& system;
+  IntegratorSettings settings;
+  Stepper stepper;
+  StepBudget budget;
+  IntegrationStatistics stats;
+  long report_count = 0;
+  long next_report = 1;
+  State reported, accepted, onset;
+  bool finished = false;
+
+  void rhs(const State& x, State& dxdt, double t) {
+    ++stats.derivative_calls;
+    system.derivative(t, x, dxdt);
+  }
+  double report_time(long k) const {
+    return k == report_count ? settings.end_time
+                             : settings.start_time + static_cast<double>(k) * settings.report_step;
+  }
+};
+
+Integrator::Integrator(MultibodySystem& system, std::span<const double> initial_state,
+                       const IntegratorSettings& settings, const Observer& observer) {
+  validate(settings);
+  std::vector<double> y(initial_state.begin(), initial_state.end());
+  if (!all_finite(y)) throw SolverError("initial state is not finite");
+  impl_ = std::make_unique<Impl>(system, settings);
+  Impl& m = *impl_;
+  m.stats.smallest_step = INFINITY;
+  const double span = settings.end_time - settings.start_time;
+  m.report_count = std::max(1L, std::lround(std::ceil(span / settings.report_step * (1.0 - kReportCountSlack))));
+  // Discrete changes of force elements' extra state (impact memory) happen only at accepted
+  // states: here at the start, and after every accepted step (step()).
+  if (system.update_extra_states(settings.start_time, y)) ++m.stats.restarts;
+  m.stepper.initialize(y, settings.start_time, std::min(settings.initial_step, span));
+  if (observer) observer(settings.start_time, y);
+  m.reported.resize(y.size());
+  m.accepted.resize(y.size());
+  m.onset.resize(y.size());
+  m.reported = y;
+}
+
+Integrator::~Integrator() = default;
+
+double Integrator::time() const { return impl_->stepper.current_time(); }
+std::span<const double> Integrator::state() const { return impl_->stepper.current_state(); }
+double Integrator::next_step() const { return impl_->stepper.current_time_step(); }
+bool Integrator::finished() const { return impl_->finished; }
+const IntegrationStatistics& Integrator::statistics() const { return impl_->stats; }
+const IntegratorSettings& Integrator::settings() const { return impl_->settings; }
+std::span<const double> Integrator::last_reported_state() const { return impl_->reported; }
+
+void Integrator::restart(std::span<const double> y, double step) {
+  Impl& m = *impl_;
+  if (!all_finite(std::vector<double>(y.begin(), y.end()))) throw SolverError("the state set is not finite");
+  if (!(step > 0.0)) step = m.stepper.current_time_step();
+  m.accepted.assign(y.begin(), y.end());
+  if (m.system.update_extra_states(m.stepper.current_time(), m.accepted)) ++m.stats.restarts;
+  m.stepper.initialize(m.accepted, m.stepper.current_time(), step);
+}
+
+void Integrator::step(const Observer& observer, const StepMonitor& monitor) {
+  Impl& m = *impl_;
+  if (m.finished) return;
+  const IntegratorSettings& settings = m.settings;
+  auto& stepper = m.stepper;
+  auto& stats = m.stats;
+  auto rhs = [&m](const Impl::State& x, Impl::State& dxdt, double t) { m.rhs(x, dxdt, t); };
+  std::pair<double, double> interval;
+  for (;;) {
+    try {
+      interval = stepper.do_step(rhs);
+      break;
+    } catch (const odeint::step_adjustment_error& e) {
+      throw SolverError("integration stopped at t = " + format_number(stepper.current_time()) +
+                        ": no acceptable step size found (" + e.what() + ")");
+    } catch (const SolverError& e) {
+      // A trial stage of a long step can land where the right-hand side is undefined although
+      // the solution is not there: e.g. a stage that carries a journal far beyond its clearance
+      // gets a huge contact force, and the next stage finds the mechanism in a singular pose.
+      // Such a step would fail its error test anyway; treat it as rejected and retry a quarter
+      // of it from the last accepted state (odeint left that state and its time untouched).
+      // A failure that persists down to minimum_step is real and stops the run.
+      const double retry = 0.25 * stepper.current_time_step();
+      if (!(retry >= settings.minimum_step)) {
+        throw SolverError(std::string(e.what()) + " (persisting down to steps of " +
+                          format_number(retry) + " s)");
+      }
+      ++stats.failed_attempts;
+      m.accepted = stepper.current_state();
+      stepper.initialize(m.accepted, stepper.current_time(), retry);
+    }
+  }
+  ++stats.steps;
+  const double taken = interval.second - interval.first;
+  stats.smallest_step = std::min(stats.smallest_step, taken);
+  stats.largest_step = std::max(stats.largest_step, taken);
+  if (!all_finite(stepper.current_state())) {
+    throw SolverError("integration stopped at t = " + format_number(interval.second) +
+                      ": the state is no longer finite");
+  }
+  if (stepper.current_time_step() < settings.minimum_step) {
+    throw SolverError("integration stopped at t = " + format_number(interval.second) +
+                      ": step size collapsed to " + format_number(stepper.current_time_step()) +
+                      " s (minimum " + format_number(settings.minimum_step) + " s)");
+  }
+  if (stats.steps >= settings.max_steps) {
+    throw SolverError("integration stopped at t = " + format_number(interval.second) +
+                      ": more than solver.max_steps = " + std::to_string(settings.max_steps) +
+                      " steps");
+  }
+  m.budget.check(stats.steps, interval.second);
+  // A new event (contact onset) seen at the end of the step: bracket its first instant.
+  double onset_time = stepper.current_time();
+  bool located = false;
+  if (settings.onset != OnsetHandling::step_end &&
+      m.system.begins_event(stepper.current_time(), stepper.current_state())) {
+    onset_time = locate_onset(m.system, stepper, interval, settings.relative_tolerance, m.onset, stats);
+    located = true;
+  }
+  const bool restart_at_onset = located && settings.onset == OnsetHandling::restart_at_onset;
+  // Report times inside this step (up to the onset when restarting there), interpolated before
+  // a restart discards the interpolant.
+  const double reported_up_to = restart_at_onset ? onset_time : stepper.current_time();
+  long& k = m.next_report;
+  for (; k <= m.report_count && m.report_time(k) <= reported_up_to; ++k) {
+    stepper.calc_state(m.report_time(k), m.reported);
+    if (observer) observer(m.report_time(k), m.reported);
+  }
+  if (monitor) monitor(reported_up_to);  // after the reports: times reach it in order
+  if (k > m.report_count) {
+    m.finished = true;
+    return;
+  }
+  // Record delta_dot(-) at the onset; then (keeping the end state) the usual update at the end
+  // of the step adds events seen only there and clears those that ended.
+  if (located) m.system.update_extra_states(onset_time, m.onset);
+  if (restart_at_onset) {
+    // The rest of the step was integrated with a provisional delta_dot(-): drop it.
+    stepper.initialize(m.onset, onset_time, stepper.current_time_step());
+    ++stats.restarts;
+    return;
+  }
+  m.accepted = stepper.current_state();
+  if (located) {
+    const auto extra = static_cast<std::ptrdiff_t>(m.system.layout().extra_offset());
+    std::copy(m.onset.begin() + extra, m.onset.end(), m.accepted.begin() + extra);
+  }
+  if (m.system.update_extra_states(stepper.current_time(), m.accepted) || located) {
+    // odeint's dense-output stepper keeps the last derivative (FSAL); a changed state needs a
+    // fresh start from it, keeping the step size the controller had chosen.
+    stepper.initialize(m.accepted, stepper.current_time(), stepper.current_time_step());
+    ++stats.restarts;
+  }
+}
+
+void Integrator::right_hand_side_changed() {
+  Impl& m = *impl_;
+  m.accepted = m.stepper.current_state();
+  m.stepper.initialize(m.accepted, m.stepper.current_time(), m.stepper.current_time_step());
+}
+
+void Integrator::limit_next_step(double step) {
+  Impl& m = *impl_;
+  if (!(step > 0.0) || step >= m.stepper.current_time_step()) return;
+  m.accepted = m.stepper.current_state();
+  m.stepper.initialize(m.accepted, m.stepper.current_time(), step);
+}
+
 IntegrationStatistics integrate(MultibodySystem& system, std::vector<double>& y,
                                 const IntegratorSettings& settings, const Observer& observer,
                                 const StepMonitor& monitor) {
-  validate(settings);
-  if (!all_finite(y)) throw SolverError("initial state is not finite");
-  using State = std::vector<double>;
-  auto stepper = odeint::make_dense_output(settings.absolute_tolerance,
-                                           settings.relative_tolerance,
-                                           odeint::runge_kutta_dopri5<State>());
-  IntegrationStatistics stats;
-  stats.smallest_step = INFINITY;
-  auto rhs = [&](const State& x, State& dxdt, double t) {
-    ++stats.derivative_calls;
-    system.derivative(t, x, dxdt);
-  };
-
-  const double span = settings.end_time - settings.start_time;
-  const long report_count = std::max(1L, std::lround(std::ceil(span / settings.report_step * (1.0 - kReportCountSlack))));
-  auto report_time = [&](long k) {
-    return k == report_count ? settings.end_time
-                             : settings.start_time + static_cast<double>(k) * settings.report_step;
-  };
-  // Discrete changes of force elements' extra state (impact memory) happen only at accepted
-  // states: here at the start, and after every accepted step below.
-  if (system.update_extra_states(settings.start_time, y)) ++stats.restarts;
-  stepper.initialize(y, settings.start_time, std::min(settings.initial_step, span));
-  observer(settings.start_time, y);
-  State reported(y.size());
-  State accepted(y.size());
-  State onset(y.size());
-  long k = 1;  // next report
-  StepBudget budget(settings, settings.start_time);
-  while (k <= report_count) {
-    std::pair<double, double> interval;
-    for (;;) {
-      try {
-        interval = stepper.do_step(rhs);
-        break;
-      } catch (const odeint::step_adjustment_error& e) {
-        throw SolverError("integration stopped at t = " + format_number(stepper.current_time()) +
-                          ": no acceptable step size found (" + e.what() + ")");
-      } catch (const SolverError& e) {
-        // A trial stage of a long step can land where the right-hand side is undefined although
-        // the solution is not there: e.g. a stage that carries a journal far beyond its clearance
-        // gets a huge contact force, and the next stage finds the mechanism in a singular pose.
-        // Such a step would fail its error test anyway; treat it as rejected and retry a quarter
-        // of it from the last accepted state (odeint left that state and its time untouched).
-        // A failure that persists down to minimum_step is real and stops the run.
-        const double retry = 0.25 * stepper.current_time_step();
-        if (!(retry >= settings.minimum_step)) {
-          throw SolverError(std::string(e.what()) + " (persisting down to steps of " +
-                            format_number(retry) + " s)");
-        }
-        ++stats.failed_attempts;
-        accepted = stepper.current_state();
-        stepper.initialize(accepted, stepper.current_time(), retry);
-      }
-    }
-    ++stats.steps;
-    const double taken = interval.second - interval.first;
-    stats.smallest_step = std::min(stats.smallest_step, taken);
-    stats.largest_step = std::max(stats.largest_step, taken);
-    if (!all_finite(stepper.current_state())) {
-      throw SolverError("integration stopped at t = " + format_number(interval.second) +
-                        ": the state is no longer finite");
-    }
-    if (stepper.current_time_step() < settings.minimum_step) {
-      throw SolverError("integration stopped at t = " + format_number(interval.second) +
-                        ": step size collapsed to " + format_number(stepper.current_time_step()) +
-                        " s (minimum " + format_number(settings.minimum_step) + " s)");
-    }
-    if (stats.steps >= settings.max_steps) {
-      throw SolverError("integration stopped at t = " + format_number(interval.second) +
-                        ": more than solver.max_steps = " + std::to_string(settings.max_steps) +
-                        " steps");
-    }
-    budget.check(stats.steps, interval.second);
-    // A new event (contact onset) seen at the end of the step: bracket its first instant.
-    double onset_time = stepper.current_time();
-    bool located = false;
-    if (settings.onset != OnsetHandling::step_end &&
-        system.begins_event(stepper.current_time(), stepper.current_state())) {
-      onset_time = locate_onset(system, stepper, interval, settings.relative_tolerance, onset, stats);
-      located = true;
-    }
-    const bool restart_at_onset = located && settings.onset == OnsetHandling::restart_at_onset;
-    // Report times inside this step (up to the onset when restarting there), interpolated before
-    // a restart discards the interpolant.
-    const double reported_up_to = restart_at_onset ? onset_time : stepper.current_time();
-    for (; k <= report_count && report_time(k) <= reported_up_to; ++k) {
-      stepper.calc_state(report_time(k), reported);
-      observer(report_time(k), reported);
-    }
-    if (monitor) monitor(reported_up_to);  // after the reports: times reach it in order
-    if (k > report_count) break;
-    // Record delta_dot(-) at the onset; then (keeping the end state) the usual update at the end
-    // of the step adds events seen only there and clears those that ended.
-    if (located) system.update_extra_states(onset_time, onset);
-    if (restart_at_onset) {
-      // The rest of the step was integrated with a provisional delta_dot(-): drop it.
-      stepper.initialize(onset, onset_time, stepper.current_time_step());
-      ++stats.restarts;
-      continue;
-    }
-    accepted = stepper.current_state();
-    if (located) {
-      const auto extra = static_cast<std::ptrdiff_t>(system.layout().extra_offset());
-      std::copy(onset.begin() + extra, onset.end(), accepted.begin() + extra);
-    }
-    if (system.update_extra_states(stepper.current_time(), accepted) || located) {
-      // odeint's dense-output stepper keeps the last derivative (FSAL); a changed state needs a
-      // fresh start from it, keeping the step size the controller had chosen.
-      stepper.initialize(accepted, stepper.current_time(), stepper.current_time_step());
-      ++stats.restarts;
-    }
-  }
-  y = reported;
-  return stats;
+  Integrator integrator(system, y, settings, observer);
+  while (!integrator.finished()) integrator.step(observer, monitor);
+  const std::span<const double> last = integrator.last_reported_state();
+  y.assign(last.begin(), last.end());
+  return integrator.statistics();
 }
 
 }  // namespace clearjoint::dynamics

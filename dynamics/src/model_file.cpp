@@ -2,6 +2,7 @@
 #include "clearjoint/dynamics/model_file.hpp"
 
 #include <charconv>
+#include <cmath>
 #include <fstream>
 #include <initializer_list>
 #include <nlohmann/json.hpp>
@@ -363,7 +364,15 @@ ModelDescription parse_model(std::string_view json_text, std::string_view source
     bool all_bodies = true;
     if (root.has("output")) {
       const Node output = root.child("output");
-      output.require_object({"bodies", "force_elements"});
+      output.require_object({"bodies", "force_elements", "decimation"});
+      if (output.has("decimation")) {
+        const double decimation = output.number("decimation", 1.0);
+        if (!(decimation >= 1.0 && decimation <= kMaxDecimation && decimation == std::floor(decimation))) {
+          throw ModelError(output.field("decimation") + " = " + format_number(decimation) +
+                           ": must be a whole number in [1, " + format_number(kMaxDecimation) + "]");
+        }
+        model.output_decimation = static_cast<long>(decimation);
+      }
       if (output.has("bodies")) {
         model.output_bodies = output.names("bodies", "a body name");
         all_bodies = false;

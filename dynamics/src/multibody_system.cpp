@@ -103,6 +103,23 @@ BodyState MultibodySystem::body_state(std::span<const double> y, BodyIndex b) co
   return s;
 }
 
+void MultibodySystem::set_external_load(BodyIndex b, const Vector3& force_W, const Vector3& moment_W) {
+  if (b < 0 || b >= layout_.body_count) {
+    throw ModelError("external load: body index " + std::to_string(b) + " is not a moving body");
+  }
+  if (!force_W.allFinite() || !moment_W.allFinite()) {
+    throw ModelError("external load on body " + std::to_string(b) + ": force and moment must be finite");
+  }
+  for (ExternalLoad& load : external_loads_) {
+    if (load.body == b) {
+      load.force_W = force_W;
+      load.moment_W = moment_W;
+      return;
+    }
+  }
+  external_loads_.push_back({b, force_W, moment_W});
+}
+
 void MultibodySystem::derivative(double time, std::span<const double> y, std::span<double> dydt) {
   const int n = layout_.body_count;
   kinematics_.update(time, y);
@@ -126,6 +143,10 @@ void MultibodySystem::derivative(double time, std::span<const double> y, std::sp
     const ForceContext context{time, kinematics_, y.subspan(offset, count),
                                dydt.subspan(offset, count)};
     forces_[e]->add_forces(context, applied_);
+  }
+  for (const ExternalLoad& load : external_loads_) {
+    applied_.add_force(load.body, load.force_W);
+    applied_.add_moment(load.body, load.moment_W);
   }
   for (BodyIndex b = 0; b < n; ++b) {
     const BodyKinematics& k = kinematics_.body(b);

@@ -5,7 +5,6 @@
 #include <string>
 
 #include "clearjoint/dynamics/errors.hpp"
-#include "clearjoint/dynamics/model_builder.hpp"
 
 namespace clearjoint::dynamics {
 
@@ -15,10 +14,6 @@ namespace {
 /// 24 characters ("-2.2250738585072014e-308"); typical values take ~20, plus the comma.
 constexpr double kBytesPerNumber = 21.0;
 
-constexpr int kBodyColumns = 20;    // body_<name>.csv
-constexpr int kEnergyColumns = 7;   // energy.csv
-constexpr int kReactionColumns = 6; // per joint in reactions.csv
-
 std::string lift_hint() {
   return " (a guard against a slip of the exponent; pass --allow-large, or allow_large=True in "
          "Python, to run it anyway)";
@@ -26,20 +21,14 @@ std::string lift_hint() {
 
 }  // namespace
 
-RunSize estimate_run_size(const ModelDescription& model) {
-  validate(model.solver);
+RunSize run_size(const IntegratorSettings& solver, long decimation, std::span<const TablePlan> tables) {
+  validate(solver);
   RunSize size;
-  size.span = model.solver.end_time - model.solver.start_time;
-  size.report_rows = std::ceil(size.span / model.solver.report_step) + 1.0;
-  const BuiltModel built = build_model(model);
-  double columns = kEnergyColumns + 1.0 + kReactionColumns * static_cast<double>(model.joints.size()) + 1.0;
-  columns += (kBodyColumns + 0.0) * static_cast<double>(model.output_bodies.size());
-  for (const auto& element : built.system->force_elements()) {
-    const double width = static_cast<double>(element->output_columns().size());
-    if (width > 0.0) columns += width + 1.0;  // an upper bound: every element that records any
-  }
-  size.columns = columns;
-  size.output_bytes = size.report_rows * columns * kBytesPerNumber;
+  size.span = solver.end_time - solver.start_time;
+  const double reports = std::ceil(size.span / solver.report_step);
+  size.report_rows = std::ceil(reports / static_cast<double>(decimation)) + 1.0;
+  for (const TablePlan& table : tables) size.columns += static_cast<double>(table.header.size());
+  size.output_bytes = size.report_rows * size.columns * kBytesPerNumber;
   return size;
 }
 

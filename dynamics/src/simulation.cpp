@@ -8,6 +8,7 @@
 #include <memory>
 
 #include "clearjoint/dynamics/csv_writer.hpp"
+#include "clearjoint/dynamics/csv_directory.hpp"
 #include "clearjoint/dynamics/errors.hpp"
 #include "clearjoint/dynamics/reaction_forces.hpp"
 #include "clearjoint/dynamics/simulation_output.hpp"
@@ -79,85 +80,71 @@ struct ElementOutput {
   size_t table = 0;
 };
 
-/// The CSV files of simulation.hpp, one CsvWriter per table; each file appears only on commit().
-class CsvDirectory final : public SimulationOutput {
- public:
-  explicit CsvDirectory(std::filesystem::path directory) : directory_(std::move(directory)) {
-    std::error_code error;
-    std::filesystem::create_directories(directory_, error);
-    if (error) {
-      throw std::runtime_error(directory_.string() + ": cannot create the output directory (" +
-                               error.message() + ")");
-    }
-  }
-  size_t add_table(const std::string& name, const std::vector<std::string>& header) override {
-    // table_name() never makes such names; checked here so that no later change can write
-    // outside the directory.
-    if (name.empty() || name == "." || name == ".." || name.find('/') != std::string::npos) {
-      throw std::logic_error(name + ": a table name that is no file name inside the directory");
-    }
-    files_.push_back(std::make_unique<CsvWriter>(directory_ / (name + ".csv"), header));
-    return files_.size() - 1;
-  }
-  void write_row(size_t table, std::span<const double> values) override {
-    files_[table]->write_row(values);
-  }
-  void commit() override {
-    for (auto& file : files_) file->commit();
-  }
-
- private:
-  std::filesystem::path directory_;
-  std::vector<std::unique_ptr<CsvWriter>> files_;
-};
-
 /// Wall-clock time between two progress calls made between report times.
 constexpr std::chrono::milliseconds kProgressInterval{100};
 
-/// The run itself, on a model already built (so that the CSV directory is created only for a
-/// model that builds).
-SimulationSummary run(const ModelDescription& model, BuiltModel built, SimulationOutput& output,
-                      const ProgressCallback& progress) {
-  MultibodySystem& system = *built.system;
+}  // namespace
 
+/// Where each table's rows come from: a body, a force element, or the system-wide tables.
+struct SimulationRun::Sources {
+  std::vector<BodyIndex> output_bodies;  ///< body_<name> tables, in plan order after the two fixed
+  std::vector<std::pair<std::size_t, std::size_t>> elements;  ///< (force element, output width)
+};
+
+SimulationRun::SimulationRun(const ModelDescription& model, const RunOptions& options)
+    : simulator_(std::make_unique<Simulator>(model)), sources_(std::make_unique<Sources>()) {
+  const ModelDescription& m = simulator_->model();
+  MultibodySystem& system = simulator_->system();
   // Every table name first, so that a collision stops the run before any table (file) exists.
   TableNames names;
   std::vector<std::string> body_names;
-  for (size_t k = 0; k < model.output_bodies.size(); ++k) {
-    body_names.push_back(names.add(table_name("body_", model.output_bodies[k]),
-                                   "output.bodies[" + std::to_string(k) + "] \"" +
-                                       model.output_bodies[k] + "\""));
+  for (size_t k = 0; k < m.output_bodies.size(); ++k) {
+    body_names.push_back(names.add(table_name("body_", m.output_bodies[k]),
+                                   "output.bodies[" + std::to_string(k) + "] \"" + m.output_bodies[k] + "\""));
   }
   std::vector<std::pair<size_t, std::string>> element_names;
   for (size_t e = 0; e < system.force_elements().size(); ++e) {
     const ForceElement& element = *system.force_elements()[e];
-    const auto& wanted = model.output_force_elements;
+    const auto& wanted = m.output_force_elements;
     if (element.output_columns().empty() ||
-        (!model.output_all_force_elements &&
-         std::find(wanted.begin(), wanted.end(), element.name()) == wanted.end())) {
+        (!m.output_all_force_elements && std::find(wanted.begin(), wanted.end(), element.name()) == wanted.end())) {
       continue;
     }
     element_names.emplace_back(e, names.add(table_name("force_", element.name()),
                                             "force element \"" + std::string(element.name()) + "\""));
   }
-
-  std::vector<BodyIndex> output_bodies;
-  std::vector<size_t> body_tables;
-  for (size_t k = 0; k < model.output_bodies.size(); ++k) {
-    output_bodies.push_back(system.body_index(model.output_bodies[k], "output.bodies"));
-    body_tables.push_back(output.add_table(body_names[k], body_header()));
+  // The plan, in the order the tables are declared (and the files listed).
+  for (size_t k = 0; k < m.output_bodies.size(); ++k) {
+    sources_->output_bodies.push_back(system.body_index(m.output_bodies[k], "output.bodies"));
+    tables_.push_back({body_names[k], body_header()});
   }
-  const size_t energy_table =
-      output.add_table("energy", {"time", "kinetic", "potential", "total", "position_violation",
-                                  "velocity_violation", "euler_norm_drift"});
-  const size_t reaction_table = output.add_table("reactions", reaction_header(system.constraints()));
-  std::vector<ElementOutput> element_outputs;
+  tables_.push_back({"energy", {"time", "kinetic", "potential", "total", "position_violation",
+                                "velocity_violation", "euler_norm_drift"}});
+  tables_.push_back({"reactions", reaction_header(system.constraints())});
   for (const auto& [e, name] : element_names) {
     std::vector<std::string> header = system.force_elements()[e]->output_columns();
-    const size_t width = header.size();
+    sources_->elements.emplace_back(e, header.size());
     header.insert(header.begin(), "time");
-    element_outputs.push_back({e, width, output.add_table(name, header)});
+    tables_.push_back({name, std::move(header)});
   }
+  size_ = run_size(m.solver, m.output_decimation, tables_);
+  if (!options.allow_large) check_run_size(size_);
+}
+
+SimulationRun::~SimulationRun() = default;
+
+SimulationSummary SimulationRun::run(SimulationOutput& output, const ProgressCallback& progress) {
+  if (ran_) throw std::logic_error("SimulationRun::run: a run is made once");
+  ran_ = true;
+  const ModelDescription& model = simulator_->model();
+  const BuiltModel& built = simulator_->built();
+  MultibodySystem& system = simulator_->system();
+
+  std::vector<size_t> table_index;
+  for (const TablePlan& table : tables_) table_index.push_back(output.add_table(table.name, table.header));
+  const size_t bodies = sources_->output_bodies.size();
+  const size_t energy_table = table_index[bodies];
+  const size_t reaction_table = table_index[bodies + 1];
 
   SimulationSummary summary;
   summary.initial_conditions = built.initial_conditions;
@@ -167,40 +154,47 @@ SimulationSummary run(const ModelDescription& model, BuiltModel built, Simulatio
   std::vector<double> row;
   const int joint_count = static_cast<int>(system.constraints().joints().size());
   const double span = model.solver.end_time - model.solver.start_time;
+  const long decimation = model.output_decimation;
+  long report_index = 0;
 
   auto observe = [&](double t, std::span<const double> y) {
+    // Rows of every decimation-th report time and of the last; the summary sees every one.
+    const bool written = report_index % decimation == 0 || t == model.solver.end_time;
+    ++report_index;
     system.derivative(t, y, rate);  // accelerations and multipliers at the reported state
-    const Eigen::VectorXd& a = system.accelerations();
-    for (size_t k = 0; k < output_bodies.size(); ++k) {
-      const BodyIndex b = output_bodies[k];
-      const BodyKinematics& kin = system.kinematics().body(b);
-      const BodyState s = system.body_state(y, b);
-      const Vector3 angular_acceleration_W = kin.rotation * a.segment<3>(6 * b + 3);
+    if (written) {
+      const Eigen::VectorXd& a = system.accelerations();
+      for (size_t k = 0; k < bodies; ++k) {
+        const BodyIndex b = sources_->output_bodies[k];
+        const BodyKinematics& kin = system.kinematics().body(b);
+        const BodyState s = system.body_state(y, b);
+        const Vector3 angular_acceleration_W = kin.rotation * a.segment<3>(6 * b + 3);
+        row.assign({t});
+        row.insert(row.end(), s.position_W.data(), s.position_W.data() + 3);
+        row.insert(row.end(), s.euler_parameters.data(), s.euler_parameters.data() + 4);
+        row.insert(row.end(), s.velocity_W.data(), s.velocity_W.data() + 3);
+        row.insert(row.end(), kin.angular_velocity_W.data(), kin.angular_velocity_W.data() + 3);
+        row.insert(row.end(), a.data() + 6 * b, a.data() + 6 * b + 3);
+        row.insert(row.end(), angular_acceleration_W.data(), angular_acceleration_W.data() + 3);
+        output.write_row(table_index[k], row);
+      }
+
       row.assign({t});
-      row.insert(row.end(), s.position_W.data(), s.position_W.data() + 3);
-      row.insert(row.end(), s.euler_parameters.data(), s.euler_parameters.data() + 4);
-      row.insert(row.end(), s.velocity_W.data(), s.velocity_W.data() + 3);
-      row.insert(row.end(), kin.angular_velocity_W.data(), kin.angular_velocity_W.data() + 3);
-      row.insert(row.end(), a.data() + 6 * b, a.data() + 6 * b + 3);
-      row.insert(row.end(), angular_acceleration_W.data(), angular_acceleration_W.data() + 3);
-      output.write_row(body_tables[k], row);
-    }
+      for (int j = 0; j < joint_count; ++j) {
+        const JointReaction r = joint_reaction(system, j);
+        row.insert(row.end(), r.force_W.data(), r.force_W.data() + 3);
+        row.insert(row.end(), r.moment_W.data(), r.moment_W.data() + 3);
+      }
+      output.write_row(reaction_table, row);
 
-    row.assign({t});
-    for (int j = 0; j < joint_count; ++j) {
-      const JointReaction r = joint_reaction(system, j);
-      row.insert(row.end(), r.force_W.data(), r.force_W.data() + 3);
-      row.insert(row.end(), r.moment_W.data(), r.moment_W.data() + 3);
-    }
-    output.write_row(reaction_table, row);
-
-    for (const ElementOutput& output_table : element_outputs) {
-      row.assign(output_table.width + 1, 0.0);
-      row[0] = t;
-      system.force_elements()[output_table.element]->record_outputs(
-          t, system.kinematics(), system.extra_state(y, output_table.element),
-          std::span<double>(row).subspan(1));
-      output.write_row(output_table.table, row);
+      for (size_t k = 0; k < sources_->elements.size(); ++k) {
+        const auto [element, width] = sources_->elements[k];
+        row.assign(width + 1, 0.0);
+        row[0] = t;
+        system.force_elements()[element]->record_outputs(t, system.kinematics(), system.extra_state(y, element),
+                                                         std::span<double>(row).subspan(1));
+        output.write_row(table_index[bodies + 2 + k], row);
+      }
     }
 
     const double kinetic = system.kinetic_energy(y);
@@ -209,7 +203,7 @@ SimulationSummary run(const ModelDescription& model, BuiltModel built, Simulatio
     const ConstraintViolation violation = system.constraint_violation(t, y);
     const double values[] = {t, kinetic, potential, kinetic + potential, violation.position,
                              violation.velocity, drift};
-    output.write_row(energy_table, values);
+    if (written) output.write_row(energy_table, values);
     summary.max_energy_change = std::max(summary.max_energy_change,
                                          std::abs(kinetic + potential - summary.initial_energy));
     summary.max_position_violation = std::max(summary.max_position_violation, violation.position);
@@ -228,8 +222,9 @@ SimulationSummary run(const ModelDescription& model, BuiltModel built, Simulatio
     progress((t - model.solver.start_time) / span);
   };
 
-  std::vector<double> y = built.initial_state;
-  summary.integration = integrate(system, y, model.solver, observe, progress ? StepMonitor(monitor) : StepMonitor());
+  simulator_->start(observe, progress ? StepMonitor(monitor) : StepMonitor());
+  while (!simulator_->finished()) simulator_->step();
+  summary.integration = simulator_->statistics();
   output.commit();
   for (const auto& element : system.force_elements()) {
     std::string text = element->statistics_text();
@@ -238,19 +233,17 @@ SimulationSummary run(const ModelDescription& model, BuiltModel built, Simulatio
   return summary;
 }
 
-}  // namespace
-
-SimulationSummary simulate(const ModelDescription& model,
-                           const std::filesystem::path& output_directory,
+SimulationSummary simulate(const ModelDescription& model, const std::filesystem::path& output_directory,
                            const ProgressCallback& progress) {
-  BuiltModel built = build_model(model);
+  SimulationRun run(model, RunOptions{.allow_large = true});
   CsvDirectory files(output_directory);
-  return run(model, std::move(built), files, progress);
+  return run.run(files, progress);
 }
 
 SimulationSummary simulate(const ModelDescription& model, SimulationOutput& output,
                            const ProgressCallback& progress) {
-  return run(model, build_model(model), output, progress);
+  SimulationRun run(model, RunOptions{.allow_large = true});
+  return run.run(output, progress);
 }
 
 }  // namespace clearjoint::dynamics

@@ -5,6 +5,7 @@
 /// method behind MATLAB's ode45, which the paper uses), reporting at a fixed step by interpolation.
 
 #include <functional>
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -78,6 +79,47 @@ using Observer = std::function<void(double time, std::span<const double> state)>
 /// Called after every accepted step with its end time (may be empty): cheap, so that a caller can
 /// look at a clock there, report progress between report times, or throw to stop the run.
 using StepMonitor = std::function<void(double time)>;
+
+/// The integration of integrate() below, one accepted step at a time, for callers that drive a
+/// run (Simulator: controls, co-simulation, their own event logic). The constructor makes the
+/// start's discrete update and reports start_time; each step() takes one accepted step, reports
+/// the report times inside it, and makes the step's discrete updates, exactly as integrate()
+/// does. Throws as integrate() does.
+class Integrator {
+ public:
+  Integrator(MultibodySystem& system, std::span<const double> initial_state, const IntegratorSettings& settings,
+             const Observer& observer = {});
+  Integrator(const Integrator&) = delete;
+  Integrator& operator=(const Integrator&) = delete;
+  ~Integrator();
+
+  /// Time and state of the last accepted step (after its discrete updates).
+  double time() const;
+  std::span<const double> state() const;
+  /// The step the controller proposes next [s].
+  double next_step() const;
+  /// Every report time up to end_time has been reported.
+  bool finished() const;
+  const IntegrationStatistics& statistics() const;
+  const IntegratorSettings& settings() const;
+  /// The state at the last report time (the initial state before any).
+  std::span<const double> last_reported_state() const;
+
+  void step(const Observer& observer = {}, const StepMonitor& monitor = {});
+  /// Continue from `state` at time(): the force elements' discrete update runs on it and the
+  /// stepper restarts with `step` (the controller's proposal when 0).
+  void restart(std::span<const double> state, double step = 0.0);
+  /// The right-hand side changed between steps (a load applied or cleared): restart from the
+  /// current state, whose stored derivative (the stepper's first-same-as-last stage) is stale.
+  void right_hand_side_changed();
+  /// Make the next step at most `step` long (a restart from the current state; nothing when the
+  /// proposal is shorter already).
+  void limit_next_step(double step);
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
 
 /// Integrate y from start_time to end_time; on return y is the state at end_time.
 /// After every accepted step (and at the start) the force elements may change their extra state

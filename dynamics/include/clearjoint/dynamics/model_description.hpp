@@ -85,6 +85,12 @@ struct ModelDescription {
   /// Force elements whose outputs (force_<name>.csv) are written; all of them by default.
   std::vector<std::string> output_force_elements;
   bool output_all_force_elements = true;
+  /// Rows are written at every output_decimation-th report time and at end_time (the summary's
+  /// extremes still see every report time); model files: output.decimation.
+  long output_decimation = 1;
 };
+
+/// Largest output.decimation (a whole number; beyond it a long run would write only its ends).
+inline constexpr double kMaxDecimation = 1e9;
 
 }  // namespace clearjoint::dynamics

@@ -75,6 +75,13 @@ class MultibodySystem {
   /// Force element e's extra variables within y.
   std::span<const double> extra_state(std::span<const double> y, size_t e) const;
 
+  /// A load the caller applies to body b from now on (a control, a co-simulation's coupling):
+  /// a force at the mass centre and a moment, world frame, added to g after the force elements
+  /// (replacing b's earlier load). Constant until set again or cleared. Without loads nothing is
+  /// added, so a model's answers do not change.
+  void set_external_load(BodyIndex b, const Vector3& force_W, const Vector3& moment_W);
+  void clear_external_loads() { external_loads_.clear(); }
+
   /// Results of the last derivative() call.
   const SystemKinematics& kinematics() const { return kinematics_; }
   const Eigen::VectorXd& accelerations() const { return accelerations_; }  ///< dv/dt
@@ -91,8 +98,15 @@ class MultibodySystem {
   /// dv/dt and lambda of eq. (38) from kinematics_ and g_ (derivative()'s constrained part).
   void solve_constrained_accelerations(double time, std::span<const double> y);
 
+  struct ExternalLoad {
+    BodyIndex body;
+    Vector3 force_W;
+    Vector3 moment_W;
+  };
+
   std::vector<BodyProperties> bodies_;
   std::vector<std::unique_ptr<ForceElement>> forces_;
+  std::vector<ExternalLoad> external_loads_;
   std::vector<int> extra_offsets_;
   StateLayout layout_;
   ConstraintSet constraints_;

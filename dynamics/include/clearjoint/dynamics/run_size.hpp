@@ -5,7 +5,10 @@
 /// real study unless asked for: a slip of the exponent (end_time 1e9, report_step 1e-21) must not
 /// fill the disk or run for days. docs/command-line.md ("Limits") states the numbers.
 
-#include "clearjoint/dynamics/model_description.hpp"
+#include <span>
+
+#include "clearjoint/dynamics/integrator.hpp"
+#include "clearjoint/dynamics/simulation_output.hpp"
 
 namespace clearjoint::dynamics {
 
@@ -21,12 +24,12 @@ struct RunSize {
   double span = 0.0;         ///< end_time - start_time [s]
   double report_rows = 0.0;  ///< rows of every CSV file, header aside
   double columns = 0.0;      ///< numbers written per report time, over all files
-  double output_bytes = 0.0; ///< estimate: rows x columns x kBytesPerNumber
+  double output_bytes = 0.0; ///< estimate: rows x columns x kBytesPerNumber (CSV)
 };
 
-/// The size of `model`'s run; builds the model to count the force elements' output columns.
-/// Throws ModelError for a model that cannot be built.
-RunSize estimate_run_size(const ModelDescription& model);
+/// The size of a run with these solver settings that writes `tables` at every
+/// `decimation`-th report time (and the last). Throws ModelError for unusable settings.
+RunSize run_size(const IntegratorSettings& solver, long decimation, std::span<const TablePlan> tables);
 
 /// Throws ModelError naming the setting and the limit if `size` exceeds any limit above; the
 /// message says how to lift the guard (`--allow-large` on the command line).

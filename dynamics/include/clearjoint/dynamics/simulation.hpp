@@ -20,9 +20,12 @@
 
 #include <filesystem>
 #include <functional>
+#include <memory>
 
 #include "clearjoint/dynamics/model_builder.hpp"
+#include "clearjoint/dynamics/run_size.hpp"
 #include "clearjoint/dynamics/simulation_output.hpp"
+#include "clearjoint/dynamics/simulator.hpp"
 
 namespace clearjoint::dynamics {
 
@@ -37,14 +40,59 @@ struct SimulationSummary {
   std::vector<std::string> element_statistics;  ///< ForceElement::statistics_text(), non-empty ones
 };
 
+/// The summary as strict JSON text, one key per field (steps, derivative_calls, smallest_step,
+/// largest_step, restarts, failed_attempts, located_onsets, onset_probes,
+/// initial_condition_iterations, initial_position_residual, initial_velocity_residual,
+/// initial_energy, max_energy_change, max_position_violation, max_velocity_violation,
+/// max_euler_norm_drift, element_statistics): summary.json of a run folder, the Python dict.
+std::string summary_json(const SimulationSummary& summary);
+
 /// progress(fraction in [0, 1]) is called at report times and, between them, after an accepted
 /// step when 0.1 s of wall time has passed since the last such call (may be empty). It may throw to stop the run (a user's interrupt): the exception
 /// leaves simulate() and no output is committed.
 using ProgressCallback = std::function<void(double fraction)>;
 
+struct RunOptions {
+  /// Run beyond the size guard (run_size.hpp); the command line's --allow-large.
+  bool allow_large = false;
+};
+
+/// One run, planned before it starts: the model is built once (Simulator), the tables it will
+/// write (names, columns) are decided and checked (names that collide), and the size guard
+/// looks at that plan, all before any output exists. run() then integrates and writes the
+/// tables to any SimulationOutput (CsvDirectory, TablesInMemory, an HDF5 file), writing the rows
+/// of every output.decimation-th report time and of the last (the summary sees every report).
+class SimulationRun {
+ public:
+  /// Throws ModelError (a bad model, colliding table names, a run beyond the size guard) or
+  /// SolverError (inconsistent initial conditions).
+  explicit SimulationRun(const ModelDescription& model, const RunOptions& options = {});
+  SimulationRun(const SimulationRun&) = delete;
+  SimulationRun& operator=(const SimulationRun&) = delete;
+  ~SimulationRun();
+
+  /// The tables, in the order they are declared to the output.
+  const std::vector<TablePlan>& tables() const { return tables_; }
+  const RunSize& size() const { return size_; }
+  const ModelDescription& model() const { return simulator_->model(); }
+
+  /// Integrate and write; once per SimulationRun. Throws SolverError or what `output` throws;
+  /// `output` is committed only after the last row.
+  SimulationSummary run(SimulationOutput& output, const ProgressCallback& progress = {});
+
+ private:
+  struct Sources;
+  std::unique_ptr<Simulator> simulator_;
+  std::unique_ptr<Sources> sources_;
+  std::vector<TablePlan> tables_;
+  RunSize size_;
+  bool ran_ = false;
+};
+
 /// Run `model` and write the files above into `output_directory` (created if missing). Each file
 /// appears only when complete (CsvWriter); OutputFolder (output_folder.hpp) publishes the whole
-/// folder as one unit. Throws ModelError, SolverError or std::runtime_error.
+/// folder as one unit. No size guard (SimulationRun has it). Throws ModelError, SolverError or
+/// std::runtime_error.
 SimulationSummary simulate(const ModelDescription& model,
                            const std::filesystem::path& output_directory,
                            const ProgressCallback& progress = {});

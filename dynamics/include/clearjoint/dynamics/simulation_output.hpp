@@ -13,6 +13,12 @@
 
 namespace clearjoint::dynamics {
 
+/// A table a run will write: its name (the CSV file's stem) and its columns, "time" first.
+struct TablePlan {
+  std::string name;
+  std::vector<std::string> header;
+};
+
 class SimulationOutput {
  public:
   virtual ~SimulationOutput() = default;

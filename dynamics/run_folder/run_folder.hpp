@@ -1,0 +1,44 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+/// \file
+/// One run written into its output folder, the way `clearjoint simulate --out DIR` and Python's
+/// simulate(out=DIR) both do it (docs/command-line.md, "Output folder"): the tables as CSV files
+/// (<table>.csv) or one HDF5 file (run.h5, hdf5_tables.hpp), model.json (the model run) and
+/// summary.json (summary_json), written into a staging folder and published as one unit
+/// (OutputFolder).
+
+#include <filesystem>
+#include <functional>
+#include <string>
+
+#include "clearjoint/dynamics/simulation.hpp"
+
+namespace clearjoint::dynamics {
+
+enum class RunFormat { csv, hdf5 };
+
+/// "csv" or "hdf5"; std::invalid_argument naming the value otherwise, or for hdf5 when this
+/// build has no HDF5.
+RunFormat run_format(const std::string& name);
+/// Whether this build writes HDF5.
+bool hdf5_available();
+
+struct RunFolderOptions {
+  RunFormat format = RunFormat::csv;
+  bool replace_existing = false;  ///< --force: replace an earlier result (OutputFolder)
+};
+
+/// Runs `run` into `destination`. `model_json` is written as model.json (and into run.h5).
+/// The folder is claimed (OutputFolder's checks) before the first step. Throws what the run,
+/// the folder or the writers throw; a failed run leaves the destination as it was.
+SimulationSummary write_run_folder(SimulationRun& run, const std::string& model_json,
+                                   const std::filesystem::path& destination, const RunFolderOptions& options,
+                                   const ProgressCallback& progress = {});
+
+/// The same folder for a run made elsewhere (another engine) that writes its CSV tables into the
+/// folder it is given: `run_into(staging)` returns the summary. CSV only.
+SimulationSummary write_run_folder(const std::function<SimulationSummary(const std::filesystem::path&)>& run_into,
+                                   const std::string& model_json, const std::filesystem::path& destination,
+                                   const RunFolderOptions& options);
+
+}  // namespace clearjoint::dynamics
