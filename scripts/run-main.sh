@@ -11,6 +11,6 @@ echo "== clearjoint intersect examples/rims.jsonl (certified rim/base and rim/wa
 echo "== clearjoint detect examples/joints.jsonl (contact scenarios of the paper's Fig. 2)"
 "$clearjoint" detect examples/joints.jsonl
 echo "== clearjoint simulate models/slider_crank_spatial_clearance.json (paper section 6.2, clearance joint)"
-"$clearjoint" simulate models/slider_crank_spatial_clearance.json --out build/results/spatial_clearance --force
-echo "results: build/results/spatial_clearance/ (body_*.csv, energy.csv, reactions.csv, force_*.csv)"
-tail -n 1 build/results/spatial_clearance/energy.csv
+"$clearjoint" simulate models/slider_crank_spatial_clearance.json --out build/results/spatial_clearance --force --plot
+echo "== the run's folder: the tables (CSV), model.json, summary.json, and its figures (clearjoint plot)"
+ls build/results/spatial_clearance build/results/spatial_clearance/figures

@@ -17,6 +17,9 @@ int run_detect(Arguments args);
 #ifdef CLEARJOINT_WITH_DYNAMICS
 /// clearjoint simulate MODEL --out DIR: multibody simulation (dynamics/).
 int run_simulate(Arguments args);
+/// What `simulate --plot` calls once the run is published: the plot command's handover to
+/// Python, set by main() when the program has it; null, --plot is refused.
+extern int (*plot_published_run)(const char* run_dir);
 #endif
 #ifdef CLEARJOINT_WITH_STUDY
 /// clearjoint study run|plot|summary STUDY: parameter studies on Dask, in Python

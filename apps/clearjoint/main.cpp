@@ -80,4 +80,17 @@ int run(int argc, char** argv) {
 
 }  // namespace
 
-int main(int argc, char** argv) { return checked_exit(run(argc, argv)); }
+#if defined(CLEARJOINT_WITH_DYNAMICS) && defined(CLEARJOINT_WITH_PLOT_VIEW)
+/// simulate --plot: `clearjoint plot RUN_DIR`, which replaces this process.
+static int plot_run(const char* run_dir) {
+  char* plot_arguments[] = {const_cast<char*>(run_dir)};
+  return clearjoint::app::run_plot(clearjoint::app::Arguments(plot_arguments, 1));
+}
+#endif
+
+int main(int argc, char** argv) {
+#if defined(CLEARJOINT_WITH_DYNAMICS) && defined(CLEARJOINT_WITH_PLOT_VIEW)
+  clearjoint::app::plot_published_run = plot_run;
+#endif
+  return checked_exit(run(argc, argv));
+}

@@ -5,15 +5,21 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <optional>
+#include <sstream>
+#include <nlohmann/json.hpp>
 #include <cstring>
 #include <string>
 
 #include "clearjoint/dynamics/model_file.hpp"
-#include "clearjoint/dynamics/output_folder.hpp"
-#include "clearjoint/dynamics/run_size.hpp"
 #include "clearjoint/dynamics/simulation.hpp"
 #include "json/bounded_json.hpp"
+#include "run_folder.hpp"
+#include "simulate_engine.hpp"
 #include "commands.hpp"
 
 namespace clearjoint::app {
@@ -21,12 +27,20 @@ namespace clearjoint::app {
 namespace {
 
 constexpr const char* kUsage =
-    "usage: clearjoint simulate MODEL.json --out DIR [--force] [--allow-large]\n"
-    "  Integrates the model and writes body_<name>.csv, energy.csv, reactions.csv and, for force\n"
-    "  elements with outputs (clearance joints), force_<name>.csv into DIR.\n"
+    "usage: clearjoint simulate MODEL.json --out DIR [--format csv|hdf5] [--report-step S]\n"
+    "                           [--decimation K] [--engine NAME] [--force] [--allow-large] [--plot]\n"
+    "  Integrates the model and writes into DIR its tables (csv: body_<name>.csv, energy.csv,\n"
+    "  reactions.csv and, for force elements with outputs (clearance joints), force_<name>.csv;\n"
+    "  hdf5: run.h5 with one dataset per table), model.json (the model run) and summary.json.\n"
     "  DIR appears as one unit when the run succeeds (written in a staging folder next to it,\n"
     "  then renamed); a failed or killed run leaves an earlier DIR as it was.\n"
-    "  --force        replace DIR if it exists and is not empty (otherwise an error)\n"
+    "  --format       csv (default) or hdf5\n"
+    "  --report-step  the report interval [s], in place of the model's solver.report_step\n"
+    "  --decimation   write every K-th report time (and the last), in place of output.decimation\n"
+    "  --engine       the integrating engine: clearjoint (default) or simbody; the same tables and\n"
+    "                 columns (docs/engines.md; simbody writes CSV only)\n"
+    "  --force        replace DIR if it is an earlier result (otherwise an error)\n"
+    "  --plot         draw the run's figures into DIR/figures afterwards (clearjoint plot)\n"
     "  --allow-large  run beyond the size guard (1000 s simulated, 1e7 report times, 4 GB of\n"
     "                 CSV files)\n"
     "  Progress goes to standard error: a bar on a terminal, else a line every 10 s.\n"
@@ -79,49 +93,148 @@ class ProgressReport {
 
 }  // namespace
 
-int run_simulate(Arguments args) {
+int (*plot_published_run)(const char* run_dir) = nullptr;
+
+namespace {
+
+/// The options of one `clearjoint simulate` call.
+struct SimulateArguments {
   const char* model_path = nullptr;
   const char* out_dir = nullptr;
   bool force = false;
   bool allow_large = false;
+  bool plot = false;
+  std::string format = "csv";
+  std::string engine = std::string(kDefaultEngine);
+  std::optional<double> report_step;
+  std::optional<long> decimation;
+};
+
+/// A number option's value, or a usage error naming the option.
+bool read_number_option(const char* option, const char* text, double& out) {
+  char* end = nullptr;
+  out = std::strtod(text, &end);
+  if (end == text || *end != '\0' || !std::isfinite(out)) {
+    std::fprintf(stderr, "clearjoint simulate: %s = '%s': must be a number\n%s", option, text, kUsage);
+    return false;
+  }
+  return true;
+}
+
+/// Parses `args`; returns an exit status when the call ends here (help, usage error), else -1.
+int parse(Arguments args, SimulateArguments& a) {
   for (size_t k = 0; k < args.size(); ++k) {
-    if (std::strcmp(args[k], "--help") == 0 || std::strcmp(args[k], "-h") == 0) {
+    const char* arg = args[k];
+    auto value = [&](const char* what) -> const char* {
+      if (k + 1 == args.size()) {
+        std::fprintf(stderr, "clearjoint simulate: %s needs %s\n%s", arg, what, kUsage);
+        return nullptr;
+      }
+      return args[++k];
+    };
+    if (std::strcmp(arg, "--help") == 0 || std::strcmp(arg, "-h") == 0) {
       std::fputs(kUsage, stdout);
       return 0;
     }
-    if (std::strcmp(args[k], "--out") == 0) {
-      if (k + 1 == args.size()) {
-        std::fprintf(stderr, "clearjoint simulate: --out needs a directory\n%s", kUsage);
+    if (std::strcmp(arg, "--out") == 0) {
+      if ((a.out_dir = value("a directory")) == nullptr) return 2;
+    } else if (std::strcmp(arg, "--format") == 0) {
+      const char* format = value("csv or hdf5");
+      if (format == nullptr) return 2;
+      a.format = format;
+      if (a.format != "csv" && a.format != "hdf5") {
+        std::fprintf(stderr, "clearjoint simulate: --format = '%s': must be csv or hdf5\n%s", format, kUsage);
         return 2;
       }
-      out_dir = args[++k];
-    } else if (std::strcmp(args[k], "--force") == 0) {
-      force = true;
-    } else if (std::strcmp(args[k], "--allow-large") == 0) {
-      allow_large = true;
-    } else if (model_path == nullptr && args[k][0] != '-') {
-      model_path = args[k];
+    } else if (std::strcmp(arg, "--report-step") == 0) {
+      const char* text = value("a time step in seconds");
+      double step = 0.0;
+      if (text == nullptr || !read_number_option("--report-step", text, step)) return 2;
+      a.report_step = step;
+    } else if (std::strcmp(arg, "--decimation") == 0) {
+      const char* text = value("a whole number");
+      double decimation = 0.0;
+      if (text == nullptr || !read_number_option("--decimation", text, decimation)) return 2;
+      if (!(decimation >= 1.0 && decimation <= dynamics::kMaxDecimation && decimation == std::floor(decimation))) {
+        std::fprintf(stderr, "clearjoint simulate: --decimation = '%s': must be a whole number in [1, 1e9]\n", text);
+        return 2;
+      }
+      a.decimation = static_cast<long>(decimation);
+    } else if (std::strcmp(arg, "--engine") == 0) {
+      const char* engine = value("an engine name");
+      if (engine == nullptr) return 2;
+      a.engine = engine;
+      if (const std::string why = engine_unavailable(a.engine); !why.empty()) {
+        std::fprintf(stderr, "clearjoint simulate: %s\n", why.c_str());
+        return 2;
+      }
+    } else if (std::strcmp(arg, "--force") == 0) {
+      a.force = true;
+    } else if (std::strcmp(arg, "--allow-large") == 0) {
+      a.allow_large = true;
+    } else if (std::strcmp(arg, "--plot") == 0) {
+      a.plot = true;
+    } else if (a.model_path == nullptr && arg[0] != '-') {
+      a.model_path = arg;
     } else {
-      std::fprintf(stderr, "clearjoint simulate: unexpected argument '%s'\n%s", args[k], kUsage);
+      std::fprintf(stderr, "clearjoint simulate: unexpected argument '%s'\n%s", arg, kUsage);
       return 2;
     }
   }
-  if (model_path == nullptr || out_dir == nullptr) {
+  if (a.model_path == nullptr || a.out_dir == nullptr) {
     std::fputs(kUsage, stderr);
     return 2;
   }
+  if (a.plot && plot_published_run == nullptr) {
+    std::fputs("clearjoint simulate: --plot needs the clearjoint Python package (clearjoint plot), which this "
+               "program was built without\n", stderr);
+    return 2;
+  }
+  return -1;
+}
 
-  const dynamics::ModelDescription model = dynamics::read_model_file(model_path);
-  // Every check that can fail before the run: the size guard builds the model (all model
-  // checks), and simulate() checks the output file names before integrating.
-  const dynamics::RunSize size = dynamics::estimate_run_size(model);
-  if (!allow_large) dynamics::check_run_size(size);
-  dynamics::OutputFolder folder(out_dir, force);
+/// The model file as given, with the command line's overrides written in: model.json of the
+/// run folder, what `clearjoint plot` and `view` read back.
+std::string model_json(const char* model_path, const SimulateArguments& a) {
+  std::ifstream in(model_path, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  if (!a.report_step && !a.decimation) return text.str();
+  nlohmann::ordered_json model = nlohmann::ordered_json::parse(text.str());
+  if (a.report_step) model["solver"]["report_step"] = *a.report_step;
+  if (a.decimation) model["output"]["decimation"] = *a.decimation;
+  return model.dump(1) + "\n";
+}
+
+}  // namespace
+
+int run_simulate(Arguments args) {
+  SimulateArguments a;
+  if (const int status = parse(args, a); status >= 0) return status;
+
+  dynamics::ModelDescription model = dynamics::read_model_file(a.model_path);
+  if (a.report_step) {
+    model.solver.report_step = *a.report_step;
+    dynamics::validate(model.solver);  // names solver.report_step when the value is unusable
+  }
+  if (a.decimation) model.output_decimation = *a.decimation;
+  // Every check that can fail before the run, before the output folder exists: the model is
+  // built once, its tables planned (name collisions) and the size guard applied to that plan.
+  // Another engine refuses the features it does not support, naming them, before the folder exists.
+  dynamics::SimulationRun run(model, dynamics::RunOptions{.allow_large = a.allow_large});
+  check_model_for_engine(a.engine, model);
+  const dynamics::RunFolderOptions options{dynamics::run_format(a.format), a.force};
   ProgressReport bar;
   dynamics::SimulationSummary summary;
   try {
-    summary = dynamics::simulate(model, folder.staging(), [&bar](double f) { bar.update(f); });
-    folder.publish();
+    const auto progress = [&bar](double f) { bar.update(f); };
+    if (a.engine == kDefaultEngine) {
+      summary = dynamics::write_run_folder(run, model_json(a.model_path, a), a.out_dir, options, progress);
+    } else {
+      summary = dynamics::write_run_folder(
+          [&](const std::filesystem::path& staging) { return simulate_with_engine(a.engine, model, staging, progress); },
+          model_json(a.model_path, a), a.out_dir, options);
+    }
   } catch (...) {
     bar.finish();
     throw;
@@ -150,7 +263,9 @@ int run_simulate(Arguments args) {
   std::printf("constraint violation: max |Phi| = %.3g, max |dPhi/dt| = %.3g; max ||p| - 1| = %.3g\n",
               summary.max_position_violation, summary.max_velocity_violation,
               summary.max_euler_norm_drift);
-  std::printf("results: %s\n", out_dir);
+  std::printf("results: %s\n", a.out_dir);
+  std::fflush(stdout);
+  if (a.plot) return plot_published_run(a.out_dir);
   return 0;
 }
 

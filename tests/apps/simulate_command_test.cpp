@@ -116,7 +116,7 @@ TEST(SimulateCommand, WithoutAnOutputFolderPrintsItsUsageAndExitsWithTwo) {
   const fs::path dir = scratch("simulate_usage");
   const Outcome o = run("simulate \"" + write_model(dir, "{}").string() + "\"", dir);
   EXPECT_EQ(o.exit_code, 2);
-  EXPECT_EQ(o.err.rfind("usage: clearjoint simulate MODEL.json --out DIR [--force] [--allow-large]\n", 0), 0u) << o.err;
+  EXPECT_EQ(o.err.rfind("usage: clearjoint simulate MODEL.json --out DIR [--format csv|hdf5] [--report-step S]\n", 0), 0u) << o.err;
 }
 
 TEST(SimulateCommand, NamesTheFieldOfABadModelAndExitsWithOneWritingNothing) {

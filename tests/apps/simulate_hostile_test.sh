@@ -14,6 +14,7 @@ run() { set +e; "$@" >out.txt 2>err.txt; rc=$?; set -e; }
 expect_rc() { [[ $rc == "$1" ]] || fail "exit status $rc, expected $1; stderr: $(head -c 600 err.txt)"; }
 expect_in() { grep -qF -- "$2" "$1" || fail "'$2' not in $1: $(head -c 600 "$1")"; }
 expect_no_output() { [[ ! -e out ]] || fail "an output folder was created: $(ls -A out)"; }
+expect_no_output_named() { [[ ! -e $1 ]] || fail "an output folder $1 was created"; }
 
 # model BODIES FORCES INITIAL OUTPUT SOLVER [GRAVITY]: a model file on standard output. The
 # default is one free body falling for 0.1 s, which runs in milliseconds.
@@ -279,6 +280,33 @@ full_disk_at_commit)
   rc=$?; set -e
   expect_rc 1
   expect_in err.txt 'No space left on device'
+  ;;
+formats_and_decimation)
+  # The run folder: tables as CSV or one HDF5 file, model.json and strict summary.json; the report
+  # interval and the decimation set from the command line.
+  model "$ball" "" "" "" '"end_time": 0.1, "report_step": 0.01' >m.json
+  run "$clearjoint" simulate m.json --out csv --report-step 0.001 --decimation 10
+  expect_rc 0
+  [[ $(wc -l <csv/energy.csv) == 12 ]] || fail "energy.csv has $(wc -l <csv/energy.csv) lines, expected 1 + 11"
+  /usr/bin/python3 -c "import json, sys; json.load(open('csv/summary.json'), parse_constant=lambda c: sys.exit('bare ' + c))" ||
+    fail "summary.json is not strict JSON"
+  /usr/bin/python3 -c "import json; m = json.load(open('csv/model.json')); assert m['solver']['report_step'] == 0.001 and m['output']['decimation'] == 10" ||
+    fail "model.json does not hold the overrides"
+  run "$clearjoint" simulate m.json --out h5 --format hdf5
+  expect_rc 0
+  [[ -f h5/run.h5 && -f h5/summary.json && -f h5/model.json && ! -e h5/energy.csv ]] || fail "hdf5 folder: $(ls -A h5)"
+  for bad in "--format xml" "--report-step soon" "--decimation 0" "--decimation 2.5"; do
+    run "$clearjoint" simulate m.json --out bad $bad
+    expect_rc 2
+    expect_no_output_named bad
+  done
+  ;;
+unknown_engine)
+  model "$ball" >m.json
+  run "$clearjoint" simulate m.json --out out --engine bogus
+  expect_rc 2
+  expect_in err.txt '--engine bogus: unknown engine; the engines are clearjoint (default)'
+  expect_no_output
   ;;
 *) fail "unknown case" ;;
 esac
