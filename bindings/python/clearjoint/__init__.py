@@ -9,7 +9,9 @@ axial clearances", Mechanism and Machine Theory 116 (2017) 123-144. docs/python.
   a journal in its bearing, for one pose or a NumPy batch (Section 3, eqs. 3-26);
 - ``intersect_circle_plane``, ``intersect_circle_cylinder``: the certified kernel queries
   (eqs. 11-15, 16-21);
-- ``simulate(model)``: run a multibody model file (or dict) and get its time series as arrays.
+- ``simulate(model)``: run a multibody model file (or dict) and get its time series as arrays,
+  or write them into a folder (CSV or HDF5); ``read_run(folder)`` reads one back;
+- ``Simulator(model)``: step a model yourself (controls, co-simulation, loads between steps).
 
 Lengths are in one unit of the caller's choice (metres in the shipped models), angles in radians,
 vectors in the world frame.
@@ -21,13 +23,14 @@ from ._enums import (Certainty, CertificateReason, CircleCylinderTopology, Circl
                      ContactBase, ContactScenario, ContactType)
 from ._detect import (MAX_CONTACTS, CircleCylinderBatch, CirclePlaneBatch, DetectionBatch, detect,
                       intersect_circle_cylinder, intersect_circle_plane)
-from ._simulate import SimulationResult, simulate
+from ._simulate import SimulationResult, read_run, simulate
+from ._simulator import Simulator
 
 __all__ = [
     "MAX_CONTACTS", "Certainty", "Certificate", "CertificateReason", "CircleCylinderBatch",
     "CircleCylinderIntersection", "CircleCylinderTopology", "CirclePlaneBatch",
     "CirclePlaneIntersection", "CirclePlaneTopology", "Contact", "ContactBase", "ContactScenario",
     "ContactType", "DetectionBatch", "JointContacts", "JointDimensions", "RimArc", "RimCrossing",
-    "SimulationResult", "SolverError", "__version__", "certificate_reason_text", "detect",
-    "intersect_circle_cylinder", "intersect_circle_plane", "scenario_label", "simulate",
+    "SimulationResult", "Simulator", "SolverError", "__version__", "certificate_reason_text", "detect",
+    "intersect_circle_cylinder", "intersect_circle_plane", "read_run", "scenario_label", "simulate",
 ]

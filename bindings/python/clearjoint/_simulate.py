@@ -8,7 +8,7 @@ import math
 import os
 import sys
 from dataclasses import dataclass, field
-from typing import Any, Callable, Dict, Mapping, Optional, Union
+from typing import Any, Callable, Dict, Mapping, Optional, Tuple, Union
 
 import numpy as np
 
@@ -47,6 +47,7 @@ class SimulationResult:
 
     tables: Dict[str, Dict[str, np.ndarray]] = field(default_factory=dict)
     summary: Dict[str, Any] = field(default_factory=dict)
+    folder: Optional[str] = None
 
     def __getitem__(self, table: str) -> Dict[str, np.ndarray]:
         return self.tables[table]
@@ -158,7 +159,37 @@ def _model_path(model: Union[str, "os.PathLike[str]"]) -> str:
     return path
 
 
-def simulate(model: Model, *, progress: Progress = False, allow_large: bool = False) -> SimulationResult:
+def _model_text(model: Model) -> Tuple[str, str]:
+    """(JSON text, source name) of a model path or dict, checked as simulate() checks them."""
+    if isinstance(model, Mapping):
+        _check_json_values(model, "")
+        return json.dumps(model, default=_json_value, allow_nan=False), "<dict>"
+    if isinstance(model, (str, os.PathLike)):
+        path = _model_path(model)
+        with open(path, "rb") as f:
+            return f.read().decode("utf-8", errors="surrogateescape"), path
+    raise TypeError(f"model = {type(model).__name__}: must be a path or a dict in the model-file format")
+
+
+def _check_options(allow_large: Any, report_step: Any, decimation: Any, out: Any, format: Any,
+                   force: Any) -> None:
+    for name, value in (("allow_large", allow_large), ("force", force)):
+        if not isinstance(value, bool):
+            raise TypeError(f"{name} = {value!r}: must be True or False")
+    if report_step is not None and (isinstance(report_step, bool) or not isinstance(report_step, (int, float, np.integer, np.floating))):
+        raise TypeError(f"report_step = {report_step!r}: must be a number of seconds or None")
+    if decimation is not None and (isinstance(decimation, bool) or not isinstance(decimation, (int, np.integer))):
+        raise TypeError(f"decimation = {decimation!r}: must be a whole number or None")
+    if format not in ("csv", "hdf5"):
+        raise ValueError(f"format = {format!r}: must be 'csv' or 'hdf5'")
+    if out is None and (format != "csv" or force):
+        raise ValueError("format and force apply to a run written to a folder: give out=")
+
+
+def simulate(model: Model, *, progress: Progress = False, allow_large: bool = False,
+             report_step: Optional[float] = None, decimation: Optional[int] = None,
+             out: Union[None, str, "os.PathLike[str]"] = None, format: str = "csv",
+             force: bool = False) -> SimulationResult:
     """Run a multibody model in process and return its time series as NumPy arrays.
 
     Parameters
@@ -177,12 +208,21 @@ def simulate(model: Model, *, progress: Progress = False, allow_large: bool = Fa
         (docs/command-line.md, "Size guard": more than 1000 s simulated, 1e7 report times or an
         estimated 4 GB of tables) with ValueError naming the setting; True runs it anyway, as
         ``--allow-large`` does.
+    report_step, decimation:
+        In place of the model's ``solver.report_step`` and ``output.decimation`` (rows at every
+        decimation-th report time and the last), as ``--report-step`` and ``--decimation``.
+    out, format, force:
+        With ``out``, the run is written into that folder exactly as ``clearjoint simulate
+        --out`` writes it (``format`` "csv" or "hdf5", ``force`` to replace an earlier result;
+        docs/command-line.md, "Output folder"), and the result holds only the summary and the
+        folder; ``read_run(out)`` reads it back.
 
     Returns
     -------
     SimulationResult
         ``tables[name][column]``: float64 arrays of shape (rows,), bit for bit the values of the
-        CSV files ``clearjoint simulate MODEL --out DIR`` writes; ``summary``: run statistics.
+        CSV files ``clearjoint simulate MODEL --out DIR`` writes; ``summary``: run statistics
+        (the keys of summary.json); ``folder``: the output folder, or None.
 
     Raises
     ------
@@ -199,16 +239,21 @@ def simulate(model: Model, *, progress: Progress = False, allow_large: bool = Fa
 
     The integration runs without the GIL; other Python threads keep running.
     """
+    _check_options(allow_large, report_step, decimation, out, format, force)
     bar = _progress_bar(progress)
     try:
-        if not isinstance(allow_large, bool):
-            raise TypeError(f"allow_large = {allow_large!r}: must be True or False")
+        options = dict(allow_large=allow_large,
+                       report_step=None if report_step is None else float(report_step),
+                       decimation=None if decimation is None else int(decimation))
+        if out is not None:
+            text, source = _model_text(model)
+            summary = _core.simulate_into_folder(text, source, os.fspath(out), format, force, bar, **options)
+            return SimulationResult(tables={}, summary=summary, folder=os.fspath(out))
         if isinstance(model, Mapping):
-            _check_json_values(model, "")
-            text = json.dumps(model, default=_json_value, allow_nan=False)
-            tables, summary = _core.simulate_text(text, "<dict>", bar, allow_large)
+            text, source = _model_text(model)
+            tables, summary = _core.simulate_text(text, source, bar, **options)
         elif isinstance(model, (str, os.PathLike)):
-            tables, summary = _core.simulate_file(_model_path(model), bar, allow_large)
+            tables, summary = _core.simulate_file(_model_path(model), bar, **options)
         else:
             raise TypeError(f"model = {type(model).__name__}: must be a path or a dict in the "
                             "model-file format")
@@ -217,3 +262,36 @@ def simulate(model: Model, *, progress: Progress = False, allow_large: bool = Fa
             bar.close()
     columns = {name: dict(zip(header, values)) for name, (header, values) in tables.items()}
     return SimulationResult(tables=columns, summary=summary)
+
+
+def read_run(folder: Union[str, "os.PathLike[str]"]) -> SimulationResult:
+    """A run folder of ``clearjoint simulate`` (CSV files or run.h5) read back as the
+    SimulationResult that ``simulate`` returns in memory, bit for bit, with its summary."""
+    folder = os.fspath(folder)
+    if not os.path.isdir(folder):
+        raise FileNotFoundError(errno.ENOENT, "run folder not found", folder)
+    summary_path = os.path.join(folder, "summary.json")
+    summary: Dict[str, Any] = {}
+    if os.path.exists(summary_path):
+        with open(summary_path) as f:
+            summary = json.load(f)
+    h5_path = os.path.join(folder, "run.h5")
+    tables: Dict[str, Dict[str, np.ndarray]] = {}
+    if os.path.exists(h5_path):
+        import h5py  # Debian: python3-h5py
+        with h5py.File(h5_path, "r") as f:
+            for name, dataset in f["tables"].items():
+                names = [c.decode() if isinstance(c, bytes) else str(c) for c in dataset.attrs["columns"]]
+                values = np.asarray(dataset[:], dtype=np.float64)
+                tables[name] = {column: np.ascontiguousarray(values[:, k]) for k, column in enumerate(names)}
+        return SimulationResult(tables=tables, summary=summary, folder=folder)
+    for entry in sorted(os.listdir(folder)):
+        if not entry.endswith(".csv"):
+            continue
+        with open(os.path.join(folder, entry)) as f:
+            header = f.readline().strip().split(",")
+            values = np.loadtxt(f, delimiter=",", dtype=np.float64, ndmin=2).reshape(-1, len(header))
+        tables[entry[:-4]] = {column: np.ascontiguousarray(values[:, k]) for k, column in enumerate(header)}
+    if not tables:
+        raise ValueError(f"{folder}: no run tables (CSV files or run.h5) in it")
+    return SimulationResult(tables=tables, summary=summary, folder=folder)

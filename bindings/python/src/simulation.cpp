@@ -1,10 +1,18 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// clearjoint._core.simulate_text / simulate_file: run a model with the GIL released and return
-// its tables; the Python layer (clearjoint/_simulate.py) turns them into columns.
+// clearjoint._core.simulate_text / simulate_file / simulate_into_folder: run a model with the GIL
+// released, returning its tables or writing its folder; the Python layer
+// (clearjoint/_simulate.py) turns them into columns. _core.Simulator: a model stepped from Python
+// (clearjoint/_simulator.py).
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
+#include <pybind11/stl.h>
+
+#include <algorithm>
+#include <chrono>
+#include <optional>
+#include <span>
 #include <string>
 
 #include "bindings.hpp"
@@ -12,6 +20,8 @@
 #include "clearjoint/dynamics/run_size.hpp"
 #include "clearjoint/dynamics/simulation.hpp"
 #include "clearjoint/dynamics/simulation_output.hpp"
+#include "clearjoint/dynamics/simulator.hpp"
+#include "run_folder.hpp"
 
 namespace py = pybind11;
 
@@ -38,46 +48,98 @@ py::dict tables_to_python(const dynamics::TablesInMemory& tables) {
   return result;
 }
 
-py::dict summary_to_python(const dynamics::SimulationSummary& s) {
-  py::dict d;
-  d["steps"] = s.integration.steps;
-  d["derivative_calls"] = s.integration.derivative_calls;
-  d["smallest_step"] = s.integration.smallest_step;
-  d["largest_step"] = s.integration.largest_step;
-  d["restarts"] = s.integration.restarts;
-  d["failed_attempts"] = s.integration.failed_attempts;
-  d["initial_condition_iterations"] = s.initial_conditions.iterations;
-  d["initial_position_residual"] = s.initial_conditions.position_residual;
-  d["initial_velocity_residual"] = s.initial_conditions.velocity_residual;
-  d["initial_energy"] = s.initial_energy;
-  d["max_energy_change"] = s.max_energy_change;
-  d["max_position_violation"] = s.max_position_violation;
-  d["max_velocity_violation"] = s.max_velocity_violation;
-  d["max_euler_norm_drift"] = s.max_euler_norm_drift;
-  py::list statistics;
-  for (const std::string& line : s.element_statistics) statistics.append(line);
-  d["element_statistics"] = statistics;
-  return d;
+/// The summary as the dict of json.loads(summary_json): one serialisation for summary.json,
+/// run.h5 and Python.
+py::object summary_to_python(const dynamics::SimulationSummary& s) {
+  return py::module_::import("json").attr("loads")(dynamics::summary_json(s));
 }
 
-/// Run without the GIL. At every report time, and between them every 0.1 s of wall time
-/// (simulation.hpp), the callback takes the GIL back to let Python handle signals (Ctrl-C raises
-/// KeyboardInterrupt here, which unwinds the run: nothing is committed) and to call
-/// `progress(fraction)` unless it is None. The size guard of the command line (run_size.hpp)
-/// refuses a run far beyond any real study unless `allow_large`.
-py::tuple run(const dynamics::ModelDescription& model, const py::object& progress, bool allow_large) {
-  if (!allow_large) dynamics::check_run_size(dynamics::estimate_run_size(model));
+/// What a run does with its model: where it comes from, and the overrides the call adds.
+struct RunRequest {
+  bool allow_large = false;
+  std::optional<double> report_step;
+  std::optional<long> decimation;
+};
+
+dynamics::ModelDescription with_overrides(dynamics::ModelDescription model, const RunRequest& request) {
+  if (request.report_step) {
+    model.solver.report_step = *request.report_step;
+    dynamics::validate(model.solver);
+  }
+  if (request.decimation) {
+    if (!(*request.decimation >= 1 && *request.decimation <= static_cast<long>(dynamics::kMaxDecimation))) {
+      throw py::value_error("decimation = " + std::to_string(*request.decimation) + ": must be in [1, 1e9]");
+    }
+    model.output_decimation = *request.decimation;
+  }
+  return model;
+}
+
+/// The callback run under the GIL-free integration: takes the GIL back to let Python handle
+/// signals (Ctrl-C raises KeyboardInterrupt here, which unwinds the run: nothing is committed)
+/// and to call `progress(fraction)` unless it is None. Called at every report time and, between
+/// them, every 0.1 s of wall time (simulation.hpp).
+dynamics::ProgressCallback python_progress(const py::object& progress) {
+  return [&progress](double fraction) {
+    py::gil_scoped_acquire acquire;
+    if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+    if (!progress.is_none()) progress(fraction);
+  };
+}
+
+/// Run in memory without the GIL: (tables, summary). The model is built once (SimulationRun),
+/// with the command line's size guard unless `allow_large`.
+py::tuple run_in_memory(const dynamics::ModelDescription& model, const py::object& progress, const RunRequest& request) {
+  dynamics::SimulationRun run(with_overrides(model, request), dynamics::RunOptions{.allow_large = request.allow_large});
   dynamics::TablesInMemory tables;
   dynamics::SimulationSummary summary;
   {
     py::gil_scoped_release release;
-    summary = dynamics::simulate(model, tables, [&progress](double fraction) {
-      py::gil_scoped_acquire acquire;
-      if (PyErr_CheckSignals() != 0) throw py::error_already_set();
-      if (!progress.is_none()) progress(fraction);
-    });
+    summary = run.run(tables, python_progress(progress));
   }
   return py::make_tuple(tables_to_python(tables), summary_to_python(summary));
+}
+
+/// Run into a folder, as `clearjoint simulate --out` does (run_folder.hpp): the summary.
+py::object run_into_folder(const dynamics::ModelDescription& model, const std::string& model_json,
+                           const py::object& progress, const RunRequest& request, const std::string& out,
+                           const std::string& format, bool force) {
+  dynamics::SimulationRun run(with_overrides(model, request), dynamics::RunOptions{.allow_large = request.allow_large});
+  const dynamics::RunFolderOptions options{dynamics::run_format(format), force};
+  dynamics::SimulationSummary summary;
+  {
+    py::gil_scoped_release release;
+    summary = dynamics::write_run_folder(run, model_json, out, options, python_progress(progress));
+  }
+  return summary_to_python(summary);
+}
+
+RunRequest request_of(bool allow_large, std::optional<double> report_step, std::optional<long> decimation) {
+  return {allow_large, report_step, decimation};
+}
+
+/// The state as a NumPy copy (the simulator's buffer changes at every step).
+py::array_t<double> state_array(std::span<const double> state) {
+  py::array_t<double> out(static_cast<py::ssize_t>(state.size()));
+  std::copy(state.begin(), state.end(), out.mutable_data());
+  return out;
+}
+
+dynamics::Vector3 vector3(const py::handle& value, const char* name) {
+  const auto array = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(value);
+  if (!array || array.ndim() != 1 || array.shape(0) != 3) {
+    throw py::type_error(std::string(name) + ": must be 3 numbers");
+  }
+  return {array.at(0), array.at(1), array.at(2)};
+}
+
+py::dict body_state_dict(const dynamics::BodyState& s) {
+  py::dict d;
+  d["position"] = state_array(std::span<const double>(s.position_W.data(), 3));
+  d["euler_parameters"] = state_array(std::span<const double>(s.euler_parameters.data(), 4));
+  d["velocity"] = state_array(std::span<const double>(s.velocity_W.data(), 3));
+  d["angular_velocity_body"] = state_array(std::span<const double>(s.angular_velocity_B.data(), 3));
+  return d;
 }
 
 }  // namespace
@@ -85,19 +147,104 @@ py::tuple run(const dynamics::ModelDescription& model, const py::object& progres
 void bind_simulation(py::module_& module) {
   module.def(
       "simulate_text",
-      [](const std::string& json_text, const std::string& source, const py::object& progress, bool allow_large) {
-        return run(dynamics::parse_model(json_text, source), progress, allow_large);
+      [](const std::string& json_text, const std::string& source, const py::object& progress, bool allow_large,
+         std::optional<double> report_step, std::optional<long> decimation) {
+        return run_in_memory(dynamics::parse_model(json_text, source), progress,
+                             request_of(allow_large, report_step, decimation));
       },
       py::arg("json_text"), py::arg("source"), py::arg("progress") = py::none(), py::arg("allow_large") = false,
+      py::arg("report_step") = py::none(), py::arg("decimation") = py::none(),
       "Parse a model from JSON text (`source` names it in messages) and run it: "
       "(tables, summary), tables = {name: (header, values[columns, rows])}.");
   module.def(
       "simulate_file",
-      [](const std::string& path, const py::object& progress, bool allow_large) {
-        return run(dynamics::read_model_file(path), progress, allow_large);
+      [](const std::string& path, const py::object& progress, bool allow_large, std::optional<double> report_step,
+         std::optional<long> decimation) {
+        return run_in_memory(dynamics::read_model_file(path), progress, request_of(allow_large, report_step, decimation));
       },
       py::arg("path"), py::arg("progress") = py::none(), py::arg("allow_large") = false,
+      py::arg("report_step") = py::none(), py::arg("decimation") = py::none(),
       "Read a model file and run it: (tables, summary) as simulate_text.");
+  module.def(
+      "simulate_into_folder",
+      [](const std::string& json_text, const std::string& source, const std::string& out, const std::string& format,
+         bool force, const py::object& progress, bool allow_large, std::optional<double> report_step,
+         std::optional<long> decimation) {
+        return run_into_folder(dynamics::parse_model(json_text, source), json_text, progress,
+                               request_of(allow_large, report_step, decimation), out, format, force);
+      },
+      py::arg("json_text"), py::arg("source"), py::arg("out"), py::arg("format"), py::arg("force"),
+      py::arg("progress") = py::none(), py::arg("allow_large") = false, py::arg("report_step") = py::none(),
+      py::arg("decimation") = py::none(),
+      "Run a model (JSON text) into the output folder `out` as `clearjoint simulate --out` does; "
+      "the summary.");
+  module.def("hdf5_available", &dynamics::hdf5_available, "Whether this build writes HDF5 run files.");
+
+  py::class_<dynamics::Simulator>(module, "Simulator")
+      .def(py::init([](const std::string& json_text, const std::string& source) {
+             return std::make_unique<dynamics::Simulator>(dynamics::parse_model(json_text, source));
+           }),
+           py::arg("json_text"), py::arg("source"))
+      .def_property_readonly("time", &dynamics::Simulator::time)
+      .def_property_readonly("end_time", &dynamics::Simulator::end_time)
+      .def_property_readonly("finished", &dynamics::Simulator::finished)
+      .def_property_readonly("state", [](const dynamics::Simulator& s) { return state_array(s.state()); })
+      .def("set_state",
+           [](dynamics::Simulator& s, const py::array_t<double, py::array::c_style | py::array::forcecast>& y) {
+             if (y.ndim() != 1) throw py::value_error("state: must be a 1-D array");
+             s.set_state(std::span<const double>(y.data(), static_cast<std::size_t>(y.shape(0))));
+           })
+      .def("body_state", [](const dynamics::Simulator& s, const std::string& body) {
+        return body_state_dict(s.body_state(body));
+      })
+      .def("apply_load",
+           [](dynamics::Simulator& s, const std::string& body, const py::handle& force, const py::handle& moment) {
+             s.apply_load(body, vector3(force, "force"), vector3(moment, "moment"));
+           },
+           py::arg("body"), py::arg("force"), py::arg("moment"))
+      .def("clear_loads", &dynamics::Simulator::clear_loads)
+      .def("step",
+           [](dynamics::Simulator& s) {
+             py::gil_scoped_release release;
+             s.step();
+           })
+      .def("advance_to",
+           [](dynamics::Simulator& s, double t) {
+             // A long advance runs without the GIL and looks at signals every 0.1 s of wall time,
+             // as simulate does: Ctrl-C stops it at a step.
+             py::gil_scoped_release release;
+             auto last = std::chrono::steady_clock::now();
+             s.advance_to(t, [&last] {
+               const auto now = std::chrono::steady_clock::now();
+               if (now - last < std::chrono::milliseconds(100)) return;
+               last = now;
+               py::gil_scoped_acquire acquire;
+               if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+             });
+           },
+           py::arg("t"))
+      .def("take_impacts",
+           [](dynamics::Simulator& s) {
+             py::list out;
+             for (const dynamics::ImpactEvent& e : s.take_impacts()) {
+               py::dict d;
+               d["time"] = e.time;
+               d["joint"] = e.joint;
+               d["slot"] = std::string(dynamics::to_string(e.slot));
+               d["impact_speed"] = e.impact_speed;
+               out.append(d);
+             }
+             return out;
+           })
+      .def("statistics", [](const dynamics::Simulator& s) {
+        const dynamics::IntegrationStatistics& i = s.statistics();
+        py::dict d;
+        d["steps"] = i.steps;
+        d["derivative_calls"] = i.derivative_calls;
+        d["restarts"] = i.restarts;
+        d["located_onsets"] = i.located_onsets;
+        return d;
+      });
 }
 
 }  // namespace clearjoint::python

@@ -257,3 +257,63 @@ def test_the_version_is_the_command_line_programs(cli):
     printed = subprocess.run([str(cli), "--version"], check=True, capture_output=True,
                              text=True).stdout.split()
     assert printed == ["clearjoint", clearjoint.__version__]
+
+
+@pytest.mark.parametrize("format", ["csv", "hdf5"])
+def test_a_run_written_to_a_folder_reads_back_bit_for_bit(short_model, tmp_path, format):
+    # The same folder `clearjoint simulate --out` writes: tables, model.json, summary.json.
+    folder = tmp_path / "run"
+    written = clearjoint.simulate(short_model, out=folder, format=format)
+    assert written.folder == str(folder) and written.tables == {}
+    assert written.summary["steps"] > 0
+    assert (folder / ("run.h5" if format == "hdf5" else "energy.csv")).exists()
+    assert json.loads((folder / "model.json").read_text())["solver"]["end_time"] == SHORT_RUN_END_TIME
+    back = clearjoint.read_run(folder)
+    in_memory = clearjoint.simulate(short_model)
+    assert back.summary == written.summary == in_memory.summary
+    assert back.tables.keys() == in_memory.tables.keys()
+    for table, columns in in_memory.tables.items():
+        assert list(back[table]) == list(columns)
+        for name, values in columns.items():
+            assert same_bits(back[table][name], values), (table, name)
+
+
+def test_the_summary_has_the_keys_of_summary_json(short_model, tmp_path):
+    clearjoint.simulate(short_model, out=tmp_path / "run")
+    on_disk = json.loads((tmp_path / "run" / "summary.json").read_text())
+    assert clearjoint.simulate(short_model).summary.keys() == on_disk.keys()
+
+
+def test_an_earlier_result_is_replaced_only_with_force(short_model, tmp_path):
+    folder = tmp_path / "run"
+    clearjoint.simulate(short_model, out=folder)
+    with pytest.raises(RuntimeError, match="use --force to replace it"):
+        clearjoint.simulate(short_model, out=folder)
+    clearjoint.simulate(short_model, out=folder, force=True)
+    (tmp_path / "mine").mkdir()
+    (tmp_path / "mine" / "thesis.tex").write_text("precious")
+    with pytest.raises(RuntimeError, match="not a clearjoint result"):
+        clearjoint.simulate(short_model, out=tmp_path / "mine", force=True)
+    assert (tmp_path / "mine" / "thesis.tex").read_text() == "precious"
+
+
+def test_report_step_and_decimation_set_the_rows(short_model):
+    result = clearjoint.simulate(short_model, report_step=SHORT_RUN_REPORT_STEP / 2, decimation=4)
+    # 41 report times, rows at indices 0, 4, .., 40: 11 rows.
+    assert len(result["energy"]["time"]) == 11
+    assert result["energy"]["time"][-1] == SHORT_RUN_END_TIME
+
+
+@pytest.mark.parametrize("options, error", [
+    (dict(format="hdf5"), ValueError), (dict(force=True), ValueError), (dict(out="x", format="xml"), ValueError),
+    (dict(decimation=2.5), TypeError), (dict(report_step="1ms"), TypeError), (dict(force=1, out="x"), TypeError)])
+def test_folder_options_are_checked_before_the_run(short_model, options, error):
+    with pytest.raises(error):
+        clearjoint.simulate(short_model, **options)
+
+
+def test_read_run_names_a_missing_folder(tmp_path):
+    with pytest.raises(FileNotFoundError):
+        clearjoint.read_run(tmp_path / "absent")
+    with pytest.raises(ValueError, match="no run tables"):
+        clearjoint.read_run(tmp_path)
