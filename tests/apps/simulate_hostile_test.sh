@@ -271,11 +271,12 @@ mount_point_out)
   expect_in err.txt 'is a mount point'
   ;;
 full_disk_at_commit)
-  # A disk that fills while the result is written: the message gives the reason (ENOSPC).
-  model "$ball" "" "" "" '"end_time": 0.2, "report_step": 0.001' >m.json
+  # A disk that fills when the result is committed (every row still in the stream's buffer, the
+  # first flush fails at commit): the message gave no reason; it says ENOSPC.
+  model "$ball" >m.json
   mkdir small
   set +e
-  unshare -m bash -c "mount -t tmpfs -o size=12k tmpfs small && '$clearjoint' simulate m.json --out small/out" \
+  unshare -m bash -c "mount -t tmpfs -o size=8k tmpfs small && '$clearjoint' simulate m.json --out small/out" \
     >out.txt 2>err.txt
   rc=$?; set -e
   expect_rc 1
