@@ -9,6 +9,9 @@
   (``clearjoint plot RUN_DIR`` and ``clearjoint simulate --plot``);
 - ``plot_orbit``, ``plot_normal_force``, ``plot_axial_position``, ``plot_tilt``,
   ``plot_slider_acceleration``: the panels, on an Axes of your own, from ``joint_series``;
+  ``plot_orbit_3d``, both base centres on a 3-D Axes; ``plot_compared``, any quantity of the run
+  (or a phase portrait) beside an ideal run's, optionally coloured by scenario (the paper's
+  Figs. 7-18 in scripts/section6_figures.py);
 - ``SCENARIO_COLOURS``, ``scenario_colour``: the one table of scenario colours.
 
 ``run`` is a run folder of ``clearjoint simulate --out``, or the :class:`clearjoint.SimulationResult`
@@ -16,15 +19,15 @@ that ``clearjoint.simulate`` returns (then pass ``model=``, the same model file 
 """
 from .figures import PANELS, joint_figure, joint_figures, save_joint_figures, slider_acceleration
 from .joint_series import ClearanceJointSeries, joint_series, rotation_angle
-from .panels import (plot_axial_position, plot_normal_force, plot_orbit, plot_slider_acceleration,
-                     plot_tilt, scenario_legend_handles)
+from .panels import (plot_axial_position, plot_compared, plot_normal_force, plot_orbit, plot_orbit_3d,
+                     plot_slider_acceleration, plot_tilt, scenario_legend_handles)
 from .run_folder import ClearanceJointModel, Run, RunError, read_run
 from .scenario_colours import SCENARIO_COLOURS, scenario_colour, scenario_name, scenario_table
 
 __all__ = [
     "PANELS", "SCENARIO_COLOURS", "ClearanceJointModel", "ClearanceJointSeries", "Run", "RunError",
-    "joint_figure", "joint_figures", "joint_series", "plot_axial_position", "plot_normal_force",
-    "plot_orbit", "plot_slider_acceleration", "plot_tilt", "read_run", "rotation_angle",
-    "save_joint_figures", "scenario_colour", "scenario_legend_handles", "scenario_name",
+    "joint_figure", "joint_figures", "joint_series", "plot_axial_position", "plot_compared",
+    "plot_normal_force", "plot_orbit", "plot_orbit_3d", "plot_slider_acceleration", "plot_tilt",
+    "read_run", "rotation_angle", "save_joint_figures", "scenario_colour", "scenario_legend_handles", "scenario_name",
     "scenario_table", "slider_acceleration",
 ]

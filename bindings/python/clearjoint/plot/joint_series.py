@@ -72,7 +72,10 @@ def joint_series(run: Run, table: str,
                        f"{', '.join(missing)})")
     time = columns["time"]
     keep = window_rows(time, window)
-    depth = np.stack([columns[f"{s}.depth"] for s in CONTACT_SLOTS if f"{s}.depth" in columns], axis=1)
+    # A table without depth columns (a study store keeps only the columns it was asked for) marks
+    # no impacts.
+    depths = [columns[f"{s}.depth"] for s in CONTACT_SLOTS if f"{s}.depth" in columns]
+    depth = np.stack(depths, axis=1) if depths else np.full((len(time), 0), np.nan)
     in_contact = np.isfinite(depth)
     # An impact begins where a slot is in contact and was not at the report time before (the
     # impact-velocity memory of eq. 28 starts there); the first row counts when already touching.

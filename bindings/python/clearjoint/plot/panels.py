@@ -27,6 +27,16 @@ IDEAL_CURVE = dict(color="0.3", linestyle="--", linewidth=1.0, zorder=3)
 CLEARANCE_CURVE = dict(color="tab:blue", linewidth=0.8)
 
 
+def _scenario_stretches(points: np.ndarray, scenario: np.ndarray):
+    """(paths, colours): one polyline per stretch of steps that arrive in the same scenario, the
+    step from point k to k + 1 taking the colour of scenario[k + 1]."""
+    arrived = np.asarray(scenario[1:], dtype=int)
+    starts = np.concatenate([[0], np.flatnonzero(np.diff(arrived)) + 1])  # first step of a stretch
+    ends = np.concatenate([starts[1:], [len(arrived)]])
+    paths = [points[start:end + 1] for start, end in zip(starts, ends)]
+    return paths, [scenario_colour(arrived[start]) for start in starts]
+
+
 def _scenario_segments(ax, x: np.ndarray, y: np.ndarray, scenario: np.ndarray, linewidth: float = 1.0):
     """A polyline whose step from point k to k + 1 has the colour of scenario[k + 1], the state
     the step arrived in, so that a contact shows from its first report time. Steps are grouped
@@ -37,15 +47,11 @@ def _scenario_segments(ax, x: np.ndarray, y: np.ndarray, scenario: np.ndarray, l
         ax.scatter(x, y, c=[scenario_colour(s) for s in scenario], s=4)
         return
     points = np.column_stack([x, y])
-    arrived = np.asarray(scenario[1:], dtype=int)
-    starts = np.concatenate([[0], np.flatnonzero(np.diff(arrived)) + 1])  # first step of a stretch
-    ends = np.concatenate([starts[1:], [len(arrived)]])
-    paths = [points[start:end + 1] for start, end in zip(starts, ends)]
-    colours = [scenario_colour(arrived[start]) for start in starts]
+    paths, colours = _scenario_stretches(points, scenario)
     # A long run is drawn as an image inside the SVG (axes and text stay vector): 1e5 points per
     # panel as vector paths make a file that viewers render slowly.
     ax.add_collection(LineCollection(paths, colors=colours, linewidths=linewidth,
-                                     rasterized=len(arrived) > RASTERIZE_ABOVE_STEPS))
+                                     rasterized=len(points) - 1 > RASTERIZE_ABOVE_STEPS))
     ax.update_datalim(points)
     ax.autoscale_view()
 
@@ -115,11 +121,42 @@ def plot_axial_position(ax, series: ClearanceJointSeries, x: np.ndarray, x_label
     ax.grid(True, linewidth=0.3, alpha=0.5)
 
 
-def plot_tilt(ax, series: ClearanceJointSeries, x: np.ndarray, x_label: str) -> None:
-    """The angle between journal and bearing axes (Fig. 11(b))."""
-    _scenario_segments(ax, x, np.degrees(series.axis_angle), series.scenario, linewidth=0.8)
+def plot_tilt(ax, series: ClearanceJointSeries, x: np.ndarray, x_label: str, log: bool = False) -> None:
+    """The angle between journal and bearing axes (Fig. 11(b)); ``log``: on a logarithmic axis,
+    for a tilt that decays by orders of magnitude (an exactly parallel report time is drawn at
+    the smallest positive tilt of the window)."""
+    tilt = np.degrees(series.axis_angle)
+    if log:
+        positive = tilt[tilt > 0.0]
+        tilt = np.maximum(tilt, positive.min() if positive.size else 1e-12)
+        ax.set_yscale("log")
+    _scenario_segments(ax, x, tilt, series.scenario, linewidth=0.8)
     ax.set_ylabel("tilt [deg]")
     ax.set_xlabel(x_label)
+    ax.grid(True, linewidth=0.3, alpha=0.5)
+
+
+def plot_compared(ax, x: np.ndarray, y: np.ndarray, x_label: str, y_label: str,
+                  reference_x: Optional[np.ndarray] = None, reference_y: Optional[np.ndarray] = None, *,
+                  scenario: Optional[np.ndarray] = None, label: str = "clearance joint",
+                  reference_label: str = "ideal joint", linewidth: float = 0.8,
+                  legend: bool = True) -> None:
+    """A quantity of a run with a clearance joint against ``x`` (time, or another quantity for a
+    phase portrait), beside the same quantity of a reference run, dashed (the ideal joint's:
+    paper Figs. 7-10, 13, 15-18). With ``scenario`` (the joint's scenario code at each of the
+    run's report times) the curve is coloured by contact scenario as the joint's panels are,
+    otherwise drawn in one colour and labelled ``label``; ``legend`` names the curves drawn in
+    one colour (a scenario-coloured curve takes its legend from ``scenario_legend_handles``)."""
+    if reference_x is not None and reference_y is not None:
+        ax.plot(reference_x, reference_y, label=reference_label, **IDEAL_CURVE)
+    if scenario is not None:
+        _scenario_segments(ax, np.asarray(x), np.asarray(y), np.asarray(scenario), linewidth=linewidth)
+    else:
+        ax.plot(x, y, label=label, **dict(CLEARANCE_CURVE, linewidth=linewidth))
+    ax.set_xlabel(x_label)
+    ax.set_ylabel(y_label)
+    if legend and ax.get_legend_handles_labels()[0]:
+        ax.legend(loc="upper right", fontsize=8)
     ax.grid(True, linewidth=0.3, alpha=0.5)
 
 
@@ -129,10 +166,28 @@ def plot_slider_acceleration(ax, x: np.ndarray, acceleration: np.ndarray, x_labe
                              component: str = "x") -> None:
     """The slider's acceleration with the clearance joint, and the ideal joint's when given
     (paper Figs. 8, 13)."""
-    if ideal_x is not None and ideal_acceleration is not None:
-        ax.plot(ideal_x, ideal_acceleration, label="ideal joint", **IDEAL_CURVE)
-    ax.plot(x, acceleration, label="clearance joint", **CLEARANCE_CURVE)
-    ax.set_ylabel(f"slider acceleration {component} [m/s$^2$]")
-    ax.set_xlabel(x_label)
-    ax.legend(loc="upper right", fontsize=8)
-    ax.grid(True, linewidth=0.3, alpha=0.5)
+    plot_compared(ax, x, acceleration, x_label, f"slider acceleration {component} [m/s$^2$]",
+                  ideal_x, ideal_acceleration)
+
+
+def plot_orbit_3d(ax, series: ClearanceJointSeries) -> None:
+    """Both journal base centres in the bearing frame on a 3-D Axes (``projection="3d"``), the
+    isometric view of Fig. 14: u and v in units of the radial clearance (millimetres when the
+    model is not known), each base centre's axial position in millimetres, so that the two
+    orbits lie at the two ends of the bearing, each with its clearance circle; coloured by
+    scenario."""
+    from mpl_toolkits.mplot3d.art3d import Line3DCollection
+    cr = series.radial_clearance
+    scale = 1.0 / cr if cr else 1e3
+    angle = np.linspace(0.0, 2.0 * np.pi, 361)
+    for centre in (series.rim_a, series.rim_b):
+        points = np.column_stack([centre[:, 0] * scale, centre[:, 1] * scale, centre[:, 2] * 1e3])
+        if cr:
+            ax.plot(np.cos(angle), np.sin(angle), np.full(angle.size, np.median(points[:, 2])), color="0.4",
+                    linewidth=0.8)
+        paths, colours = _scenario_stretches(points, series.scenario)
+        ax.add_collection3d(Line3DCollection(paths, colors=colours, linewidths=0.6))
+        ax.auto_scale_xyz(points[:, 0], points[:, 1], points[:, 2], had_data=True)
+    ax.set_xlabel("u / c_r [-]" if cr else "u [mm]")
+    ax.set_ylabel("v / c_r [-]" if cr else "v [mm]")
+    ax.set_zlabel("axial position [mm]")
