@@ -6,8 +6,9 @@
 # studies/section6_clearance.json: ensembles of 9 runs per point of the radial, axial and diagonal
 # sweeps, 153 runs; studies/section6_settling.json: 11 variants behind the page's explanations)
 # on a local Dask cluster (one worker per core) or an existing one, then draw Figs. 7-11 and 13-19
-# and the ensemble figures into docs/figures/section6/ and regenerate the tables of
-# docs/reports/reproduction.md from the stores.
+# (the single runs with clearjoint.plot's panels) and the ensemble figures into
+# docs/figures/section6/ and regenerate the tables of docs/reports/reproduction.md from the stores,
+# with the rows that moved since the page they replace.
 #
 #   bash scripts/reproduce-section6.sh                 # resumes: stored runs are not redone
 #   bash scripts/reproduce-section6.sh --force         # redo every run (after changing the code)

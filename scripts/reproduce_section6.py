@@ -27,7 +27,8 @@ PAPER_TOLERANCE, FINE_TOLERANCE = 1e-7, 1e-8
 
 class StoreRuns:
     """A study's stored runs by the point's parameters, as the figure code reads them: the old
-    reduced-run layout (time, x, vx, ax, total, rod_e0..e3, joint_<column>)."""
+    reduced-run layout (time, x, vx, ax, total, rod_e0..e3, joint_<column>), and the stored
+    tables with the model they ran ("tables", "model": what clearjoint.plot.read_run takes)."""
 
     def __init__(self, study_file):
         from clearjoint.study import Store, expand_study, load_study
@@ -50,7 +51,8 @@ class StoreRuns:
 
     def load(self, run_id):
         stored = self.store.read(run_id)
-        run = {"wall_seconds": stored["attrs"]["wall_seconds"], "source": stored["attrs"]["library_version"]}
+        run = {"wall_seconds": stored["attrs"]["wall_seconds"], "source": stored["attrs"]["library_version"],
+               "tables": stored["time_series"], "model": json.loads(stored["attrs"]["model"])}
         for table, columns in stored["time_series"].items():
             for column, values in columns.items():
                 if table == "body_slider" or (table == "energy" and column != "time"):

@@ -2,9 +2,15 @@
 """Figures 7-11 and 13-19 of Marques et al. (2017), Section 6, from the reduced runs of
 reproduce_section6.py, and the numbers docs/reports/reproduction.md quotes.
 
-Every figure is drawn from data, nothing is hand-placed. Units: m, m/s, m/s^2, J, s; clearances
-in mm in labels. Slider quantities are the world-x components of its position, velocity and
-acceleration (the slider runs along x in both mechanisms).
+Every figure is drawn from data, nothing is hand-placed. The figures of one run (Figs. 7-11,
+13-18) are drawn with clearjoint.plot's panels, as `clearjoint plot` draws a run folder: the
+clearance run's curves coloured by the contact scenario of each report time (the one colour
+table, clearjoint.plot.SCENARIO_COLOURS), the ideal joint's dashed, the journal's orbits in units
+of the radial clearance with the impacts marked. The figures of the study (Fig. 19 and the
+statistics against clearance) are drawn here; they colour sweeps, not scenarios, with the study
+plot's colours. Units: m, m/s, m/s^2, J, s; clearances in mm in labels. Slider quantities are the
+world-x components of its position, velocity and acceleration (the slider runs along x in both
+mechanisms).
 """
 import os
 
@@ -13,6 +19,10 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
+from clearjoint import plot as runplot  # noqa: E402
+from clearjoint.plot.panels import IDEAL_CURVE  # noqa: E402
+from clearjoint.study.plot import COLOURS as SWEEP_COLOURS  # noqa: E402
+from matplotlib.lines import Line2D  # noqa: E402
 from section6_settling import flights  # noqa: E402
 from mpl_toolkits.mplot3d import Axes3D  # noqa: E402,F401 (registers the 3d projection)
 
@@ -25,10 +35,10 @@ from mpl_toolkits.mplot3d import Axes3D  # noqa: E402,F401 (registers the 3d pro
 PLANAR_WINDOW = (0.1, 0.2)
 # Fig. 14: "only data on the first 0.20 s is displayed".
 TRAJECTORY_WINDOW = 0.20
-IDEAL = dict(color="0.3", linestyle="--", linewidth=1.0, label="ideal joint")
-CLEARANCE = dict(color="tab:blue", linewidth=0.8, label="clearance joint")
 SCENARIO_NAMES = ["none", "(a)", "(b)", "(c)", "(d)", "(e)", "(f)", "(g)", "(h)", "(i)", "(j) line",
                   "(k) face", "(l) line+face", "beyond model"]
+SLIDER = (("x", "slider position [m]"), ("vx", "slider velocity [m/s]"),
+          ("ax", "slider acceleration [m/s$^2$]"))
 
 
 def window(run, t0, t1):
@@ -44,160 +54,147 @@ def save(fig, figures, name):
     os.replace(partial, path)
 
 
+def joint_of(run, start=None, end=None):
+    """The run's clearance joint as clearjoint.plot reads it (the stored tables and model)."""
+    stored = runplot.read_run(run["tables"], run["model"])
+    return runplot.joint_series(stored, stored.clearance_tables()[0], (start, end))
+
+
+def compared(ax, run, ideal, x_key, y_key, x_label, y_label, x_scale=1.0):
+    """One panel of the clearance run against the ideal one, coloured by scenario."""
+    runplot.plot_compared(ax, run[x_key] * x_scale, run[y_key], x_label, y_label,
+                          None if ideal is None else ideal[x_key] * x_scale,
+                          None if ideal is None else ideal[y_key],
+                          scenario=run["joint_scenario"], legend=False)
+
+
+def scenario_legend(ax, runs, ideal=True, impacts=False, title="clearance joint: contact scenario"):
+    """The legend of the scenarios the runs visit (and the ideal joint's curve), beside ``ax``."""
+    codes = np.concatenate([np.asarray(r["joint_scenario"], dtype=int) for r in runs])
+    handles = runplot.scenario_legend_handles(codes, with_impacts=impacts)
+    if ideal:
+        handles.insert(0, Line2D([], [], label="ideal joint", **IDEAL_CURVE))
+    ax.legend(handles=handles, fontsize=7, loc="upper left", bbox_to_anchor=(1.02, 1.0),
+              borderaxespad=0.0, title=title + " (Fig. 2)", title_fontsize=7)
+
+
+def label_panels(axes):
+    for ax, letter in zip(axes, "abcdef"):
+        ax.set_title("(%s)" % letter, loc="left", fontsize=9)
+
+
 def slider_kinematics(figures, name, title, ideal, clearance):
     """Figs. 7 and 8: slider position, velocity, acceleration against time."""
-    fig, axes = plt.subplots(3, 1, figsize=(7, 8), sharex=True)
-    for ax, key, label in zip(axes, ("x", "vx", "ax"), ("position [m]", "velocity [m/s]",
-                                                         "acceleration [m/s$^2$]")):
-        ax.plot(clearance["time"], clearance[key], **CLEARANCE)
-        ax.plot(ideal["time"], ideal[key], **IDEAL)
-        ax.set_ylabel("slider " + label)
-        ax.grid(alpha=0.3)
-    for ax, letter in zip(axes, "abc"):
-        ax.set_title("(%s)" % letter, loc="left", fontsize=9)
-    axes[0].legend(loc="upper right", fontsize=8)
+    fig, axes = plt.subplots(3, 1, figsize=(8.5, 8), sharex=True, constrained_layout=True)
+    for ax, (key, label) in zip(axes, SLIDER):
+        compared(ax, clearance, ideal, "time", key, "", label)
     axes[-1].set_xlabel("time [s]")
+    label_panels(axes)
+    scenario_legend(axes[0], [clearance])
     fig.suptitle(title, fontsize=10)
-    fig.tight_layout()
     save(fig, figures, name)
 
 
 def phase_portraits(figures, name, title, ideal, clearance):
     """Figs. 9 and 10: velocity against position, acceleration against velocity."""
-    fig, axes = plt.subplots(1, 2, figsize=(10, 4.2))
-    axes[0].plot(clearance["x"], clearance["vx"], **CLEARANCE)
-    axes[0].plot(ideal["x"], ideal["vx"], **IDEAL)
-    axes[0].set_xlabel("slider position [m]")
-    axes[0].set_ylabel("slider velocity [m/s]")
-    axes[1].plot(clearance["vx"], clearance["ax"], **CLEARANCE)
-    axes[1].plot(ideal["vx"], ideal["ax"], **IDEAL)
-    axes[1].set_xlabel("slider velocity [m/s]")
-    axes[1].set_ylabel("slider acceleration [m/s$^2$]")
-    for ax, letter in zip(axes, "ab"):
-        ax.set_title("(%s)" % letter, loc="left", fontsize=9)
-        ax.grid(alpha=0.3)
-    axes[0].legend(fontsize=8)
+    fig, axes = plt.subplots(1, 2, figsize=(11.5, 4.4), constrained_layout=True)
+    compared(axes[0], clearance, ideal, "x", "vx", SLIDER[0][1], SLIDER[1][1])
+    compared(axes[1], clearance, ideal, "vx", "ax", SLIDER[1][1], SLIDER[2][1])
+    label_panels(axes)
+    scenario_legend(axes[1], [clearance])
     fig.suptitle(title, fontsize=10)
-    fig.tight_layout()
     save(fig, figures, name)
 
 
 def initial_impacts(figures, ideal, aligned, misaligned, end=0.012):
     """Extra (not in the paper): the impacts before continuous contact, aligned and misaligned."""
-    fig, axes = plt.subplots(2, 1, figsize=(8, 6), sharex=True, sharey=True)
+    fig, axes = plt.subplots(2, 1, figsize=(9, 6), sharex=True, sharey=True, constrained_layout=True)
+    reference = window(ideal, 0.0, end)
     for ax, run, label, letter in zip(axes, (aligned, misaligned), ("aligned", "misaligned 0.2$^\\circ$"), "ab"):
-        part, reference = window(run, 0.0, end), window(ideal, 0.0, end)
-        ax.plot(part["time"] * 1e3, part["ax"], color="tab:blue", linewidth=0.8, label="clearance joint, " + label)
-        ax.plot(reference["time"] * 1e3, reference["ax"], **dict(IDEAL, label="ideal joint"))
-        ax.set_ylabel("slider acceleration [m/s$^2$]")
+        part = window(run, 0.0, end)
+        compared(ax, part, reference, "time", "ax", "", SLIDER[2][1], x_scale=1e3)
         ax.set_title("(%s) %s: peak |a| = %.0f m/s$^2$" % (letter, label, np.abs(part["ax"]).max()),
                      loc="left", fontsize=9)
-        ax.grid(alpha=0.3)
-        ax.legend(fontsize=8, loc="lower right")
+        scenario_legend(ax, [part])
     axes[-1].set_xlabel("time [ms]")
     fig.suptitle("Planar slider-crank: the first %g ms (the impacts before continuous contact)" % (end * 1e3),
                  fontsize=10)
-    fig.tight_layout()
     save(fig, figures, "fig07_08_initial_impacts.png")
 
 
 def rod_rotation(figures, aligned, misaligned):
     """Fig. 11: the rod's third Euler parameter e2, and the angle between journal and bearing."""
-    fig, axes = plt.subplots(2, 1, figsize=(7, 6.5), sharex=True)
-    axes[0].plot(misaligned["time"], misaligned["rod_e2"], color="tab:red", linewidth=0.8,
-                 label="misaligned (rod turned 0.2$^\\circ$ about its axis)")
-    axes[0].plot(aligned["time"], aligned["rod_e2"], color="tab:blue", linewidth=1.2, label="aligned")
-    axes[0].set_ylabel("rod Euler parameter $e_2$")
-    axes[0].legend(fontsize=8)
-    axes[1].semilogy(misaligned["time"], np.degrees(np.maximum(misaligned["joint_axis_angle"], 1e-12)),
-                     color="tab:red", linewidth=0.8)
+    fig, axes = plt.subplots(2, 1, figsize=(8.5, 6.5), sharex=True, constrained_layout=True)
+    runplot.plot_compared(axes[0], misaligned["time"], misaligned["rod_e2"], "", "rod Euler parameter $e_2$",
+                          aligned["time"], aligned["rod_e2"], scenario=misaligned["joint_scenario"],
+                          reference_label="aligned", legend=False)
+    runplot.plot_tilt(axes[1], joint_of(misaligned), misaligned["time"], "time [s]", log=True)
     axes[1].set_ylabel("angle journal-bearing [deg]")
-    axes[1].set_xlabel("time [s]")
-    for ax, letter in zip(axes, "ab"):
-        ax.set_title("(%s)" % letter, loc="left", fontsize=9)
-        ax.grid(alpha=0.3)
+    label_panels(axes)
+    handles = [Line2D([], [], label="aligned", **IDEAL_CURVE)] + runplot.scenario_legend_handles(
+        misaligned["joint_scenario"], with_impacts=False)
+    axes[0].legend(handles=handles, fontsize=7, loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0.0,
+                   title="misaligned (rod turned 0.2$^\\circ$\nabout its axis): scenario", title_fontsize=7)
     fig.suptitle("Fig. 11: rod rotation about its own axis (planar slider-crank)", fontsize=10)
-    fig.tight_layout()
     save(fig, figures, "fig11.png")
 
 
 def spatial_comparison(figures, ideal, clearance):
     """Fig. 13: slider motion, energy, phase portraits; ideal against clearance joint."""
-    fig, axes = plt.subplots(3, 2, figsize=(11, 10))
-    panels = [("time", "x", "time [s]", "slider position [m]"),
-              ("time", "vx", "time [s]", "slider velocity [m/s]"),
-              ("time", "ax", "time [s]", "slider acceleration [m/s$^2$]"),
-              ("time", "dE", "time [s]", "mechanical energy $E - E_0$ [J]"),
-              ("x", "vx", "slider position [m]", "slider velocity [m/s]"),
-              ("vx", "ax", "slider velocity [m/s]", "slider acceleration [m/s$^2$]")]
+    fig, axes = plt.subplots(3, 2, figsize=(12.5, 10), constrained_layout=True)
+    energy = "mechanical energy $E - E_0$ [J]"
+    panels = [("time", "x", "time [s]", SLIDER[0][1]), ("time", "vx", "time [s]", SLIDER[1][1]),
+              ("time", "ax", "time [s]", SLIDER[2][1]), ("time", "dE", "time [s]", energy),
+              ("x", "vx", SLIDER[0][1], SLIDER[1][1]), ("vx", "ax", SLIDER[1][1], SLIDER[2][1])]
     for run in (ideal, clearance):
         run["dE"] = run["total"] - run["total"][0]
-    for ax, (xk, yk, xl, yl), letter in zip(axes.T.flat, panels, "abcdef"):
-        ax.plot(clearance[xk], clearance[yk], **CLEARANCE)
-        ax.plot(ideal[xk], ideal[yk], **IDEAL)
-        ax.set_xlabel(xl)
-        ax.set_ylabel(yl)
-        ax.set_title("(%s)" % letter, loc="left", fontsize=9)
-        ax.grid(alpha=0.3)
-    axes[0, 0].legend(fontsize=8)
+    for ax, (xk, yk, xl, yl) in zip(axes.T.flat, panels):
+        compared(ax, clearance, ideal, xk, yk, xl, yl)
+    label_panels(axes.T.flat)
+    scenario_legend(axes[0, 1], [clearance])
     fig.suptitle("Fig. 13: spatial slider-crank, ideal and clearance joint (Table 2, with friction)",
                  fontsize=10)
-    fig.tight_layout()
     save(fig, figures, "fig13.png")
 
 
-def journal_trajectories(figures, clearance, radial_clearance, axial_clearance):
-    """Fig. 14: centres of the journal bases relative to the bearing, first 0.2 s."""
-    run = window(clearance, 0.0, TRAJECTORY_WINDOW)
-    mm = 1e3
-    fig = plt.figure(figsize=(11, 5))
-    ax = fig.add_subplot(1, 2, 1)
-    circle = np.linspace(0, 2 * np.pi, 200)
-    ax.plot(radial_clearance * mm * np.cos(circle), radial_clearance * mm * np.sin(circle), color="0.5",
-            linewidth=0.8, label="c$_r$ around the bearing axis")
-    for rim, colour in (("a", "tab:blue"), ("b", "tab:orange")):
-        ax.plot(run["joint_rim_%s_u" % rim] * mm, run["joint_rim_%s_v" % rim] * mm, color=colour,
-                linewidth=0.6, label="centre of journal base %s" % rim.upper())
-    ax.set_aspect("equal")
-    ax.set_xlabel("u [mm] (bearing frame)")
-    ax.set_ylabel("v [mm] (bearing frame)")
-    ax.set_title("orthogonal view (along the bearing axis)", fontsize=9)
-    ax.legend(fontsize=7, loc="upper right")
-    ax.grid(alpha=0.3)
-    ax3 = fig.add_subplot(1, 2, 2, projection="3d")
-    for rim, colour in (("a", "tab:blue"), ("b", "tab:orange")):
-        # Axial coordinate measured from the bearing base on that side: 0 = in the base plane.
-        half = 0.5 * run["joint_rim_a_axial"][0] - 0.5 * run["joint_rim_b_axial"][0]
-        sign = 1.0 if rim == "a" else -1.0
-        axial = (run["joint_rim_%s_axial" % rim] - sign * half) * mm
-        ax3.plot(run["joint_rim_%s_u" % rim] * mm, run["joint_rim_%s_v" % rim] * mm, axial, color=colour,
-                 linewidth=0.6)
-    ax3.set_xlabel("u [mm]")
-    ax3.set_ylabel("v [mm]")
-    ax3.set_zlabel("axial offset from start [mm]")
-    ax3.set_title("isometric view (c$_a$ = %g mm each side)" % (axial_clearance * mm), fontsize=9)
-    fig.suptitle("Fig. 14: trajectories of the centres of the journal bases relative to the bearing, "
-                 "first %.2f s" % TRAJECTORY_WINDOW, fontsize=10)
-    fig.tight_layout()
+def journal_trajectories(figures, clearance):
+    """Fig. 14: centres of the journal bases relative to the bearing, first 0.2 s: each in the
+    bearing's cross-section (clearjoint.plot's orbit), both in an isometric view."""
+    series = joint_of(clearance, 0.0, TRAJECTORY_WINDOW)
+    fig = plt.figure(figsize=(16, 5.6), constrained_layout=True)
+    grid = fig.add_gridspec(1, 3, width_ratios=(1.0, 1.0, 1.2))
+    runplot.plot_orbit(fig.add_subplot(grid[0, 0]), series, "a")
+    runplot.plot_orbit(fig.add_subplot(grid[0, 1]), series, "b")
+    ax3 = fig.add_subplot(grid[0, 2], projection="3d")
+    runplot.plot_orbit_3d(ax3, series)
+    ax3.set_box_aspect((1.0, 1.0, 1.3))
+    ax3.set_title("isometric view, base centres at both ends (c$_a$ = %g mm each side)" % (
+        series.axial_clearance * 1e3), fontsize=9)
+    fig.axes[1].legend(handles=runplot.scenario_legend_handles(series.scenario), fontsize=7, loc="upper left",
+                       bbox_to_anchor=(1.02, 1.0), borderaxespad=0.0, title="contact scenario (Fig. 2)",
+                       title_fontsize=7)
+    fig.suptitle("Fig. 14: trajectories of the centres of the journal bases relative to the bearing "
+                 "(u, v in units of c$_r$ = %g mm), first %.2f s" % (series.radial_clearance * 1e3,
+                                                                       TRAJECTORY_WINDOW), fontsize=10)
     save(fig, figures, "fig14.png")
 
 
 def sweep_panels(figures, name, title, runs, labels, kind):
     """Figs. 15-18: one panel per clearance, acceleration against time or against velocity."""
-    fig, axes = plt.subplots(2, 2, figsize=(11, 7.5), sharex=True, sharey=True)
+    fig, axes = plt.subplots(2, 2, figsize=(12.5, 7.5), sharex=True, sharey=True, constrained_layout=True)
     for ax, run, label, letter in zip(axes.flat, runs, labels, "abcd"):
         if kind == "time":
-            ax.plot(run["time"], run["ax"], color="tab:blue", linewidth=0.5)
-            ax.set_xlabel("time [s]")
+            compared(ax, run, None, "time", "ax", "time [s]", SLIDER[2][1])
         else:
-            ax.plot(run["vx"], run["ax"], color="tab:blue", linewidth=0.3)
-            ax.set_xlabel("slider velocity [m/s]")
-        ax.set_ylabel("slider acceleration [m/s$^2$]")
+            compared(ax, run, None, "vx", "ax", SLIDER[1][1], SLIDER[2][1])
         ax.set_title("(%s) %s, peak |a| = %.0f m/s$^2$" % (letter, label, np.abs(run["ax"]).max()),
                      loc="left", fontsize=9)
-        ax.grid(alpha=0.3)
+    for ax in axes[0]:
+        ax.set_xlabel("")
+    for ax in axes[:, 1]:
+        ax.set_ylabel("")
+    scenario_legend(axes[0, 1], runs, ideal=False, title="contact scenario")
     fig.suptitle(title, fontsize=10)
-    fig.tight_layout()
     save(fig, figures, name)
 
 
@@ -217,26 +214,27 @@ def peak_surface(figures, name, title, clearances_mm, peaks):
     save(fig, figures, name)
 
 
-def peaks_against_clearance(figures, clearances_mm, grids, tolerances):
+def peaks_against_clearance(figures, clearances_mm, grids, tolerances, end_time):
     """Extra (not in the paper): the sweep statistics of Figs. 15-16 and 19 as lines, at the
-    paper's tolerance (solid) and a tenth of it (dotted)."""
+    paper's tolerance (solid) and a tenth of it (dotted); the sweeps in the colours of the
+    ensemble figures (clearjoint.study.plot)."""
     fig, axes = plt.subplots(1, 3, figsize=(14, 4.3))
     k01 = list(clearances_mm).index(0.1)
     for (stats, tolerance), style in zip(zip(grids, tolerances), ("-", ":")):
         for ax, grid in zip(axes, stats):
-            ax.plot(clearances_mm, grid[:, k01], "o" + style, color="tab:blue",
+            ax.plot(clearances_mm, grid[:, k01], "o" + style, color=SWEEP_COLOURS[0],
                     label="c$_r$ varied, c$_a$ = 0.1 mm, tol %g" % tolerance)
-            ax.plot(clearances_mm, grid[k01, :], "s" + style, color="tab:orange",
+            ax.plot(clearances_mm, grid[k01, :], "s" + style, color=SWEEP_COLOURS[1],
                     label="c$_a$ varied, c$_r$ = 0.1 mm, tol %g" % tolerance)
-            ax.plot(clearances_mm, np.diag(grid), "^" + style, color="tab:green",
+            ax.plot(clearances_mm, np.diag(grid), "^" + style, color=SWEEP_COLOURS[2],
                     label="c$_r$ = c$_a$, tol %g" % tolerance)
     for ax, label in zip(axes, ("peak |a|", "99.9th percentile of |a|", "RMS of a")):
         ax.set_xlabel("clearance [mm]")
         ax.set_ylabel(label + " [m/s$^2$]")
         ax.grid(alpha=0.3)
     axes[0].legend(fontsize=6)
-    fig.suptitle("Slider acceleration statistics over 1 s against clearance (spatial slider-crank); "
-                 "solid: tolerance 1e-7 (paper), dotted: 1e-8", fontsize=10)
+    fig.suptitle("Slider acceleration statistics over %g s against clearance (spatial slider-crank); "
+                 "solid: tolerance 1e-7 (paper), dotted: 1e-8" % end_time, fontsize=10)
     fig.tight_layout()
     save(fig, figures, "peaks_vs_clearance.png")
 
@@ -291,7 +289,7 @@ def draw_all(load, figures, clearances_mm):
 
     si, sc = load("spatial_ideal"), load("spatial_clearance")
     spatial_comparison(figures, si, sc)
-    journal_trajectories(figures, sc, 1e-4, 1e-4)
+    journal_trajectories(figures, sc)
 
     study = {(cr, ca): load("study_cr%g_ca%g" % (cr, ca)) for cr in clearances_mm for ca in clearances_mm}
     radial = [study[(cr, 0.1)] for cr in clearances_mm]
@@ -314,7 +312,8 @@ def draw_all(load, figures, clearances_mm):
     peak_surface(figures, "fig19_tolerance_1e-8.png", "Fig. 19 at integration tolerance 1e-8 "
                  "(robustness check)", np.array(clearances_mm), fine_max)
     peaks_against_clearance(figures, np.array(clearances_mm),
-                            [(grid_max, grid_p999, grid_rms), (fine_max, fine_p999, fine_rms)], (1e-7, 1e-8))
+                            [(grid_max, grid_p999, grid_rms), (fine_max, fine_p999, fine_rms)], (1e-7, 1e-8),
+                            float(study[(0.1, 0.1)]["time"][-1]))
 
     def scenarios(run):
         codes, counts = np.unique(run["joint_scenario"].astype(int), return_counts=True)

@@ -209,6 +209,74 @@ def provenance(summary, runs):
                 float(np.median(wall)), os.cpu_count(), load))
 
 
+# The generated blocks whose numbers "findings_moved" compares, with where they are on the page.
+MOVED_BLOCKS = (("tolerance_robustness", "tolerance 1e-7 against 1e-8"), ("planar_runs", "6.1 planar runs"),
+                ("settling", "6.1 settling variants"), ("misaligned_tilt", "Fig. 11 tilt"),
+                ("spatial_runs", "Fig. 13 spatial runs"), ("spatial_friction", "Fig. 13 friction"),
+                ("single_run_peaks", "Figs. 15, 16, 19 single runs"),
+                ("ensembles_tolerance_1e-7", "ensembles, tolerance 1e-7"),
+                ("ensembles_tolerance_1e-8", "ensembles, tolerance 1e-8"))
+BLOCK_PATTERN = r"<!-- generated: %s -->\n(.*?)\n<!-- end generated: %s -->"
+
+
+def block(text, name):
+    match = re.search(BLOCK_PATTERN % (re.escape(name), re.escape(name)), text, re.S)
+    return match.group(1) if match else None
+
+
+def _rows(body):
+    """A block's lines as (key, label, cells): table rows by their table and row number (the
+    header and rule skipped), other non-empty lines whole. A row's label is its text columns
+    (the statistic and sweep of an ensemble row), its cells the rest."""
+    rows, table, row = [], -1, 0
+    in_table = False
+    for line in body.splitlines():
+        if line.startswith("|"):
+            if not in_table:
+                table, row, in_table, header = table + 1, 0, True, True
+                continue
+            if header:  # the rule under the header
+                header = False
+                continue
+            cells = [c.strip() for c in line.strip().strip("|").split("|")]
+            text_columns = 2 if cells[0] in STATISTIC_NAMES.values() else 1
+            rows.append(((table, row), ", ".join(cells[:text_columns]), cells[text_columns:]))
+            row += 1
+        else:
+            in_table = False
+            if line.strip():
+                rows.append((("text", len(rows)), "", [line.strip()]))
+    return rows
+
+
+def findings_moved(previous, page_now):
+    """The rows of the generated tables whose numbers differ between the previous page and this
+    one, as a table (None when nothing moved): where, the row, its cells before and now."""
+    moved = []
+    for name, where in MOVED_BLOCKS:
+        before, now = block(previous, name), block(page_now, name)
+        if before is None or now is None:
+            continue
+        old_rows = {key: (label, cells) for key, label, cells in _rows(before)}
+        for key, label, cells in _rows(now):
+            old_label, old_cells = old_rows.get(key, (label, []))
+            if (old_label, old_cells) == (label, cells):
+                continue
+            shown_label = label if old_label == label else "%s (before: %s)" % (label, old_label)
+            moved.append((where, shown_label or "(text)", "; ".join(old_cells) or "(not on the page)",
+                          "; ".join(cells)))
+    if not moved:
+        return None
+    return "\n".join(["| where | row | previous page | this page |", "| --- | --- | --- | --- |"] +
+                      ["| %s |" % " | ".join(row) for row in moved])
+
+
+def _previous_source(previous):
+    """'commit ... on DATE' of the previous page's provenance line."""
+    match = re.search(r"from commit (.+?) on (\d{4}-\d\d-\d\d)", block(previous, "provenance") or "")
+    return "the page generated from commit %s on %s" % match.groups() if match else "the previous page"
+
+
 def replace_block(text, name, body):
     pattern = re.compile(r"(<!-- generated: %s -->\n).*?(\n<!-- end generated: %s -->)" % (
         re.escape(name), re.escape(name)), re.S)
@@ -220,6 +288,7 @@ def replace_block(text, name, body):
 def update_page(page, load, ensembles, study, clearances_mm, summary, runs):
     with open(page) as f:
         text = f.read()
+    previous = text
     text = replace_block(text, "provenance", provenance(summary, runs))
     for name, block in (("planar_runs", planar_runs), ("misaligned_tilt", misaligned_tilt), ("settling", settling),
                         ("spatial_runs", spatial_runs), ("spatial_friction", spatial_friction),
@@ -230,6 +299,12 @@ def update_page(page, load, ensembles, study, clearances_mm, summary, runs):
         ensembles, study, ["radial", "axial", "diagonal"], ["peak", "p999", "rms"], clearances_mm))
     text = replace_block(text, "ensembles_tolerance_1e-8", ensemble_table(
         ensembles, study, ["radial_tolerance_1e-8", "axial_tolerance_1e-8"], ["peak", "p999", "rms"], clearances_mm))
+    # Which numbers moved relative to the page as it stood; a run that moves nothing (the same
+    # library and models again) keeps the comparison with the last page whose numbers differed.
+    moved = findings_moved(previous, text)
+    if moved is not None:
+        text = replace_block(text, "findings_moved", "Rows of the tables above that changed, relative to %s "
+                             "(cells in the order of their table's columns):\n\n%s" % (_previous_source(previous), moved))
     with open(page + ".partial", "w") as f:
         f.write(text)
     os.replace(page + ".partial", page)
