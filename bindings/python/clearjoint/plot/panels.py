@@ -140,19 +140,23 @@ def plot_compared(ax, x: np.ndarray, y: np.ndarray, x_label: str, y_label: str,
                   reference_x: Optional[np.ndarray] = None, reference_y: Optional[np.ndarray] = None, *,
                   scenario: Optional[np.ndarray] = None, label: str = "clearance joint",
                   reference_label: str = "ideal joint", linewidth: float = 0.8,
-                  legend: bool = True) -> None:
+                  colour: Optional[str] = None, legend: bool = True) -> None:
     """A quantity of a run with a clearance joint against ``x`` (time, or another quantity for a
     phase portrait), beside the same quantity of a reference run, dashed (the ideal joint's:
     paper Figs. 7-10, 13, 15-18). With ``scenario`` (the joint's scenario code at each of the
     run's report times) the curve is coloured by contact scenario as the joint's panels are,
-    otherwise drawn in one colour and labelled ``label``; ``legend`` names the curves drawn in
-    one colour (a scenario-coloured curve takes its legend from ``scenario_legend_handles``)."""
+    otherwise drawn in one colour (``colour``, default the clearance curve's) and labelled
+    ``label``; ``legend`` names the curves drawn in one colour (a scenario-coloured curve takes its
+    legend from ``scenario_legend_handles``)."""
     if reference_x is not None and reference_y is not None:
         ax.plot(reference_x, reference_y, label=reference_label, **IDEAL_CURVE)
     if scenario is not None:
         _scenario_segments(ax, np.asarray(x), np.asarray(y), np.asarray(scenario), linewidth=linewidth)
     else:
-        ax.plot(x, y, label=label, **dict(CLEARANCE_CURVE, linewidth=linewidth))
+        style = dict(CLEARANCE_CURVE, linewidth=linewidth)
+        if colour is not None:
+            style["color"] = colour
+        ax.plot(x, y, label=label, **style)
     ax.set_xlabel(x_label)
     ax.set_ylabel(y_label)
     if legend and ax.get_legend_handles_labels()[0]:
