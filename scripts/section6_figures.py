@@ -60,12 +60,18 @@ def joint_of(run, start=None, end=None):
     return runplot.joint_series(stored, stored.clearance_tables()[0], (start, end))
 
 
+# A clearance run whose store keeps no joint table (the clearance study's model writes none) is
+# drawn in one colour that is no scenario's.
+UNCOLOURED = "0.15"
+
+
 def compared(ax, run, ideal, x_key, y_key, x_label, y_label, x_scale=1.0):
-    """One panel of the clearance run against the ideal one, coloured by scenario."""
+    """One panel of the clearance run against the ideal one, coloured by scenario when the
+    run's joint table is stored."""
     runplot.plot_compared(ax, run[x_key] * x_scale, run[y_key], x_label, y_label,
                           None if ideal is None else ideal[x_key] * x_scale,
                           None if ideal is None else ideal[y_key],
-                          scenario=run["joint_scenario"], legend=False)
+                          scenario=run.get("joint_scenario"), colour=UNCOLOURED, legend=False)
 
 
 def scenario_legend(ax, runs, ideal=True, impacts=False, title="clearance joint: contact scenario"):
@@ -193,7 +199,10 @@ def sweep_panels(figures, name, title, runs, labels, kind):
         ax.set_xlabel("")
     for ax in axes[:, 1]:
         ax.set_ylabel("")
-    scenario_legend(axes[0, 1], runs, ideal=False, title="contact scenario")
+    if all("joint_scenario" in run for run in runs):
+        scenario_legend(axes[0, 1], runs, ideal=False, title="contact scenario")
+    else:
+        title += " (the study's runs keep no joint table: not coloured by scenario)"
     fig.suptitle(title, fontsize=10)
     save(fig, figures, name)
 
