@@ -299,12 +299,13 @@ def update_page(page, load, ensembles, study, clearances_mm, summary, runs):
         ensembles, study, ["radial", "axial", "diagonal"], ["peak", "p999", "rms"], clearances_mm))
     text = replace_block(text, "ensembles_tolerance_1e-8", ensemble_table(
         ensembles, study, ["radial_tolerance_1e-8", "axial_tolerance_1e-8"], ["peak", "p999", "rms"], clearances_mm))
-    # Which numbers moved relative to the page as it stood; a run that moves nothing (the same
-    # library and models again) keeps the comparison with the last page whose numbers differed.
-    moved = findings_moved(previous, text)
-    if moved is not None:
-        text = replace_block(text, "findings_moved", "Rows of the tables above that changed, relative to %s "
-                             "(cells in the order of their table's columns):\n\n%s" % (_previous_source(previous), moved))
+    # Which numbers moved relative to the page as it stood before this run.
+    moved, source = findings_moved(previous, text), _previous_source(previous)
+    text = replace_block(text, "findings_moved", (
+        "Rows of the tables above that changed, relative to %s (cells in the order of their table's "
+        "columns):\n\n%s" % (source, moved)) if moved is not None else (
+        "No number in the tables above moved relative to %s: every row of every generated table is the "
+        "same, to the digits printed." % source))
     with open(page + ".partial", "w") as f:
         f.write(text)
     os.replace(page + ".partial", page)
