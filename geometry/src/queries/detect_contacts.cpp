@@ -165,7 +165,9 @@ void contact_header(ContactType type, ContactBase base, const Certificate& certi
 
 /// The journal point of a point contact: the rim point at the middle of the penetration arc
 /// (eqs. 13-14, 18-19). For a full arc (beyond the model) the middle is not meaningful; the rim
-/// point farthest along `deepest_direction` (projected into the rim plane) is taken instead.
+/// point farthest along `deepest_direction` (projected into the rim plane) is taken instead: for
+/// an axial contact the exact deepest point, `deepest_direction` being the base normal within
+/// `deepest_direction_error`, so the point and the depth get tight bounds.
 /// The arc's end points are its crossings (the contact's, already copied), so the middle
 /// costs no sine, cosine or rim frame: it lies along the chord's midpoint seen from the centre
 /// (away from it when the arc sweeps more than half the rim). Where the chord passes within r/4
@@ -176,8 +178,9 @@ void contact_header(ContactType type, ContactBase base, const Certificate& certi
 /// middle angle, and sin(s/2) > 0. The middle angle is evaluated only where neither applies.
 /// `error`: a bound on the distance to the exact rim's exact arc middle (contact_error_bounds.hpp;
 /// the rim centre within `centre_error` of rim.center). The two chord constructions propagate the
-/// crossings' bounds; the full arc (beyond the model: a convention, not an arc middle) and the
-/// angle evaluation get the trivial bound of any exact rim point.
+/// crossings' bounds; the full arc's point is bounded through its direction when that direction
+/// is known within a bound (axial), and the radial full arc (a convention, not an arc middle) and
+/// the angle evaluation get the trivial bound of any exact rim point.
 /// Always inlined into its two callers: Clang made a call of it, which cost some 35 instructions
 /// a contact in passing and returning (callgrind).
 struct JournalPoint {
@@ -187,14 +190,20 @@ struct JournalPoint {
 [[gnu::always_inline]] inline JournalPoint journal_contact_point(const Circle3& rim, double centre_error,
                                                                  const RimArc& arc, const Contact& contact,
                                                                  const Vector3& deepest_direction,
-                                                                 const Vector3& rim_normal_hat) {
+                                                                 const Vector3& rim_normal_hat,
+                                                                 double deepest_direction_error = kNoErrorBound) {
   using detail::kEvaluationRounding;
   if (arc.full) {
     const Vector3 in_plane = off_axis(deepest_direction, rim_normal_hat);
     const double length = in_plane.norm();
     if (length > 0.0) {
       const Vector3 point = rim.center + (rim.radius / length) * in_plane;
-      return {point, detail::any_rim_point_error(point, rim.center, centre_error, rim.radius)};
+      // x = a x (n x a) = n - (n . a) a moves by at most |dn| + 2 |da| (unit a and n) plus the
+      // rounding of its two cross products; one more kUnitAxisError covers the second-order
+      // terms. With an exact direction n (the axial case) the point is the exact rim's deepest
+      // point within rim_point_along_error; otherwise (radial: a convention) the trivial bound.
+      const double perturbation = deepest_direction_error + 3 * detail::kUnitAxisError + 4 * kEvaluationRounding;
+      return {point, detail::rim_point_along_error(point, rim.center, centre_error, rim.radius, perturbation, length)};
     }
   } else if (contact.crossing_count == 2) {
     const RimCrossing &c0 = contact.crossings[0], &c1 = contact.crossings[1];
@@ -329,7 +338,8 @@ void axial_contact(const JointSetup& s, ContactBase base, const Circle3& rim, co
   // From the local value, as in radial_contact.
   const int k = base == ContactBase::a ? 0 : 1;
   const JournalPoint journal_point =
-      journal_contact_point(rim, s.journal_rim_errors[k], hit.penetration, contact, contact.normal_W, s.journal_axis_hat_W);
+      journal_contact_point(rim, s.journal_rim_errors[k], hit.penetration, contact, contact.normal_W, s.journal_axis_hat_W,
+                            detail::kUnitAxisError);
   const Vector3 p_WCj = journal_point.point;
   contact.p_WCj = p_WCj;
   const double beyond_base = (p_WCj - bearing_base(s, base)).dot(contact.normal_W);

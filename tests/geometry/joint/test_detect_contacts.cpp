@@ -743,6 +743,29 @@ TEST(DetectContacts, ListsTheLineContactWhereRoundingLosesTheWholeEccentricityAs
   }
 }
 
+TEST(DetectContacts, BoundsTheDepthOfARimBeyondItsBaseAllRoundTightly) {
+  // Beyond the model, an axial contact's point is the rim's deepest point; its depth had the
+  // trivial bound of any rim point, the rim's diameter (19.8 mm for Table 2): certified, but
+  // vacuous. The closed form of tilted_journal_scenarios.hpp: depth z0 + T at base A.
+  for (const double z0 : {0.3, 0.5, 2.0}) {
+    for (const double tilt : {0.001, 0.005, 0.05}) {
+      const TiltedJournal journal{0.0, z0, tilt};
+      const JointContacts result = detect_contacts(kTable2, bearing_on_z(), journal.pose());
+      ASSERT_EQ(result.scenario, ContactScenario::beyond_model) << z0 << " " << tilt;
+      const auto axial = std::find_if(result.contacts.begin(), result.contacts.begin() + result.contact_count,
+                                      [](const Contact& c) { return c.type == ContactType::axial; });
+      ASSERT_NE(axial, result.contacts.begin() + result.contact_count);
+      ASSERT_NE(axial->certificate.level, Certainty::uncertain);
+      const double T = 0.5 * kTable2.journal_length * std::cos(tilt) + kTable2.journal_radius * std::sin(tilt) -
+                       0.5 * kTable2.bearing_length;
+      EXPECT_LE(std::fabs(axial->depth - (z0 + T)), axial->depth_error) << z0 << " " << tilt;
+      // Some 1e-13 mm measured at tilt 0.001; a millionth of the clearance is far from vacuous.
+      EXPECT_LT(axial->depth_error, 1e-6 * kTable2.axial_clearance()) << z0 << " " << tilt;
+      EXPECT_LT(axial->p_WCj_error, 1e-6 * kTable2.axial_clearance()) << z0 << " " << tilt;
+    }
+  }
+}
+
 TEST(DetectContacts, GivesEveryCertifiedContactFiniteBounds) {
   // The documented contract: a contact that is exact or certified has finite bounds on its points
   // and depth, over every case and under rigid motions far from the origin.

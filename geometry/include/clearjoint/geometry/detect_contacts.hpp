@@ -100,8 +100,9 @@ constexpr std::string_view to_string(ContactBase base) noexcept { return key_of(
 /// base plane), up to rounding; for point contacts p_WCj is a journal rim point (distance Rj
 /// from the rim centre, in the rim plane) at the middle of its penetration arc (eqs. 13, 18).
 /// A rim entirely beyond a surface (beyond the model) has no arc middle: p_WCj is then the rim
-/// point farthest along the base normal (axial; the deepest point) or along the radial direction
-/// of the rim centre (radial; an approximation of the deepest point).
+/// point farthest along the base normal (axial; the deepest point, with bounds as tight as an arc
+/// middle's) or along the radial direction of the rim centre (radial; an approximation of the
+/// deepest point, whose point bound is that of any rim point: the rim's diameter).
 struct Contact {
   ContactType type = ContactType::radial;
   ContactBase base = ContactBase::a;
