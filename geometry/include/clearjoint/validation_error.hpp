@@ -23,10 +23,11 @@ namespace clearjoint {
 /// "contacts[0].depth"). An error about no one field (text that is not JSON) has an empty path.
 class ValidationError : public std::invalid_argument {
  public:
-  ValidationError(std::string_view field_path, std::string_view detail)
-      : std::invalid_argument(std::string(field_path).append(detail)), path_length_(field_path.size()) {}
+  /// Out of line (validation_error.cpp), as std::invalid_argument's are: a check's throw stays a
+  /// call, which keeps the code around the check on the hot path the same size.
+  ValidationError(std::string_view field_path, std::string_view detail);
   /// An error about no one field: what() is `message`, the path is empty.
-  explicit ValidationError(const std::string& message) : std::invalid_argument(message) {}
+  explicit ValidationError(const std::string& message);
 
   /// The path of the offending field; empty when no one field is at fault.
   std::string_view field_path() const noexcept { return std::string_view(what(), path_length_); }

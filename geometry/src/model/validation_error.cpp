@@ -1,0 +1,11 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "clearjoint/validation_error.hpp"
+
+namespace clearjoint {
+
+ValidationError::ValidationError(std::string_view field_path, std::string_view detail)
+    : std::invalid_argument(std::string(field_path).append(detail)), path_length_(field_path.size()) {}
+
+ValidationError::ValidationError(const std::string& message) : std::invalid_argument(message) {}
+
+}  // namespace clearjoint
