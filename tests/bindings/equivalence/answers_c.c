@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: BSD-3-Clause */
 /* The C API's answers for the equivalence test (README.md): cj_detect on the single-call records,
- * cj_detect_many on the batch records, read in place from the input file's 18-double records
+ * cj_detect_many on the batch records, read in place from the input file's 19-double records
  * through byte strides. Also checks that the batch answers equal cj_detect's and those of
  * cj_detect_many on a column-major copy, pose by pose (exit status 1 otherwise).
  * Compiled as strict C99: it is also the test that the header is valid C.
@@ -15,7 +15,7 @@
 
 #include "clearjoint/clearjoint.h"
 
-#define RECORD 18
+#define RECORD 19
 #define LINE_CAPACITY 8192
 
 /* Append printf-formatted text to `line` (capacity LINE_CAPACITY). */
@@ -124,6 +124,7 @@ int main(int argc, char** argv) {
     memcpy(journal.axis_W, r + 13, sizeof journal.axis_W);
     options.certify = r[16] != 0.0;
     options.parallel_angle_tolerance = r[17];
+    options.exact_fallback = r[18] != 0.0;
     status = cj_detect(&dims, &bearing, &journal, &options, &single, message, sizeof message);
     if (status == CJ_OK) {
       format_result(line, 'S', i, &single);

@@ -20,7 +20,7 @@ namespace {
 namespace geo = clearjoint::geometry;
 using clearjoint::equivalence::line_of;
 
-constexpr std::size_t kRecord = 18;
+constexpr std::size_t kRecord = 19;
 
 }  // namespace
 
@@ -48,6 +48,7 @@ int main(int argc, char** argv) {
     geo::DetectionOptions options;
     options.intersection.certify = r[16] != 0.0;
     options.parallel_angle_tolerance = r[17];
+    options.intersection.exact_fallback = r[18] != 0.0;
     const char tag = i < singles ? 'S' : 'B';
     try {
       std::fprintf(out, "%s\n", line_of(tag, i, geo::detect_contacts(dims, bearing, journal, options)).c_str());

@@ -9,7 +9,7 @@ program answers_fortran
   use, intrinsic :: iso_c_binding, only: c_double, c_int, c_int32_t
   use, intrinsic :: iso_fortran_env, only: int64, error_unit
   implicit none
-  integer, parameter :: record = 18
+  integer, parameter :: record = 19
   character(len=4096) :: input_path, output_path
   real(c_double), allocatable :: data(:), bearings(:, :), journals(:, :)
   type(cj_result), allocatable :: results(:)
@@ -46,6 +46,7 @@ program answers_fortran
     options = cj_default_options()
     options%certify = merge(1_c_int32_t, 0_c_int32_t, data(first + 17) /= 0)
     options%parallel_angle_tolerance = data(first + 18)
+    options%exact_fallback = merge(1_c_int32_t, 0_c_int32_t, data(first + 19) /= 0)
     status = cj_detect(dims, bearing, journal, single, options, message)
     if (status == CJ_OK) then
       write (out, '(a)') result_line('S', i, single)

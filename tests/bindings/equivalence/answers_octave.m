@@ -7,7 +7,7 @@ function answers_octave(input_path, output_path)
   fid = fopen(input_path, 'r');
   data = fread(fid, Inf, 'double');
   fclose(fid);
-  records = reshape(data, 18, [])';
+  records = reshape(data, 19, [])';
   count = records(1, 1);
   singles = records(1, 2);
   records = records(2:end, :);
@@ -15,7 +15,7 @@ function answers_octave(input_path, output_path)
   out = fopen(output_path, 'w');
   for i = 0:singles - 1
     r = records(i + 1, :);
-    options = struct('certify', r(17), 'parallel_angle_tolerance', r(18));
+    options = struct('certify', r(17), 'parallel_angle_tolerance', r(18), 'exact_fallback', r(19));
     try
       found = cj_detect(dimensions_of(r), r(5:10), r(11:16), options);
       fprintf(out, '%s\n', single_line(i, found));

@@ -21,23 +21,25 @@ namespace {
 namespace geo = clearjoint::geometry;
 using geo::Vector3;
 
-/// One input record: 18 doubles (README.md).
+/// One input record: 19 doubles (README.md).
 struct Record {
   geo::JointDimensions dims;
   geo::PartPose bearing;
   geo::PartPose journal;
   double certify = 1.0;
   double parallel_angle_tolerance = 0.0;
+  double exact_fallback = 1.0;
 };
 
 void append(std::vector<double>& out, const Record& r) {
-  const double values[18] = {r.dims.bearing_radius, r.dims.bearing_length, r.dims.journal_radius,
+  const double values[19] = {r.dims.bearing_radius, r.dims.bearing_length, r.dims.journal_radius,
                              r.dims.journal_length, r.bearing.p_WP.x(), r.bearing.p_WP.y(),
                              r.bearing.p_WP.z(), r.bearing.axis_W.x(), r.bearing.axis_W.y(),
                              r.bearing.axis_W.z(), r.journal.p_WP.x(), r.journal.p_WP.y(),
                              r.journal.p_WP.z(), r.journal.axis_W.x(), r.journal.axis_W.y(),
-                             r.journal.axis_W.z(), r.certify, r.parallel_angle_tolerance};
-  out.insert(out.end(), values, values + 18);
+                             r.journal.axis_W.z(), r.certify, r.parallel_angle_tolerance,
+                             r.exact_fallback};
+  out.insert(out.end(), values, values + 19);
 }
 
 /// The configurations of tests/geometry/joint/test_detect_contacts.cpp, one per scenario and
@@ -73,6 +75,11 @@ std::vector<Record> test_cases() {
   cases.push_back({kTable2, bearing, TiltedJournal{0.15, 0.0, 1e-6}.pose(), 1.0, 1e-5});
   cases.push_back({kTable2, bearing, TiltedJournal{0.0, 0.0, 0.013}.pose(), 0.0});
   cases.push_back({kTable2, bearing, {Vector3(0.0, 0.15, 0.02), Vector3::UnitZ()}, 0.0});
+  // The exact fallback off: a journal touching the wall along a line (eccentricity exactly cr),
+  // which only the exact tier proves clear, with and without it.
+  const geo::JointDimensions eighths{0.5, 1.0, 0.375, 0.75};
+  cases.push_back({eighths, bearing, {Vector3(0.0, 0.125, 0.0), Vector3::UnitZ()}});
+  cases.push_back({eighths, bearing, {Vector3(0.0, 0.125, 0.0), Vector3::UnitZ()}, 1.0, 0.0, 0.0});
   // A moved, rotated bearing.
   cases.push_back({kTable2, {Vector3(1.5, -2.0, 0.25), Vector3(0.3, -0.4, 0.866)},
                    {Vector3(1.5, -1.9, 0.3), Vector3(0.3, -0.39, 0.87)}});
@@ -138,7 +145,7 @@ int main(int argc, char** argv) {
   const std::size_t random_count = argc == 3 ? std::strtoul(argv[2], nullptr, 10) : 10000;
   const std::vector<Record> singles = test_cases();
   const std::vector<Record> batch = random_poses(random_count);
-  std::vector<double> data(18, 0.0);
+  std::vector<double> data(19, 0.0);
   data[0] = static_cast<double>(singles.size() + batch.size());
   data[1] = static_cast<double>(singles.size());
   for (const Record& r : singles) append(data, r);
