@@ -11,6 +11,7 @@ packages=(
   libboost-dev                          # Interval, Odeint, Multiprecision (header-only)
   libgtest-dev libbenchmark-dev         # tests and benchmarks
   nlohmann-json3-dev                    # JSON Lines and model files
+  libhdf5-dev                           # simulate --format hdf5 (dynamics/run_folder)
   pkgconf                               # packaging test: a consumer built with pkg-config
   lintian                               # scripts/check-deb.sh: the Debian packages' checks
   python3 python3-matplotlib            # plots in docs/

@@ -61,6 +61,21 @@ run = clearjoint.simulate(model)
 check(len(run.tables) > 0 and all(len(next(iter(t.values()))) > 0 for t in run.tables.values()),
       f"simulate: tables {sorted(run.tables)}")
 
+# The same run written as one HDF5 file and read back, and the model stepped by hand with a load.
+import tempfile  # noqa: E402
+
+with tempfile.TemporaryDirectory() as scratch:
+    folder = os.path.join(scratch, "run")
+    written = clearjoint.simulate(model, out=folder, format="hdf5")
+    check(os.path.isfile(os.path.join(folder, "run.h5")), f"simulate to HDF5: {os.listdir(folder)}")
+    back = clearjoint.read_run(folder)
+    check(all(np.array_equal(back[t][c], run[t][c], equal_nan=True) for t in run.tables for c in run[t]),
+          "read_run gives other numbers than simulate")
+sim = clearjoint.Simulator(model)
+sim.apply_load("crank", moment=[0.0, 0.01, 0.0])
+sim.advance_to(1e-3)
+check(abs(sim.time - 1e-3) < 1e-15, f"Simulator.advance_to(1e-3) ended at {sim.time}")
+
 # What else the package holds: the study runner with its schema, figures, the viewer's page.
 import clearjoint.plot  # noqa: E402
 import clearjoint.study  # noqa: E402
@@ -76,4 +91,5 @@ check(os.path.isfile(os.path.join(os.path.dirname(clearjoint.__file__), "py.type
 
 print(f"python_smoke: clearjoint {clearjoint.__version__} from {os.path.dirname(clearjoint.__file__)}: "
       f"detect (1 pose, {len(batch)} poses), kernel, simulate ({', '.join(sorted(run.tables))}), "
+      "simulate to HDF5, Simulator, "
       "study, plot, view")
