@@ -30,20 +30,6 @@ std::vector<std::string> reaction_header(const ConstraintSet& constraints) {
   return header;
 }
 
-/// The one way a name from the model becomes a table name, and so a file name (<table>.csv):
-/// `prefix` + the name with letters, digits, '-' and '_' kept and every other byte '_' (no '/',
-/// no "..", no control characters). Model files keep names to kMaxNameBytes (model_file.hpp), so
-/// the file name fits any file system.
-std::string table_name(std::string_view prefix, std::string_view name) {
-  std::string table(prefix);
-  for (char c : name) {
-    const bool keep = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
-                      c == '-' || c == '_';
-    table.push_back(keep ? c : '_');
-  }
-  return table;
-}
-
 /// The tables of a run, each with what it is for ("output.bodies[1] \"crank\""), checked before
 /// any is declared: no two share a name, also when compared without case (files that differ
 /// only in case are one file on macOS and Windows).
@@ -84,6 +70,16 @@ struct ElementOutput {
 constexpr std::chrono::milliseconds kProgressInterval{100};
 
 }  // namespace
+
+std::string table_name(std::string_view prefix, std::string_view name) {
+  std::string table(prefix);
+  for (char c : name) {
+    const bool keep = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
+                      c == '-' || c == '_';
+    table.push_back(keep ? c : '_');
+  }
+  return table;
+}
 
 /// Where each table's rows come from: a body, a force element, or the system-wide tables.
 struct SimulationRun::Sources {

@@ -12,7 +12,8 @@
 #include <vector>
 
 #include "clearjoint/mujoco/clearance_joints.hpp"
-#include "csv_tables.hpp"
+#include "clearjoint/dynamics/csv_directory.hpp"
+#include "clearjoint/dynamics/simulation.hpp"
 
 namespace {
 
@@ -76,13 +77,13 @@ int run(int argc, char** argv) {
   mj_forward(model.get(), data.get());
   clearance.after_step(data.get());
 
-  clearjoint::engines::CsvTables files(out_dir);
+  clearjoint::dynamics::CsvDirectory files(out_dir);
   std::vector<std::size_t> tables;
   for (int k = 0; k < clearance.count(); ++k) {
     std::vector<std::string> header = clearance.joint(k).output_columns();
     header.insert(header.begin(), "time");
     tables.push_back(files.add_table(
-        clearjoint::engines::table_name("force_", clearance.joint(k).name()), header));
+        clearjoint::dynamics::table_name("force_", clearance.joint(k).name()), header));
   }
   std::vector<double> row;
   auto report = [&] {

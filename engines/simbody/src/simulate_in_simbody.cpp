@@ -5,7 +5,8 @@
 #include <cmath>
 
 #include "clearjoint/simbody/model_in_simbody.hpp"
-#include "csv_tables.hpp"
+#include "clearjoint/dynamics/csv_directory.hpp"
+#include "clearjoint/dynamics/simulation.hpp"
 
 namespace clearjoint::simbody {
 
@@ -73,7 +74,7 @@ dynamics::SimulationSummary simulate_in_simbody(const dynamics::ModelDescription
       }
       return dynamics::Vector4(1.0, 0.0, 0.0, 0.0);
     }();
-    bodies.push_back({body, output.add_table(engines::table_name("body_", name), body_header()),
+    bodies.push_back({body, output.add_table(dynamics::table_name("body_", name), body_header()),
                       SimTK::Vec4(p0[0], p0[1], p0[2], p0[3])});
   }
   const std::size_t energy_table =
@@ -94,7 +95,7 @@ dynamics::SimulationSummary simulate_in_simbody(const dynamics::ModelDescription
     std::vector<std::string> header = joint->joint().output_columns();
     const std::size_t width = header.size();
     header.insert(header.begin(), "time");
-    forces.push_back({joint.get(), width, output.add_table(engines::table_name("force_", name), header)});
+    forces.push_back({joint.get(), width, output.add_table(dynamics::table_name("force_", name), header)});
   }
 
   dynamics::SimulationSummary summary;
@@ -214,7 +215,7 @@ dynamics::SimulationSummary simulate_in_simbody(const dynamics::ModelDescription
   // The model is built twice (once here to check it before the directory exists): building is
   // cheap beside the run.
   { SimbodyModel check(model); }
-  engines::CsvTables files(output_directory);
+  dynamics::CsvDirectory files(output_directory);
   return simulate_in_simbody(model, files, progress);
 }
 

@@ -21,6 +21,8 @@
 #include <filesystem>
 #include <functional>
 #include <memory>
+#include <string>
+#include <string_view>
 
 #include "clearjoint/dynamics/model_builder.hpp"
 #include "clearjoint/dynamics/run_size.hpp"
@@ -51,6 +53,12 @@ std::string summary_json(const SimulationSummary& summary);
 /// step when 0.1 s of wall time has passed since the last such call (may be empty). It may throw to stop the run (a user's interrupt): the exception
 /// leaves simulate() and no output is committed.
 using ProgressCallback = std::function<void(double fraction)>;
+
+/// The one way a name from the model becomes a table name, and so a file name (<table>.csv):
+/// `prefix` + the name with letters, digits, '-' and '_' kept and every other byte '_' (no '/',
+/// no "..", no control characters). Model files keep names to kMaxNameBytes (model_file.hpp), so
+/// the file name fits any file system. Engine adapters name their tables with it too.
+std::string table_name(std::string_view prefix, std::string_view name);
 
 struct RunOptions {
   /// Run beyond the size guard (run_size.hpp); the command line's --allow-large.
