@@ -8,6 +8,7 @@
 #include <numbers>
 
 #include "clearjoint/dynamics/errors.hpp"
+#include "joint_film.hpp"
 
 namespace clearjoint::dynamics {
 
@@ -106,6 +107,22 @@ ClearanceRevoluteJoint::ClearanceRevoluteJoint(std::string name, const Clearance
   const Vector3 e = Vector3::Unit(least_aligned);
   bearing_u_B_ = (e - e.dot(bearing_axis_hat_B_) * bearing_axis_hat_B_).normalized();
   bearing_v_B_ = bearing_axis_hat_B_.cross(bearing_u_B_);
+  if (parameters_.lubrication) {
+    JointLubrication& lubrication = *parameters_.lubrication;
+    // A model's 0 means "as wide as the limit" (joint_lubrication.hpp).
+    if (lubrication.transition_width == 0.0) {
+      lubrication.transition_width = lubrication.film_thickness_limit;
+    }
+    validate(lubrication, name_ + ".lubrication");
+    film_ = std::make_unique<JointFilm>(lubrication, parameters_.dimensions);
+  }
+}
+
+ClearanceRevoluteJoint::~ClearanceRevoluteJoint() = default;
+ClearanceRevoluteJoint::ClearanceRevoluteJoint(ClearanceRevoluteJoint&&) noexcept = default;
+
+int ClearanceRevoluteJoint::extra_state_count() const {
+  return kContactSlotCount + (film_ ? 1 : 0);
 }
 
 void ClearanceRevoluteJoint::detect(double time, const SystemKinematics& kinematics,
@@ -146,6 +163,7 @@ void ClearanceRevoluteJoint::evaluate_forces(double time, const SystemKinematics
                                              ClearanceJointState& state) const {
   detect(time, kinematics, state.contacts);
   state.slots = {};
+  state.film.reset();
   state.force_on_journal_W.setZero();
   state.moment_on_journal_W.setZero();
   const BodyKinematics& bi = kinematics.body(bearing_.body);
@@ -186,6 +204,32 @@ void ClearanceRevoluteJoint::evaluate_forces(double time, const SystemKinematics
     s.normal_force += normal_force;
     s.friction_force += friction.norm();
   }
+  if (film_) evaluate_film(time, kinematics, state);
+}
+
+void ClearanceRevoluteJoint::evaluate_film(double time, const SystemKinematics& kinematics,
+                                           ClearanceJointState& state) const {
+  const BodyKinematics& bi = kinematics.body(bearing_.body);
+  const BodyKinematics& bj = kinematics.body(journal_.body);
+  const Vector3 p_WPi = bi.point_W(bearing_.point_B);
+  const Vector3 p_WPj = bj.point_W(journal_.point_B);
+  // The journal seen from the bearing body (relative_motion.hpp).
+  lubrication::RelativeMotion motion;
+  motion.v_BJ_W = bj.point_velocity_W(journal_.point_B) - bi.point_velocity_W(bearing_.point_B) -
+                  bi.angular_velocity_W.cross(p_WPj - p_WPi);
+  motion.omega_BJ_W = bj.angular_velocity_W - bi.angular_velocity_W;
+  const std::optional<Vector3>& groove_B = parameters_.lubrication->groove_direction_B;
+  const std::optional<Vector3> groove_W =
+      groove_B ? std::optional<Vector3>(bi.rotation * *groove_B) : std::nullopt;
+  try {
+    state.film = film_->evaluate({p_WPi, bi.rotation * bearing_.axis_B},
+                                 {p_WPj, bj.rotation * journal_.axis_B}, groove_W, motion);
+  } catch (const std::exception& e) {  // geometry::InvalidInput, or a singular grid system
+    throw SolverError("clearance joint '" + name_ + "' at t = " + format_number(time) +
+                      ": the oil film cannot be solved (" + e.what() + ")");
+  }
+  state.force_on_journal_W += state.film->force_on_journal_W;
+  state.moment_on_journal_W += state.film->moment_on_journal_W;
 }
 
 ClearanceJointState ClearanceRevoluteJoint::evaluate(double time, const SystemKinematics& kinematics,
@@ -222,6 +266,20 @@ void ClearanceRevoluteJoint::add_forces(const ForceContext& context, Generalised
     const Vector3& force = state.contact_force_on_journal_W[c];
     forces.add_force_at_point(journal_.body, force, contact.p_WCj);
     forces.add_force_at_point(bearing_.body, -force, contact.p_WCi);
+  }
+  if (state.film) {
+    // At the journal's centre, with the moment about it; the bearing gets the opposite at the
+    // same point, so that the pair does work F . v_BJ + M . omega_BJ only.
+    const BodyKinematics& bj = context.kinematics.body(journal_.body);
+    const Vector3 p_WPj = bj.point_W(journal_.point_B);
+    forces.add_force_at_point(journal_.body, state.film->force_on_journal_W, p_WPj);
+    forces.add_moment(journal_.body, state.film->moment_on_journal_W);
+    forces.add_force_at_point(bearing_.body, -state.film->force_on_journal_W, p_WPj);
+    forces.add_moment(bearing_.body, -state.film->moment_on_journal_W);
+    // Engines that keep the impact memory only (engines/common) pass no room for W_film.
+    if (context.extra_state_rate.size() > static_cast<size_t>(kFilmWorkIndex)) {
+      context.extra_state_rate[kFilmWorkIndex] = state.film->power;
+    }
   }
   // The memory changes only in update_extra_state(); its rate stays zero (the context zeroes it).
 }
@@ -283,6 +341,12 @@ std::vector<std::string> ClearanceRevoluteJoint::output_columns() const {
       columns.push_back(std::string(to_string(slot)) + "." + quantity);
     }
   }
+  if (film_) {
+    for (const char* quantity : {"min_thickness", "max_pressure", "eccentricity_ratio",
+                                 "attitude_angle", "regime", "weight", "work"}) {
+      columns.push_back(std::string("film.") + quantity);
+    }
+  }
   return columns;
 }
 
@@ -309,13 +373,32 @@ void ClearanceRevoluteJoint::record_outputs(double time, const SystemKinematics&
     values[k++] = slot.normal_force;
     values[k++] = slot.friction_force;
   }
+  if (s.film) {
+    values[k++] = s.film->min_thickness;
+    values[k++] = s.film->max_pressure;
+    values[k++] = s.film->eccentricity_ratio;
+    values[k++] = s.film->attitude_angle;
+    values[k++] = static_cast<double>(s.film->regime);
+    values[k++] = s.film->weight;
+    values[k++] = state.size() > static_cast<size_t>(kFilmWorkIndex)
+                      ? state[kFilmWorkIndex]
+                      : std::numeric_limits<double>::quiet_NaN();
+  }
 }
 
 std::string ClearanceRevoluteJoint::statistics_text() const {
   return "clearance joint '" + name_ + "': " + std::to_string(statistics_.detection_calls) +
          " contact detections, " + std::to_string(statistics_.impacts) +
          " impacts recorded, " + std::to_string(statistics_.beyond_model_updates) +
-         " accepted steps beyond the paper's model";
+         " accepted steps beyond the paper's model" + film_statistics_text();
+}
+
+std::string ClearanceRevoluteJoint::film_statistics_text() const {
+  if (!film_) return {};
+  const JointFilmStatistics& s = film_->statistics();
+  return "; " + std::string(lubrication::to_string(parameters_.lubrication->method)) + " film: " +
+         std::to_string(s.solves) + " solutions, " + std::to_string(s.linear_solves) +
+         " grid linear solves, " + std::to_string(s.not_converged) + " not converged";
 }
 
 }  // namespace clearjoint::dynamics

@@ -22,6 +22,10 @@ using json::quote;  // a JSON value for a message, shortened when long
 /// with 6 significant digits can fall short by a few parts in 1e7.
 constexpr double kInertiaTriangleSlack = 1e-6;
 
+/// Largest grid size per direction of a lubricated joint: 4096 x 4096 is 1.7e7 unknowns, far past
+/// any accuracy need (docs/lubrication.md) and a bound that keeps the count an int.
+constexpr double kMaxGridCells = 4096.0;
+
 /// `value` in the shortest form that reads back to it (1e-12, not format_number's
 /// 9.9999999999999998e-13): the limits and values of the range messages below read as written.
 std::string shortest(double value) {
@@ -220,8 +224,40 @@ ClearancePartDescription parse_clearance_part(const Node& n, double& radius, dou
   return {n.text("body"), n.vector<3>("point", Vector3::Zero()), n.vector<3>("axis")};
 }
 
+/// A clearance joint's oil film: {"viscosity", "cavitation", "method", "grid", "groove_direction",
+/// "supply_pressure", "film_thickness_limit", "transition_width"} (joint_lubrication.hpp).
+JointLubrication parse_lubrication(const Node& n) {
+  n.require_object({"viscosity", "cavitation", "method", "grid", "groove_direction",
+                    "supply_pressure", "film_thickness_limit", "transition_width"});
+  JointLubrication l;
+  l.viscosity = n.number("viscosity");
+  l.cavitation = cavitation_model_from_string(
+      n.text("cavitation", std::string(lubrication::to_string(l.cavitation))), n.field("cavitation"));
+  l.method = film_method_from_string(n.text("method", std::string(lubrication::to_string(l.method))),
+                                     n.field("method"));
+  if (n.has("grid")) {
+    const Eigen::Vector2d grid = n.vector<2>("grid");
+    for (int k = 0; k < 2; ++k) {
+      if (!(grid[k] >= 1.0 && grid[k] <= kMaxGridCells && grid[k] == std::floor(grid[k]))) {
+        throw ModelError(n.field("grid") + "[" + std::to_string(k) + "] = " + shortest(grid[k]) +
+                         ": must be a whole number of cells in [1, " + shortest(kMaxGridCells) + "]");
+      }
+    }
+    l.circumferential_cells = static_cast<int>(grid[0]);
+    l.axial_cells = static_cast<int>(grid[1]);
+  }
+  if (n.has("groove_direction")) l.groove_direction_B = n.vector<3>("groove_direction");
+  l.supply_pressure = n.number("supply_pressure", 0.0);
+  l.film_thickness_limit = n.number("film_thickness_limit");
+  l.transition_width = n.number("transition_width", l.film_thickness_limit);
+  // Named with the file's path (forces[k].lubrication.viscosity); the joint checks again.
+  validate(l, n.path());
+  return l;
+}
+
 ClearanceRevoluteDescription parse_clearance_revolute(const Node& n) {
-  n.require_object({"type", "name", "bearing", "journal", "normal_force", "friction", "detection"});
+  n.require_object({"type", "name", "bearing", "journal", "normal_force", "friction", "detection",
+                    "lubrication"});
   ClearanceRevoluteDescription d;
   d.name = n.name("name");
   geometry::JointDimensions& dims = d.parameters.dimensions;
@@ -252,6 +288,7 @@ ClearanceRevoluteDescription parse_clearance_revolute(const Node& n) {
     detection.require_object({"parallel_angle_tolerance"});
     d.parameters.detection.parallel_angle_tolerance = detection.number("parallel_angle_tolerance", 0.0);
   }
+  if (n.has("lubrication")) d.parameters.lubrication = parse_lubrication(n.child("lubrication"));
   // Validate here so that messages name the file's fields (forces[k].journal.radius, ...); body
   // names are resolved later by the model builder.
   ClearanceRevoluteJoint(n.path(), {0, d.bearing.point_B, d.bearing.axis_B},

@@ -27,6 +27,42 @@ void require(bool holds, const char* field, double value, const char* rule) {
 
 }  // namespace
 
+std::string_view to_string(BearingMotion motion) noexcept {
+  switch (motion) {
+    case BearingMotion::rotation: return "rotation";
+    case BearingMotion::squeeze: return "squeeze";
+  }
+  return "unknown";
+}
+
+std::string_view to_string(BearingMethod method) noexcept {
+  switch (method) {
+    case BearingMethod::grid: return "grid";
+    case BearingMethod::short_bearing: return "short";
+    case BearingMethod::long_bearing: return "long";
+  }
+  return "unknown";
+}
+
+std::optional<BearingMotion> bearing_motion_from_string(std::string_view name) noexcept {
+  for (BearingMotion m : kBearingMotions) {
+    if (to_string(m) == name) return m;
+  }
+  return std::nullopt;
+}
+
+std::optional<BearingMethod> bearing_method_from_string(std::string_view name) noexcept {
+  for (BearingMethod m : kBearingMethods) {
+    if (to_string(m) == name) return m;
+  }
+  return std::nullopt;
+}
+
+CavitationModel default_cavitation(BearingMethod method) noexcept {
+  return method == BearingMethod::grid ? CavitationModel::mass_conserving
+                                       : CavitationModel::half_sommerfeld;
+}
+
 BearingCharacteristics bearing_characteristics(const BearingCharacteristicsQuery& query) {
   const double eps = query.eccentricity_ratio;
   require(eps >= 0.0 && eps < 1.0, "eccentricity_ratio", eps,

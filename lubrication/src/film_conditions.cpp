@@ -39,4 +39,19 @@ void validate(const OilSupply& supply, const char* name) {
   }
 }
 
+std::string_view to_string(CavitationModel model) noexcept {
+  switch (model) {
+    case CavitationModel::half_sommerfeld: return "half_sommerfeld";
+    case CavitationModel::mass_conserving: return "mass_conserving";
+  }
+  return "unknown";
+}
+
+std::optional<CavitationModel> cavitation_model_from_string(std::string_view name) noexcept {
+  for (CavitationModel m : kCavitationModels) {
+    if (to_string(m) == name) return m;
+  }
+  return std::nullopt;
+}
+
 }  // namespace clearjoint::lubrication

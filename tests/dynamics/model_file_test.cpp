@@ -134,6 +134,53 @@ TEST(ModelFile, RejectsAnUnknownContactLawAndAMisspeltFrictionKey) {
             "m.json: forces[0].friction.coeficient: unknown key (a typo?)");
 }
 
+TEST(ModelFile, ReadsAClearanceJointsOilFilmWithDefaultsForWhatItOmits) {
+  const ModelDescription m = parse_model(
+      clearance_model("0.0099", R"(, "lubrication": {"viscosity": 0.04, "film_thickness_limit": 2e-6})"),
+      "m.json");
+  const auto& l = std::get<ClearanceRevoluteDescription>(m.forces[0]).parameters.lubrication;
+  ASSERT_TRUE(l.has_value());
+  EXPECT_EQ(l->viscosity, 0.04);
+  EXPECT_EQ(l->method, FilmMethod::short_bearing);
+  EXPECT_EQ(l->cavitation, lubrication::CavitationModel::half_sommerfeld);
+  EXPECT_EQ(l->transition_width, 2e-6);  // as wide as the limit
+  EXPECT_FALSE(l->groove_direction_B.has_value());
+  const ModelDescription grid = parse_model(
+      clearance_model("0.0099", R"(, "lubrication": {"viscosity": 0.04, "film_thickness_limit": 2e-6,
+        "method": "grid", "grid": [64, 16], "cavitation": "mass_conserving",
+        "groove_direction": [0, 1, 0], "supply_pressure": 1e5, "transition_width": 1e-6})"),
+      "m.json");
+  const auto& g = *std::get<ClearanceRevoluteDescription>(grid.forces[0]).parameters.lubrication;
+  EXPECT_EQ(g.method, FilmMethod::grid);
+  EXPECT_EQ(g.circumferential_cells, 64);
+  EXPECT_EQ(g.axial_cells, 16);
+  EXPECT_EQ(g.cavitation, lubrication::CavitationModel::mass_conserving);
+  EXPECT_EQ(*g.groove_direction_B, Vector3::UnitY());
+  EXPECT_EQ(g.supply_pressure, 1e5);
+  EXPECT_EQ(g.transition_width, 1e-6);
+}
+
+TEST(ModelFile, NamesTheFieldOfABadOilFilm) {
+  const auto lubricated = [](const std::string& fields) {
+    return error_of(clearance_model("0.0099", R"(, "lubrication": {)" + fields + "}"));
+  };
+  EXPECT_EQ(lubricated(R"("viscosity": -0.04, "film_thickness_limit": 2e-6)"),
+            "m.json: forces[0].lubrication.viscosity = -0.040000000000000001: must be positive");
+  EXPECT_EQ(lubricated(R"("viscosity": 0.04, "film_thickness_limit": 0)"),
+            "m.json: forces[0].lubrication.film_thickness_limit = 0: must be positive");
+  EXPECT_EQ(lubricated(R"("viscosity": 0.04)"),
+            "m.json: forces[0].lubrication.film_thickness_limit is missing");
+  EXPECT_EQ(lubricated(R"("viscosity": 0.04, "film_thickness_limit": 2e-6, "method": "grid", "grid": [1, 1])"),
+            "m.json: forces[0].lubrication.grid = [1, 1]: options.circumferential_cells = 1: must be at least 8");
+  EXPECT_EQ(lubricated(R"("viscosity": 0.04, "film_thickness_limit": 2e-6, "grid": [48.5, 12])"),
+            "m.json: forces[0].lubrication.grid[0] = 48.5: must be a whole number of cells in [1, 4096]");
+  EXPECT_NE(lubricated(R"("viscosity": 0.04, "film_thickness_limit": 2e-6, "method": "finite")")
+                .find("forces[0].lubrication.method = \"finite\": unknown film method"),
+            std::string::npos);
+  EXPECT_EQ(lubricated(R"("viscosity": 0.04, "film_thickness_limit": 2e-6, "viscosty": 1)"),
+            "m.json: forces[0].lubrication.viscosty: unknown key (a typo?)");
+}
+
 TEST(ModelFile, ReadsASpringDamperAndAPointLoadWithEveryField) {
   const ModelDescription m = parse_model(R"({
     "bodies": [{"name": "a", "mass": 1, "inertia": [1,1,1], "position": [0,0,0]}],
@@ -206,6 +253,7 @@ TEST(ModelFile, ReadsTheShippedModels) {
   constexpr double kDecimalRounding = 1e-17;
   for (const char* file : {"slider_crank_planar_clearance_aligned.json",
                            "slider_crank_planar_clearance_misaligned.json",
+                           "slider_crank_planar_clearance_lubricated.json",
                            "slider_crank_spatial_clearance.json"}) {
     const ModelDescription m = read_model_file(std::string(CLEARJOINT_MODELS_DIR) + "/" + file);
     EXPECT_EQ(m.joints.size(), 3u) << file;  // the clearance joint is a force element

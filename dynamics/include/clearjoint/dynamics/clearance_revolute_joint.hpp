@@ -30,12 +30,23 @@
 /// exactly parallel: one line contact (aligned) becomes two rim contacts of about the same depth
 /// (misaligned), i.e. about twice the force. It is kept as the paper states it;
 /// DetectionOptions::parallel_angle_tolerance moves where it happens.
+///
+/// Lubrication (issue 36, joint_lubrication.hpp). A joint with parameters.lubrication also carries
+/// the oil film's force at the journal's centre and its moment, faded out as the film thins to
+/// the film_thickness_limit, below which the dry contact above acts alone. Its detection and
+/// impact memory are those of the dry joint. It owns one more extra variable after the memory:
+/// the film's work on the system, W_film(t) = integral of F . v_BJ + M . omega_BJ, so that the
+/// energy balance E(t) - E(0) = W_film(t) (damping-free contact) can be checked on a run. The
+/// force table gains the film's columns (output_columns); a dry joint's table is unchanged.
 
 #include <array>
+#include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "clearjoint/dynamics/force_element.hpp"
+#include "clearjoint/dynamics/joint_lubrication.hpp"
 #include "clearjoint/dynamics/normal_contact_force.hpp"
 #include "clearjoint/dynamics/regularised_friction.hpp"
 #include "clearjoint/geometry/contact_kinematics.hpp"
@@ -57,6 +68,8 @@ struct ClearanceJointParameters {
   NormalForceParameters normal;
   FrictionParameters friction;
   geometry::DetectionOptions detection;
+  /// The oil film; absent: a dry joint (the paper's).
+  std::optional<JointLubrication> lubrication;
 };
 
 /// Where a contact's impact velocity is remembered, and its columns in the outputs.
@@ -83,8 +96,11 @@ struct ClearanceJointState {
   /// Force on the journal of each of contacts.contacts (the bearing gets the opposite).
   std::array<Vector3, geometry::kMaxContacts> contact_force_on_journal_W{};
   std::array<SlotState, kContactSlotCount> slots{};
-  Vector3 force_on_journal_W = Vector3::Zero();   ///< sum of the contact forces on the journal
+  /// Sum of the contact forces on the journal, and of the film's for a lubricated joint.
+  Vector3 force_on_journal_W = Vector3::Zero();
   Vector3 moment_on_journal_W = Vector3::Zero();  ///< their moment about the journal's P_j
+  /// The film, for a lubricated joint (its force and moment are in the totals above).
+  std::optional<JointFilmState> film;
   /// Angle between the journal and bearing axes [rad], in [0, pi] (Fig. 11(b)).
   double axis_angle = 0.0;
   /// Centres of the journal rims facing bearing bases A and B, relative to the bearing's P_i, in
@@ -109,6 +125,11 @@ struct RecordedImpact {
   double impact_speed = 0.0;  ///< delta_dot(-) recorded [m/s]
 };
 
+class JointFilm;
+
+/// Index, in a lubricated joint's extra state, of the film's work W_film [J] (after the memory).
+inline constexpr int kFilmWorkIndex = kContactSlotCount;
+
 class ClearanceRevoluteJoint final : public ForceElement {
  public:
   /// Throws ModelError naming "<name>.<field>" for bad dimensions (non-finite, non-positive,
@@ -116,6 +137,8 @@ class ClearanceRevoluteJoint final : public ForceElement {
   /// bearing and journal on the same body.
   ClearanceRevoluteJoint(std::string name, const ClearanceJointPart& bearing,
                          const ClearanceJointPart& journal, const ClearanceJointParameters& parameters);
+  ~ClearanceRevoluteJoint() override;
+  ClearanceRevoluteJoint(ClearanceRevoluteJoint&&) noexcept;
 
   std::string_view name() const override { return name_; }
   /// Detection, forces, and application at the contact points. Throws SolverError (with the
@@ -124,7 +147,8 @@ class ClearanceRevoluteJoint final : public ForceElement {
   /// Elastic energy of every contact, K delta^(n+1)/(n+1): conserved with the total when the
   /// law is hertz (or ce = 1) and there is no friction.
   double potential_energy(const SystemKinematics& kinematics) const override;
-  int extra_state_count() const override { return kContactSlotCount; }
+  /// The impact memory (kContactSlotCount), and W_film for a lubricated joint.
+  int extra_state_count() const override;
   void initial_extra_state(std::span<double> state) const override;
   bool update_extra_state(double time, const SystemKinematics& kinematics,
                           std::span<double> state) const override;
@@ -136,7 +160,8 @@ class ClearanceRevoluteJoint final : public ForceElement {
   std::string statistics_text() const override;
 
   /// Evaluate the joint at one instant with the given impact memory (kContactSlotCount values,
-  /// 0 = none). Used by add_forces and by the outputs; public for tests.
+  /// 0 = none; further values are ignored). Used by add_forces and by the outputs; public for
+  /// tests.
   ClearanceJointState evaluate(double time, const SystemKinematics& kinematics,
                                std::span<const double> impact_memory) const;
 
@@ -157,6 +182,9 @@ class ClearanceRevoluteJoint final : public ForceElement {
   /// totals); not the geometry only the outputs need (axis angle, rim centres).
   void evaluate_forces(double time, const SystemKinematics& kinematics,
                        std::span<const double> impact_memory, ClearanceJointState& state) const;
+  /// The film of a lubricated joint into state.film, its force and moment into the totals.
+  void evaluate_film(double time, const SystemKinematics& kinematics, ClearanceJointState& state) const;
+  std::string film_statistics_text() const;
 
   std::string name_;
   ClearanceJointPart bearing_;
@@ -173,6 +201,9 @@ class ClearanceRevoluteJoint final : public ForceElement {
   /// The poses (P_i, a_i, P_j, a_j, world) whose detection scratch_.contacts holds, if any.
   mutable std::array<Vector3, 4> scratch_poses_{};
   mutable bool scratch_holds_poses_ = false;
+  /// The film of a lubricated joint (null when dry). Mutable for the grid solver's warm start,
+  /// which changes a solve's cost, not its answer (joint_film.hpp).
+  mutable std::unique_ptr<JointFilm> film_;
 };
 
 }  // namespace clearjoint::dynamics

@@ -19,6 +19,23 @@ enum class BearingMethod {
   long_bearing,   ///< Sommerfeld closed form (half-Sommerfeld only)
 };
 
+/// "rotation", "squeeze"; "grid", "short", "long": the names every front end uses (model files,
+/// Python, the command line).
+std::string_view to_string(BearingMotion motion) noexcept;
+std::string_view to_string(BearingMethod method) noexcept;
+/// The inverses of to_string; nullopt for any other name.
+std::optional<BearingMotion> bearing_motion_from_string(std::string_view name) noexcept;
+std::optional<BearingMethod> bearing_method_from_string(std::string_view name) noexcept;
+inline constexpr std::array<BearingMotion, 2> kBearingMotions{BearingMotion::rotation,
+                                                             BearingMotion::squeeze};
+inline constexpr std::array<BearingMethod, 3> kBearingMethods{
+    BearingMethod::grid, BearingMethod::short_bearing, BearingMethod::long_bearing};
+
+/// The cavitation model a front end takes when none is named: mass-conserving for the grid (the
+/// handbook's set-up, Raimondi & Boyd, below), half-Sommerfeld, the only one they have, for the
+/// closed forms.
+CavitationModel default_cavitation(BearingMethod method) noexcept;
+
 struct BearingCharacteristicsQuery {
   double eccentricity_ratio = 0.0;  ///< eps in [0, 1)
   double width_ratio = 1.0;         ///< B / D > 0

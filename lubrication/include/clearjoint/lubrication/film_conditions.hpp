@@ -4,6 +4,10 @@
 /// What the film is made of and how it is fed: the lubricant, the cavitation model and the oil
 /// supply. Pressures are gauge pressures (relative to the ambient pressure at the film's ends).
 
+#include <array>
+#include <optional>
+#include <string_view>
+
 #include "clearjoint/geometry/vector3.hpp"
 
 namespace clearjoint::lubrication {
@@ -25,6 +29,14 @@ enum class CavitationModel {
   /// through the cavity refills the gap; mass is conserved across both boundaries.
   mass_conserving,
 };
+
+/// "half_sommerfeld", "mass_conserving": the names every front end uses (model files, Python,
+/// the command line).
+std::string_view to_string(CavitationModel model) noexcept;
+/// The inverse of to_string; nullopt for any other name.
+std::optional<CavitationModel> cavitation_model_from_string(std::string_view name) noexcept;
+inline constexpr std::array<CavitationModel, 2> kCavitationModels{
+    CavitationModel::half_sommerfeld, CavitationModel::mass_conserving};
 
 /// Where the oil comes from. A mass-conserving film needs a supply: fed only by its ends, whose
 /// flow is outward wherever the film carries pressure, it would drain (docs/lubrication.md).

@@ -1,0 +1,81 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "clearjoint/dynamics/joint_lubrication.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "clearjoint/dynamics/errors.hpp"
+#include "clearjoint/geometry/primitives.hpp"
+
+namespace clearjoint::dynamics {
+
+namespace {
+
+/// "a, b, c": the names of every value, for messages.
+template <typename Values>
+std::string known_names(const Values& values) {
+  std::string names;
+  for (auto v : values) names += (names.empty() ? "" : ", ") + std::string(lubrication::to_string(v));
+  return names;
+}
+
+}  // namespace
+
+FilmMethod film_method_from_string(std::string_view name, std::string_view field) {
+  if (const auto method = lubrication::bearing_method_from_string(name)) return *method;
+  throw ModelError(std::string(field) + " = \"" + std::string(name) +
+                   "\": unknown film method (known: " + known_names(lubrication::kBearingMethods) + ")");
+}
+
+lubrication::CavitationModel cavitation_model_from_string(std::string_view name,
+                                                          std::string_view field) {
+  if (const auto model = lubrication::cavitation_model_from_string(name)) return *model;
+  throw ModelError(std::string(field) + " = \"" + std::string(name) +
+                   "\": unknown cavitation model (known: " +
+                   known_names(lubrication::kCavitationModels) + ")");
+}
+
+void validate(const JointLubrication& l, const std::string& name) {
+  require_positive(name + ".viscosity", l.viscosity);
+  require_positive(name + ".film_thickness_limit", l.film_thickness_limit);
+  require_positive(name + ".transition_width", l.transition_width);
+  if (l.method == FilmMethod::grid) {
+    lubrication::ReynoldsGridOptions grid;
+    grid.circumferential_cells = l.circumferential_cells;
+    grid.axial_cells = l.axial_cells;
+    try {
+      lubrication::validate(grid);  // the solver's own minima
+    } catch (const geometry::InvalidInput& e) {
+      throw ModelError(name + ".grid", " = [" + std::to_string(l.circumferential_cells) + ", " +
+                       std::to_string(l.axial_cells) + "]: " + e.what());
+    }
+  }
+  const bool mass_conserving = l.cavitation == lubrication::CavitationModel::mass_conserving;
+  if (mass_conserving && l.method != FilmMethod::grid) {
+    throw ModelError(name + ".cavitation", " = \"mass_conserving\": the closed forms (method " +
+                     std::string(lubrication::to_string(l.method)) + ") are half-Sommerfeld only; use method grid");
+  }
+  if (mass_conserving && !l.groove_direction_B) {
+    throw ModelError(name + ".groove_direction", " is missing: a mass-conserving film fed only at "
+                     "its ends drains (docs/lubrication.md); give the oil groove's direction");
+  }
+  if (l.groove_direction_B) require_nonzero(name + ".groove_direction", *l.groove_direction_B);
+  require_finite(name + ".supply_pressure", l.supply_pressure);
+  if (l.supply_pressure < 0.0) {
+    throw ModelError(name + ".supply_pressure", " = " + format_number(l.supply_pressure) +
+                     ": must not be negative (a gauge pressure the oil is fed at)");
+  }
+}
+
+double film_weight(const JointLubrication& l, double min_thickness) noexcept {
+  const double s = std::clamp((min_thickness - l.film_thickness_limit) / l.transition_width, 0.0, 1.0);
+  return s * s * (3.0 - 2.0 * s);  // smoothstep: 0 and 1 with zero slope at both ends
+}
+
+FilmRegime film_regime(double weight) noexcept {
+  if (weight <= 0.0) return FilmRegime::dry;
+  if (weight >= 1.0) return FilmRegime::film;
+  return FilmRegime::blend;
+}
+
+}  // namespace clearjoint::dynamics
