@@ -14,6 +14,9 @@ using Arguments = std::span<char* const>;
 int run_intersect(Arguments args);
 /// clearjoint detect [FILE]: joint contact detection (scenario, contacts, velocities), JSON Lines.
 int run_detect(Arguments args);
+/// clearjoint bearing --eccentricity-ratio EPS --width-ratio B/D: a journal bearing's handbook
+/// characteristics (lubrication/), one JSON object.
+int run_bearing(Arguments args);
 #ifdef CLEARJOINT_WITH_DYNAMICS
 /// clearjoint simulate MODEL --out DIR: multibody simulation (dynamics/).
 int run_simulate(Arguments args);

@@ -22,6 +22,8 @@ constexpr Command kCommands[] = {
      "rim/plane and rim/cylinder intersections from JSON Lines (file or stdin)"},
     {"detect", clearjoint::app::run_detect,
      "joint contact detection: scenario, contacts, velocities, from JSON Lines (file or stdin)"},
+    {"bearing", clearjoint::app::run_bearing,
+     "a journal bearing's Sommerfeld number, attitude angle and side flow (JSON)"},
 #ifdef CLEARJOINT_WITH_DYNAMICS
     {"simulate", clearjoint::app::run_simulate, "simulate a multibody model file"},
 #endif

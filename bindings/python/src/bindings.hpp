@@ -11,5 +11,6 @@ void bind_simulation(pybind11::module_& module);      // simulation.cpp
 void bind_types(pybind11::module_& module);           // detection.cpp: enums, dimensions, results
 void bind_detection_batch(pybind11::module_& module); // detection_batch.cpp
 void bind_kernel(pybind11::module_& module);          // kernel.cpp
+void bind_lubrication(pybind11::module_& module);     // lubrication.cpp: bearing_characteristics
 
 }  // namespace clearjoint::python

@@ -27,4 +27,5 @@ PYBIND11_MODULE(_core, module) {
   clearjoint::python::bind_detection_batch(module);
   clearjoint::python::bind_kernel(module);
   clearjoint::python::bind_simulation(module);
+  clearjoint::python::bind_lubrication(module);
 }

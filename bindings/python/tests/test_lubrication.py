@@ -1,0 +1,71 @@
+# SPDX-License-Identifier: BSD-3-Clause
+"""clearjoint.lubrication.bearing_characteristics: the closed forms, a published table row, pure
+squeeze, the defaults, and bad input named; `clearjoint bearing` gives the same numbers."""
+import json
+import math
+import os
+import subprocess
+
+import pytest
+
+from clearjoint.lubrication import BearingCharacteristics, bearing_characteristics
+
+
+def test_the_short_bearing_is_its_closed_form():
+    # Ocvirk, pure rotation (docs/lubrication.md): So = (B/D)^2 eps sqrt(pi^2 (1 - eps^2) + 16 eps^2)
+    # / (2 (1 - eps^2)^2), tan beta = pi sqrt(1 - eps^2) / (4 eps).
+    eps, width_ratio = 0.5, 0.25
+    r = bearing_characteristics(eps, width_ratio, method="short")
+    so = width_ratio ** 2 * eps * math.sqrt(math.pi ** 2 * (1 - eps ** 2) + 16 * eps ** 2) / (2 * (1 - eps ** 2) ** 2)
+    assert r.sommerfeld_number == pytest.approx(so, rel=1e-12)
+    assert r.attitude_angle == pytest.approx(math.atan(math.pi * math.sqrt(1 - eps ** 2) / (4 * eps)), rel=1e-12)
+    assert r.cavitation == "half_sommerfeld" and r.grid is None and r.converged
+
+
+def test_the_grid_meets_raimondi_and_boyd():
+    # Raimondi & Boyd (1958) via Shigley ch. 12, l/d = 1, eps = 0.6: S = 0.121, phi = 50.58 deg;
+    # So = 1 / (2 pi S). The C++ test holds 18 rows to 3 % / 5 % (So) and 2 % / 4 % (beta).
+    r = bearing_characteristics(0.6, 1.0)
+    assert isinstance(r, BearingCharacteristics)
+    assert r.cavitation == "mass_conserving" and r.grid == (96, 24) and r.converged
+    assert r.sommerfeld_number == pytest.approx(1 / (2 * math.pi * 0.121), rel=0.03)
+    assert math.degrees(r.attitude_angle) == pytest.approx(50.58, rel=0.02)
+
+
+def test_pure_squeeze_is_carried_and_tends_to_the_short_bearing_when_narrow():
+    grid = bearing_characteristics(0.5, 0.125, motion="squeeze", cavitation="half_sommerfeld", grid=(48, 24))
+    short = bearing_characteristics(0.5, 0.125, motion="squeeze", method="short")
+    assert grid.sommerfeld_number > 0
+    assert grid.sommerfeld_number == pytest.approx(short.sommerfeld_number, rel=0.1)
+
+
+@pytest.mark.parametrize("call, field", [
+    (lambda: bearing_characteristics(1.0, 1.0), "eccentricity_ratio"),
+    (lambda: bearing_characteristics(0.5, -1.0), "width_ratio"),
+    (lambda: bearing_characteristics(0.5, 1.0, motion="spin"), "motion"),
+    (lambda: bearing_characteristics(0.5, 1.0, method="finite"), "method"),
+    (lambda: bearing_characteristics(0.5, 1.0, cavitation="jfo"), "cavitation"),
+    (lambda: bearing_characteristics(0.5, 1.0, method="short", cavitation="mass_conserving"), "cavitation"),
+    (lambda: bearing_characteristics(0.5, 1.0, grid=(1, 1)), "grid"),
+    (lambda: bearing_characteristics(0.5, 1.0, grid=(48.5, 12)), "grid[0]"),
+    (lambda: bearing_characteristics(0.5, 1.0, grid=48), "grid"),
+])
+def test_bad_input_names_the_argument(call, field):
+    with pytest.raises(ValueError, match="^" + field.replace("[", r"\[")):
+        call()
+
+
+@pytest.mark.skipif("CLEARJOINT_CLI" not in os.environ, reason="the clearjoint program was not built")
+def test_the_command_line_gives_the_same_numbers():
+    cli = os.environ["CLEARJOINT_CLI"]
+    out = subprocess.run([cli, "bearing", "--eccentricity-ratio", "0.6", "--width-ratio", "0.5",
+                          "--method", "short"], capture_output=True, text=True, check=True).stdout
+    answer = json.loads(out)
+    r = bearing_characteristics(0.6, 0.5, method="short")
+    assert answer["sommerfeld_number"] == r.sommerfeld_number
+    assert answer["attitude_angle"] == r.attitude_angle
+    bad = subprocess.run([cli, "bearing", "--eccentricity-ratio", "1", "--width-ratio", "1"],
+                         capture_output=True, text=True)
+    assert bad.returncode == 1 and "eccentricity_ratio" in bad.stderr
+    usage = subprocess.run([cli, "bearing", "--width-ratio", "1"], capture_output=True, text=True)
+    assert usage.returncode == 2
