@@ -6,7 +6,8 @@
 # the joint-detection and command-line tests, the SIGKILL loop of `simulate` included, built with
 # ASan+UBSan by Clang 14, and each libFuzzer target for FUZZ_SECONDS on its committed corpus), so
 # that the main suite's summary stays the last line. A sanitizer report or a fuzz finding stops
-# the run with a non-zero status.
+# the run with a non-zero status. Then scripts/check-deb.sh builds, checks, installs and removes
+# the Debian packages (as root).
 #   FUZZ_SECONDS  seconds per fuzz target (default 30)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -16,5 +17,8 @@ bash scripts/build.sh
 command -v clang++-14 >/dev/null ||
   { echo "run-tests: clang++-14 is missing (scripts/install-dependencies.sh installs it)" >&2; exit 1; }
 bash scripts/run-sanitizers.sh --reduced --fuzz-seconds "${FUZZ_SECONDS:-30}"
+# The Debian packages as a user installs them (lintian, install, consumers, the Python smoke
+# script, Octave's help, purge): a second build, for /usr, in build-deb.
+bash scripts/check-deb.sh build-deb
 cd build
 ctest --output-on-failure -j2
