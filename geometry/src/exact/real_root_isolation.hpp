@@ -21,16 +21,12 @@
 #include <memory>
 #include <vector>
 
-#include <CGAL/Gmpq.h>
-#include <CGAL/Polynomial.h>
 #include <gmpxx.h>
 
 #include "clearjoint/geometry/certificate.hpp"
+#include "exact_numbers.hpp"
 
 namespace clearjoint::geometry::detail {
-
-using Rational = CGAL::Gmpq;
-using RationalPolynomial = CGAL::Polynomial<Rational>;
 
 /// Thrown by the exact tiers (and caught by them) when they cannot finish: `why` says why.
 struct ExactTierGiveUp {
