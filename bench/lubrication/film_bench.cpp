@@ -1,15 +1,20 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Cost of one film load (issue 36): the closed forms, and the Reynolds grid cold and warm-started,
-// at the grid that meets the published-table accuracy (96 x 24, bearing_characteristics_test) and
-// at half that. The warm rows alternate between two nearby states (eps 0.6 and 0.601, the step of
-// a dynamics run), so each call starts from the other's solution; the cold rows forget it first,
-// the baseline that the warm start is measured against in the same run.
+// at 48 x 12 (the grid at which bearing_characteristics_test meets the published-table accuracy),
+// at twice and at two thirds of it, each with the band LU and with the general sparse LU it
+// replaced (the baseline, third argument 1). The warm rows alternate between two nearby states
+// (eps 0.6 and 0.601, the step of a dynamics run), so each call starts from the other's
+// solution; the cold rows forget it first. Compare in one run with interleaved repetitions:
 //
-//   lubrication_film_bench --benchmark_out=lubrication.json --benchmark_out_format=json
+//   lubrication_film_bench --benchmark_repetitions=5 --benchmark_enable_random_interleaving=true \
+//     --benchmark_out=lubrication.json --benchmark_out_format=json
 //
 // No random numbers are involved (the states are fixed), so there is no seed to log.
 
 #include <benchmark/benchmark.h>
+
+#include <string>
+#include <utility>
 
 #include "clearjoint/lubrication/long_bearing.hpp"
 #include "clearjoint/lubrication/reynolds_grid.hpp"
@@ -65,6 +70,8 @@ void grid_row(benchmark::State& state, CavitationModel model, bool warm) {
   options.circumferential_cells = static_cast<int>(state.range(0));
   options.axial_cells = static_cast<int>(state.range(1));
   options.cavitation = model;
+  options.linear_solver = static_cast<ReynoldsLinearSolver>(state.range(2));
+  state.SetLabel(std::string(to_string(options.linear_solver)));
   ReynoldsGridSolver solver(options);
   const double radius = 0.01, clearance = 1e-5, width = 0.02;  // B/D = 1
   const JointDimensions joint{radius + clearance, width * 1.001, radius, width};
@@ -95,9 +102,18 @@ void BM_GridMassConservingCold(benchmark::State& state) {
 void BM_GridHalfSommerfeld(benchmark::State& state) {
   grid_row(state, CavitationModel::half_sommerfeld, true);
 }
-BENCHMARK(BM_GridMassConservingWarm)->Args({96, 24})->Args({48, 12})->Unit(benchmark::kMicrosecond);
-BENCHMARK(BM_GridMassConservingCold)->Args({96, 24})->Args({48, 12})->Unit(benchmark::kMicrosecond);
-BENCHMARK(BM_GridHalfSommerfeld)->Args({96, 24})->Args({48, 12})->Unit(benchmark::kMicrosecond);
+// Arguments: N_theta, N_z, ReynoldsLinearSolver (0 band_lu, 1 sparse_lu, the baseline).
+void grid_sizes(benchmark::internal::Benchmark* b) {
+  for (const int solver : {0, 1}) {
+    for (const auto& [n_theta, n_z] : {std::pair{96, 24}, std::pair{48, 12}, std::pair{32, 8}}) {
+      b->Args({n_theta, n_z, solver});
+    }
+  }
+  b->Unit(benchmark::kMicrosecond);
+}
+BENCHMARK(BM_GridMassConservingWarm)->Apply(grid_sizes);
+BENCHMARK(BM_GridMassConservingCold)->Apply(grid_sizes);
+BENCHMARK(BM_GridHalfSommerfeld)->Apply(grid_sizes);
 
 }  // namespace
 

@@ -11,6 +11,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "band_lu.hpp"
 #include "clearjoint/geometry/primitives.hpp"
 
 namespace clearjoint::lubrication {
@@ -41,6 +42,14 @@ void validate(const ReynoldsGridOptions& options) {
                "must be at least 1");
 }
 
+std::string_view to_string(ReynoldsLinearSolver solver) noexcept {
+  switch (solver) {
+    case ReynoldsLinearSolver::band_lu: return "band_lu";
+    case ReynoldsLinearSolver::sparse_lu: return "sparse_lu";
+  }
+  return "unknown";
+}
+
 struct ReynoldsGridSolver::State {
   ReynoldsGridOptions options;
   // The pattern, built for one grid and one supply kind (periodic, or cut at a groove).
@@ -49,9 +58,14 @@ struct ReynoldsGridSolver::State {
   int first_column = 0;  // 1 with a groove: column 0 is the groove
   int columns = 0;       // unknown columns
   int rows = 0;          // unknown rows (axial_cells - 1)
+  // Where each grid column's unknowns sit in the system: see build_pattern.
+  std::vector<int> column_position;
+  // The system, in one of two stores (options.linear_solver); `values` points into it.
+  detail::BandLu band;
   Eigen::SparseMatrix<double> matrix;
-  std::vector<std::array<int, kNeighbours>> positions;  // value index of each stencil entry
   Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> lu;
+  double* values = nullptr;
+  std::vector<std::array<int, kNeighbours>> positions;  // value index of each stencil entry
   // The last solution (u: P where full, f - 1 where cavitated) and which nodes were full.
   bool has_previous = false;
   Eigen::VectorXd u;
@@ -60,8 +74,10 @@ struct ReynoldsGridSolver::State {
   std::vector<double> h_east, h3_east, h3_north, h_rate;
   Eigen::VectorXd rhs;
 
-  int index(int column, int row) const { return (column - first_column) * rows + (row - 1); }
+  int index(int column, int row) const { return column_position[column] * rows + (row - 1); }
   void build_pattern(bool grooved);
+  void clear_values();
+  void factorize_and_solve();
 };
 
 void ReynoldsGridSolver::State::build_pattern(bool grooved) {
@@ -70,6 +86,19 @@ void ReynoldsGridSolver::State::build_pattern(bool grooved) {
   first_column = grooved ? 1 : 0;
   columns = n_theta - first_column;
   const int unknowns = columns * rows;
+  // Unknowns column by column, axially within a column. Cut at a groove, the columns keep their
+  // order and the system is a band of half-width `rows`. Periodic, they are folded (0, 1, N-1,
+  // 2, N-2, ...) so that neighbours around the circle, the pair (N-1, 0) included, lie at most
+  // two columns apart: a band of half-width 2 rows instead of one with far corners.
+  column_position.assign(n_theta, -1);
+  if (grooved) {
+    for (int i = 1; i < n_theta; ++i) column_position[i] = i - 1;
+  } else {
+    for (int i = 0; i < n_theta; ++i) {
+      column_position[i] = i == 0 ? 0 : (2 * i <= n_theta ? 2 * i - 1 : 2 * (n_theta - i));
+    }
+  }
+  const int half_band = grooved ? rows : 2 * rows;
   std::vector<Eigen::Triplet<double>> entries;
   entries.reserve(static_cast<std::size_t>(unknowns) * kNeighbours);
   std::vector<std::array<int, kNeighbours>> neighbour(unknowns);
@@ -85,24 +114,61 @@ void ReynoldsGridSolver::State::build_pattern(bool grooved) {
       }
     }
   }
-  matrix.resize(unknowns, unknowns);
-  matrix.setFromTriplets(entries.begin(), entries.end());
-  matrix.makeCompressed();
   positions.assign(unknowns, {-1, -1, -1, -1, -1});
-  for (int k = 0; k < unknowns; ++k) {
-    for (int e = 0; e < kNeighbours; ++e) {
-      const int m = neighbour[k][e];
-      if (m < 0) continue;
-      // Entry (k, m) lives in column m (column-major storage): find its slot once.
-      const int* begin = matrix.innerIndexPtr() + matrix.outerIndexPtr()[m];
-      const int* end = matrix.innerIndexPtr() + matrix.outerIndexPtr()[m + 1];
-      positions[k][e] = static_cast<int>(std::lower_bound(begin, end, k) - matrix.innerIndexPtr());
+  if (options.linear_solver == ReynoldsLinearSolver::band_lu) {
+    band.resize(unknowns, half_band, half_band);
+    values = band.values();
+    for (int k = 0; k < unknowns; ++k) {
+      for (int e = 0; e < kNeighbours; ++e) {
+        if (neighbour[k][e] >= 0) positions[k][e] = band.slot(k, neighbour[k][e]);
+      }
     }
+  } else {
+    matrix.resize(unknowns, unknowns);
+    matrix.setFromTriplets(entries.begin(), entries.end());
+    matrix.makeCompressed();
+    values = matrix.valuePtr();
+    for (int k = 0; k < unknowns; ++k) {
+      for (int e = 0; e < kNeighbours; ++e) {
+        const int m = neighbour[k][e];
+        if (m < 0) continue;
+        // Entry (k, m) lives in column m (column-major storage): find its slot once.
+        const int* begin = matrix.innerIndexPtr() + matrix.outerIndexPtr()[m];
+        const int* end = matrix.innerIndexPtr() + matrix.outerIndexPtr()[m + 1];
+        positions[k][e] =
+            static_cast<int>(std::lower_bound(begin, end, k) - matrix.innerIndexPtr());
+      }
+    }
+    lu.analyzePattern(matrix);
   }
-  lu.analyzePattern(matrix);
   pattern_built = true;
   pattern_grooved = grooved;
   has_previous = false;
+}
+
+void ReynoldsGridSolver::State::clear_values() {
+  if (options.linear_solver == ReynoldsLinearSolver::band_lu) {
+    band.clear();
+  } else {
+    std::fill(values, values + matrix.nonZeros(), 0.0);
+  }
+}
+
+void ReynoldsGridSolver::State::factorize_and_solve() {
+  if (options.linear_solver == ReynoldsLinearSolver::band_lu) {
+    if (!band.factorize()) {
+      throw std::runtime_error("lubrication: the Reynolds system is singular (zero pivot)");
+    }
+    u = rhs;
+    band.solve(u.data());
+    return;
+  }
+  lu.factorize(matrix);
+  if (lu.info() != Eigen::Success) {
+    throw std::runtime_error("lubrication: the Reynolds system is singular (" +
+                             lu.lastErrorMessage() + ")");
+  }
+  u = lu.solve(rhs);
 }
 
 ReynoldsGridSolver::ReynoldsGridSolver(const ReynoldsGridOptions& options)
@@ -200,7 +266,7 @@ FilmLoad ReynoldsGridSolver::solve(const FilmGeometry& film, const RelativeMotio
   const double r_theta = d_zeta / d_theta, r_zeta = d_theta / d_zeta;
   const double couette = 6.0 * omega * d_zeta;
   const double squeeze = 12.0 * d_theta * d_zeta;
-  double* values = s.matrix.valuePtr();
+  double* values = s.values;
 
   // Node classes: an unknown node k >= 0 (full or cavitated), or a boundary at pressure P_b, f = 1.
   auto unknown_at = [&](int i, int j) -> int {
@@ -216,7 +282,7 @@ FilmLoad ReynoldsGridSolver::solve(const FilmGeometry& film, const RelativeMotio
   int iteration = 0;
   bool converged = false;
   for (; iteration < s.options.max_iterations && !converged;) {
-    std::fill(values, values + s.matrix.nonZeros(), 0.0);
+    s.clear_values();
     s.rhs.setZero();
     for (int i = s.first_column; i < n_theta; ++i) {
       const int east_i = (i + 1) % n_theta, west_i = (i + n_theta - 1) % n_theta;
@@ -266,12 +332,7 @@ FilmLoad ReynoldsGridSolver::solve(const FilmGeometry& film, const RelativeMotio
         }
       }
     }
-    s.lu.factorize(s.matrix);
-    if (s.lu.info() != Eigen::Success) {
-      throw std::runtime_error("lubrication: the Reynolds system is singular (" +
-                               s.lu.lastErrorMessage() + ")");
-    }
-    s.u = s.lu.solve(s.rhs);
+    s.factorize_and_solve();
     ++iteration;
     if (!mass_conserving) {
       converged = true;

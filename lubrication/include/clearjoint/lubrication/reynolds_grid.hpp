@@ -18,11 +18,15 @@
 ///   Comput. 30, 2008): each step one sparse LU solve, stopping when the set of full nodes no
 ///   longer changes. The rupture boundary this gives satisfies the Reynolds condition; the scheme
 ///   is first order next to the cavity (upwinding), second order elsewhere.
+/// Each linear solve factorises the system as a band matrix (unknowns column by column; around
+/// a periodic film the columns are folded so that the band stays narrow), with no set-up of
+/// its own to redo at every call: a 48 x 12 grid costs tens of microseconds.
 /// Why not a Gauss-Seidel/SOR Elrod iteration: its sweeps grow with the grid and its stopping
 /// rule is a tolerance, while the active-set iteration ends exactly after a few solves, and
 /// fewer still when warm-started: the previous call's solution (same grid) is the first guess.
 
 #include <memory>
+#include <string_view>
 
 #include "clearjoint/geometry/joint_geometry.hpp"
 #include "clearjoint/lubrication/film_conditions.hpp"
@@ -31,12 +35,23 @@
 
 namespace clearjoint::lubrication {
 
+/// How each linear system is solved. Both give the same pressures to rounding; the second is
+/// the general sparse factorisation that the first is checked and timed against.
+enum class ReynoldsLinearSolver {
+  band_lu,    ///< Gaussian elimination with partial pivoting in band storage (the default)
+  sparse_lu,  ///< Eigen's SparseLU with a COLAMD ordering, set up again at every factorisation
+};
+
+/// "band_lu", "sparse_lu".
+std::string_view to_string(ReynoldsLinearSolver solver) noexcept;
+
 /// The grid and the cavitation model.
 struct ReynoldsGridOptions {
   int circumferential_cells = 96;  ///< N_theta >= 8
   int axial_cells = 24;            ///< N_z >= 2 (intervals; N_z - 1 unknown rows)
   CavitationModel cavitation = CavitationModel::mass_conserving;
   int max_iterations = 100;  ///< active-set steps before giving up (converged = false)
+  ReynoldsLinearSolver linear_solver = ReynoldsLinearSolver::band_lu;
 };
 
 /// Throw geometry::InvalidInput naming the field for a grid below the minimum (a 1 x 1 grid has no
