@@ -65,8 +65,13 @@ PlanarFilmLoad quadrature(const PlanarFilmState& s) {
 }
 
 TEST(LongBearing, AgreesWithIntegratingItsReynoldsEquationForRotationWhirlAndSqueeze) {
+  // Rotation with whirl, rotation with squeeze, pure squeeze (approach and separation, the
+  // second with its positive region on the other side), a centred journal pushed off, and a
+  // separating journal whose spin still builds a film.
   const PlanarFilmState states[] = {{0.3, 0.0, 5.0, 80.0}, {0.6, 2.0, 0.0, 100.0},
-                                    {0.7, 5.0, 0.0, 0.0}, {0.5, -3.0, 10.0, 60.0}};
+                                    {0.7, 5.0, 0.0, 0.0},  {0.4, -4.0, 0.0, 0.0},
+                                    {0.0, 4.0, 0.0, 0.0},  {0.5, -3.0, 10.0, 60.0},
+                                    {0.9, 0.5, -2.0, 30.0}};
   for (const PlanarFilmState& state : states) {
     const PlanarFilmLoad closed = long_bearing_load(kBearing, state, kViscosity);
     const PlanarFilmLoad brute = quadrature(state);

@@ -15,13 +15,16 @@ namespace clearjoint::lubrication {
 /// psi = pi, where a long bearing is fed. The force is the integral of p > 0 (Guembel) times the
 /// width B; pure rotation gives So = 3 eps sqrt(pi^2 (1 - eps^2) + 4 eps^2) /
 /// ((2 + eps^2)(1 - eps^2)) and tan beta = pi sqrt(1 - eps^2) / (2 eps).
-/// Cost: closed form for eps' = 0; with squeeze the second end of the positive region is found
-/// by safeguarded Newton iteration (kLongBearingRootTolerance). Side flow: 0 (no ends).
+/// Cost: closed form for eps' = 0. With squeeze, the second end of the positive region lies
+/// between the pressure's two extrema (closed form) and is found there by Newton's method in the
+/// Sommerfeld angle, safeguarded by bisection (kLongBearingRootTolerance): a few sines and
+/// cosines, no sampling. Side flow: 0 (no ends).
 PlanarFilmLoad long_bearing_load(const PlanarBearing& bearing, const PlanarFilmState& state,
                                  double viscosity);
 
-/// Angle tolerance (rad) of the pressure root found with squeeze: 1e-13, a few hundred ulps of
-/// 2 pi; the force integrals' sensitivity to it is p' at the root times the tolerance, i.e. nil.
+/// Tolerance (rad, in the Sommerfeld angle) of the pressure root found with squeeze: 1e-13, a
+/// few hundred ulps of 2 pi; the force integrals' sensitivity to it is p at the root times the
+/// tolerance, i.e. nil (p = 0 there).
 inline constexpr double kLongBearingRootTolerance = 1e-13;
 
 }  // namespace clearjoint::lubrication
