@@ -12,7 +12,6 @@
 #include <string>
 #include <utility>
 
-#include "clearjoint/geometry/primitives.hpp"
 #include "clearjoint/lubrication/bearing_characteristics.hpp"
 #include "commands.hpp"
 
@@ -52,15 +51,6 @@ std::optional<std::pair<int, int>> grid_size(const char* text) {
   return std::make_pair(around, across);
 }
 
-/// The value named `name` by the library's table, or a bad-value error naming the option.
-template <typename Value, typename Parse, typename Values>
-Value named(const std::string& name, const char* field, Parse from_string, const Values& values) {
-  if (const std::optional<Value> value = from_string(name)) return *value;
-  std::string known;
-  for (auto v : values) known += (known.empty() ? "" : ", ") + std::string(lubrication::to_string(v));
-  throw geometry::InvalidInput(std::string(field) + " = '" + name + "': unknown (known: " + known + ")");
-}
-
 }  // namespace
 
 int run_bearing(Arguments args) {
@@ -97,27 +87,8 @@ int run_bearing(Arguments args) {
   if (!width_ratio) return usage_error("--width-ratio is missing");
 
   // From here on a value is wrong, not the call: InvalidInput, naming it, exits 1 (main.cpp).
-  lubrication::BearingCharacteristicsQuery query;
-  query.eccentricity_ratio = *eps;
-  query.width_ratio = *width_ratio;
-  query.motion = named<lubrication::BearingMotion>(motion, "motion", lubrication::bearing_motion_from_string,
-                                                   lubrication::kBearingMotions);
-  query.method = named<lubrication::BearingMethod>(method, "method", lubrication::bearing_method_from_string,
-                                                   lubrication::kBearingMethods);
-  query.cavitation = cavitation ? named<lubrication::CavitationModel>(
-                                      *cavitation, "cavitation", lubrication::cavitation_model_from_string,
-                                      lubrication::kCavitationModels)
-                                : lubrication::default_cavitation(query.method);
-  if (grid) {
-    query.grid.circumferential_cells = grid->first;
-    query.grid.axial_cells = grid->second;
-    try {
-      lubrication::validate(query.grid);
-    } catch (const geometry::InvalidInput& e) {
-      throw geometry::InvalidInput("grid = " + std::to_string(grid->first) + "x" +
-                                   std::to_string(grid->second) + ": " + e.what());
-    }
-  }
+  const lubrication::BearingCharacteristicsQuery query = lubrication::query_from_names(
+      *eps, *width_ratio, {.motion = motion, .method = method, .cavitation = cavitation, .grid = grid});
   const lubrication::BearingCharacteristics r = lubrication::bearing_characteristics(query);
   const bool on_grid = query.method == lubrication::BearingMethod::grid;
   nlohmann::ordered_json out;

@@ -6,25 +6,15 @@
 
 #include "clearjoint/dynamics/errors.hpp"
 #include "clearjoint/geometry/primitives.hpp"
+#include "clearjoint/lubrication/names.hpp"
 
 namespace clearjoint::dynamics {
-
-namespace {
-
-/// "a, b, c": the names of every value, for messages.
-template <typename Values>
-std::string known_names(const Values& values) {
-  std::string names;
-  for (auto v : values) names += (names.empty() ? "" : ", ") + std::string(lubrication::to_string(v));
-  return names;
-}
-
-}  // namespace
 
 FilmMethod film_method_from_string(std::string_view name, std::string_view field) {
   if (const auto method = lubrication::bearing_method_from_string(name)) return *method;
   throw ModelError(std::string(field) + " = \"" + std::string(name) +
-                   "\": unknown film method (known: " + known_names(lubrication::kBearingMethods) + ")");
+                   "\": unknown film method (known: " +
+                   lubrication::known_names(lubrication::kBearingMethods) + ")");
 }
 
 lubrication::CavitationModel cavitation_model_from_string(std::string_view name,
@@ -32,7 +22,7 @@ lubrication::CavitationModel cavitation_model_from_string(std::string_view name,
   if (const auto model = lubrication::cavitation_model_from_string(name)) return *model;
   throw ModelError(std::string(field) + " = \"" + std::string(name) +
                    "\": unknown cavitation model (known: " +
-                   known_names(lubrication::kCavitationModels) + ")");
+                   lubrication::known_names(lubrication::kCavitationModels) + ")");
 }
 
 void validate(const JointLubrication& l, const std::string& name) {

@@ -4,9 +4,11 @@
 #include <cmath>
 #include <numbers>
 #include <sstream>
+#include <string>
 
 #include "clearjoint/geometry/primitives.hpp"
 #include "clearjoint/lubrication/long_bearing.hpp"
+#include "clearjoint/lubrication/names.hpp"
 #include "clearjoint/lubrication/short_bearing.hpp"
 
 namespace clearjoint::lubrication {
@@ -16,6 +18,14 @@ namespace {
 /// The bearing's length exceeds the journal's (the film's width) by this fraction: any amount
 /// works, the film is the journal's length (film_thickness.hpp); JointDimensions needs Li > Lj.
 constexpr double kBearingLengthMargin = 1e-3;
+
+/// The value named `name`, or InvalidInput "<field> = '<name>': unknown (known: ...)".
+template <typename Value, std::size_t N>
+Value named(std::string_view name, const char* field, const std::array<Value, N>& values) {
+  if (const std::optional<Value> value = value_named(name, values)) return *value;
+  throw geometry::InvalidInput(std::string(field) + " = '" + std::string(name) +
+                               "': unknown (known: " + known_names(values) + ")");
+}
 
 void require(bool holds, const char* field, double value, const char* rule) {
   if (holds) return;
@@ -45,22 +55,38 @@ std::string_view to_string(BearingMethod method) noexcept {
 }
 
 std::optional<BearingMotion> bearing_motion_from_string(std::string_view name) noexcept {
-  for (BearingMotion m : kBearingMotions) {
-    if (to_string(m) == name) return m;
-  }
-  return std::nullopt;
+  return value_named(name, kBearingMotions);
 }
 
 std::optional<BearingMethod> bearing_method_from_string(std::string_view name) noexcept {
-  for (BearingMethod m : kBearingMethods) {
-    if (to_string(m) == name) return m;
-  }
-  return std::nullopt;
+  return value_named(name, kBearingMethods);
 }
 
 CavitationModel default_cavitation(BearingMethod method) noexcept {
   return method == BearingMethod::grid ? CavitationModel::mass_conserving
                                        : CavitationModel::half_sommerfeld;
+}
+
+BearingCharacteristicsQuery query_from_names(double eccentricity_ratio, double width_ratio,
+                                             const BearingCharacteristicsNames& names) {
+  BearingCharacteristicsQuery query;
+  query.eccentricity_ratio = eccentricity_ratio;
+  query.width_ratio = width_ratio;
+  query.motion = named(names.motion, "motion", kBearingMotions);
+  query.method = named(names.method, "method", kBearingMethods);
+  query.cavitation = names.cavitation ? named(*names.cavitation, "cavitation", kCavitationModels)
+                                      : default_cavitation(query.method);
+  if (names.grid) {
+    query.grid.circumferential_cells = names.grid->first;
+    query.grid.axial_cells = names.grid->second;
+    try {
+      validate(query.grid);  // the solver's own minima, under the name the caller used
+    } catch (const geometry::InvalidInput& e) {
+      throw geometry::InvalidInput("grid = " + std::to_string(names.grid->first) + "x" +
+                                   std::to_string(names.grid->second) + ": " + e.what());
+    }
+  }
+  return query;
 }
 
 BearingCharacteristics bearing_characteristics(const BearingCharacteristicsQuery& query) {

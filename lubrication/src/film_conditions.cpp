@@ -6,6 +6,7 @@
 #include <string>
 
 #include "clearjoint/geometry/primitives.hpp"
+#include "clearjoint/lubrication/names.hpp"
 
 namespace clearjoint::lubrication {
 
@@ -48,10 +49,7 @@ std::string_view to_string(CavitationModel model) noexcept {
 }
 
 std::optional<CavitationModel> cavitation_model_from_string(std::string_view name) noexcept {
-  for (CavitationModel m : kCavitationModels) {
-    if (to_string(m) == name) return m;
-  }
-  return std::nullopt;
+  return value_named(name, kCavitationModels);
 }
 
 }  // namespace clearjoint::lubrication

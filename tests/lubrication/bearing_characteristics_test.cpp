@@ -14,6 +14,8 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <string>
+#include <utility>
 
 #include "clearjoint/geometry/primitives.hpp"
 
@@ -126,6 +128,55 @@ TEST(BearingCharacteristics, RefuseBadInputNamingIt) {
   query.grid = {};
   query.method = BearingMethod::short_bearing;  // closed forms know no mass conservation
   EXPECT_THROW(bearing_characteristics(query), geometry::InvalidInput);
+}
+
+std::string error_of(const BearingCharacteristicsNames& names) {
+  try {
+    query_from_names(0.5, 1.0, names);
+  } catch (const geometry::InvalidInput& error) {
+    return error.what();
+  }
+  return "";
+}
+
+TEST(BearingCharacteristicsQueryFromNames, TakesTheLibrarysNamesAndDefaults) {
+  BearingCharacteristicsNames names;
+  const BearingCharacteristicsQuery defaults = query_from_names(0.5, 0.25, names);
+  EXPECT_EQ(defaults.eccentricity_ratio, 0.5);
+  EXPECT_EQ(defaults.width_ratio, 0.25);
+  EXPECT_EQ(defaults.motion, BearingMotion::rotation);
+  EXPECT_EQ(defaults.method, BearingMethod::grid);
+  EXPECT_EQ(defaults.cavitation, CavitationModel::mass_conserving);
+  EXPECT_EQ(defaults.grid.circumferential_cells, ReynoldsGridOptions{}.circumferential_cells);
+  names.motion = "squeeze";
+  names.method = "short";
+  names.grid = std::pair{40, 10};
+  const BearingCharacteristicsQuery named = query_from_names(0.5, 0.25, names);
+  EXPECT_EQ(named.motion, BearingMotion::squeeze);
+  EXPECT_EQ(named.method, BearingMethod::short_bearing);
+  EXPECT_EQ(named.cavitation, CavitationModel::half_sommerfeld);  // the closed forms' default
+  EXPECT_EQ(named.grid.circumferential_cells, 40);
+  EXPECT_EQ(named.grid.axial_cells, 10);
+  names.cavitation = "mass_conserving";
+  EXPECT_EQ(query_from_names(0.5, 0.25, names).cavitation, CavitationModel::mass_conserving);
+}
+
+TEST(BearingCharacteristicsQueryFromNames, NamesTheFieldAndTheValueItRefuses) {
+  BearingCharacteristicsNames names;
+  names.motion = "spin";
+  EXPECT_EQ(error_of(names), "motion = 'spin': unknown (known: rotation, squeeze)");
+  names = {};
+  names.method = "finite";
+  EXPECT_EQ(error_of(names), "method = 'finite': unknown (known: grid, short, long)");
+  names = {};
+  names.cavitation = "jfo";
+  EXPECT_EQ(error_of(names),
+            "cavitation = 'jfo': unknown (known: half_sommerfeld, mass_conserving)");
+  names = {};
+  names.grid = std::pair{1, 1};
+  EXPECT_EQ(error_of(names), "grid = 1x1: options.circumferential_cells = 1: must be at least 8");
+  names.grid = std::pair{8, 1};
+  EXPECT_EQ(error_of(names).rfind("grid = 8x1: options.axial_cells = 1: ", 0), 0u);
 }
 
 }  // namespace

@@ -10,7 +10,6 @@
 #include <utility>
 
 #include "bindings.hpp"
-#include "clearjoint/geometry/primitives.hpp"
 #include "clearjoint/lubrication/bearing_characteristics.hpp"
 
 namespace py = pybind11;
@@ -19,46 +18,12 @@ namespace clearjoint::python {
 
 namespace {
 
-/// "a, b": the names a front end accepts, from the library's own table.
-template <typename Values>
-std::string known_names(const Values& values) {
-  std::string names;
-  for (auto v : values) names += (names.empty() ? "" : ", ") + std::string(lubrication::to_string(v));
-  return names;
-}
-
-/// The value named `name`, or ValueError "<field> = '<name>': unknown (known: ...)".
-template <typename Value, typename Parse, typename Values>
-Value parse(const std::string& name, const char* field, Parse from_string, const Values& values) {
-  if (const std::optional<Value> value = from_string(name)) return *value;
-  throw geometry::InvalidInput(std::string(field) + " = '" + name + "': unknown (known: " +
-                               known_names(values) + ")");
-}
-
 py::dict characteristics(double eccentricity_ratio, double width_ratio, const std::string& motion,
                          const std::optional<std::string>& cavitation, const std::string& method,
                          const std::optional<std::pair<int, int>>& grid) {
-  lubrication::BearingCharacteristicsQuery query;
-  query.eccentricity_ratio = eccentricity_ratio;
-  query.width_ratio = width_ratio;
-  query.motion = parse<lubrication::BearingMotion>(motion, "motion", lubrication::bearing_motion_from_string,
-                                                   lubrication::kBearingMotions);
-  query.method = parse<lubrication::BearingMethod>(method, "method", lubrication::bearing_method_from_string,
-                                                   lubrication::kBearingMethods);
-  query.cavitation = cavitation ? parse<lubrication::CavitationModel>(
-                                      *cavitation, "cavitation", lubrication::cavitation_model_from_string,
-                                      lubrication::kCavitationModels)
-                                : lubrication::default_cavitation(query.method);
-  if (grid) {
-    query.grid.circumferential_cells = grid->first;
-    query.grid.axial_cells = grid->second;
-    try {
-      lubrication::validate(query.grid);
-    } catch (const geometry::InvalidInput& e) {
-      throw geometry::InvalidInput("grid = (" + std::to_string(grid->first) + ", " +
-                                   std::to_string(grid->second) + "): " + e.what());
-    }
-  }
+  const lubrication::BearingCharacteristicsQuery query = lubrication::query_from_names(
+      eccentricity_ratio, width_ratio,
+      {.motion = motion, .method = method, .cavitation = cavitation, .grid = grid});
   lubrication::BearingCharacteristics result;
   {
     py::gil_scoped_release release;  // a fine grid takes milliseconds

@@ -3,6 +3,11 @@
 /// \file
 /// The handbook query: a plain 360-degree journal bearing's non-dimensional characteristics.
 
+#include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
+
 #include "clearjoint/lubrication/film_conditions.hpp"
 #include "clearjoint/lubrication/reynolds_grid.hpp"
 
@@ -65,6 +70,23 @@ struct BearingCharacteristics {
 /// Throws geometry::InvalidInput naming the field for eps outside [0, 1), a non-positive or
 /// non-finite width ratio, a closed form asked for the mass-conserving model, or a bad grid.
 BearingCharacteristics bearing_characteristics(const BearingCharacteristicsQuery& query);
+
+/// A query's choices as a front end receives them: names (to_string's), and the grid's size.
+struct BearingCharacteristicsNames {
+  std::string motion = "rotation";
+  std::string method = "grid";
+  std::optional<std::string> cavitation;  ///< nullopt: default_cavitation(method)
+  /// (N_theta, N_z); nullopt: ReynoldsGridOptions' defaults.
+  std::optional<std::pair<int, int>> grid;
+};
+
+/// The query for eps, B / D and the named choices: what the command line and Python both call.
+/// Throws geometry::InvalidInput naming the field and its value for an unknown name
+/// ("motion = 'spin': unknown (known: rotation, squeeze)") or a grid below the solver's minima
+/// ("grid = 1x1: options.circumferential_cells = 1: must be at least 8"); eps and B / D are
+/// checked by bearing_characteristics.
+BearingCharacteristicsQuery query_from_names(double eccentricity_ratio, double width_ratio,
+                                             const BearingCharacteristicsNames& names);
 
 /// The relative clearance c / R of the grid's bearing. The characteristics are independent of it
 /// to first order; the film thickness' exact geometry differs from h = c (1 - eps cos psi) by
