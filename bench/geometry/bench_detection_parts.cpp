@@ -18,12 +18,12 @@
 #include <string>
 #include <vector>
 
-#include "certified_rim_roots.hpp"
 #include "clearjoint/geometry/detect_contacts.hpp"
 #include "clearjoint/geometry/intersect_circle_cylinder.hpp"
 #include "clearjoint/geometry/intersect_circle_plane.hpp"
 #include "detection_poses.hpp"
-#include "rim_distance_polynomial.hpp"
+#include "filters/certified_rim_roots.hpp"
+#include "predicates/rim_distance_polynomial.hpp"
 
 namespace {
 

@@ -22,10 +22,10 @@
 
 #include <gtest/gtest.h>
 
+#include "arithmetic/scale_normalisation.hpp"
 #include "geometry_test_support.hpp"
 #include "multiprecision_reference.hpp"
-#include "rounded_point_queries.hpp"
-#include "scale_normalisation.hpp"
+#include "queries/rounded_point_queries.hpp"
 
 namespace clearjoint::geometry {
 namespace {

@@ -21,7 +21,7 @@
 
 #include "geometry_test_support.hpp"
 #include "multiprecision_reference.hpp"
-#include "rounded_point_queries.hpp"
+#include "queries/rounded_point_queries.hpp"
 
 namespace clearjoint::geometry {
 namespace {

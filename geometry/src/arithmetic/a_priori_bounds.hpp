@@ -10,9 +10,9 @@
 
 #include <cmath>
 
+#include "arithmetic/error_bounded.hpp"
+#include "arithmetic/twinned.hpp"
 #include "clearjoint/geometry/vector3.hpp"
-#include "error_bounded.hpp"
-#include "twinned.hpp"
 
 namespace clearjoint::geometry::detail {
 

@@ -13,7 +13,7 @@
 
 #include <array>
 
-#include "angles.hpp"
+#include "arithmetic/angles.hpp"
 
 namespace clearjoint::geometry::detail {
 

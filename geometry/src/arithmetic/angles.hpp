@@ -5,7 +5,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "pair_lanes.hpp"
+#include "arithmetic/pair_lanes.hpp"
 
 namespace clearjoint::geometry::detail {
 

@@ -18,8 +18,8 @@
 
 #include <cmath>
 
-#include "pair_lanes.hpp"
-#include "vector3_of.hpp"
+#include "arithmetic/pair_lanes.hpp"
+#include "arithmetic/vector3_of.hpp"
 
 namespace clearjoint::geometry::detail {
 

@@ -10,8 +10,8 @@
 
 #include <cmath>
 
+#include "arithmetic/error_bounded.hpp"
 #include "clearjoint/geometry/vector3.hpp"
-#include "error_bounded.hpp"
 
 namespace clearjoint::geometry::detail {
 

@@ -14,7 +14,7 @@
 
 #include <cmath>
 
-#include "pair_lanes.hpp"
+#include "arithmetic/pair_lanes.hpp"
 
 namespace clearjoint::geometry::detail {
 

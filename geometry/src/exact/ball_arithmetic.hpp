@@ -10,7 +10,7 @@
 #include <cstddef>
 #include <limits>
 
-#include "error_bounded.hpp"
+#include "arithmetic/error_bounded.hpp"
 
 namespace clearjoint::geometry::detail {
 

@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "circle_plane_exact.hpp"
+#include "exact/circle_plane_exact.hpp"
 
 #include <array>
 
-#include "exact_dyadic.hpp"
-#include "exact_rational_point.hpp"
-#include "plane_terms.hpp"
+#include "exact/exact_dyadic.hpp"
+#include "exact/exact_rational_point.hpp"
+#include "predicates/plane_terms.hpp"
 
 namespace clearjoint::geometry::detail {
 namespace {

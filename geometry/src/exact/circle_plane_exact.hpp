@@ -2,8 +2,9 @@
 #pragma once
 // Exact fallback of the circle-plane topology predicate (CGAL rationals).
 
-#include "clearjoint/geometry/intersect_circle_plane.hpp"
-#include "rounded_point.hpp"
+#include "arithmetic/rounded_point.hpp"
+#include "clearjoint/geometry/circle_plane_topology.hpp"
+#include "clearjoint/geometry/primitives.hpp"
 
 namespace clearjoint::geometry::detail {
 

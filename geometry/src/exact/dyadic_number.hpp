@@ -12,8 +12,8 @@
 #include <stdexcept>
 #include <utility>
 
-#include "error_bounded.hpp"
-#include "exact_numbers.hpp"
+#include "arithmetic/error_bounded.hpp"
+#include "exact/exact_numbers.hpp"
 
 namespace clearjoint::geometry::detail {
 

@@ -7,8 +7,8 @@
 
 #include <CGAL/Gmpq.h>
 
-#include "exact_dyadic.hpp"
-#include "rounded_point.hpp"
+#include "arithmetic/rounded_point.hpp"
+#include "exact/exact_dyadic.hpp"
 
 namespace clearjoint::geometry::detail {
 

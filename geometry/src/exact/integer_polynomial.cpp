@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "integer_polynomial.hpp"
+#include "exact/integer_polynomial.hpp"
 
 #include <gmpxx.h>
 
 #include <algorithm>
 #include <utility>
 
-#include "exact_dyadic.hpp"
+#include "exact/exact_dyadic.hpp"
 
 namespace clearjoint::geometry::detail {
 

@@ -15,9 +15,9 @@
 #include <utility>
 #include <vector>
 
-#include "dyadic_number.hpp"
-#include "error_bounded.hpp"
-#include "exact_numbers.hpp"
+#include "arithmetic/error_bounded.hpp"
+#include "exact/dyadic_number.hpp"
+#include "exact/exact_numbers.hpp"
 
 namespace clearjoint::geometry::detail {
 

@@ -9,9 +9,9 @@
 #include <cmath>
 #include <vector>
 
-#include "dyadic_number.hpp"
-#include "error_bounded.hpp"
-#include "integer_polynomial.hpp"
+#include "arithmetic/error_bounded.hpp"
+#include "exact/dyadic_number.hpp"
+#include "exact/integer_polynomial.hpp"
 
 namespace clearjoint::geometry::detail {
 

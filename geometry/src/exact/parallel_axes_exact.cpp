@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "parallel_axes_exact.hpp"
+#include "exact/parallel_axes_exact.hpp"
 
 #include <CGAL/Gmpq.h>
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "real_root_isolation.hpp"
+#include "exact/real_root_isolation.hpp"
 
 #include <gmpxx.h>
 #include <mpfr.h>
@@ -11,11 +11,11 @@
 #include <stdexcept>
 #include <utility>
 
-#include "dyadic_number.hpp"
-#include "error_bounded.hpp"
-#include "integer_polynomial.hpp"
-#include "local_expansion.hpp"
-#include "sturm_chain.hpp"
+#include "arithmetic/error_bounded.hpp"
+#include "exact/dyadic_number.hpp"
+#include "exact/integer_polynomial.hpp"
+#include "exact/local_expansion.hpp"
+#include "exact/sturm_chain.hpp"
 
 namespace clearjoint::geometry::detail {
 namespace {

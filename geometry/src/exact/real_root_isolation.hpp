@@ -24,7 +24,7 @@
 #include <gmpxx.h>
 
 #include "clearjoint/geometry/certificate.hpp"
-#include "exact_numbers.hpp"
+#include "exact/exact_numbers.hpp"
 
 namespace clearjoint::geometry::detail {
 

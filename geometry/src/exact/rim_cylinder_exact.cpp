@@ -10,7 +10,7 @@
 // whose real roots are the crossings, one each, unless L and M share a root X0 (then the
 // crossings are E meeting the line X = X0 and the line L/(X - X0) + q11 Y = 0).
 
-#include "rim_cylinder_exact.hpp"
+#include "exact/rim_cylinder_exact.hpp"
 
 #include <gmpxx.h>
 
@@ -24,11 +24,11 @@
 #include <utility>
 #include <vector>
 
-#include "angles.hpp"
-#include "exact_dyadic.hpp"
-#include "exact_rational_point.hpp"
-#include "primitives_detail.hpp"
-#include "real_root_isolation.hpp"
+#include "arithmetic/angles.hpp"
+#include "exact/exact_dyadic.hpp"
+#include "exact/exact_rational_point.hpp"
+#include "exact/real_root_isolation.hpp"
+#include "model/primitives_detail.hpp"
 
 namespace clearjoint::geometry::detail {
 namespace {

@@ -6,8 +6,8 @@
 // (docs/reports/benchmarks-kernel.md), so only called when they cannot decide.
 // docs/circle-cylinder.md, section 4.
 
-#include "certified_rim_roots.hpp"
-#include "rounded_point.hpp"
+#include "arithmetic/rounded_point.hpp"
+#include "filters/certified_rim_roots.hpp"
 
 namespace clearjoint::geometry::detail {
 

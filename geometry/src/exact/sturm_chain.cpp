@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "sturm_chain.hpp"
+#include "exact/sturm_chain.hpp"
 
 #include <gmpxx.h>
 #include <mpfr.h>
@@ -9,7 +9,7 @@
 #include <optional>
 #include <utility>
 
-#include "ball_arithmetic.hpp"
+#include "exact/ball_arithmetic.hpp"
 
 namespace clearjoint::geometry::detail {
 namespace {

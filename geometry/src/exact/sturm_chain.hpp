@@ -6,8 +6,8 @@
 #include <cstddef>
 #include <vector>
 
-#include "error_bounded.hpp"
-#include "integer_polynomial.hpp"
+#include "arithmetic/error_bounded.hpp"
+#include "exact/integer_polynomial.hpp"
 
 namespace clearjoint::geometry::detail {
 

@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "candidate_prefilter.hpp"
+#include "filters/candidate_prefilter.hpp"
 
-#include "a_priori_bounds.hpp"
-#include "candidate_prefilter_lanes.hpp"
-#include "filtered_predicate.hpp"
-#include "rim_distance_polynomial.hpp"
-#include "rim_plane_quantities.hpp"
+#include "arithmetic/a_priori_bounds.hpp"
+#include "arithmetic/filtered_predicate.hpp"
+#include "filters/candidate_prefilter_lanes.hpp"
+#include "predicates/rim_distance_polynomial.hpp"
+#include "predicates/rim_plane_quantities.hpp"
 
 namespace clearjoint::geometry::detail {
 namespace {

@@ -13,51 +13,18 @@
 
 #include <array>
 
-#include "a_priori_bounds.hpp"
-#include "candidate_prefilter.hpp"
-#include "error_bounded.hpp"
-#include "pair_lanes.hpp"
-#include "plane_terms.hpp"
-#include "rim_plane_quantities.hpp"
-#include "rim_reach_terms.hpp"
-#include "twinned.hpp"
+#include "arithmetic/a_priori_bounds.hpp"
+#include "arithmetic/error_bounded.hpp"
+#include "arithmetic/lane_vector3.hpp"
+#include "arithmetic/pair_lanes.hpp"
+#include "arithmetic/twinned.hpp"
+#include "filters/candidate_prefilter.hpp"
+#include "predicates/plane_terms.hpp"
+#include "predicates/rim_plane_quantities.hpp"
+#include "predicates/rim_reach_terms.hpp"
 
 namespace clearjoint::geometry::detail {
 
-/// Lane 0 base A's value, lane 1 base B's (or, in rim_distance_polynomial.cpp, a value and its
-/// twin). The Pair of pair_lanes.hpp, not Eigen's Array2d: GCC builds an Array2d from two
-/// doubles by two 8-byte stores and one 16-byte load, which the store buffer cannot forward (a stall of ~10 cycles each time, on the
-/// critical path of the prefilter and of the a priori polynomial); a Pair it builds in registers.
-using Lanes = Pair;
-using LaneFlags = PairMask;
-struct LaneVector3 {
-  Lanes x, y, z;
-};
-
-/// x in both lanes.
-inline Lanes broadcast(double x) { return Lanes{x, x}; }
-inline Lanes lanes(const std::array<double, 2>& v) { return Lanes{v[0], v[1]}; }
-inline LaneVector3 lanes(const std::array<Vector3, 2>& v) {
-  return {Lanes{v[0].x(), v[1].x()}, Lanes{v[0].y(), v[1].y()}, Lanes{v[0].z(), v[1].z()}};
-}
-/// The same vector in both lanes.
-inline LaneVector3 both_lanes(const Vector3& v) { return {broadcast(v.x()), broadcast(v.y()), broadcast(v.z())}; }
-inline LaneVector3 operator+(const LaneVector3& p, const LaneVector3& q) { return {p.x + q.x, p.y + q.y, p.z + q.z}; }
-inline LaneVector3 operator-(const LaneVector3& p, const LaneVector3& q) { return {p.x - q.x, p.y - q.y, p.z - q.z}; }
-/// v scaled per lane (by +-1 in the callers: exact).
-inline LaneVector3 scaled(const Lanes& s, const Vector3& v) { return {s * v.x(), s * v.y(), s * v.z()}; }
-/// |v|_1 per lane, as Eigen's v.cwiseAbs().sum().
-inline Lanes one_norm(const LaneVector3& v) { return magnitude(v.x) + magnitude(v.y) + magnitude(v.z); }
-inline Lanes dot(const Vector3& a, const LaneVector3& v) { return a.x() * v.x + a.y() * v.y + a.z() * v.z; }
-inline Lanes squared_norm(const LaneVector3& v) { return v.x * v.x + v.y * v.y + v.z * v.z; }
-/// c x a per lane.
-inline LaneVector3 cross(const LaneVector3& c, const Vector3& a) {
-  return {c.y * a.z() - c.z * a.y(), c.z * a.x() - c.x * a.z(), c.x * a.y() - c.y * a.x()};
-}
-/// abs_cross (a_priori_bounds.hpp) per lane, for |c| and |a|.
-inline LaneVector3 abs_cross(const LaneVector3& c, const Vector3& a) {
-  return {c.y * a.z() + c.z * a.y(), c.z * a.x() + c.x * a.z(), c.x * a.y() + c.y * a.x()};
-}
 /// CandidatePrefilterInput in lanes, with a_i x a_j and its absolute-value twin
 /// abs_cross(|a_i|, |a_j|) (which detect_contacts' parallelism filter computes too).
 struct CandidateLanes {

@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "certified_rim_roots.hpp"
+#include "filters/certified_rim_roots.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 
-#include "angles.hpp"
+#include "arithmetic/angles.hpp"
 
 namespace clearjoint::geometry::detail {
 namespace {

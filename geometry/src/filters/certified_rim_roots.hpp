@@ -13,7 +13,7 @@
 #include <utility>
 
 #include "clearjoint/geometry/certificate.hpp"
-#include "rim_distance_polynomial.hpp"
+#include "predicates/rim_distance_polynomial.hpp"
 
 namespace clearjoint::geometry::detail {
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "input_checks.hpp"
+#include "model/input_checks.hpp"
 
 #include <cmath>
 #include <sstream>

@@ -6,8 +6,8 @@
 #include <string_view>
 #include <utility>
 
-#include "input_checks.hpp"
-#include "unit_axis_range.hpp"
+#include "arithmetic/unit_axis_range.hpp"
+#include "model/input_checks.hpp"
 
 namespace clearjoint::geometry {
 namespace {

@@ -3,8 +3,8 @@
 
 #include <cmath>
 
-#include "input_checks.hpp"
-#include "primitives_detail.hpp"
+#include "model/input_checks.hpp"
+#include "model/primitives_detail.hpp"
 
 namespace clearjoint::geometry {
 namespace {

@@ -3,7 +3,7 @@
 #include <cmath>
 #include "clearjoint/geometry/joint_geometry.hpp"
 #include "clearjoint/geometry/primitives.hpp"
-#include "input_checks.hpp"
+#include "model/input_checks.hpp"
 
 namespace clearjoint::geometry {
 /// Index k of the smallest |normal_k| (first on ties): the frame uses u' = normal x e_k.

@@ -3,7 +3,7 @@
 
 #include <numbers>
 
-#include "angles.hpp"
+#include "arithmetic/angles.hpp"
 
 namespace clearjoint::geometry {
 

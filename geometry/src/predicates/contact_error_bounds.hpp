@@ -15,9 +15,9 @@
 
 #include <cmath>
 
+#include "arithmetic/error_bounded.hpp"
 #include "clearjoint/geometry/rim_arc.hpp"
 #include "clearjoint/geometry/vector3.hpp"
-#include "error_bounded.hpp"
 
 namespace clearjoint::geometry::detail {
 

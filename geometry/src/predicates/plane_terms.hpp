@@ -13,7 +13,7 @@
 // floating-point instances' bits, and the a priori bounds' chains of roundings
 // (rim_plane_quantities.cpp), follow from it.
 
-#include "vector3_of.hpp"
+#include "arithmetic/vector3_of.hpp"
 
 namespace clearjoint::geometry::detail {
 

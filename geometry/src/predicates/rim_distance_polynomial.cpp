@@ -1,14 +1,14 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "rim_distance_polynomial.hpp"
+#include "predicates/rim_distance_polynomial.hpp"
 
 #include <cmath>
 #include <limits>
 
-#include "a_priori_bounds.hpp"
-#include "candidate_prefilter_lanes.hpp"
-#include "filtered_predicate.hpp"
-#include "primitives_detail.hpp"
-#include "twinned.hpp"
+#include "arithmetic/a_priori_bounds.hpp"
+#include "arithmetic/filtered_predicate.hpp"
+#include "arithmetic/lane_vector3.hpp"
+#include "arithmetic/twinned.hpp"
+#include "model/primitives_detail.hpp"
 
 namespace clearjoint::geometry::detail {
 namespace {

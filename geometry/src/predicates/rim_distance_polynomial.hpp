@@ -8,11 +8,11 @@
 #include <optional>
 #include <type_traits>
 
-#include "angle_grid.hpp"
+#include "arithmetic/angle_grid.hpp"
+#include "arithmetic/error_bounded.hpp"
+#include "arithmetic/pair_lanes.hpp"
 #include "clearjoint/geometry/primitives.hpp"
-#include "error_bounded.hpp"
-#include "pair_lanes.hpp"
-#include "rim_reach_terms.hpp"
+#include "predicates/rim_reach_terms.hpp"
 
 namespace clearjoint::geometry::detail {
 

@@ -1,17 +1,17 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "rim_plane_quantities.hpp"
+#include "predicates/rim_plane_quantities.hpp"
 
 #include <bit>
 #include <cmath>
 #include <optional>
 
-#include "a_priori_bounds.hpp"
-#include "filtered_predicate.hpp"
-#include "pair_lanes.hpp"
-#include "plane_terms.hpp"
-#include "primitives_detail.hpp"
-#include "scale_normalisation.hpp"
-#include "twinned.hpp"
+#include "arithmetic/a_priori_bounds.hpp"
+#include "arithmetic/filtered_predicate.hpp"
+#include "arithmetic/pair_lanes.hpp"
+#include "arithmetic/scale_normalisation.hpp"
+#include "arithmetic/twinned.hpp"
+#include "model/primitives_detail.hpp"
+#include "predicates/plane_terms.hpp"
 
 namespace clearjoint::geometry::detail {
 namespace {

@@ -8,9 +8,9 @@
 
 #include <cmath>
 
+#include "arithmetic/error_bounded.hpp"
 #include "clearjoint/geometry/primitives.hpp"
-#include "error_bounded.hpp"
-#include "plane_terms.hpp"
+#include "predicates/plane_terms.hpp"
 
 namespace clearjoint::geometry::detail {
 

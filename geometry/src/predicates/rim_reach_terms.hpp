@@ -16,7 +16,7 @@
 // floating-point instances' bits, and the a priori chains counted in rim_distance_polynomial.cpp,
 // follow from it.
 
-#include "vector3_of.hpp"
+#include "arithmetic/vector3_of.hpp"
 
 namespace clearjoint::geometry::detail {
 

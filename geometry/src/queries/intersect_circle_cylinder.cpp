@@ -6,14 +6,14 @@
 #include <numbers>
 #include <optional>
 
-#include "angles.hpp"
-#include "certified_rim_roots.hpp"
-#include "filtered_predicate.hpp"
-#include "rim_cylinder_exact.hpp"
-#include "rim_distance_polynomial.hpp"
-#include "primitives_detail.hpp"
-#include "rounded_point_queries.hpp"
-#include "scale_normalisation.hpp"
+#include "arithmetic/angles.hpp"
+#include "arithmetic/filtered_predicate.hpp"
+#include "arithmetic/scale_normalisation.hpp"
+#include "exact/rim_cylinder_exact.hpp"
+#include "filters/certified_rim_roots.hpp"
+#include "model/primitives_detail.hpp"
+#include "predicates/rim_distance_polynomial.hpp"
+#include "queries/rounded_point_queries.hpp"
 
 namespace clearjoint::geometry {
 namespace {

@@ -14,15 +14,15 @@
 #include <cmath>
 #include <numbers>
 
-#include "angles.hpp"
-#include "circle_plane_exact.hpp"
-#include "error_bounded.hpp"
-#include "filtered_predicate.hpp"
-#include "pair_lanes.hpp"
-#include "primitives_detail.hpp"
-#include "rim_plane_quantities.hpp"
-#include "rounded_point_queries.hpp"
-#include "scale_normalisation.hpp"
+#include "arithmetic/angles.hpp"
+#include "arithmetic/error_bounded.hpp"
+#include "arithmetic/filtered_predicate.hpp"
+#include "arithmetic/pair_lanes.hpp"
+#include "arithmetic/scale_normalisation.hpp"
+#include "exact/circle_plane_exact.hpp"
+#include "model/primitives_detail.hpp"
+#include "predicates/rim_plane_quantities.hpp"
+#include "queries/rounded_point_queries.hpp"
 
 namespace clearjoint::geometry {
 namespace {

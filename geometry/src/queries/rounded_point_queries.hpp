@@ -4,9 +4,9 @@
 // rounding (rounded_point.hpp): every certified or exact answer holds for the exact points, not
 // only for the rounded ones. The public queries are these with exact points (nullptr).
 
+#include "arithmetic/rounded_point.hpp"
 #include "clearjoint/geometry/intersect_circle_cylinder.hpp"
 #include "clearjoint/geometry/intersect_circle_plane.hpp"
-#include "rounded_point.hpp"
 
 namespace clearjoint::geometry::detail {
 

@@ -8,7 +8,7 @@
 
 #include <random>
 
-#include "error_bounded.hpp"
+#include "arithmetic/error_bounded.hpp"
 #include "mpfr_reference.hpp"
 
 namespace clearjoint::geometry::internal_testing {

@@ -2,7 +2,7 @@
 // Tests of geometry/src/arithmetic/angle_grid.hpp: every table entry is the double nearest to the exact
 // cosine and sine of its grid angle (256-bit MPFR), and grid_angle splits every angle exactly.
 
-#include "angle_grid.hpp"
+#include "arithmetic/angle_grid.hpp"
 
 #include <gtest/gtest.h>
 

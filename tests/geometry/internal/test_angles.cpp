@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Tests of geometry/src/arithmetic/angles.hpp: wrap_angle maps every finite angle into [0, 2 pi).
 
-#include "angles.hpp"
+#include "arithmetic/angles.hpp"
 
 #include <gtest/gtest.h>
 

@@ -5,7 +5,7 @@
 // far below the a priori guard's old lower limit; and the fused tests decide what rim_reach and
 // rim_side_of_plane decide one by one.
 
-#include "candidate_prefilter.hpp"
+#include "filters/candidate_prefilter.hpp"
 
 #include <gtest/gtest.h>
 
@@ -14,8 +14,8 @@
 
 #include "enclosure_checks.hpp"
 #include "mpfr_reference.hpp"
-#include "rim_distance_polynomial.hpp"
-#include "rim_plane_quantities.hpp"
+#include "predicates/rim_distance_polynomial.hpp"
+#include "predicates/rim_plane_quantities.hpp"
 
 namespace clearjoint::geometry::detail {
 namespace {

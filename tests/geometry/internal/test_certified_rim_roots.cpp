@@ -3,7 +3,7 @@
 // answer must be right (count, enclosures holding the analytic or MPFR roots, sign_after), and
 // multiple roots or ambiguous coefficients must never be "proved".
 
-#include "certified_rim_roots.hpp"
+#include "filters/certified_rim_roots.hpp"
 
 #include <gtest/gtest.h>
 

@@ -3,7 +3,7 @@
 // plane on integer (exactly representable) poses, non-unit normals, both sides, and single-ulp
 // perturbations of a tangency; random poses against 256-bit MPFR extremes.
 
-#include "circle_plane_exact.hpp"
+#include "exact/circle_plane_exact.hpp"
 
 #include <gtest/gtest.h>
 

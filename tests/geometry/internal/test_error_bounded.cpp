@@ -3,7 +3,7 @@
 // result of the exact operands (any real within value +- error), checked against 256-bit MPFR
 // on random and adversarial inputs; sign() is 0 when undecided and never wrong.
 
-#include "error_bounded.hpp"
+#include "arithmetic/error_bounded.hpp"
 
 #include <gtest/gtest.h>
 

@@ -4,7 +4,7 @@
 // thousands of bits and on the edge cases (exact values, subnormal and out-of-range results,
 // negative values, ties of the 53-bit rounding).
 
-#include "exact_dyadic.hpp"
+#include "exact/exact_dyadic.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// Tests of geometry/src/filters/filtered_predicate.hpp: the order of a predicate's tiers, which
+// Tests of geometry/src/arithmetic/filtered_predicate.hpp: the order of a predicate's tiers, which
 // tier runs for which verdict, and which reason reaches the exact tier and the fallback.
 
-#include "filtered_predicate.hpp"
+#include "arithmetic/filtered_predicate.hpp"
 
 #include <optional>
 #include <string>

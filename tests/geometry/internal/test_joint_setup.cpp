@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// Tests of geometry/src/queries/joint_setup.hpp: detect_contacts' fast path (prefilter_if_ready,
+// Tests of geometry/src/joint/joint_setup.hpp: detect_contacts' fast path (prefilter_if_ready,
 // then set_up from its values) must hand on exactly what the general path (set_up from the inputs,
 // eq. 5 by axes_exactly_parallel, the prefilters on set_up's values) computes. Nothing but this
 // test keeps the two in step, so it compares them field by field, bit for bit, over generated
@@ -8,7 +8,7 @@
 // exact radial and axial tangencies, centred journals, axes one ulp from parallel, axes of tiny
 // and huge length and with components far below the others.
 
-#include "joint_setup.hpp"
+#include "joint/joint_setup.hpp"
 
 #include <gtest/gtest.h>
 
@@ -21,7 +21,7 @@
 #include <string>
 #include <vector>
 
-#include "primitives_detail.hpp"
+#include "model/primitives_detail.hpp"
 
 namespace clearjoint::geometry::detail {
 namespace {

@@ -5,7 +5,7 @@
 // polynomials built from them, and the limits (oversized coefficients, a bound that is not
 // dyadic).
 
-#include "real_root_isolation.hpp"
+#include "exact/real_root_isolation.hpp"
 
 #include <gtest/gtest.h>
 

@@ -3,7 +3,7 @@
 // analytic roots and multiplicities (tangencies, double roots, the M = 0 and shared-root branches
 // of the file's elimination), and random integer poses against 256-bit MPFR signs.
 
-#include "rim_cylinder_exact.hpp"
+#include "exact/rim_cylinder_exact.hpp"
 
 #include <gtest/gtest.h>
 

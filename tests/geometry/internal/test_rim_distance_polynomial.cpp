@@ -3,7 +3,7 @@
 // derivative (also by angle addition, value_near) must enclose the exact quantities of the stored primitives (256-bit MPFR from the
 // definitions in primitives.hpp), and rim_reach must never give a wrong decided answer.
 
-#include "rim_distance_polynomial.hpp"
+#include "predicates/rim_distance_polynomial.hpp"
 
 #include <gtest/gtest.h>
 
@@ -15,9 +15,9 @@
 #include <random>
 #include <vector>
 
-#include "a_priori_bounds.hpp"
+#include "arithmetic/a_priori_bounds.hpp"
 #include "enclosure_checks.hpp"
-#include "primitives_detail.hpp"
+#include "model/primitives_detail.hpp"
 #include "mpfr_reference.hpp"
 
 namespace clearjoint::geometry::detail {

@@ -3,7 +3,7 @@
 // and running error) must enclose the exact values of the stored primitives (256-bit MPFR), and
 // rim_side_of_plane must never claim a side the exact rim does not keep.
 
-#include "rim_plane_quantities.hpp"
+#include "predicates/rim_plane_quantities.hpp"
 
 #include <gtest/gtest.h>
 
@@ -13,7 +13,7 @@
 #include <random>
 #include <vector>
 
-#include "a_priori_bounds.hpp"
+#include "arithmetic/a_priori_bounds.hpp"
 #include "enclosure_checks.hpp"
 #include "mpfr_reference.hpp"
 

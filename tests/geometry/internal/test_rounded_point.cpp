@@ -3,7 +3,7 @@
 // the error bound of a rounded base or rim centre must hold against the exact point, computed
 // in rationals, on ordinary, far-from-origin, tiny and huge inputs.
 
-#include "rounded_point.hpp"
+#include "arithmetic/rounded_point.hpp"
 
 #include <gtest/gtest.h>
 
@@ -13,7 +13,7 @@
 
 #include <CGAL/Gmpq.h>
 
-#include "exact_rational_point.hpp"
+#include "exact/exact_rational_point.hpp"
 
 namespace clearjoint::geometry::detail {
 namespace {

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "scale_normalisation.hpp"
+#include "arithmetic/scale_normalisation.hpp"
 
 #include <gtest/gtest.h>
 

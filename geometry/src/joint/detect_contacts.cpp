@@ -6,19 +6,19 @@
 #include <numbers>
 #include <sstream>
 
+#include "arithmetic/a_priori_bounds.hpp"
+#include "arithmetic/angles.hpp"
+#include "arithmetic/error_bounded.hpp"
+#include "arithmetic/scale_normalisation.hpp"
 #include "clearjoint/geometry/intersect_circle_cylinder.hpp"
 #include "clearjoint/geometry/intersect_circle_plane.hpp"
-#include "a_priori_bounds.hpp"
-#include "angles.hpp"
-#include "candidate_prefilter.hpp"
-#include "contact_error_bounds.hpp"
-#include "error_bounded.hpp"
-#include "joint_setup.hpp"
-#include "primitives_detail.hpp"
-#include "rim_distance_polynomial.hpp"
-#include "rim_plane_quantities.hpp"
-#include "rounded_point_queries.hpp"
-#include "scale_normalisation.hpp"
+#include "filters/candidate_prefilter.hpp"
+#include "joint/joint_setup.hpp"
+#include "model/primitives_detail.hpp"
+#include "predicates/contact_error_bounds.hpp"
+#include "predicates/rim_distance_polynomial.hpp"
+#include "predicates/rim_plane_quantities.hpp"
+#include "queries/rounded_point_queries.hpp"
 
 namespace clearjoint::geometry {
 namespace {

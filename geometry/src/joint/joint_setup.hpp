@@ -13,16 +13,16 @@
 #include <array>
 #include <cmath>
 
+#include "arithmetic/a_priori_bounds.hpp"
+#include "arithmetic/error_bounded.hpp"
+#include "arithmetic/rounded_point.hpp"
+#include "arithmetic/scale_normalisation.hpp"
+#include "arithmetic/unit_axis_range.hpp"
 #include "clearjoint/geometry/detect_contacts.hpp"
 #include "clearjoint/geometry/joint_geometry.hpp"
-#include "a_priori_bounds.hpp"
-#include "candidate_prefilter.hpp"
-#include "candidate_prefilter_lanes.hpp"
-#include "error_bounded.hpp"
-#include "parallel_axes_exact.hpp"
-#include "rounded_point.hpp"
-#include "scale_normalisation.hpp"
-#include "unit_axis_range.hpp"
+#include "exact/parallel_axes_exact.hpp"
+#include "filters/candidate_prefilter.hpp"
+#include "filters/candidate_prefilter_lanes.hpp"
 
 namespace clearjoint::geometry::detail {
 
