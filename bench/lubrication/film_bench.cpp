@@ -4,7 +4,8 @@
 // at twice and at two thirds of it, each with the band LU and with the general sparse LU it
 // replaced (the baseline, third argument 1). The warm rows alternate between two nearby states
 // (eps 0.6 and 0.601, the step of a dynamics run), so each call starts from the other's
-// solution; the cold rows forget it first. Compare in one run with interleaved repetitions:
+// solution; the cold rows forget it first. Fed by an axial groove but for the periodic rows.
+// Compare in one run with interleaved repetitions:
 //
 //   lubrication_film_bench --benchmark_repetitions=5 --benchmark_enable_random_interleaving=true \
 //     --benchmark_out=lubrication.json --benchmark_out_format=json
@@ -65,7 +66,8 @@ void BM_LongBearingRotationSqueeze(benchmark::State& state) {
 }
 BENCHMARK(BM_LongBearingRotationSqueeze);
 
-void grid_row(benchmark::State& state, CavitationModel model, bool warm) {
+void grid_row(benchmark::State& state, CavitationModel model, bool warm,
+              OilSupply::Kind supply_kind = OilSupply::Kind::axial_groove) {
   ReynoldsGridOptions options;
   options.circumferential_cells = static_cast<int>(state.range(0));
   options.axial_cells = static_cast<int>(state.range(1));
@@ -77,7 +79,7 @@ void grid_row(benchmark::State& state, CavitationModel model, bool warm) {
   const JointDimensions joint{radius + clearance, width * 1.001, radius, width};
   RelativeMotion motion;
   motion.omega_BJ_W = Eigen::Vector3d(0, 0, 200.0);
-  const OilSupply supply{OilSupply::Kind::axial_groove, -Eigen::Vector3d::UnitX(), 0.0};
+  const OilSupply supply{supply_kind, -Eigen::Vector3d::UnitX(), 0.0};
   const PartPose poses[2] = {PartPose{Eigen::Vector3d(0.6 * clearance, 0, 0), Eigen::Vector3d::UnitZ()},
                              PartPose{Eigen::Vector3d(0.601 * clearance, 0, 0), Eigen::Vector3d::UnitZ()}};
   solver.solve(joint, PartPose{}, poses[1], motion, Lubricant{kViscosity}, supply);
@@ -102,6 +104,11 @@ void BM_GridMassConservingCold(benchmark::State& state) {
 void BM_GridHalfSommerfeld(benchmark::State& state) {
   grid_row(state, CavitationModel::half_sommerfeld, true);
 }
+// No groove: the periodic film of a joint in the dynamics with the half-Sommerfeld model, whose
+// folded band is twice as wide as the grooved one's.
+void BM_GridHalfSommerfeldPeriodic(benchmark::State& state) {
+  grid_row(state, CavitationModel::half_sommerfeld, true, OilSupply::Kind::none);
+}
 // Arguments: N_theta, N_z, ReynoldsLinearSolver (0 band_lu, 1 sparse_lu, the baseline).
 void grid_sizes(benchmark::internal::Benchmark* b) {
   for (const int solver : {0, 1}) {
@@ -114,6 +121,7 @@ void grid_sizes(benchmark::internal::Benchmark* b) {
 BENCHMARK(BM_GridMassConservingWarm)->Apply(grid_sizes);
 BENCHMARK(BM_GridMassConservingCold)->Apply(grid_sizes);
 BENCHMARK(BM_GridHalfSommerfeld)->Apply(grid_sizes);
+BENCHMARK(BM_GridHalfSommerfeldPeriodic)->Apply(grid_sizes);
 
 }  // namespace
 

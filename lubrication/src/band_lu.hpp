@@ -5,9 +5,11 @@
 // in LAPACK's band storage, so that the pivots' fill above the band has its room.
 //
 // Why not a library: the Reynolds grid refactorises one small matrix of fixed pattern at every
-// call. Eigen's SparseLU spends most of a call setting up its supernodal workspace again (over
-// 90 % of the instructions at 48 x 12 cells, callgrind), and Eigen has no band solver; LAPACK's
-// dgbtrf would add a Fortran link dependency to the installed library for these few loops.
+// call. Eigen's SparseLU, general-purpose, redoes its symbolic work (column depth-first searches,
+// supernodes) and allocates and zeroes its workspace at each factorisation: 3.5 M instructions
+// per factorisation at 48 x 12 cells against 0.42 M for this elimination (callgrind). Eigen has
+// no band solver; LAPACK's dgbtrf would add a Fortran link dependency to the installed library
+// for these few loops.
 
 #include <vector>
 
