@@ -79,6 +79,50 @@ TEST(CirclePlaneExact, SeparatesTangencyFromItsOneUlpNeighbours) {
   expect_topology({{0, 0, 0}, {0x1p-60, 0, 1}, 1}, kGround, Topology::two_crossings, 0);
 }
 
+// The tier decides in integers on the stack where the inputs, at their common exponent, fit in
+// some 170 bits, and in GMP's integers otherwise (circle_plane_exact.cpp): each case below is
+// posed once within that range and once with a term hundreds of binades smaller, which forces GMP.
+
+TEST(CirclePlaneExact, SeparatesTangencyFromItsNeighboursWhateverTheInputsSpan) {
+  for (const double tiny : {0x1p-100, 0x1p-400}) {
+    // A plane point off the origin by `tiny` along x, which the plane's normal (0, 0, 1) ignores:
+    // the same tangency, but its integers span the binades down to `tiny`.
+    const Plane3 ground{{tiny, 0, 0}, {0, 0, 1}};
+    expect_topology({{0, 0, 3}, {0, 3, 4}, 5}, ground, Topology::tangent, +1);
+    expect_topology({{0, 0, 3}, {0, 3, 4}, std::nextafter(5.0, 0.0)}, ground, Topology::disjoint, +1);
+    expect_topology({{0, 0, 3}, {0, 3, 4}, std::nextafter(5.0, 10.0)}, ground, Topology::two_crossings, 0);
+    expect_topology({{0, 0, -3}, {0, 3, 4}, 5}, ground, Topology::tangent, -1);
+    // A normal `tiny` off the vertical: the rim in the plane now crosses it.
+    expect_topology({{0, 0, 0}, {tiny, 0, 1}, 1}, kGround, Topology::two_crossings, 0);
+    expect_topology({{5, 5, 0}, {0, 0, 3}, 10}, ground, Topology::circle_in_plane, 0);
+  }
+}
+
+TEST(CirclePlaneExact, DecidesTheExactCentreOfARecipeRatherThanItsRoundedValue) {
+  // Centre 1 + tiny above the ground (minuend 1, subtrahend -tiny), stored rounded to 1: the
+  // rounded rim touches the ground, the exact one stays above it.
+  for (const double tiny : {0x1p-100, 0x1p-400}) {
+    RoundedPoint centre;
+    centre.minuend = {0, 0, 1};
+    centre.subtrahend = {0, 0, -tiny};
+    centre.value = centre.minuend - centre.subtrahend;
+    ASSERT_EQ(centre.value.z(), 1.0);
+    const Circle3 rim{centre.value, {1, 0, 0}, 1};
+    EXPECT_EQ(exact_circle_plane_topology(rim, kGround).topology, Topology::tangent);
+    const CirclePlaneTopologyAndSide exact = exact_circle_plane_topology(rim, kGround, &centre);
+    EXPECT_EQ(exact.topology, Topology::disjoint);
+    EXPECT_EQ(exact.side, +1);
+    // A half-length step of -(4 tiny / 2) (0, 0, 1) takes it to 1 - tiny: crossing; of half
+    // that, back onto the ground: tangent.
+    centre.direction = {0, 0, 1};
+    centre.length = 4 * tiny;
+    centre.sign = -1;
+    EXPECT_EQ(exact_circle_plane_topology(rim, kGround, &centre).topology, Topology::two_crossings);
+    centre.length = 2 * tiny;
+    EXPECT_EQ(exact_circle_plane_topology(rim, kGround, &centre).topology, Topology::tangent);
+  }
+}
+
 TEST(CirclePlaneExact, AgreesWithMultiprecisionExtremesOnRandomPoses) {
   // min/max over the circle of the signed distance to the plane, in MPFR:
   // s / |n_p| -+ r |n_p x n_c| / (|n_p| |n_c|).
