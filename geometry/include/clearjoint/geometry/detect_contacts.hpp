@@ -149,8 +149,9 @@ struct JointContacts {
 
 /// Detect every contact between a journal (pose `journal`) and its bearing (pose `bearing`).
 /// Validates its inputs (InvalidInput names the field). Fixed-size results; no heap allocation
-/// on the double-precision path. The exact fallbacks allocate (CGAL rationals): the kernel's near
-/// a tangency, and eq. (5)'s when an axis component lies outside [2^-450, 2^450].
+/// on the double-precision path. The exact fallbacks may allocate (GMP integers, CGAL rationals):
+/// the rim-against-wall query's near a tangency, the rim-against-base query's only for inputs
+/// hundreds of binades apart, and eq. (5)'s when an axis component lies outside [2^-450, 2^450].
 JointContacts detect_contacts(const JointDimensions& dimensions, const PartPose& bearing,
                               const PartPose& journal, const DetectionOptions& options = {});
 

@@ -1,0 +1,163 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Heap allocations of a detection (issue: "no heap allocation in a detection that does not reach
+// the exact tier"). A simulation detects at every evaluation of its right-hand side, so an
+// allocation there is paid hundreds of thousands of times per simulated second. This executable
+// replaces malloc, calloc and realloc by counting wrappers around glibc's own (__libc_malloc etc.);
+// operator new and GMP's default allocator both end in malloc, so every heap allocation is counted.
+// Under AddressSanitizer, whose runtime owns malloc and refuses a program that replaces it, the
+// sanitizer's allocation hook counts instead (as tests/dynamics/right_hand_side_allocation_test.cpp).
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cmath>
+#include <cstddef>
+#include <vector>
+
+#include "clearjoint/geometry/detect_contacts.hpp"
+#include "clearjoint/geometry/intersect_circle_plane.hpp"
+#include "tilted_journal_scenarios.hpp"
+
+#if defined(__SANITIZE_ADDRESS__)  // GCC
+#define CLEARJOINT_TEST_UNDER_ASAN 1
+#elif defined(__has_feature)  // Clang
+#if __has_feature(address_sanitizer)
+#define CLEARJOINT_TEST_UNDER_ASAN 1
+#endif
+#endif
+
+#ifdef CLEARJOINT_TEST_UNDER_ASAN
+#include <sanitizer/allocator_interface.h>
+#endif
+
+namespace {
+std::atomic<long> heap_allocations{0};
+}  // namespace
+
+#ifdef CLEARJOINT_TEST_UNDER_ASAN
+namespace {
+void count_allocation(const volatile void*, std::size_t) { heap_allocations.fetch_add(1, std::memory_order_relaxed); }
+void ignore_release(const volatile void*) {}
+const bool hooks_installed = __sanitizer_install_malloc_and_free_hooks(count_allocation, ignore_release) != 0;
+}  // namespace
+#else
+extern "C" {
+void* __libc_malloc(std::size_t size);
+void* __libc_calloc(std::size_t count, std::size_t size);
+void* __libc_realloc(void* pointer, std::size_t size);
+
+void* malloc(std::size_t size) {
+  heap_allocations.fetch_add(1, std::memory_order_relaxed);
+  return __libc_malloc(size);
+}
+void* calloc(std::size_t count, std::size_t size) {
+  heap_allocations.fetch_add(1, std::memory_order_relaxed);
+  return __libc_calloc(count, size);
+}
+void* realloc(void* pointer, std::size_t size) {
+  heap_allocations.fetch_add(1, std::memory_order_relaxed);
+  return __libc_realloc(pointer, size);
+}
+}
+#endif
+
+namespace clearjoint::geometry {
+namespace {
+
+using testing::bearing_on_z;
+using testing::kMisalignedCases;
+using testing::kTable2;
+using testing::TiltedJournal;
+
+/// Table 2 journals (mm) around the bearing: centre offsets from well inside the clearance to
+/// beyond it, in 16 directions, each axis tilted a little towards its offset and shifted along
+/// the axis, so that free flight, radial, axial and mixed contacts all occur.
+std::vector<PartPose> journals_around_the_bearing() {
+  std::vector<PartPose> journals;
+  const double cr = kTable2.radial_clearance();
+  for (int direction = 0; direction < 16; ++direction) {
+    const double angle = 0.39 * direction;
+    for (const double eccentricity : {0.3, 0.9, 1.2, 1.6}) {
+      for (const double axial : {0.0, 0.06, -0.12}) {
+        const Vector3 offset(eccentricity * cr * std::cos(angle), eccentricity * cr * std::sin(angle), axial);
+        const Vector3 axis = Vector3(0.004 * std::cos(angle + 0.3), 0.004 * std::sin(angle + 0.3), 1.0).normalized();
+        journals.push_back({offset, axis});
+      }
+    }
+  }
+  for (const auto& scenario : kMisalignedCases) journals.push_back(scenario.journal.pose());
+  return journals;
+}
+
+struct Counted {
+  long allocations = 0;
+  int detections = 0;   ///< those decided in floating point, which were counted
+  int in_contact = 0;   ///< of those, with at least one contact
+};
+
+/// Heap allocations of both detect_contacts overloads on each pose whose answer is not exact
+/// (the floating-point tiers decided it); the first call of each is made before counting.
+Counted count_floating_point_detections(const std::vector<PartPose>& journals) {
+  const PartPose bearing = bearing_on_z();
+  JointContacts reused = detect_contacts(kTable2, bearing, journals.front());
+  Counted counted;
+  for (const PartPose& journal : journals) {
+    const long before = heap_allocations.load();
+    const JointContacts fresh = detect_contacts(kTable2, bearing, journal);
+    detect_contacts(kTable2, bearing, journal, reused);
+    const long allocated = heap_allocations.load() - before;
+    if (fresh.certificate.level == Certainty::exact) continue;
+    counted.allocations += allocated;
+    ++counted.detections;
+    counted.in_contact += fresh.contact_count > 0;
+  }
+  return counted;
+}
+
+TEST(DetectionAllocations, ADetectionDecidedInFloatingPointAllocatesNothing) {
+#ifdef CLEARJOINT_TEST_UNDER_ASAN
+  ASSERT_TRUE(hooks_installed) << "the sanitizer refused the allocation hooks";
+#endif
+  const std::vector<PartPose> journals = journals_around_the_bearing();
+  const Counted counted = count_floating_point_detections(journals);
+  // Nearly every pose is decided in floating point, and both free flight and contact occur.
+  EXPECT_GT(counted.detections, static_cast<int>(journals.size()) * 9 / 10);
+  EXPECT_GT(counted.in_contact, 50);
+  EXPECT_LT(counted.in_contact, counted.detections);
+  EXPECT_EQ(counted.allocations, 0);
+}
+
+TEST(DetectionAllocations, AnExactTangencyOfARimWithAPlaneAllocatesNothing) {
+  // Rims that touch their plane exactly, which only the exact tier decides: the vertical unit
+  // rim on the ground, and the paper's Table 2 in micrometres (a base tilted by
+  // atan(199 / 19800), the journal rim 0.5 um off nominal: 19800 (9900.5 - 10000) + 199 9900 = 0).
+  const Plane3 ground{{0, 0, 0}, {0, 0, 1}};
+  const Circle3 unit_rim{{0, 0, 1}, {1, 0, 0}, 1};
+  const Plane3 tilted_base{{0, 0, 10000}, {0, 199, 19800}};
+  const Circle3 table2_rim{{0, 0, 9900.5}, {0, 0, 1}, 9900};
+  (void)intersect_circle_plane(unit_rim, ground);
+  for (const auto& [rim, plane] : {std::pair{unit_rim, ground}, std::pair{table2_rim, tilted_base}}) {
+    const long before = heap_allocations.load();
+    const CirclePlaneIntersection answer = intersect_circle_plane(rim, plane);
+    const long allocated = heap_allocations.load() - before;
+    EXPECT_EQ(answer.topology, CirclePlaneTopology::tangent);
+    EXPECT_EQ(answer.certificate.level, Certainty::exact);
+    EXPECT_EQ(allocated, 0);
+  }
+}
+
+TEST(DetectionAllocations, CountsAllocationsWhenThereAreSome) {
+#ifdef CLEARJOINT_TEST_UNDER_ASAN
+  ASSERT_TRUE(hooks_installed) << "the sanitizer refused the allocation hooks";
+#endif
+  // The counter itself works: a vector of doubles is one allocation.
+  const long before = heap_allocations.load();
+  std::vector<double> v(100);
+  v[0] = 1.0;
+  // The storage escapes into an empty asm statement: without it Clang may elide the allocation.
+  asm volatile("" : : "r"(v.data()) : "memory");
+  EXPECT_EQ(heap_allocations.load() - before, 1);
+}
+
+}  // namespace
+}  // namespace clearjoint::geometry
