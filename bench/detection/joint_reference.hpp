@@ -28,7 +28,7 @@
 ///   contacts, with beyond_model when a rim has two penetration arcs, is beyond a surface all
 ///   round, or penetrates deeper than the clearance in its direction (cr radial, ca axial).
 ///
-/// Why hand-written: tests/geometry/reference/multiprecision_reference takes its rim centres as
+/// Why hand-written: support/testing/multiprecision_reference takes its rim centres as
 /// doubles, while the joint as given has centres P +- (L/2) a_hat that no double holds; and
 /// CGAL's algebraic kernels isolate the roots of exact (rational) polynomials, while these
 /// coefficients carry square roots (a/|a|). The root isolation (Sturm sequence, bisection,

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// The long run of the detection property test (tests/geometry/joint/joint_properties.hpp):
+// The long run of the detection property test (support/testing/joint_properties.hpp):
 // N random joints (default 1e7), each checked under an A/B swap, a reversed journal axis, a
 // power-of-two change of units and a random rigid motion. Not a timing: a count of violations,
 // which must be 0. Prints a JSON summary (seed, joints, violations, scenarios seen, seconds).

@@ -3,7 +3,7 @@
 /// \file
 /// The real roots of a trigonometric quadratic
 ///   f(theta) = p + q cos + s sin + cc cos^2 + ss sin^2 + cs cos sin
-/// in multiprecision, for the two MPFR references (the rim queries' in tests/geometry/reference,
+/// in multiprecision, for the two MPFR references (the rim queries' in support/testing,
 /// the whole joint's in bench/detection): the excess of a rim over a cylinder wall is such a
 /// function (paper eqs. 16-17), and so is its derivative. Written once over the number type Real
 /// (a Boost.Multiprecision MPFR number; each reference chooses its precision).

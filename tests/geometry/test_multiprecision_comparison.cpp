@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// The kernel against the independent multiprecision reference (tests/geometry/reference), on
+// The kernel against the independent multiprecision reference (support/testing), on
 // random configurations with fixed, recorded seeds:
 //
 //  * journal rims of the paper's Table 2 joint (bearing radius 10 mm, journal radius 9.9 mm,

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// Checks of the multiprecision reference itself (tests/geometry/reference), on configurations whose
+// Checks of the multiprecision reference itself (support/testing), on configurations whose
 // answers are known in closed form, and against brute-force sampling. The kernel is not called
 // here: a reference that is only ever compared with the code it checks proves nothing.
 

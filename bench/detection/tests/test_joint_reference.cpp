@@ -3,7 +3,7 @@
 // tilted in the y-z plane of a bearing on the z axis (the construction of
 // tests/geometry/joint/test_detect_contacts.cpp, here evaluated in MPFR on the exact unit axis),
 // the aligned formulas, a rim crossing the wall four times, and agreement with the independent
-// test reference (tests/geometry/reference) on joints whose centres are doubles.
+// test reference (support/testing) on joints whose centres are doubles.
 
 #include "joint_reference.hpp"
 
@@ -225,7 +225,7 @@ ReferenceJoint joint_with_double_centres(const geometry::JointDimensions& dimens
 Real from_test_reference(const test::reference::Real& x) { return Real(x.str(kReferenceDigits10 + 10)); }
 
 TEST(JointReference, AgreesWithTheTestReferenceOnTheCrossingsOfRoundedRims) {
-  // The independent reference of tests/geometry/reference takes rims with double centres: the
+  // The independent reference of support/testing takes rims with double centres: the
   // joint with its centres rounded as detect_contacts rounds them, in its frame centred on the
   // bearing (the rounded centres are doubles there). Both must find the same crossings of each
   // rim with the wall.
