@@ -100,6 +100,10 @@ Vector3 journal_offset(const FilmGeometry& film, double z) {
 }
 
 double film_thickness(const FilmGeometry& film, double theta, double z) {
+  return film_thickness_along(film, wall_normal(film, theta), z);
+}
+
+double film_thickness_along(const FilmGeometry& film, const Vector3& n, double z) {
   // The ray x(s) = C + s n from the bearing axis' point C in the plane z meets the journal's
   // cylinder where |w_perp + s n_perp|^2 = R_j^2 (w = C - P_j; perp: off the journal's axis),
   //   A s^2 + 2 b s + (|w_perp|^2 - R_j^2) = 0,  A = |n_perp|^2 = 1 - (n . a_j)^2,  b = w_perp . n_perp.
@@ -107,7 +111,6 @@ double film_thickness(const FilmGeometry& film, double theta, double z) {
   //   A t^2 + 2 b' t + k = 0,  b' = A R_j + b,  k = |w_perp|^2 + 2 b R_j - (n . a_j)^2 R_j^2,
   // and take its small root in the form without cancellation, t = -k / (b' + sqrt(b'^2 - A k)).
   // h = c - t, with c = R_i - R_j exact (Sterbenz): no difference of two radii is ever formed.
-  const Vector3 n = wall_normal(film, theta);
   const Vector3& a_j = film.journal_axis_W;
   const Vector3 w = (film.p_WB + z * film.axis_W) - film.p_WJ;
   const Vector3 w_perp = w - w.dot(a_j) * a_j;
@@ -125,6 +128,11 @@ double film_thickness(const FilmGeometry& film, double theta, double z) {
 
 double film_thickness_rate(const FilmGeometry& film, const RelativeMotion& motion, double theta,
                            double z) {
+  return film_thickness_rate_along(film, motion, wall_normal(film, theta), z);
+}
+
+double film_thickness_rate_along(const FilmGeometry& film, const RelativeMotion& motion,
+                                 const Vector3& n, double z) {
   // The journal axis' point in the plane z: q = P_j + s a_j, s = (z - z_j) / (a_j . a_B), with
   // z_j = (P_j - P_B) . a_B. In the bearing's frame (P_B, a_B still) its velocity is
   //   q' = v + s' a_j + s a_j',  a_j' = omega x a_j,
@@ -139,7 +147,7 @@ double film_thickness_rate(const FilmGeometry& film, const RelativeMotion& motio
                         (z - z_journal_centre) * axis_rate.dot(film.axis_W) /
                             (axis_cosine * axis_cosine);
   const Vector3 q_rate = v + s_rate * a_j + s * axis_rate;
-  return -q_rate.dot(wall_normal(film, theta));
+  return -q_rate.dot(n);
 }
 
 double journal_spin(const FilmGeometry& film, const RelativeMotion& motion) {

@@ -236,16 +236,18 @@ FilmLoad ReynoldsGridSolver::solve(const FilmGeometry& film, const RelativeMotio
   s.h_rate.assign(samples, 0.0);
   for (int i = 0; i < n_theta; ++i) {
     const double theta = i * d_theta;
+    const Vector3 n_node = wall_normal(film, theta);  // one sine and cosine per column and face
+    const Vector3 n_east = wall_normal(film, theta + 0.5 * d_theta);
     for (int j = 0; j <= n_z; ++j) {
       const std::size_t at = static_cast<std::size_t>(i) * (n_z + 1) + j;
-      const double h_e = film_thickness(film, theta + 0.5 * d_theta, z_at(j)) / c;
+      const double h_e = film_thickness_along(film, n_east, z_at(j)) / c;
       s.h_east[at] = h_e;
       s.h3_east[at] = h_e * h_e * h_e;
       if (j < n_z) {
-        const double h_n = film_thickness(film, theta, z_at(j + 0.5)) / c;
+        const double h_n = film_thickness_along(film, n_node, z_at(j + 0.5)) / c;
         s.h3_north[at] = h_n * h_n * h_n;
       }
-      s.h_rate[at] = film_thickness_rate(film, motion, theta, z_at(j)) / c;
+      s.h_rate[at] = film_thickness_rate_along(film, motion, n_node, z_at(j)) / c;
     }
   }
   auto at = [&](int i, int j) { return static_cast<std::size_t>(i) * (n_z + 1) + j; };

@@ -66,6 +66,13 @@ double film_thickness(const FilmGeometry& film, double theta, double z);
 double film_thickness_rate(const FilmGeometry& film, const RelativeMotion& motion, double theta,
                            double z);
 
+/// film_thickness and film_thickness_rate along a wall normal n = wall_normal(film, theta) that
+/// the caller has already formed: for sampling many stations z at one theta (the Reynolds grid)
+/// without a sine and a cosine at each.
+double film_thickness_along(const FilmGeometry& film, const Vector3& n_W, double z);
+double film_thickness_rate_along(const FilmGeometry& film, const RelativeMotion& motion,
+                                 const Vector3& n_W, double z);
+
 /// The journal's spin about the bearing's axis relative to the bearing, omega_BJ . a_B (rad/s):
 /// what drives the wedge term.
 double journal_spin(const FilmGeometry& film, const RelativeMotion& motion);
