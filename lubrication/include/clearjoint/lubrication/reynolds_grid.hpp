@@ -20,7 +20,9 @@
 ///   is first order next to the cavity (upwinding), second order elsewhere.
 /// Each linear solve factorises the system as a band matrix (unknowns column by column; around
 /// a periodic film the columns are folded so that the band stays narrow), with no set-up of
-/// its own to redo at every call: a 48 x 12 grid costs tens of microseconds.
+/// its own to redo at every call: a 48 x 12 grid costs tens of microseconds. The band holds
+/// about 3 N_theta N_z^2 doubles with a groove and 6 N_theta N_z^2 without (2.4 MB at 96 x 24,
+/// periodic); its elimination costs of order N_theta N_z^3, so refine around before across.
 /// Why not a Gauss-Seidel/SOR Elrod iteration: its sweeps grow with the grid and its stopping
 /// rule is a tolerance, while the active-set iteration ends exactly after a few solves, and
 /// fewer still when warm-started: the previous call's solution (same grid) is the first guess.
