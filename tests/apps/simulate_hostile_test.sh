@@ -78,7 +78,7 @@ body_name_escape)
   ;;
 force_name_collision)
   # Two names that sanitise to one file wrote one file together (force elements and bodies go
-  # through the same function; dynamics_simulation_test has the clearance-joint case).
+  # through the same function; test_dynamics_simulation has the clearance-joint case).
   model '{"name": "crank arm", "mass": 1, "inertia": [1, 1, 1], "position": [0, 0, 0]},
          {"name": "crank/arm", "mass": 1, "inertia": [1, 1, 1], "position": [1, 0, 0]}' >m.json
   run "$clearjoint" simulate m.json --out out

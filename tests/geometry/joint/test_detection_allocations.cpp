@@ -5,7 +5,7 @@
 // replaces malloc, calloc and realloc by counting wrappers around glibc's own (__libc_malloc etc.);
 // operator new and GMP's default allocator both end in malloc, so every heap allocation is counted.
 // Under AddressSanitizer, whose runtime owns malloc and refuses a program that replaces it, the
-// sanitizer's allocation hook counts instead (as tests/dynamics/right_hand_side_allocation_test.cpp).
+// sanitizer's allocation hook counts instead (as tests/dynamics/test_right_hand_side_allocation.cpp).
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The lubricated joint's parameters and the rule that passes from the film to dry contact
-// (joint_lubrication.hpp). The film itself, through the joint, is in joint_film_test.cpp.
+// (joint_lubrication.hpp). The film itself, through the joint, is in test_joint_film.cpp.
 
 #include "clearjoint/dynamics/joint_lubrication.hpp"
 

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Forces and moments of the clearance joint at one instant, its impact memory, its outputs and its
-// input checks. The integrated behaviour (impacts, energy) is in clearance_joint_impacts_test.cpp.
+// input checks. The integrated behaviour (impacts, energy) is in test_clearance_joint_impacts.cpp.
 
 #include "clearjoint/dynamics/clearance_revolute_joint.hpp"
 
