@@ -4,7 +4,7 @@
 // decided exactly, the joint in the bearing-centred frame (set_up, eqs. 1-4), and the fast path
 // that proves free flight straight from the poses (prefilter_if_ready) and hands set_up's values
 // on when it cannot. The two paths must give the same values bit for bit; a test compares them
-// field by field over generated poses (tests/geometry/internal/test_joint_setup.cpp).
+// field by field over generated poses (tests/geometry/joint/test_joint_setup.cpp).
 //
 // The functions are in an unnamed namespace: detect_contacts.cpp is their one user in the
 // library, and GCC inlines a function called once only where no other translation unit can see

@@ -17,7 +17,7 @@
 
 #include <gtest/gtest.h>
 
-#include "../geometry_test_support.hpp"
+#include "geometry_test_support.hpp"
 #include "tilted_journal_scenarios.hpp"
 
 namespace clearjoint::geometry {
