@@ -46,10 +46,11 @@ cmake -S "$root" -B "$build" \
 
 echo "cross-aarch64: building the geometry library and its tests"
 start=$(date +%s)
-cmake --build "$build/tests/geometry" -j "$jobs"
+# tests/support: the check of the multiprecision reference the geometry tests compare with.
+for folder in tests/geometry tests/support; do cmake --build "$build/$folder" -j "$jobs"; done
 echo "cross-aarch64: built in $(($(date +%s) - start)) s"
 
 echo "cross-aarch64: running the geometry tests under qemu-aarch64"
 start=$(date +%s)
-ctest --test-dir "$build/tests/geometry" -j "$jobs" --output-on-failure
+for folder in tests/geometry tests/support; do ctest --test-dir "$build/$folder" -j "$jobs" --output-on-failure; done
 echo "cross-aarch64: tests ran in $(($(date +%s) - start)) s"
