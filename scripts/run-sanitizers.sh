@@ -59,11 +59,12 @@ cmake -S . -B build-sanitize "${config[@]}" -DCMAKE_CXX_FLAGS="$flags" -DCMAKE_C
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:detect_stack_use_after_return=1
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 if ((reduced)); then
-  # The program (its end-to-end tests run it), the targets of tests/geometry/joint, of
-  # tests/apps (the program's GoogleTest checks) and of fuzz/ (building a folder of the Makefile
-  # build builds its targets).
+  # The program (its end-to-end tests run it), the targets of tests/geometry/joint and
+  # tests/geometry/model (label joint), of tests/apps (the program's GoogleTest checks) and of
+  # fuzz/ (building a folder of the Makefile build builds its targets).
   cmake --build build-sanitize -j"$jobs" --target clearjoint
   cmake --build build-sanitize/tests/geometry/joint -j"$jobs"
+  cmake --build build-sanitize/tests/geometry/model -j"$jobs"
   cmake --build build-sanitize/tests/apps -j"$jobs"
   if [[ -d build-sanitize/fuzz ]]; then cmake --build build-sanitize/fuzz -j"$jobs"; fi
   cd build-sanitize

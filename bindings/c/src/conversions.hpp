@@ -58,7 +58,7 @@ inline geo::DetectionOptions detection_options_of(const cj_options* options) {
 }
 
 /// The C code of a C++ enum value: the value's code in its table (enum_table.hpp), which the C
-/// header's constants repeat; tests/bindings/enum_front_ends_test.cpp checks that they agree.
+/// header's constants repeat; tests/bindings/c/test_c_descriptions.cpp checks that they agree.
 template <geo::TabledEnum E>
 inline int32_t code_of(E value) {
   return static_cast<int32_t>(value);

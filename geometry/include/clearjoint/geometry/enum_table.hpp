@@ -11,7 +11,7 @@
 ///     static constexpr auto entries = std::to_array({named_entry(ContactType::radial, ...), ...});
 ///   };
 /// listing every value in code order from 0 (entries_in_code_order() checks it). A value added
-/// to an enum gets its row here; tests/bindings/enum_front_ends_test.cpp then fails until each
+/// to an enum gets its row here; tests/bindings/c/test_c_descriptions.cpp then fails until each
 /// front-end that lists codes by hand (clearjoint.h, the Fortran module) has it too.
 
 #include <cstddef>
