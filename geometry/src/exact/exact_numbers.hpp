@@ -7,10 +7,23 @@
 #include <CGAL/Polynomial.h>
 #include <gmpxx.h>
 
+#include <cstddef>
+
+#include <boost/container/small_vector.hpp>
+
 namespace clearjoint::geometry::detail {
 
 using Integer = mpz_class;
 using Rational = CGAL::Gmpq;
 using RationalPolynomial = CGAL::Polynomial<Rational>;
+
+/// Coefficients (or Sturm chain members) held inside their owner up to this count, on the heap
+/// beyond it: a polynomial of degree 4 (the rim-cylinder eliminant P, docs/circle-cylinder.md)
+/// has five coefficients and a Sturm chain of at most five members. An isolation forms some
+/// twenty such polynomials and chains per query; a heap block for each cost more than the
+/// arithmetic on their small coefficients.
+inline constexpr std::size_t kInlineCoefficients = 5;
+template <class T>
+using SmallVector = boost::container::small_vector<T, kInlineCoefficients>;
 
 }  // namespace clearjoint::geometry::detail

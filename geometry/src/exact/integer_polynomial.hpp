@@ -29,8 +29,8 @@ struct PendingRemainder;
 /// the double filter of sign evaluations.
 class IntegerPolynomial {
  public:
-  std::vector<mpz_class> c;
-  std::vector<Bounded> scaled;
+  SmallVector<mpz_class> c;
+  SmallVector<Bounded> scaled;
   /// Set on a Sturm chain member whose filter (`scaled`) was formed from multiprecision
   /// enclosures (sturm_chain): `c` then holds only the right number of placeholders, and
   /// exact_form() computes the exact coefficients at the first exact sign that needs them.
@@ -51,7 +51,7 @@ class IntegerPolynomial {
   void prepare_filter() {
     scaled.assign(c.size(), Bounded(0.0));
     long largest = std::numeric_limits<long>::min();
-    std::vector<std::pair<double, long>> parts(c.size());
+    SmallVector<std::pair<double, long>> parts(c.size());
     for (std::size_t i = 0; i < c.size(); ++i) {
       if (sgn(c[i]) == 0) continue;
       long exponent = 0;

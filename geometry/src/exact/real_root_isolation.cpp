@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <optional>
 #include <stdexcept>
@@ -30,7 +31,7 @@ struct Endpoint {
 /// double Newton approximation, proved by two exact sign evaluations at double (hence dyadic)
 /// points. Exact bisection to the same width costs ~64 evaluations; this costs two.
 /// `monic` holds f's coefficients divided by its leading one, as doubles (CGAL::to_double).
-bool tighten_with_double_newton(const IntegerPolynomial& f, const std::vector<double>& monic, Dyadic& low,
+bool tighten_with_double_newton(const IntegerPolynomial& f, const SmallVector<double>& monic, Dyadic& low,
                                 Dyadic& high, int sign_high) {
   const int degree = f.degree();
   double coefficient[5] = {0, 0, 0, 0, 0};
@@ -206,8 +207,8 @@ void bisect(const IntegerPolynomial& f, Dyadic& a, Dyadic& b, int sign_b, const 
 
 /// f's coefficients over its leading one, each as CGAL::to_double gives that rational (mpq_get_d
 /// truncates the exact quotient, whatever the fraction's form, so no gcd is needed).
-std::vector<double> monic_doubles(const IntegerPolynomial& f) {
-  std::vector<double> out(f.c.size());
+SmallVector<double> monic_doubles(const IntegerPolynomial& f) {
+  SmallVector<double> out(f.c.size());
   mpq_t quotient;
   mpq_init(quotient);
   for (std::size_t i = 0; i < f.c.size(); ++i) {
@@ -238,7 +239,7 @@ constexpr long kFewestPairDescentLevels = 2;
 /// takes it). The walk goes on from that node and isolates the same roots in the same intervals.
 /// Empty (nothing spent) where the guess is not proved or skips too few levels.
 std::optional<std::pair<Endpoint, Endpoint>> descend_to_pair(const IntegerPolynomial& f,
-                                                             const std::vector<IntegerPolynomial>& chain,
+                                                             const SturmChain& chain,
                                                              const Endpoint& low, const Endpoint& high,
                                                              EvaluationBudget& budget) {
   const LocalExpansion expansion(f, midpoint(low.x, high.x));
@@ -274,7 +275,7 @@ std::optional<std::pair<Endpoint, Endpoint>> descend_to_pair(const IntegerPolyno
 }
 
 void isolate_factor(const std::shared_ptr<const SquareFreeFactor>& factor, const IntegerPolynomial& f,
-                    const std::vector<IntegerPolynomial>& chain, const Dyadic& bound, std::vector<IsolatedRoot>& out,
+                    const SturmChain& chain, const Dyadic& bound, std::vector<IsolatedRoot>& out,
                     EvaluationBudget& budget) {
   Dyadic width_goal = bound;
   width_goal.exponent -= kRefinementBits;
@@ -286,9 +287,9 @@ void isolate_factor(const std::shared_ptr<const SquareFreeFactor>& factor, const
     Endpoint low, high;
     bool may_descend;
   };
-  std::vector<Node> pending;
+  SmallVector<Node> pending;
   pending.push_back({{lowest, chain_signs(chain, lowest)}, {bound, chain_signs(chain, bound)}, true});
-  std::vector<double> monic;
+  SmallVector<double> monic;
   while (!pending.empty()) {
     auto [low, high, may_descend] = std::move(pending.back());
     pending.pop_back();
@@ -327,9 +328,9 @@ void isolate_factor(const std::shared_ptr<const SquareFreeFactor>& factor, const
 /// positive leading coefficients, multiplicity 1 first, as CGAL's for the same polynomial up to
 /// constant factors; factors of degree 0 left out. `chain` is p's Sturm chain, whose last member
 /// is gcd(p, p').
-std::vector<std::pair<IntegerPolynomial, int>> square_free_factors(const IntegerPolynomial& p,
-                                                                   const std::vector<IntegerPolynomial>& chain) {
-  std::vector<std::pair<IntegerPolynomial, int>> factors;
+SmallVector<std::pair<IntegerPolynomial, int>> square_free_factors(const IntegerPolynomial& p,
+                                                                   const SturmChain& chain) {
+  SmallVector<std::pair<IntegerPolynomial, int>> factors;
   IntegerPolynomial a = p;
   if (chain.back().degree() == 0) {
     factors.emplace_back(std::move(a), 1);
@@ -370,12 +371,12 @@ namespace {
 void isolate(IntegerPolynomial p, const Rational& bound, std::vector<IsolatedRoot>& out, EvaluationBudget& budget) {
   if (p.degree() < 1) return;
   const Dyadic dyadic_bound = Dyadic::of_rational(bound);
-  std::vector<IntegerPolynomial> chain = sturm_chain(p);
+  SturmChain chain = sturm_chain(p);
   auto factors = square_free_factors(p, chain);
   for (auto& [polynomial, multiplicity] : factors) {
     polynomial.prepare_filter();
     const bool whole = polynomial.degree() == p.degree();  // p was square-free: its chain serves
-    std::vector<IntegerPolynomial> own_chain;
+    SturmChain own_chain;
     if (!whole) own_chain = sturm_chain(polynomial);
     const auto shared = std::make_shared<const IntegerPolynomial>(std::move(polynomial));
     const auto factor = std::make_shared<const SquareFreeFactor>(shared, multiplicity);
@@ -397,7 +398,7 @@ int SquareFreeFactor::sign_at(const Rational& x) const {
 bool SquareFreeFactor::shares_root_in(const RationalPolynomial& g, const Rational& low, const Rational& high) const {
   const IntegerPolynomial common = polynomial_gcd(*polynomial_, integer_multiple(g));
   if (common.degree() < 1) return false;
-  const std::vector<IntegerPolynomial> chain = sturm_chain(common);
+  const SturmChain chain = sturm_chain(common);
   return chain_signs(chain, low).variations - chain_signs(chain, high).variations > 0;
 }
 
@@ -410,7 +411,7 @@ void isolate_real_roots(const RationalPolynomial& f, const Rational& bound, std:
   isolate(integer_multiple(f), bound, out, budget);
 }
 
-void isolate_real_roots(std::vector<mpz_class> coefficients, const Rational& bound, std::vector<IsolatedRoot>& out,
+void isolate_real_roots(SmallVector<mpz_class> coefficients, const Rational& bound, std::vector<IsolatedRoot>& out,
                         EvaluationBudget& budget) {
   IntegerPolynomial p;
   p.c = std::move(coefficients);
@@ -432,7 +433,9 @@ void isolate_real_roots(std::vector<mpz_class> coefficients, const Rational& bou
 
 SturmSequence::SturmSequence(const RationalPolynomial& f) {
   const IntegerPolynomial p = integer_multiple(f);
-  if (!p.is_zero()) chain_ = sturm_chain(p);
+  if (p.is_zero()) return;
+  SturmChain chain = sturm_chain(p);
+  chain_.assign(std::make_move_iterator(chain.begin()), std::make_move_iterator(chain.end()));
 }
 SturmSequence::~SturmSequence() = default;
 SturmSequence::SturmSequence(SturmSequence&&) noexcept = default;

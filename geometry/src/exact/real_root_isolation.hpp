@@ -101,7 +101,7 @@ void isolate_real_roots(const RationalPolynomial& f, const Rational& bound, std:
 /// The same for the polynomial with these integer coefficients (constant term first), which the
 /// caller has checked against kMaxCoefficientBits in the rational form it stands for (a nonzero
 /// multiple of this one, with the same roots).
-void isolate_real_roots(std::vector<mpz_class> coefficients, const Rational& bound, std::vector<IsolatedRoot>& out,
+void isolate_real_roots(SmallVector<mpz_class> coefficients, const Rational& bound, std::vector<IsolatedRoot>& out,
                         EvaluationBudget& budget);
 
 /// Sturm's theorem on one polynomial (square-free or not): counts its distinct real roots.

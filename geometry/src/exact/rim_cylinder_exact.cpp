@@ -275,7 +275,7 @@ int exact_sign_at(const ConicIntegers& k, double x, int y_sign) {
   return sl * sgn(l * l - k.b * y2 * m * m);
 }
 
-void check_coefficient_size(const std::vector<Integer>& scaled_p, const Integer& b, long exponent) {
+void check_coefficient_size(const SmallVector<Integer>& scaled_p, const Integer& b, long exponent) {
   const std::size_t power_bits = static_cast<std::size_t>(std::labs(12 * exponent)) + 2;
   const std::size_t b_bits = mpz_sizeinbase(b.get_mpz_t(), 2);
   for (const Integer& x : scaled_p) {
@@ -366,7 +366,7 @@ RimRoots exact_rim_roots_within_budget(const Circle3& circle, const Cylinder3& c
     if (!shared_root) {
       // b P = b (a X^2 - r^2) M^2 + (b L)^2 (degree 16 in the inputs): P's roots.
       const Integer m0 = q01 * q01, m1 = 2 * q01 * q11, m2 = q11 * q11;  // M^2
-      std::vector<Integer> scaled_p = {
+      SmallVector<Integer> scaled_p = {
           b * (-r2 * m0) + scaled_l0 * scaled_l0,
           b * (-r2 * m1) + 2 * scaled_l0 * scaled_l1,
           b * (a * m0 - r2 * m2) + scaled_l1 * scaled_l1 + 2 * scaled_l0 * scaled_l2,

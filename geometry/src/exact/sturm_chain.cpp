@@ -62,7 +62,7 @@ namespace {
 /// the balls decide there (the members are small next to their terms by about the squared
 /// distance of the close roots, within the filter's precision).
 bool filtered_last_members(const IntegerPolynomial& a, const IntegerPolynomial& b, const Integer& divisor,
-                           std::vector<IntegerPolynomial>& chain) {
+                           SturmChain& chain) {
   const Ball a0(a.c[0]), a1(a.c[1]), a2(a.c[2]), a3(a.c[3]);
   const Ball b0(b.c[0]), b1(b.c[1]), b2(b.c[2]);
   Ball x, y, t, r0, r1;
@@ -133,8 +133,10 @@ int filtered_linear_remainder_sign(const IntegerPolynomial& a, const IntegerPoly
 
 }  // namespace
 
-std::vector<IntegerPolynomial> sturm_chain(const IntegerPolynomial& p) {
-  std::vector<IntegerPolynomial> chain{p, derivative(p)};
+SturmChain sturm_chain(const IntegerPolynomial& p) {
+  SturmChain chain;  // (an initializer list would copy both members)
+  chain.push_back(p);
+  chain.push_back(derivative(p));
   Integer g = 1, h = 1, divisor, power;
   while (!chain.back().is_zero() && chain.back().degree() > 0) {
     const IntegerPolynomial& a = chain[chain.size() - 2];

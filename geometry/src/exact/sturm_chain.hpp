@@ -4,12 +4,15 @@
 // their sign variations at a point, which count the distinct real roots between two points.
 
 #include <cstddef>
-#include <vector>
 
 #include "arithmetic/error_bounded.hpp"
 #include "exact/integer_polynomial.hpp"
 
 namespace clearjoint::geometry::detail {
+
+/// A Sturm chain: p, p', then the remainders, held inside the object up to kInlineCoefficients
+/// members (those of a polynomial of degree 4).
+using SturmChain = SmallVector<IntegerPolynomial>;
 
 /// p, p', then -rem of the last two (times positive factors, which leave every sign as it is),
 /// until a constant or a zero remainder (the last member is then a multiple of gcd(p, p')).
@@ -22,15 +25,17 @@ namespace clearjoint::geometry::detail {
 /// than the filters' precision, the last members come from ball arithmetic when it decides them
 /// (filtered_last_members, filtered_linear_remainder_sign); with fewer the exact remainders cost
 /// less than the balls.
-std::vector<IntegerPolynomial> sturm_chain(const IntegerPolynomial& p);
+SturmChain sturm_chain(const IntegerPolynomial& p);
 
 /// Sign changes along the chain at x (zeros skipped), and the sign of its first member there.
 struct ChainSigns {
   int variations = 0;
   int first = 0;
 };
-template <class Point>
-ChainSigns chain_signs(const std::vector<IntegerPolynomial>& chain, const Point& x) {
+/// (`Chain`: a SturmChain, or a std::vector of its members where the members' type is incomplete
+/// at the holder's declaration, as in SturmSequence.)
+template <class Chain, class Point>
+ChainSigns chain_signs(const Chain& chain, const Point& x) {
   const Bounded approximate = bounded(x);
   ChainSigns out;
   int last = 0;
