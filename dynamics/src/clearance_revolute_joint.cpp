@@ -276,7 +276,7 @@ void ClearanceRevoluteJoint::add_forces(const ForceContext& context, Generalised
     forces.add_moment(journal_.body, state.film->moment_on_journal_W);
     forces.add_force_at_point(bearing_.body, -state.film->force_on_journal_W, p_WPj);
     forces.add_moment(bearing_.body, -state.film->moment_on_journal_W);
-    // Engines that keep the impact memory only (engines/common) pass no room for W_film.
+    // A caller that keeps the impact memory only passes no room for W_film.
     if (context.extra_state_rate.size() > static_cast<size_t>(kFilmWorkIndex)) {
       context.extra_state_rate[kFilmWorkIndex] = state.film->power;
     }

@@ -45,10 +45,11 @@ dynamics::ClearanceJointState TwoBodyClearanceJoint::evaluate(std::span<const do
 
 BodyWrenches TwoBodyClearanceJoint::wrenches(std::span<const double> impact_memory) const {
   forces_.clear();
-  double unused_rate[dynamics::kContactSlotCount] = {};  // the memory's rate: zero, never written
-  joint_.add_forces({time_, kinematics_, impact_memory, unused_rate}, forces_);
+  // The extra state's rates: the memory's stay zero; a lubricated joint writes W_film's.
+  double rate[dynamics::kFilmWorkIndex + 1] = {};
+  joint_.add_forces({time_, kinematics_, impact_memory, rate}, forces_);
   return {forces_.force_W(kBearing), forces_.moment_W(kBearing), forces_.force_W(kJournal),
-          forces_.moment_W(kJournal)};
+          forces_.moment_W(kJournal), rate[dynamics::kFilmWorkIndex]};
 }
 
 double TwoBodyClearanceJoint::potential_energy() const { return joint_.potential_energy(kinematics_); }
@@ -65,9 +66,9 @@ bool TwoBodyClearanceJoint::update_impact_memory(std::span<double> impact_memory
   return joint_.update_extra_state(time_, kinematics_, impact_memory);
 }
 
-void TwoBodyClearanceJoint::record_outputs(std::span<const double> impact_memory,
+void TwoBodyClearanceJoint::record_outputs(std::span<const double> extra_state,
                                            std::span<double> values) const {
-  joint_.record_outputs(time_, kinematics_, impact_memory, values);
+  joint_.record_outputs(time_, kinematics_, extra_state, values);
 }
 
 }  // namespace clearjoint::engines

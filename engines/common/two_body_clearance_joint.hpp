@@ -27,12 +27,15 @@ struct RigidMotion {
 };
 
 /// The joint's resultant on each body: a force and its moment about the body frame's origin
-/// (RigidMotion::origin_W), world frame.
+/// (RigidMotion::origin_W), world frame; and, for a lubricated joint, the film's power.
 struct BodyWrenches {
   dynamics::Vector3 force_on_bearing_W = dynamics::Vector3::Zero();
   dynamics::Vector3 moment_on_bearing_W = dynamics::Vector3::Zero();
   dynamics::Vector3 force_on_journal_W = dynamics::Vector3::Zero();
   dynamics::Vector3 moment_on_journal_W = dynamics::Vector3::Zero();
+  /// dW_film/dt [W], the rate of the film's work on the system (dynamics::JointFilmState::power),
+  /// for an engine to integrate as W_film; 0 for a dry joint.
+  double film_power = 0.0;
 };
 
 class TwoBodyClearanceJoint {
@@ -62,8 +65,12 @@ class TwoBodyClearanceJoint {
   /// (dynamics::ClearanceRevoluteJoint::update_extra_state). Returns true if it changed.
   bool update_impact_memory(std::span<double> impact_memory);
 
-  /// dynamics::ClearanceRevoluteJoint::record_outputs at the loaded motions.
-  void record_outputs(std::span<const double> impact_memory, std::span<double> values) const;
+  /// dynamics::ClearanceRevoluteJoint::record_outputs at the loaded motions. `extra_state` is the
+  /// joint's: the impact memory, then W_film for a lubricated joint (its film.work column; NaN
+  /// when the engine passes the memory alone).
+  void record_outputs(std::span<const double> extra_state, std::span<double> values) const;
+  /// True for a joint with an oil film, whose work an engine integrates (BodyWrenches::film_power).
+  bool lubricated() const { return joint_.extra_state_count() > dynamics::kFilmWorkIndex; }
 
   const dynamics::ClearanceRevoluteJoint& joint() const { return joint_; }
   double time() const { return time_; }

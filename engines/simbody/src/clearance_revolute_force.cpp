@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "clearjoint/simbody/clearance_revolute_force.hpp"
 
+#include <algorithm>
+#include <array>
+
 #include "clearjoint/dynamics/errors.hpp"
 #include "two_body_clearance_joint.hpp"
 
@@ -55,6 +58,9 @@ class ClearanceRevoluteForce::Impl final : public SimTK::Force::Custom::Implemen
     // evaluated at Dynamics, are computed again.
     memory_index_ = state.allocateDiscreteVariable(forces_, SimTK::Stage::Dynamics,
                                                    new SimTK::Value<Memory>(Memory(0.0)));
+    // W_film, a continuous state variable that Simbody integrates with the motion, as clearjoint
+    // integrates it in the joint's extra state (dynamics::kFilmWorkIndex); 0 at the start.
+    if (joint_.lubricated()) work_index_ = state.allocateZ(forces_, SimTK::Vector(1, 0.0));
   }
 
   void calcForce(const SimTK::State& state, SimTK::Vector_<SimTK::SpatialVec>& body_forces,
@@ -70,6 +76,13 @@ class ClearanceRevoluteForce::Impl final : public SimTK::Force::Custom::Implemen
         SimTK::SpatialVec(to_simtk(w.moment_on_journal_W), to_simtk(w.force_on_journal_W));
     body_forces[bearing_.body.getMobilizedBodyIndex()] +=
         SimTK::SpatialVec(to_simtk(w.moment_on_bearing_W), to_simtk(w.force_on_bearing_W));
+    // dW_film/dt: a cache entry that a force may write while Simbody realises Dynamics, and that
+    // nothing else writes or clears, so every evaluation sets it.
+    if (joint_.lubricated()) state.updZDot(forces_)[work_index_] = w.film_power;
+  }
+
+  double film_work(const SimTK::State& state) const {
+    return joint_.lubricated() ? state.getZ(forces_)[work_index_] : 0.0;
   }
 
   SimTK::Real calcPotentialEnergy(const SimTK::State& state) const override {
@@ -124,7 +137,14 @@ class ClearanceRevoluteForce::Impl final : public SimTK::Force::Custom::Implemen
   }
   void record_outputs(const SimTK::State& state, std::span<double> values) const {
     load(state);
-    joint_.record_outputs(memory(state), values);
+    // The joint's extra state as clearjoint lays it out: the memory, then W_film.
+    std::array<double, dynamics::kFilmWorkIndex + 1> extra_state{};
+    const std::span<const double> m = memory(state);
+    std::copy(m.begin(), m.end(), extra_state.begin());
+    extra_state[dynamics::kFilmWorkIndex] = film_work(state);
+    joint_.record_outputs(std::span<const double>(extra_state).first(joint_.lubricated() ? extra_state.size()
+                                                                                           : m.size()),
+                          values);
   }
   const dynamics::ClearanceRevoluteJoint& joint() const { return joint_.joint(); }
 
@@ -149,6 +169,7 @@ class ClearanceRevoluteForce::Impl final : public SimTK::Force::Custom::Implemen
   ClearancePartInBody journal_;
   mutable engines::TwoBodyClearanceJoint joint_;
   mutable SimTK::DiscreteVariableIndex memory_index_;
+  mutable SimTK::ZIndex work_index_;  ///< W_film, lubricated joints only
 };
 
 namespace {
@@ -208,6 +229,8 @@ void ClearanceRevoluteForce::add_body_forces(const SimTK::State& state,
 void ClearanceRevoluteForce::record_outputs(const SimTK::State& state, std::span<double> values) const {
   impl().record_outputs(state, values);
 }
+
+double ClearanceRevoluteForce::film_work(const SimTK::State& state) const { return impl().film_work(state); }
 
 const dynamics::ClearanceRevoluteJoint& ClearanceRevoluteForce::joint() const { return impl().joint(); }
 

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "clearjoint/simbody/model_in_simbody.hpp"
 #include "clearjoint/dynamics/csv_directory.hpp"
@@ -21,13 +22,15 @@ std::vector<std::string> body_header() {
           "ax", "ay", "az", "alphax", "alphay", "alphaz"};
 }
 
-/// A body table: its body, its table, and the last Euler parameters written (for their sign).
+/// A body table: its body, its place in the plan, and the Euler parameters of the last report
+/// time (for their sign).
 struct BodyTable {
   SimTK::MobilizedBody body;
   std::size_t table = 0;
   SimTK::Vec4 last_euler_parameters;
 };
 
+/// A clearance joint's table: the joint, its number of columns after time, its place in the plan.
 struct ForceTable {
   const ClearanceRevoluteForce* joint = nullptr;
   std::size_t width = 0;
@@ -55,16 +58,16 @@ double largest_magnitude(const SimTK::Vector& v) {
   return largest;
 }
 
-}  // namespace
-
-dynamics::SimulationSummary simulate_in_simbody(const dynamics::ModelDescription& model,
-                                                dynamics::SimulationOutput& output,
-                                                const dynamics::ProgressCallback& progress) {
-  SimbodyModel built(model);
-  SimTK::MultibodySystem& system = built.system();
-  const SimTK::SimbodyMatterSubsystem& matter = built.matter();
-
+/// The tables of the Simbody route, in the order dynamics::SimulationRun plans clearjoint's own
+/// (bodies, energy, reactions, force elements), with the table each writes.
+struct SimbodyTables {
+  std::vector<dynamics::TablePlan> plan;
   std::vector<BodyTable> bodies;
+  std::vector<ForceTable> forces;
+};
+
+SimbodyTables simbody_tables(const dynamics::ModelDescription& model, const SimbodyModel& built) {
+  SimbodyTables t;
   for (std::size_t k = 0; k < model.output_bodies.size(); ++k) {
     const std::string& name = model.output_bodies[k];
     const SimTK::MobilizedBody& body = built.body(name, "output.bodies[" + std::to_string(k) + "]");
@@ -74,18 +77,16 @@ dynamics::SimulationSummary simulate_in_simbody(const dynamics::ModelDescription
       }
       return dynamics::Vector4(1.0, 0.0, 0.0, 0.0);
     }();
-    bodies.push_back({body, output.add_table(dynamics::table_name("body_", name), body_header()),
-                      SimTK::Vec4(p0[0], p0[1], p0[2], p0[3])});
+    t.bodies.push_back({body, t.plan.size(), SimTK::Vec4(p0[0], p0[1], p0[2], p0[3])});
+    t.plan.push_back({dynamics::table_name("body_", name), body_header()});
   }
-  const std::size_t energy_table =
-      output.add_table("energy", {"time", "kinetic", "potential", "total", "position_violation",
-                                  "velocity_violation", "euler_norm_drift"});
+  t.plan.push_back({"energy", {"time", "kinetic", "potential", "total", "position_violation",
+                               "velocity_violation", "euler_norm_drift"}});
   std::vector<std::string> reaction_header{"time"};
   for (const JointInSimbody& joint : built.joints()) {
     for (const char* c : {"fx", "fy", "fz", "mx", "my", "mz"}) reaction_header.push_back(joint.name + "." + c);
   }
-  const std::size_t reaction_table = output.add_table("reactions", reaction_header);
-  std::vector<ForceTable> forces;
+  t.plan.push_back({"reactions", std::move(reaction_header)});
   for (const auto& joint : built.clearance_joints()) {
     const std::string name(joint->joint().name());
     const auto& wanted = model.output_force_elements;
@@ -95,8 +96,44 @@ dynamics::SimulationSummary simulate_in_simbody(const dynamics::ModelDescription
     std::vector<std::string> header = joint->joint().output_columns();
     const std::size_t width = header.size();
     header.insert(header.begin(), "time");
-    forces.push_back({joint.get(), width, output.add_table(dynamics::table_name("force_", name), header)});
+    t.forces.push_back({joint.get(), width, t.plan.size()});
+    t.plan.push_back({dynamics::table_name("force_", name), std::move(header)});
   }
+  return t;
+}
+
+/// Throws std::logic_error naming the first table whose name or columns differ between the two
+/// plans: a column added to one engine's tables and not to the other's.
+void check_same_plan(const std::vector<dynamics::TablePlan>& simbody,
+                     const std::vector<dynamics::TablePlan>& clearjoint) {
+  for (std::size_t k = 0; k < std::max(simbody.size(), clearjoint.size()); ++k) {
+    const bool same = k < simbody.size() && k < clearjoint.size() && simbody[k].name == clearjoint[k].name &&
+                      simbody[k].header == clearjoint[k].header;
+    if (same) continue;
+    const std::string name = k < clearjoint.size() ? clearjoint[k].name : simbody[k].name;
+    throw std::logic_error("the Simbody route's table " + std::to_string(k) + " (" + name +
+                           ") differs from clearjoint's plan in its name or columns");
+  }
+}
+
+}  // namespace
+
+dynamics::SimulationSummary simulate_in_simbody(const dynamics::SimulationRun& run,
+                                                dynamics::SimulationOutput& output,
+                                                const dynamics::ProgressCallback& progress) {
+  const dynamics::ModelDescription& model = run.model();
+  SimbodyModel built(model);
+  SimTK::MultibodySystem& system = built.system();
+  const SimTK::SimbodyMatterSubsystem& matter = built.matter();
+
+  SimbodyTables tables = simbody_tables(model, built);
+  check_same_plan(tables.plan, run.tables());
+  std::vector<std::size_t> table_index;
+  for (const dynamics::TablePlan& table : tables.plan) table_index.push_back(output.add_table(table.name, table.header));
+  std::vector<BodyTable>& bodies = tables.bodies;
+  const std::vector<ForceTable>& forces = tables.forces;
+  const std::size_t energy_table = table_index[bodies.size()];
+  const std::size_t reaction_table = table_index[bodies.size() + 1];
 
   dynamics::SimulationSummary summary;
   summary.initial_conditions = built.initial_conditions();
@@ -104,27 +141,10 @@ dynamics::SimulationSummary simulate_in_simbody(const dynamics::ModelDescription
   const double span = model.solver.end_time - model.solver.start_time;
   std::vector<double> row;
   SimTK::Vector_<SimTK::SpatialVec> mobilizer_reactions;
+  const long decimation = model.output_decimation;
+  long report_index = 0;
 
-  auto observe = [&](const SimTK::State& state) {
-    system.realize(state, SimTK::Stage::Acceleration);
-    const double t = state.getTime();
-    for (BodyTable& b : bodies) {
-      const SimTK::Transform& X_GB = b.body.getBodyTransform(state);
-      const SimTK::SpatialVec& V = b.body.getBodyVelocity(state);
-      const SimTK::SpatialVec& A = b.body.getBodyAcceleration(state);
-      SimTK::Vec4 e = X_GB.R().convertRotationToQuaternion().asVec4();
-      if (~e * b.last_euler_parameters < 0.0) e = -e;  // q and -q are one rotation
-      b.last_euler_parameters = e;
-      row.assign({t});
-      append(row, X_GB.p());
-      row.insert(row.end(), {e[0], e[1], e[2], e[3]});
-      append(row, V[1]);
-      append(row, V[0]);
-      append(row, A[1]);
-      append(row, A[0]);
-      output.write_row(b.table, row);
-    }
-
+  auto write_reactions_and_forces = [&](const SimTK::State& state, double t) {
     matter.calcMobilizerReactionForces(state, mobilizer_reactions);
     row.assign({t});
     for (const JointInSimbody& joint : built.joints()) {
@@ -152,16 +172,45 @@ dynamics::SimulationSummary simulate_in_simbody(const dynamics::ModelDescription
       row.assign(f.width + 1, 0.0);
       row[0] = t;
       f.joint->record_outputs(state, std::span<double>(row).subspan(1));
-      output.write_row(f.table, row);
+      output.write_row(table_index[f.table], row);
     }
+  };
+
+  auto observe = [&](const SimTK::State& state, bool last) {
+    // Rows of every decimation-th report time and of the last, as dynamics::SimulationRun writes
+    // them; the summary and the Euler parameters' sign see every one.
+    const bool written = report_index % decimation == 0 || last;
+    ++report_index;
+    system.realize(state, SimTK::Stage::Acceleration);
+    const double t = state.getTime();
+    for (BodyTable& b : bodies) {
+      const SimTK::Transform& X_GB = b.body.getBodyTransform(state);
+      SimTK::Vec4 e = X_GB.R().convertRotationToQuaternion().asVec4();
+      if (~e * b.last_euler_parameters < 0.0) e = -e;  // q and -q are one rotation
+      b.last_euler_parameters = e;
+      if (!written) continue;
+      const SimTK::SpatialVec& V = b.body.getBodyVelocity(state);
+      const SimTK::SpatialVec& A = b.body.getBodyAcceleration(state);
+      row.assign({t});
+      append(row, X_GB.p());
+      row.insert(row.end(), {e[0], e[1], e[2], e[3]});
+      append(row, V[1]);
+      append(row, V[0]);
+      append(row, A[1]);
+      append(row, A[0]);
+      output.write_row(table_index[b.table], row);
+    }
+    if (written) write_reactions_and_forces(state, t);
 
     const double kinetic = system.calcKineticEnergy(state);
     const double potential = system.calcPotentialEnergy(state);
     const double position_violation = largest_magnitude(state.getQErr());
     const double velocity_violation = largest_magnitude(state.getUErr());
     const double drift = quaternion_norm_drift(matter, state);
-    output.write_row(energy_table, std::vector<double>{t, kinetic, potential, kinetic + potential,
-                                                       position_violation, velocity_violation, drift});
+    if (written) {
+      output.write_row(energy_table, std::vector<double>{t, kinetic, potential, kinetic + potential,
+                                                         position_violation, velocity_violation, drift});
+    }
     summary.max_energy_change =
         std::max(summary.max_energy_change, std::abs(kinetic + potential - summary.initial_energy));
     summary.max_position_violation = std::max(summary.max_position_violation, position_violation);
@@ -177,7 +226,7 @@ dynamics::SimulationSummary simulate_in_simbody(const dynamics::ModelDescription
   integrator.setFinalTime(model.solver.end_time);
   SimTK::TimeStepper stepper(system, integrator);
   stepper.initialize(built.initial_state());
-  observe(stepper.getState());
+  observe(stepper.getState(), false);
 
   const long report_count = std::max(
       1L, std::lround(std::ceil(span / model.solver.report_step * (1.0 - kReportCountSlack))));
@@ -195,7 +244,7 @@ dynamics::SimulationSummary simulate_in_simbody(const dynamics::ModelDescription
       summary.integration.smallest_step = std::min(summary.integration.smallest_step, step);
       summary.integration.largest_step = std::max(summary.integration.largest_step, step);
     }
-    observe(stepper.getState());
+    observe(stepper.getState(), k == report_count);
   }
   output.commit();
 
@@ -210,13 +259,21 @@ dynamics::SimulationSummary simulate_in_simbody(const dynamics::ModelDescription
 }
 
 dynamics::SimulationSummary simulate_in_simbody(const dynamics::ModelDescription& model,
+                                                dynamics::SimulationOutput& output,
+                                                const dynamics::ProgressCallback& progress) {
+  const dynamics::SimulationRun plan(model, dynamics::RunOptions{.allow_large = true});
+  return simulate_in_simbody(plan, output, progress);
+}
+
+dynamics::SimulationSummary simulate_in_simbody(const dynamics::ModelDescription& model,
                                                 const std::filesystem::path& output_directory,
                                                 const dynamics::ProgressCallback& progress) {
   // The model is built twice (once here to check it before the directory exists): building is
   // cheap beside the run.
+  const dynamics::SimulationRun plan(model, dynamics::RunOptions{.allow_large = true});
   { SimbodyModel check(model); }
   dynamics::CsvDirectory files(output_directory);
-  return simulate_in_simbody(model, files, progress);
+  return simulate_in_simbody(plan, files, progress);
 }
 
 }  // namespace clearjoint::simbody

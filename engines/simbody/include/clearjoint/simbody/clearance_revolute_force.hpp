@@ -19,6 +19,13 @@
 ///
 /// The memory is not set by Simbody at the start of a run: call initialize_impact_memory() on
 /// the initial State (after realising it to Velocity) when the parts may start in contact.
+///
+/// Lubricated joints (parameters.lubrication). The oil film's force and moment are applied with
+/// the contacts', and its work on the system, W_film(t) = integral of the film's power
+/// (dynamics::JointFilmState::power), is a continuous state variable (a Simbody z, 0 at the
+/// start) that Simbody integrates with the motion under the same accuracy: the force table's
+/// film.work, and with System::calcEnergy the energy balance E(t) - E(0) = W_film(t) of a
+/// damping-free joint, as in clearjoint's own run.
 
 #include <span>
 #include <string>
@@ -60,8 +67,10 @@ class ClearanceRevoluteForce : public SimTK::Force::Custom {
   /// assemble forces themselves, and for benchmarks.
   void add_body_forces(const SimTK::State& state, SimTK::Vector_<SimTK::SpatialVec>& body_forces) const;
   /// The values of dynamics::ClearanceRevoluteJoint::output_columns() at `state` (realised to
-  /// Velocity): the columns of clearjoint's force_<name>.csv.
+  /// Velocity): the columns of clearjoint's force_<name>.csv, film.work from film_work().
   void record_outputs(const SimTK::State& state, std::span<double> values) const;
+  /// W_film [J] in `state`: the oil film's work on the system since the start; 0 for a dry joint.
+  double film_work(const SimTK::State& state) const;
   /// clearjoint's joint that computes everything: its name, parameters, output_columns(),
   /// statistics_text() and recorded_impacts() (the impacts recorded by the event handler).
   const dynamics::ClearanceRevoluteJoint& joint() const;
