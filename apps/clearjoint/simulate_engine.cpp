@@ -33,15 +33,14 @@ void check_model_for_engine(std::string_view engine, const dynamics::ModelDescri
 #endif
 }
 
-dynamics::SimulationSummary simulate_with_engine(std::string_view engine,
-                                                 const dynamics::ModelDescription& model,
-                                                 const std::filesystem::path& output_directory,
+dynamics::SimulationSummary simulate_with_engine(std::string_view engine, dynamics::SimulationRun& run,
+                                                 dynamics::SimulationOutput& output,
                                                  const dynamics::ProgressCallback& progress) {
   if (const std::string why = engine_unavailable(engine); !why.empty()) throw std::invalid_argument(why);
 #ifdef CLEARJOINT_WITH_SIMBODY
-  if (engine == "simbody") return simbody::simulate_in_simbody(model, output_directory, progress);
+  if (engine == "simbody") return simbody::simulate_in_simbody(run, output, progress);
 #endif
-  return dynamics::simulate(model, output_directory, progress);
+  return run.run(output, progress);
 }
 
 }  // namespace clearjoint::app

@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The engine that integrates `clearjoint simulate --engine NAME`: clearjoint's own (the default)
-// or Simbody (engines/simbody, docs/engines.md), both writing the same tables.
+// or Simbody (engines/simbody, docs/engines.md), both writing the tables of one plan
+// (dynamics::SimulationRun) to one sink (dynamics::SimulationOutput), so that the format, the
+// decimation and the columns are the same whichever engine runs.
 
-#include <filesystem>
+#include <string>
 #include <string_view>
 
 #include "clearjoint/dynamics/simulation.hpp"
@@ -23,13 +25,15 @@ std::string engine_unavailable(std::string_view engine);
 /// Builds the model in that engine (cheap beside a run); nothing for the default engine.
 void check_model_for_engine(std::string_view engine, const dynamics::ModelDescription& model);
 
-/// Run `model` with `engine` and write the tables into `output_directory`, as
-/// dynamics::simulate(model, output_directory, progress) does. Throws std::invalid_argument for
-/// an engine that engine_unavailable() refuses, and what the engine throws (a model feature the
-/// Simbody route does not support: clearjoint::simbody::UnsupportedFeature, a ModelError).
-dynamics::SimulationSummary simulate_with_engine(std::string_view engine,
-                                                 const dynamics::ModelDescription& model,
-                                                 const std::filesystem::path& output_directory,
+/// Run `run`'s model with `engine` and write the tables `run.tables()` plans to `output` (CSV
+/// files, an HDF5 file, memory), with the rows of every output.decimation-th report time and of
+/// the last, and commit it: run.run() for the default engine (once per run), Simbody's
+/// integration of the same model otherwise (`run` is then not run). Throws
+/// std::invalid_argument for an engine that engine_unavailable() refuses, and what the engine
+/// throws (a model feature the Simbody route does not support:
+/// clearjoint::simbody::UnsupportedFeature, a ModelError, a SolverError).
+dynamics::SimulationSummary simulate_with_engine(std::string_view engine, dynamics::SimulationRun& run,
+                                                 dynamics::SimulationOutput& output,
                                                  const dynamics::ProgressCallback& progress);
 
 }  // namespace clearjoint::app

@@ -47,32 +47,27 @@ RunFormat run_format(const std::string& name) {
 SimulationSummary write_run_folder(SimulationRun& run, const std::string& model_json,
                                    const std::filesystem::path& destination, const RunFolderOptions& options,
                                    const ProgressCallback& progress) {
+  return write_run_folder([&](SimulationOutput& output) { return run.run(output, progress); }, model_json,
+                          destination, options);
+}
+
+SimulationSummary write_run_folder(const std::function<SimulationSummary(SimulationOutput&)>& run_into,
+                                   const std::string& model_json, const std::filesystem::path& destination,
+                                   const RunFolderOptions& options) {
   OutputFolder folder(destination, options.replace_existing);
   SimulationSummary summary;
   if (options.format == RunFormat::hdf5) {
 #ifdef CLEARJOINT_WITH_HDF5
     Hdf5Tables file(folder.staging() / "run.h5", model_json);
-    summary = run.run(file, progress);
+    summary = run_into(file);
     file.add_text_attribute("summary", summary_json(summary));
 #else
     throw std::invalid_argument("format = \"hdf5\": this clearjoint was built without HDF5 (libhdf5-dev)");
 #endif
   } else {
     CsvDirectory files(folder.staging());
-    summary = run.run(files, progress);
+    summary = run_into(files);
   }
-  write_text(folder.staging() / "model.json", model_json);
-  write_text(folder.staging() / "summary.json", summary_json(summary));
-  folder.publish();
-  return summary;
-}
-
-SimulationSummary write_run_folder(const std::function<SimulationSummary(const std::filesystem::path&)>& run_into,
-                                   const std::string& model_json, const std::filesystem::path& destination,
-                                   const RunFolderOptions& options) {
-  if (options.format != RunFormat::csv) throw std::invalid_argument("format = \"hdf5\": this engine writes CSV only");
-  OutputFolder folder(destination, options.replace_existing);
-  const SimulationSummary summary = run_into(folder.staging());
   write_text(folder.staging() / "model.json", model_json);
   write_text(folder.staging() / "summary.json", summary_json(summary));
   folder.publish();

@@ -35,9 +35,10 @@ SimulationSummary write_run_folder(SimulationRun& run, const std::string& model_
                                    const std::filesystem::path& destination, const RunFolderOptions& options,
                                    const ProgressCallback& progress = {});
 
-/// The same folder for a run made elsewhere (another engine) that writes its CSV tables into the
-/// folder it is given: `run_into(staging)` returns the summary. CSV only.
-SimulationSummary write_run_folder(const std::function<SimulationSummary(const std::filesystem::path&)>& run_into,
+/// The same folder for a run made elsewhere (another engine): `run_into(output)` writes its tables
+/// to the format's sink (CsvDirectory or Hdf5Tables in the staging folder), commits it and returns
+/// the summary. The first overload is this one with SimulationRun::run.
+SimulationSummary write_run_folder(const std::function<SimulationSummary(SimulationOutput&)>& run_into,
                                    const std::string& model_json, const std::filesystem::path& destination,
                                    const RunFolderOptions& options);
 
