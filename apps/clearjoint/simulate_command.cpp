@@ -37,8 +37,8 @@ constexpr const char* kUsage =
     "  --format       csv (default) or hdf5\n"
     "  --report-step  the report interval [s], in place of the model's solver.report_step\n"
     "  --decimation   write every K-th report time (and the last), in place of output.decimation\n"
-    "  --engine       the integrating engine: clearjoint (default) or simbody; the same tables and\n"
-    "                 columns (docs/engines.md; simbody writes CSV only)\n"
+    "  --engine       the integrating engine: clearjoint (default) or simbody; the same tables,\n"
+    "                 columns, formats and decimation (docs/engines.md)\n"
     "  --force        replace DIR if it is an earlier result (otherwise an error)\n"
     "  --plot         draw the run's figures into DIR/figures afterwards (clearjoint plot)\n"
     "  --allow-large  run beyond the size guard (1000 s simulated, 1e7 report times, 4 GB of\n"
@@ -232,7 +232,7 @@ int run_simulate(Arguments args) {
       summary = dynamics::write_run_folder(run, model_json(a.model_path, a), a.out_dir, options, progress);
     } else {
       summary = dynamics::write_run_folder(
-          [&](const std::filesystem::path& staging) { return simulate_with_engine(a.engine, model, staging, progress); },
+          [&](dynamics::SimulationOutput& output) { return simulate_with_engine(a.engine, run, output, progress); },
           model_json(a.model_path, a), a.out_dir, options);
     }
   } catch (...) {
