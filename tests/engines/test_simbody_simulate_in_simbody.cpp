@@ -200,6 +200,19 @@ TEST(SimulateInSimbody, IntegratesALubricatedJointsFilmWorkSoThatTheEnergyBalanc
   EXPECT_LT(worst, kFilmEnergyBalance);
 }
 
+TEST(SimulateInSimbody, StopsARunThatTakesMoreStepsThanTheBudgetNamingIt) {
+  dynamics::ModelDescription model = short_planar_run();
+  model.solver.max_steps = 10;  // the 20 ms run takes thousands at 1e-10
+  TablesInMemory simbody;
+  try {
+    simulate_in_simbody(model, simbody);
+    ADD_FAILURE() << "no error";
+  } catch (const dynamics::SolverError& e) {
+    EXPECT_NE(std::string(e.what()).find("solver.max_steps = 10"), std::string::npos) << e.what();
+  }
+  EXPECT_FALSE(simbody.committed());
+}
+
 TEST(SimulateInSimbody, BuildsEveryShippedModel) {
   for (const auto& entry : std::filesystem::directory_iterator(CLEARJOINT_MODELS_DIR)) {
     if (entry.path().extension() != ".json") continue;

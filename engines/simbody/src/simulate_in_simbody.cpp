@@ -16,6 +16,10 @@ namespace {
 /// As dynamics::integrate(): a rounding excess of span / report_step adds no report time a few
 /// ulps before end_time.
 constexpr double kReportCountSlack = 1e-9;
+/// Most steps Simbody takes inside one stepTo before it hands control back, so that the step
+/// budget (solver.max_steps) is checked at least this often, also when the steps collapse between
+/// two report times. Some 10,000 steps are a fraction of a second of a run.
+constexpr int kStepsBetweenBudgetChecks = 10'000;
 
 std::vector<std::string> body_header() {
   return {"time", "x", "y", "z", "e0", "e1", "e2", "e3", "vx", "vy", "vz", "wx", "wy", "wz",
@@ -224,6 +228,7 @@ dynamics::SimulationSummary simulate_in_simbody(const dynamics::SimulationRun& r
   integrator.setInitialStepSize(model.solver.initial_step);
   integrator.setMinimumStepSize(model.solver.minimum_step);
   integrator.setFinalTime(model.solver.end_time);
+  integrator.setInternalStepLimit(kStepsBetweenBudgetChecks);
   SimTK::TimeStepper stepper(system, integrator);
   stepper.initialize(built.initial_state());
   observe(stepper.getState(), false);
@@ -239,6 +244,11 @@ dynamics::SimulationSummary simulate_in_simbody(const dynamics::SimulationRun& r
       if (status == SimTK::Integrator::EndOfSimulation && stepper.getTime() < t) {
         throw dynamics::SolverError("Simbody stopped at t = " + dynamics::format_number(stepper.getTime()) +
                                     ": " + integrator.getTerminationReasonString(integrator.getTerminationReason()));
+      }
+      if (integrator.getNumStepsTaken() >= model.solver.max_steps) {
+        throw dynamics::SolverError("integration stopped at t = " + dynamics::format_number(stepper.getTime()) +
+                                    ": Simbody took more than solver.max_steps = " +
+                                    std::to_string(model.solver.max_steps) + " steps");
       }
       const double step = integrator.getPreviousStepSizeTaken();
       summary.integration.smallest_step = std::min(summary.integration.smallest_step, step);
