@@ -275,7 +275,7 @@ std::optional<std::pair<Endpoint, Endpoint>> descend_to_pair(const IntegerPolyno
 }
 
 void isolate_factor(const std::shared_ptr<const SquareFreeFactor>& factor, const IntegerPolynomial& f,
-                    const SturmChain& chain, const Dyadic& bound, std::vector<IsolatedRoot>& out,
+                    const SturmChain& chain, const Dyadic& bound, IsolatedRoots& out,
                     EvaluationBudget& budget) {
   Dyadic width_goal = bound;
   width_goal.exponent -= kRefinementBits;
@@ -368,7 +368,7 @@ RationalPolynomial SquareFreeFactor::monic() const {
 
 namespace {
 
-void isolate(IntegerPolynomial p, const Rational& bound, std::vector<IsolatedRoot>& out, EvaluationBudget& budget) {
+void isolate(IntegerPolynomial p, const Rational& bound, IsolatedRoots& out, EvaluationBudget& budget) {
   if (p.degree() < 1) return;
   const Dyadic dyadic_bound = Dyadic::of_rational(bound);
   SturmChain chain = sturm_chain(p);
@@ -402,7 +402,7 @@ bool SquareFreeFactor::shares_root_in(const RationalPolynomial& g, const Rationa
   return chain_signs(chain, low).variations - chain_signs(chain, high).variations > 0;
 }
 
-void isolate_real_roots(const RationalPolynomial& f, const Rational& bound, std::vector<IsolatedRoot>& out,
+void isolate_real_roots(const RationalPolynomial& f, const Rational& bound, IsolatedRoots& out,
                         EvaluationBudget& budget) {
   if (f.is_zero() || f.degree() < 1) return;
   for (int i = 0; i <= f.degree(); ++i) {
@@ -411,7 +411,7 @@ void isolate_real_roots(const RationalPolynomial& f, const Rational& bound, std:
   isolate(integer_multiple(f), bound, out, budget);
 }
 
-void isolate_real_roots(SmallVector<mpz_class> coefficients, const Rational& bound, std::vector<IsolatedRoot>& out,
+void isolate_real_roots(SmallVector<mpz_class> coefficients, const Rational& bound, IsolatedRoots& out,
                         EvaluationBudget& budget) {
   IntegerPolynomial p;
   p.c = std::move(coefficients);

@@ -74,6 +74,10 @@ struct IsolatedRoot {
   std::shared_ptr<const SquareFreeFactor> factor;  ///< the square-free factor whose only root in [low, high] this is
 };
 
+/// The roots of one polynomial (at most its degree, four for the rim-cylinder eliminant), held
+/// inside the object.
+using IsolatedRoots = SmallVector<IsolatedRoot>;
+
 /// Largest coefficient (numerator plus denominator bits) isolate_real_roots accepts. A sign
 /// evaluation's cost grows with the coefficients' size, and Sturm sequences multiply it, so the
 /// count budget alone let inputs whose magnitudes lie ~1e500 apart run for half a minute (27,000
@@ -95,13 +99,13 @@ std::size_t bit_size(const Rational& x);
 /// shrunk to a few ulps around a double Newton iterate proved by two exact signs, or else bisected
 /// to 2^-kRefinementBits bound. Throws ExactTierGiveUp when f's coefficients exceed
 /// kMaxCoefficientBits or the budget runs out.
-void isolate_real_roots(const RationalPolynomial& f, const Rational& bound, std::vector<IsolatedRoot>& out,
+void isolate_real_roots(const RationalPolynomial& f, const Rational& bound, IsolatedRoots& out,
                         EvaluationBudget& budget);
 
 /// The same for the polynomial with these integer coefficients (constant term first), which the
 /// caller has checked against kMaxCoefficientBits in the rational form it stands for (a nonzero
 /// multiple of this one, with the same roots).
-void isolate_real_roots(SmallVector<mpz_class> coefficients, const Rational& bound, std::vector<IsolatedRoot>& out,
+void isolate_real_roots(SmallVector<mpz_class> coefficients, const Rational& bound, IsolatedRoots& out,
                         EvaluationBudget& budget);
 
 /// Sturm's theorem on one polynomial (square-free or not): counts its distinct real roots.

@@ -77,13 +77,13 @@ struct Crossing {
 
 /// A polynomial's coefficients as Bounded (to_bounded), constant first: formed once per
 /// polynomial, read at every crossing.
-std::vector<Bounded> bounded_coefficients(const Polynomial& p) {
-  std::vector<Bounded> out;
+SmallVector<Bounded> bounded_coefficients(const Polynomial& p) {
+  SmallVector<Bounded> out;
   for (int i = 0; i <= p.degree(); ++i) out.push_back(to_bounded(p[i]));
   return out;
 }
 
-Bounded polynomial_value(const std::vector<Bounded>& p, const Bounded& x) {
+Bounded polynomial_value(const SmallVector<Bounded>& p, const Bounded& x) {
   Bounded value(0.0);
   for (std::size_t i = p.size(); i-- > 0;) value = value * x + p[i];
   return value;
@@ -133,7 +133,7 @@ int sign_at_root(const Polynomial& g, IsolatedRoot& root, EvaluationBudget& budg
 /// Crossings on a vertical line X = root: both ellipse points, or the vertex (Y = 0, doubled
 /// multiplicity) when a X^2 = r2 exactly.
 void add_vertical_line_crossings(const RimConic& conic, const IsolatedRoot& root, int multiplicity,
-                                 std::vector<Crossing>& out, EvaluationBudget& budget) {
+                                 SmallVector<Crossing>& out, EvaluationBudget& budget) {
   const Polynomial vertex_test(-conic.r2, Rational(0), conic.a);  // a X^2 - r2
   const Bounded x = bounded_x(root);
   IsolatedRoot refined = root;
@@ -157,9 +157,9 @@ void add_vertical_line_crossings(const RimConic& conic, const IsolatedRoot& root
 /// both crossings at the same angle with an error of a large part of the rim).
 /// `numerator()` gives N (formed only where the double enclosure cannot sign Y).
 template <class NumeratorOf>
-void add_graph_crossings(const RimConic& conic, const NumeratorOf& numerator, const std::vector<Bounded>& numerator_bounded,
-                         const Polynomial& denominator, const std::vector<Bounded>& denominator_bounded,
-                         const IsolatedRoot& root, std::vector<Crossing>& out, EvaluationBudget& budget) {
+void add_graph_crossings(const RimConic& conic, const NumeratorOf& numerator, const SmallVector<Bounded>& numerator_bounded,
+                         const Polynomial& denominator, const SmallVector<Bounded>& denominator_bounded,
+                         const IsolatedRoot& root, SmallVector<Crossing>& out, EvaluationBudget& budget) {
   Bounded x = bounded_x(root);
   Bounded y = -(polynomial_value(numerator_bounded, x) / polynomial_value(denominator_bounded, x));
   Bounded height = ellipse_height(conic, x);
@@ -352,8 +352,8 @@ RimRoots exact_rim_roots_within_budget(const Circle3& circle, const Cylinder3& c
     return result;
   }
 
-  std::vector<Crossing> crossings;
-  std::vector<IsolatedRoot> roots;
+  SmallVector<Crossing> crossings;
+  IsolatedRoots roots;
   if (conic.M.is_zero()) {
     // The cylinder meets E along vertical lines L(X) = 0.
     isolate_real_roots(conic.L(), conic.bound * 2, roots, budget);
@@ -376,11 +376,11 @@ RimRoots exact_rim_roots_within_budget(const Circle3& circle, const Cylinder3& c
       isolate_real_roots(std::move(scaled_p), conic.bound, roots, budget);
       // L's coefficients (b L) 2^(4 E) / b, as to_bounded gives them, the zero ones on top left
       // out as CGAL's polynomial drops them.
-      std::vector<Bounded> l = {to_bounded(interval_of_quotient(scaled_l0, 4 * E, b)),
+      SmallVector<Bounded> l = {to_bounded(interval_of_quotient(scaled_l0, 4 * E, b)),
                                 to_bounded(interval_of_quotient(scaled_l1, 4 * E, b)),
                                 to_bounded(interval_of_quotient(scaled_l2, 4 * E, b))};
       while (l.size() > 1 && l.back().value == 0.0 && l.back().error == 0.0) l.pop_back();
-      const std::vector<Bounded> m = bounded_coefficients(conic.M);
+      const SmallVector<Bounded> m = bounded_coefficients(conic.M);
       const auto numerator = [&]() -> const Polynomial& { return conic.L(); };
       for (const IsolatedRoot& root : roots) add_graph_crossings(conic, numerator, l, conic.M, m, root, crossings, budget);
     } else {
@@ -389,7 +389,7 @@ RimRoots exact_rim_roots_within_budget(const Circle3& circle, const Cylinder3& c
       Polynomial l1, remainder;
       Polynomial::euclidean_division(conic.L(), Polynomial(-x0, Rational(1)), l1, remainder);
       const Polynomial m1(conic.M[1]);
-      std::vector<Crossing> on_lines;
+      SmallVector<Crossing> on_lines;
       add_vertical_line_crossings(conic, {x0, x0, 1, nullptr}, 1, on_lines, budget);
       const Polynomial ellipse(-conic.r2, Rational(0), conic.a);
       const Polynomial second_line = ellipse * m1 * m1 + conic.b * l1 * l1;

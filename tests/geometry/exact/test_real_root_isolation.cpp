@@ -47,7 +47,7 @@ Rational root_bound(const Polynomial& f) {
 /// sign change over its interval), the intervals are disjoint, their number is CGAL's count of
 /// distinct real roots, and each factor's multiplicity is CGAL's for that factor.
 void expect_consistent_isolation(const Polynomial& f) {
-  std::vector<IsolatedRoot> roots;
+  IsolatedRoots roots;
   EvaluationBudget budget;
   isolate_real_roots(f, root_bound(f), roots, budget);
   const auto reference = cgal_factors(f);
@@ -83,7 +83,7 @@ void expect_consistent_isolation(const Polynomial& f) {
 TEST(RealRootIsolation, FactorsLikeCgalWithMultiplicitiesInYunsOrder) {
   const Polynomial f = linear(Rational(1, 3)) * linear(Rational(1, 3)) * linear(Rational(-5, 7)) *
                        Polynomial(Rational(-2), Rational(0), Rational(1));  // (x - 1/3)^2 (x + 5/7) (x^2 - 2)
-  std::vector<IsolatedRoot> roots;
+  IsolatedRoots roots;
   EvaluationBudget budget;
   isolate_real_roots(Rational(-6) * f, Rational(4), roots, budget);
   ASSERT_EQ(roots.size(), 4u);
@@ -106,7 +106,7 @@ TEST(RealRootIsolation, EnclosesEachKnownRootInItsOwnNarrowInterval) {
   const Rational gap(std::ldexp(1.0, -40));
   const Polynomial f = Polynomial(Rational(-2), Rational(0), Rational(1)) * linear(Rational(1, 2) + gap) *
                        linear(Rational(1, 2) - gap);
-  std::vector<IsolatedRoot> roots;
+  IsolatedRoots roots;
   EvaluationBudget budget;
   isolate_real_roots(f, Rational(4), roots, budget);
   ASSERT_EQ(roots.size(), 4u);
@@ -181,7 +181,7 @@ TEST(RealRootIsolation, GivesUpOnCoefficientsBeyondItsLimit) {
   const Rational huge(std::ldexp(1.0, 1000));
   Rational big(1);
   for (int i = 0; i < 9; ++i) big *= huge;  // 9,001 bits
-  std::vector<IsolatedRoot> roots;
+  IsolatedRoots roots;
   EvaluationBudget budget;
   try {
     isolate_real_roots(Polynomial(big + Rational(1), Rational(1)), Rational(4), roots, budget);
@@ -192,13 +192,13 @@ TEST(RealRootIsolation, GivesUpOnCoefficientsBeyondItsLimit) {
 }
 
 TEST(RealRootIsolation, RejectsABoundThatIsNotDyadic) {
-  std::vector<IsolatedRoot> roots;
+  IsolatedRoots roots;
   EvaluationBudget budget;
   EXPECT_THROW(isolate_real_roots(linear(Rational(1)), Rational(1, 3), roots, budget), std::invalid_argument);
 }
 
 TEST(RealRootIsolation, FindsNoRootOfAConstantOrOfAPolynomialWithoutRealRoots) {
-  std::vector<IsolatedRoot> roots;
+  IsolatedRoots roots;
   EvaluationBudget budget;
   isolate_real_roots(Polynomial(Rational(5)), Rational(4), roots, budget);
   isolate_real_roots(Polynomial(Rational(1), Rational(0), Rational(1)), Rational(4), roots, budget);
