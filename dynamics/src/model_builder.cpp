@@ -4,9 +4,11 @@
 #include <algorithm>
 #include <array>
 
+#include "clearjoint/dynamics/clearance_revolute_joint.hpp"
 #include "clearjoint/dynamics/errors.hpp"
 #include "clearjoint/dynamics/gravity.hpp"
 #include "clearjoint/dynamics/point_load.hpp"
+#include "clearjoint/dynamics/spring_damper.hpp"
 
 namespace clearjoint::dynamics {
 

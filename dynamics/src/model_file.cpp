@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "clearjoint/dynamics/clearance_revolute_joint.hpp"
 #include "clearjoint/dynamics/errors.hpp"
 #include "json/bounded_json.hpp"
 

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include "clearjoint/dynamics/clearance_revolute_joint.hpp"
 #include "clearjoint/dynamics/errors.hpp"
 #include "dynamics_test_support.hpp"
 

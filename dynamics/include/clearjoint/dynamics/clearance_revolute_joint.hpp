@@ -45,6 +45,7 @@
 #include <string>
 #include <vector>
 
+#include "clearjoint/dynamics/clearance_joint_parameters.hpp"
 #include "clearjoint/dynamics/force_element.hpp"
 #include "clearjoint/dynamics/joint_lubrication.hpp"
 #include "clearjoint/dynamics/normal_contact_force.hpp"
@@ -60,16 +61,6 @@ struct ClearanceJointPart {
   BodyIndex body = kGround;
   Vector3 point_B = Vector3::Zero();
   Vector3 axis_B = Vector3::UnitZ();
-};
-
-struct ClearanceJointParameters {
-  /// Ri, Li (bearing), Rj, Lj (journal); paper Table 2: 10, 20, 9.9, 19.8 mm.
-  geometry::JointDimensions dimensions{0.010, 0.020, 0.0099, 0.0198};
-  NormalForceParameters normal;
-  FrictionParameters friction;
-  geometry::DetectionOptions detection;
-  /// The oil film; absent: a dry joint (the paper's).
-  std::optional<JointLubrication> lubrication;
 };
 
 /// Where a contact's impact velocity is remembered, and its columns in the outputs.

@@ -13,6 +13,7 @@
 
 #include <Eigen/Core>
 
+#include "clearjoint/dynamics/angle_law.hpp"
 #include "clearjoint/dynamics/system_kinematics.hpp"
 
 namespace clearjoint::dynamics {
@@ -51,13 +52,6 @@ void add_perpendicular_vectors(ConstraintRows& rows, const BodyKinematics& i,
 void add_offset_perpendicular_to_vector(ConstraintRows& rows, const BodyKinematics& i,
                                         const BodyKinematics& j, const Vector3& a_i_W,
                                         const Vector3& s_i_W, const Vector3& s_j_W);
-
-/// A prescribed angle theta(t) with its first two time derivatives.
-struct AngleValue {
-  double angle = 0.0;
-  double rate = 0.0;
-  double acceleration = 0.0;
-};
 
 /// One row: the rotation of body j relative to body i about the common axis equals theta(t).
 /// u_i is fixed in i; u_j and v_j are fixed in j, all perpendicular to the axis, with u_j = u_i

@@ -7,7 +7,8 @@
 #include <string>
 #include <string_view>
 
-#include "clearjoint/dynamics/constraint_primitives.hpp"
+#include "clearjoint/dynamics/angle_law.hpp"
+#include "clearjoint/dynamics/euler_parameters.hpp"  // Vector3
 
 namespace clearjoint::dynamics {
 
@@ -26,16 +27,6 @@ std::string_view to_string(JointType type);
 JointType joint_type_from_string(std::string_view name, std::string_view field);
 /// Number of constraint equations of a joint of this type.
 int equation_count(JointType type);
-
-/// theta(t) = rate t + acceleration t^2 / 2, measured from the relative orientation at t = 0.
-struct AngleLaw {
-  double rate = 0.0;
-  double acceleration = 0.0;
-  AngleValue at(double time) const {
-    return {rate * time + 0.5 * acceleration * time * time, rate + acceleration * time,
-            acceleration};
-  }
-};
 
 /// The user-facing joint. Points and axes are in the frames of body_i and body_j; axes need not
 /// be unit. What each type reads:

@@ -8,6 +8,7 @@
 #include <array>
 #include <string>
 
+#include "clearjoint/dynamics/constraint_primitives.hpp"
 #include "clearjoint/dynamics/joint_description.hpp"
 
 namespace clearjoint::dynamics {

@@ -6,7 +6,9 @@
 #include <memory>
 #include <vector>
 
+#include "clearjoint/dynamics/initial_conditions.hpp"
 #include "clearjoint/dynamics/model_description.hpp"
+#include "clearjoint/dynamics/multibody_system.hpp"
 
 namespace clearjoint::dynamics {
 

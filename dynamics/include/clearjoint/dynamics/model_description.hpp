@@ -9,11 +9,14 @@
 #include <variant>
 #include <vector>
 
-#include "clearjoint/dynamics/clearance_revolute_joint.hpp"
-#include "clearjoint/dynamics/initial_conditions.hpp"
-#include "clearjoint/dynamics/integrator.hpp"
+// Only plain parameter headers: a description depends on no equations, integrator or kernel
+// query (tests/dynamics/test_model_description.cpp does not compile if one comes back).
+#include "clearjoint/dynamics/baumgarte_parameters.hpp"
+#include "clearjoint/dynamics/body.hpp"
+#include "clearjoint/dynamics/clearance_joint_parameters.hpp"
+#include "clearjoint/dynamics/integrator_settings.hpp"
 #include "clearjoint/dynamics/joint_description.hpp"
-#include "clearjoint/dynamics/spring_damper.hpp"
+#include "clearjoint/dynamics/spring_damper_parameters.hpp"
 
 namespace clearjoint::dynamics {
 

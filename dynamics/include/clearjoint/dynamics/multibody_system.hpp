@@ -11,16 +11,11 @@
 #include <string_view>
 #include <vector>
 
+#include "clearjoint/dynamics/baumgarte_parameters.hpp"
 #include "clearjoint/dynamics/constraint_set.hpp"
 #include "clearjoint/dynamics/force_element.hpp"
 
 namespace clearjoint::dynamics {
-
-/// Feedback gains of eq. (38): gamma - 2 alpha dPhi/dt - beta^2 Phi. Paper Table 2: 5 and 5.
-struct BaumgarteParameters {
-  double alpha = 5.0;  ///< [1/s], velocity feedback
-  double beta = 5.0;   ///< [1/s], position feedback
-};
 
 /// Cholesky pivots (squared diagonal of L) of Phi_q M^-1 Phi_q^T below this fraction of the
 /// largest mean the constraint Jacobian lost rank. Each pivot lies between the smallest and the

@@ -7,18 +7,13 @@
 #include <string>
 
 #include "clearjoint/dynamics/force_element.hpp"
+#include "clearjoint/dynamics/spring_damper_parameters.hpp"
 
 namespace clearjoint::dynamics {
 
 /// Below this length (metres) the line of action is undefined; evaluation throws SolverError.
 /// 1e-12 m is far below any part of a mechanism and far above rounding of metre-scale positions.
 inline constexpr double kSpringMinimumLength = 1e-12;
-
-struct SpringDamperParameters {
-  double stiffness = 0.0;    ///< k [N/m], >= 0
-  double damping = 0.0;      ///< c [N s/m], >= 0
-  double free_length = 0.0;  ///< l0 [m], >= 0
-};
 
 class SpringDamper final : public ForceElement {
  public:

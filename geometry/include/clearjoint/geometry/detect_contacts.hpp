@@ -32,23 +32,13 @@
 
 #include "clearjoint/geometry/certificate.hpp"
 #include "clearjoint/geometry/contact_scenario.hpp"
+#include "clearjoint/geometry/detection_options.hpp"
 #include "clearjoint/geometry/enum_table.hpp"
-#include "clearjoint/geometry/intersection_options.hpp"
 #include "clearjoint/geometry/joint_geometry.hpp"
 #include "clearjoint/geometry/rim_arc.hpp"
 #include "clearjoint/geometry/vector3.hpp"
 
 namespace clearjoint::geometry {
-
-struct DetectionOptions {
-  /// Passed to the kernel queries.
-  IntersectionOptions intersection{};
-  /// Axes whose angle (or angle to the opposite direction) is at most this many radians are
-  /// treated as parallel (eqs. 6-10 instead of eqs. 11-21). 0 (default): parallel only when
-  /// a_i x a_j = 0 exactly (eq. 5). A positive tolerance is evaluated in double precision, and
-  /// contacts found under it are `uncertain` ("axes treated as parallel within the tolerance").
-  double parallel_angle_tolerance = 0.0;
-};
 
 enum class ContactType {
   radial,  ///< against the lateral wall (a point, eqs. 16-21; or a line, eqs. 6-8)
