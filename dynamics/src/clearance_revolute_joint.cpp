@@ -2,9 +2,11 @@
 #include "clearjoint/dynamics/clearance_revolute_joint.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <mutex>
 #include <numbers>
 
 #include "clearjoint/dynamics/errors.hpp"
@@ -81,10 +83,56 @@ ContactSlot slot_of(const Contact& contact) noexcept {
   return ContactSlot::line;
 }
 
+/// Where an evaluation works: its state, and the last detection it made with that detection's
+/// poses (P_i, a_i, P_j, a_j, world), reused for the same poses bit for bit.
+struct ClearanceRevoluteJoint::Workspace {
+  ClearanceJointState state;
+  std::array<Vector3, 4> poses{};
+  bool holds_poses = false;
+};
+
+/// What const evaluations share. The workspace is claimed, not locked: an evaluation that finds
+/// it claimed by another thread works in a workspace of its own instead of waiting.
+struct ClearanceRevoluteJoint::SharedState {
+  Workspace workspace;
+  std::atomic<bool> workspace_claimed{false};
+  std::atomic<long> detection_calls{0};
+  std::atomic<long> impacts{0};
+  std::atomic<long> beyond_model_updates{0};
+  /// The film solver's turn (lubricated joints only; its warm start is state).
+  std::mutex film_turn;
+};
+
+/// The joint's workspace for the duration of one evaluation when it is free, else a fresh one on
+/// the stack (2 KB of default values, no allocation; no cached detection to reuse).
+class ClearanceRevoluteJoint::WorkspaceLease {
+ public:
+  explicit WorkspaceLease(SharedState& shared)
+      : shared_(shared), claimed_(!shared.workspace_claimed.exchange(true, std::memory_order_acquire)) {
+    if (!claimed_) own_.emplace();
+  }
+  ~WorkspaceLease() {
+    if (claimed_) shared_.workspace_claimed.store(false, std::memory_order_release);
+  }
+  WorkspaceLease(const WorkspaceLease&) = delete;
+  WorkspaceLease& operator=(const WorkspaceLease&) = delete;
+
+  Workspace& get() { return claimed_ ? shared_.workspace : *own_; }
+
+ private:
+  SharedState& shared_;
+  bool claimed_;
+  std::optional<Workspace> own_;
+};
+
 ClearanceRevoluteJoint::ClearanceRevoluteJoint(std::string name, const ClearanceJointPart& bearing,
                                                const ClearanceJointPart& journal,
                                                const ClearanceJointParameters& parameters)
-    : name_(std::move(name)), bearing_(bearing), journal_(journal), parameters_(parameters) {
+    : name_(std::move(name)),
+      bearing_(bearing),
+      journal_(journal),
+      parameters_(parameters),
+      shared_(std::make_unique<SharedState>()) {
   validate_part(bearing_, name_ + ".bearing");
   validate_part(journal_, name_ + ".journal");
   if (bearing_.body == journal_.body) {
@@ -125,7 +173,7 @@ int ClearanceRevoluteJoint::extra_state_count() const {
   return kContactSlotCount + (film_ ? 1 : 0);
 }
 
-void ClearanceRevoluteJoint::detect(double time, const SystemKinematics& kinematics,
+void ClearanceRevoluteJoint::detect(double time, const SystemKinematics& kinematics, Workspace& workspace,
                                     geometry::JointContacts& contacts) const {
   const BodyKinematics& bi = kinematics.body(bearing_.body);
   const BodyKinematics& bj = kinematics.body(journal_.body);
@@ -133,17 +181,17 @@ void ClearanceRevoluteJoint::detect(double time, const SystemKinematics& kinemat
   const geometry::PartPose journal_pose{bj.point_W(journal_.point_B), bj.rotation * journal_.axis_B};
   const std::array<Vector3, 4> poses{bearing_pose.p_WP, bearing_pose.axis_W, journal_pose.p_WP,
                                      journal_pose.axis_W};
-  const bool into_scratch = &contacts == &scratch_.contacts;
+  const bool into_workspace = &contacts == &workspace.state.contacts;
   // The detection is a function of the poses alone: the same poses, bit for bit, give the same
   // answer. The last stage of a Dormand-Prince step is evaluated at the accepted state (FSAL),
   // where begins_event and update_extra_state detect again: they find the answer in place.
   // Outputs at a report time follow the right-hand side at the same state: they copy.
-  if (scratch_holds_poses_ && std::memcmp(poses.data(), scratch_poses_.data(), sizeof poses) == 0) {
-    if (!into_scratch) contacts = scratch_.contacts;
+  if (workspace.holds_poses && std::memcmp(poses.data(), workspace.poses.data(), sizeof poses) == 0) {
+    if (!into_workspace) contacts = workspace.state.contacts;
     return;
   }
-  ++statistics_.detection_calls;
-  if (into_scratch) scratch_holds_poses_ = false;  // until the detection below succeeds
+  shared_->detection_calls.fetch_add(1, std::memory_order_relaxed);
+  if (into_workspace) workspace.holds_poses = false;  // until the detection below succeeds
   try {
     // In place: a fresh JointContacts is 1.4 KB of default values (detect_contacts.hpp).
     geometry::detect_contacts(parameters_.dimensions, bearing_pose, journal_pose, contacts,
@@ -152,16 +200,16 @@ void ClearanceRevoluteJoint::detect(double time, const SystemKinematics& kinemat
     throw SolverError("clearance joint '" + name_ + "' at t = " + format_number(time) +
                       ": the contact detection rejected the poses (" + e.what() + ")");
   }
-  if (into_scratch) {
-    scratch_poses_ = poses;
-    scratch_holds_poses_ = true;
+  if (into_workspace) {
+    workspace.poses = poses;
+    workspace.holds_poses = true;
   }
 }
 
 void ClearanceRevoluteJoint::evaluate_forces(double time, const SystemKinematics& kinematics,
-                                             std::span<const double> impact_memory,
+                                             std::span<const double> impact_memory, Workspace& workspace,
                                              ClearanceJointState& state) const {
-  detect(time, kinematics, state.contacts);
+  detect(time, kinematics, workspace, state.contacts);
   state.slots = {};
   state.film.reset();
   state.force_on_journal_W.setZero();
@@ -222,6 +270,7 @@ void ClearanceRevoluteJoint::evaluate_film(double time, const SystemKinematics& 
   const std::optional<Vector3> groove_W =
       groove_B ? std::optional<Vector3>(bi.rotation * *groove_B) : std::nullopt;
   try {
+    const std::lock_guard turn(shared_->film_turn);
     state.film = film_->evaluate({p_WPi, bi.rotation * bearing_.axis_B},
                                  {p_WPj, bj.rotation * journal_.axis_B}, groove_W, motion);
   } catch (const std::exception& e) {  // geometry::InvalidInput, or a singular grid system
@@ -235,7 +284,8 @@ void ClearanceRevoluteJoint::evaluate_film(double time, const SystemKinematics& 
 ClearanceJointState ClearanceRevoluteJoint::evaluate(double time, const SystemKinematics& kinematics,
                                                      std::span<const double> impact_memory) const {
   ClearanceJointState state;
-  evaluate_forces(time, kinematics, impact_memory, state);
+  WorkspaceLease lease(*shared_);
+  evaluate_forces(time, kinematics, impact_memory, lease.get(), state);
   const BodyKinematics& bi = kinematics.body(bearing_.body);
   const BodyKinematics& bj = kinematics.body(journal_.body);
   const Vector3 p_WPj = bj.point_W(journal_.point_B);
@@ -259,8 +309,10 @@ ClearanceJointState ClearanceRevoluteJoint::evaluate(double time, const SystemKi
 }
 
 void ClearanceRevoluteJoint::add_forces(const ForceContext& context, GeneralisedForces& forces) const {
-  ClearanceJointState& state = scratch_;
-  evaluate_forces(context.time, context.kinematics, context.extra_state, state);
+  WorkspaceLease lease(*shared_);
+  Workspace& workspace = lease.get();
+  ClearanceJointState& state = workspace.state;
+  evaluate_forces(context.time, context.kinematics, context.extra_state, workspace, state);
   for (int c = 0; c < state.contacts.contact_count; ++c) {
     const Contact& contact = state.contacts.contacts[c];
     const Vector3& force = state.contact_force_on_journal_W[c];
@@ -285,8 +337,10 @@ void ClearanceRevoluteJoint::add_forces(const ForceContext& context, Generalised
 }
 
 double ClearanceRevoluteJoint::potential_energy(const SystemKinematics& kinematics) const {
-  geometry::JointContacts& contacts = scratch_.contacts;
-  detect(kinematics.time(), kinematics, contacts);
+  WorkspaceLease lease(*shared_);
+  Workspace& workspace = lease.get();
+  geometry::JointContacts& contacts = workspace.state.contacts;
+  detect(kinematics.time(), kinematics, workspace, contacts);
   double energy = 0.0;
   for (int c = 0; c < contacts.contact_count; ++c) {
     energy += contact_elastic_energy(parameters_.normal, contacts.contacts[c].depth);
@@ -300,17 +354,19 @@ void ClearanceRevoluteJoint::initial_extra_state(std::span<double> state) const 
 
 bool ClearanceRevoluteJoint::update_extra_state(double time, const SystemKinematics& kinematics,
                                                 std::span<double> state) const {
-  ClearanceJointState& now = scratch_;
-  evaluate_forces(time, kinematics, state, now);
+  WorkspaceLease lease(*shared_);
+  Workspace& workspace = lease.get();
+  ClearanceJointState& now = workspace.state;
+  evaluate_forces(time, kinematics, state, workspace, now);
   if (now.contacts.scenario == geometry::ContactScenario::beyond_model) {
-    ++statistics_.beyond_model_updates;
+    shared_->beyond_model_updates.fetch_add(1, std::memory_order_relaxed);
   }
   bool changed = false;
   for (int slot = 0; slot < kContactSlotCount; ++slot) {
     const SlotState& s = now.slots[slot];
     if (s.active && state[slot] == 0.0) {
       state[slot] = s.impact_speed;  // max(delta_dot, floor) where the contact was first seen
-      ++statistics_.impacts;
+      shared_->impacts.fetch_add(1, std::memory_order_relaxed);
       recorded_impacts_.push_back({time, kSlots[slot], s.impact_speed});
       changed = true;
     } else if (!s.active && state[slot] != 0.0) {
@@ -323,8 +379,10 @@ bool ClearanceRevoluteJoint::update_extra_state(double time, const SystemKinemat
 
 bool ClearanceRevoluteJoint::begins_event(const SystemKinematics& kinematics,
                                           std::span<const double> state) const {
-  geometry::JointContacts& contacts = scratch_.contacts;
-  detect(kinematics.time(), kinematics, contacts);
+  WorkspaceLease lease(*shared_);
+  Workspace& workspace = lease.get();
+  geometry::JointContacts& contacts = workspace.state.contacts;
+  detect(kinematics.time(), kinematics, workspace, contacts);
   for (int c = 0; c < contacts.contact_count; ++c) {
     if (state[index_of(slot_of(contacts.contacts[c]))] == 0.0) return true;
   }
@@ -386,16 +444,24 @@ void ClearanceRevoluteJoint::record_outputs(double time, const SystemKinematics&
   }
 }
 
+ClearanceJointStatistics ClearanceRevoluteJoint::statistics() const {
+  return {shared_->detection_calls.load(std::memory_order_relaxed),
+          shared_->impacts.load(std::memory_order_relaxed),
+          shared_->beyond_model_updates.load(std::memory_order_relaxed)};
+}
+
 std::string ClearanceRevoluteJoint::statistics_text() const {
-  return "clearance joint '" + name_ + "': " + std::to_string(statistics_.detection_calls) +
-         " contact detections, " + std::to_string(statistics_.impacts) +
-         " impacts recorded, " + std::to_string(statistics_.beyond_model_updates) +
+  const ClearanceJointStatistics counts = statistics();
+  return "clearance joint '" + name_ + "': " + std::to_string(counts.detection_calls) +
+         " contact detections, " + std::to_string(counts.impacts) +
+         " impacts recorded, " + std::to_string(counts.beyond_model_updates) +
          " accepted steps beyond the paper's model" + film_statistics_text();
 }
 
 std::string ClearanceRevoluteJoint::film_statistics_text() const {
   if (!film_) return {};
-  const JointFilmStatistics& s = film_->statistics();
+  const std::lock_guard turn(shared_->film_turn);
+  const JointFilmStatistics s = film_->statistics();
   return "; " + std::string(lubrication::to_string(parameters_.lubrication->method)) + " film: " +
          std::to_string(s.solves) + " solutions, " + std::to_string(s.linear_solves) +
          " grid linear solves, " + std::to_string(s.not_converged) + " not converged";

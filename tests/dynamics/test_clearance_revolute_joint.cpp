@@ -6,8 +6,12 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <cmath>
+#include <cstring>
 #include <limits>
+#include <thread>
+#include <vector>
 
 #include "clearjoint/dynamics/errors.hpp"
 
@@ -220,6 +224,86 @@ TEST(ClearanceRevoluteJoint, ActsAlongTheNormalAtATiltedRimWithoutNetMomentOnThe
       k.body(kJournal).position_W.cross(a.force_journal) + a.moment_journal +
       k.body(kBearing).position_W.cross(a.force_bearing) + a.moment_bearing;
   EXPECT_LE(net_moment_about_origin.norm(), kRelativeTolerance * F * 0.05);
+}
+
+/// Everything one evaluation of the joint gives at one pose, for bitwise comparison.
+struct Evaluation {
+  Applied applied;
+  double energy = 0.0;
+  bool event = false;
+  ClearanceJointState state;
+};
+
+Evaluation evaluate_all(const ClearanceRevoluteJoint& joint, const SystemKinematics& k) {
+  GeneralisedForces forces(k);
+  std::array<double, kContactSlotCount> rate{};
+  joint.add_forces({0.0, k, kNoMemory, rate}, forces);
+  return {{forces.force_W(kBearing), forces.moment_W(kBearing), forces.force_W(kJournal),
+           forces.moment_W(kJournal)},
+          joint.potential_energy(k),
+          joint.begins_event(k, kNoMemory),
+          joint.evaluate(0.0, k, kNoMemory)};
+}
+
+bool same_bits(const Vector3& a, const Vector3& b) { return std::memcmp(a.data(), b.data(), sizeof(double) * 3) == 0; }
+
+bool same_bits(const Evaluation& a, const Evaluation& b) {
+  const double energies[2] = {a.energy, b.energy};
+  return same_bits(a.applied.force_bearing, b.applied.force_bearing) &&
+         same_bits(a.applied.moment_bearing, b.applied.moment_bearing) &&
+         same_bits(a.applied.force_journal, b.applied.force_journal) &&
+         same_bits(a.applied.moment_journal, b.applied.moment_journal) &&
+         std::memcmp(&energies[0], &energies[1], sizeof(double)) == 0 && a.event == b.event &&
+         a.state.contacts.scenario == b.state.contacts.scenario &&
+         a.state.contacts.contact_count == b.state.contacts.contact_count &&
+         same_bits(a.state.force_on_journal_W, b.state.force_on_journal_W) &&
+         same_bits(a.state.moment_on_journal_W, b.state.moment_on_journal_W) &&
+         same_bits(a.state.rim_a_in_bearing, b.state.rim_a_in_bearing);
+}
+
+TEST(ClearanceRevoluteJoint, GivesEveryThreadEvaluatingItTheAnswerItGivesAlone) {
+  ClearanceJointParameters p;  // Table 2 with friction: every part of the evaluation runs
+  p.normal.model = NormalForceModel::lankarani_nikravesh;
+  const ClearanceRevoluteJoint joint = make_joint(p);
+  // Journals at rest in the centre, sliding against the wall, tilted into a rim contact, pushed
+  // into a base: free flight and each contact type, so that threads disagree on the cached poses.
+  std::vector<SystemKinematics> poses_to_evaluate;
+  for (int k = 0; k < 12; ++k) {
+    const double depth = 1e-6 * (k % 4);
+    const double tilt = 1e-3 * (k % 3);
+    const Vector4 q = euler_parameters_from_axis_angle(Vector3::UnitY(), tilt);
+    const Vector3 p_WPj = k < 8 ? Vector3(kRadialClearance + depth - 0.0099 * std::sin(tilt), 0.0, 0.0)
+                                : Vector3(0.0, 0.0, kAxialClearance + depth);
+    poses_to_evaluate.push_back(poses(p_WPj, q, Vector3(0.0, 0.01 * k, -0.002 * k)));
+  }
+  std::vector<Evaluation> alone;
+  for (const SystemKinematics& k : poses_to_evaluate) alone.push_back(evaluate_all(joint, k));
+  ASSERT_GT(joint.statistics().detection_calls, 0);
+
+  // Two cores or more make the evaluations overlap; each thread walks the poses from its own
+  // start, so that the joint's workspace is held by one thread while others want it.
+  constexpr int kThreads = 4;
+  constexpr int kRounds = 200;
+  std::atomic<int> mismatches{0};
+  std::atomic<int> failures{0};
+  std::vector<std::thread> threads;
+  for (int t = 0; t < kThreads; ++t) {
+    threads.emplace_back([&, t] {
+      try {
+        for (int round = 0; round < kRounds; ++round) {
+          for (size_t i = 0; i < poses_to_evaluate.size(); ++i) {
+            const size_t pose = (i + static_cast<size_t>(t) * 5) % poses_to_evaluate.size();
+            if (!same_bits(evaluate_all(joint, poses_to_evaluate[pose]), alone[pose])) ++mismatches;
+          }
+        }
+      } catch (...) {
+        ++failures;
+      }
+    });
+  }
+  for (std::thread& thread : threads) thread.join();
+  EXPECT_EQ(failures.load(), 0);
+  EXPECT_EQ(mismatches.load(), 0) << "of " << kThreads * kRounds * poses_to_evaluate.size() << " evaluations";
 }
 
 TEST(ClearanceRevoluteJoint, DropsTheForceOnAGroundBearing) {

@@ -38,6 +38,17 @@
 /// the film's work on the system, W_film(t) = integral of F . v_BJ + M . omega_BJ, so that the
 /// energy balance E(t) - E(0) = W_film(t) (damping-free contact) can be checked on a run. The
 /// force table gains the film's columns (output_columns); a dry joint's table is unchanged.
+///
+/// Threads. One joint may be evaluated from several threads at once (add_forces,
+/// potential_energy, begins_event, evaluate, record_outputs, statistics): each evaluation works
+/// in the joint's own work space when no other holds it, the common single-threaded case, and
+/// otherwise in one of its own on the stack; either way it allocates nothing and gives the same
+/// answer, bit for bit. The work space also keeps the last detection and its poses (the answer is
+/// a function of the poses alone), so a second evaluation at the same poses, in the same work
+/// space, reuses it. A lubricated joint's film solver keeps a warm start between solves, which
+/// changes a solve's cost and not its answer: its solves take turns. update_extra_state, the
+/// discrete update between accepted steps, appends to recorded_impacts() and is for one thread
+/// at a time, as the integrator calls it.
 
 #include <array>
 #include <memory>
@@ -157,7 +168,8 @@ class ClearanceRevoluteJoint final : public ForceElement {
                                std::span<const double> impact_memory) const;
 
   const ClearanceJointParameters& parameters() const { return parameters_; }
-  const ClearanceJointStatistics& statistics() const { return statistics_; }
+  /// The counters so far (read while other threads evaluate, each is a count that was reached).
+  ClearanceJointStatistics statistics() const;
   /// Every impact velocity recorded so far, in order (grows by one per impact, never per
   /// right-hand-side evaluation).
   const std::vector<RecordedImpact>& recorded_impacts() const { return recorded_impacts_; }
@@ -167,12 +179,20 @@ class ClearanceRevoluteJoint final : public ForceElement {
   const Vector3& bearing_frame_v_B() const { return bearing_v_B_; }
 
  private:
-  /// The certified detection at the bodies' poses, written into `contacts` (in place).
-  void detect(double time, const SystemKinematics& kinematics, geometry::JointContacts& contacts) const;
+  struct Workspace;
+  class WorkspaceLease;
+  struct SharedState;
+
+  /// The certified detection at the bodies' poses, written into `contacts` (in place), reusing
+  /// the answer `workspace` holds for the same poses; `contacts` is the workspace's own or a
+  /// caller's.
+  void detect(double time, const SystemKinematics& kinematics, Workspace& workspace,
+              geometry::JointContacts& contacts) const;
   /// Detection, contact kinematics and forces into `state` (contacts, per-contact forces, slots,
   /// totals); not the geometry only the outputs need (axis angle, rim centres).
   void evaluate_forces(double time, const SystemKinematics& kinematics,
-                       std::span<const double> impact_memory, ClearanceJointState& state) const;
+                       std::span<const double> impact_memory, Workspace& workspace,
+                       ClearanceJointState& state) const;
   /// The film of a lubricated joint into state.film, its force and moment into the totals.
   void evaluate_film(double time, const SystemKinematics& kinematics, ClearanceJointState& state) const;
   std::string film_statistics_text() const;
@@ -184,16 +204,13 @@ class ClearanceRevoluteJoint final : public ForceElement {
   Vector3 bearing_axis_hat_B_;
   Vector3 bearing_u_B_;
   Vector3 bearing_v_B_;
-  mutable ClearanceJointStatistics statistics_;  // counters only; the physics is const
+  /// Only update_extra_state appends (one thread at a time, see the file comment).
   mutable std::vector<RecordedImpact> recorded_impacts_;
-  /// Work space of add_forces, update_extra_state, begins_event and potential_energy, reused so
-  /// that no evaluation builds a fresh result. Makes the joint non-reentrant, like the system.
-  mutable ClearanceJointState scratch_;
-  /// The poses (P_i, a_i, P_j, a_j, world) whose detection scratch_.contacts holds, if any.
-  mutable std::array<Vector3, 4> scratch_poses_{};
-  mutable bool scratch_holds_poses_ = false;
+  /// The work space with its detection cache, its claim, the counters and the film's turn: what
+  /// const evaluations share, behind one pointer so that the joint stays movable.
+  std::unique_ptr<SharedState> shared_;
   /// The film of a lubricated joint (null when dry). Mutable for the grid solver's warm start,
-  /// which changes a solve's cost, not its answer (joint_film.hpp).
+  /// which changes a solve's cost, not its answer (joint_film.hpp); solves take turns.
   mutable std::unique_ptr<JointFilm> film_;
 };
 
