@@ -101,14 +101,8 @@ geo::DetectionOptions read_options(const Json& query) {
   geo::DetectionOptions options;
   const auto found = query.find("options");
   if (found == query.end()) return options;
-  const std::string path = "options";
-  check_object(*found, path, {"certify", "exact_fallback", "parallel_angle_tolerance"});
-  read_optional_bool(*found, path, "certify", options.intersection.certify);
-  read_optional_bool(*found, path, "exact_fallback", options.intersection.exact_fallback);
-  if (const auto tolerance = found->find("parallel_angle_tolerance"); tolerance != found->end()) {
-    // Its range, [0, pi/2), is checked by detect_contacts (InvalidInput names this same field).
-    options.parallel_angle_tolerance = read_number(*tolerance, path + ".parallel_angle_tolerance");
-  }
+  // Every option of the list (geometry/option_fields.hpp) by its key.
+  read_detection_options(*found, "options", options);
   return options;
 }
 

@@ -4,6 +4,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <array>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -14,29 +15,14 @@
 #include <istream>
 
 #include "clearjoint/geometry/primitives.hpp"
-#include "json/bounded_json.hpp"
+#include "json/json_reader.hpp"
+#include "json/read_detection_options.hpp"
 #include "result_json.hpp"
 
 namespace clearjoint::app {
 namespace {
 
 namespace geo = clearjoint::geometry;
-
-/// nlohmann's "[json.exception.parse_error.101] parse error at line 1, column 52: ..." as
-/// "parse error at column 52: ...": the tag says nothing to a user, and "line 1" is the parser's
-/// line within the one input line, not the file's line number written before the message.
-std::string parse_message(const char* what) {
-  std::string text(what);
-  if (text.starts_with('[')) {
-    const auto end = text.find("] ");
-    if (end != std::string::npos) text.erase(0, end + 2);
-  }
-  constexpr std::string_view kParserLine = "at line 1, column ";
-  if (const auto at = text.find(kParserLine); at != std::string::npos) {
-    text.replace(at, kParserLine.size(), "at column ");
-  }
-  return text;
-}
 
 /// What read_line found.
 enum class LineRead { line, too_long, end };
@@ -77,21 +63,15 @@ Json answer_line(const JsonLinesCommand& command, const std::string& line, long 
   answer["id"] = nullptr;
   std::string error;
   try {
-    Json query;
-    try {
-      query = json::parse_bounded<Json>(line);
-    } catch (const Json::exception& e) {
-      throw LineError("malformed JSON: " + parse_message(e.what()));
-    } catch (const json::JsonLimitError& e) {
-      throw LineError(e.what());
-    }
+    // Malformed text and the limits: ValidationErrors with the reader's messages.
+    const Json query = json::parse_input(line, kMaxLineBytes, "one line");
     if (query.is_object()) {
       if (const auto id = query.find("id"); id != query.end()) answer["id"] = *id;
     }
     command.answer(query, answer);
     failed = false;
     return answer;
-  } catch (const ValidationError& e) {  // LineError, or the library's InvalidInput
+  } catch (const ValidationError& e) {  // the reader's, LineError, or the library's InvalidInput
     error = e.what();
   } catch (const std::exception& e) {
     // Not the input's fault as far as we can tell: say so, keep answering the other lines.
@@ -177,41 +157,24 @@ std::string field(const std::string& path, std::string_view key) {
 
 void check_object(const Json& object, const std::string& path,
                   std::initializer_list<std::string_view> allowed) {
-  if (!object.is_object()) {
-    if (path.empty()) throw LineError("the line " + quote(object) + " is not a JSON object");
-    throw LineError(path, " = " + quote(object) + ": must be a JSON object");
-  }
-  for (const auto& item : object.items()) {
-    bool known = false;
-    for (std::string_view key : allowed) known = known || item.key() == key;
-    if (!known) {
-      std::string list;
-      for (std::string_view key : allowed) list += (list.empty() ? "" : ", ") + std::string(key);
-      throw LineError(field(path, item.key()), ": unknown field (expected " + list + ")");
-    }
-  }
+  json::JsonField(object, path, "the line").require_object(allowed);
 }
 
 const Json& member(const Json& object, const std::string& path, const char* key) {
-  const auto found = object.find(key);
-  if (found == object.end()) throw LineError(field(path, key), ": missing");
-  return *found;
+  return json::JsonField(object, path, "the line").member(key).json();
 }
 
 double read_number(const Json& value, const std::string& path) {
-  if (!value.is_number()) throw LineError(path, " = " + quote(value) + ": must be a number");
-  return value.get<double>();
+  return json::JsonField(value, path, "the line").number();
 }
 
 geo::Vector3 read_vector(const Json& value, const std::string& path) {
-  if (!value.is_array() || value.size() != 3) {
-    throw LineError(path, " = " + quote(value) + ": must be an array of 3 numbers");
-  }
-  geo::Vector3 v;
-  for (int k = 0; k < 3; ++k) {
-    v[k] = read_number(value[static_cast<std::size_t>(k)], path + "[" + std::to_string(k) + "]");
-  }
-  return v;
+  const std::array<double, 3> v = json::JsonField(value, path, "the line").numbers<3>();
+  return {v[0], v[1], v[2]};
+}
+
+void read_detection_options(const Json& object, const std::string& path, geo::DetectionOptions& options) {
+  json::read_detection_options(json::JsonField(object, path, "the line"), options);
 }
 
 double read_geometric_number(const Json& value, const std::string& path) {
@@ -234,12 +197,8 @@ geo::Vector3 read_geometric_vector(const Json& value, const std::string& path) {
 }
 
 void read_optional_bool(const Json& object, const std::string& path, const char* key, bool& out) {
-  const auto flag = object.find(key);
-  if (flag == object.end()) return;
-  if (!flag->is_boolean()) {
-    throw LineError(field(path, key), " = " + quote(*flag) + ": must be true or false");
-  }
-  out = flag->get<bool>();
+  const json::JsonField fields(object, path, "the line");
+  if (fields.has(key)) out = fields.member(key).boolean();
 }
 
 void require_finite(double value, const std::string& what) {

@@ -14,13 +14,15 @@
 #include <nlohmann/json.hpp>
 
 #include "clearjoint/geometry/certificate.hpp"
+#include "clearjoint/geometry/detection_options.hpp"
 #include "clearjoint/geometry/vector3.hpp"
 #include "clearjoint/validation_error.hpp"
 #include "commands.hpp"
 
 namespace clearjoint::app {
 
-// ordered_json keeps the keys in the order they are written, so answers read like the docs.
+// ordered_json keeps the keys in the order they are written, so answers read like the docs; the
+// readers below are the shared JSON reader's (support/json/json_reader.hpp), with its messages.
 // Its dump() writes every double in the shortest form that reads back to the same double, and
 // writes non-finite values as null (JSON has neither NaN nor infinity).
 using Json = nlohmann::ordered_json;
@@ -80,6 +82,10 @@ double read_geometric_number(const Json& value, const std::string& path);
 
 /// An array of exactly 3 such numbers.
 geometry::Vector3 read_geometric_vector(const Json& value, const std::string& path);
+
+/// Sets each detection option `object` gives, by the keys of the option list
+/// (geometry/option_fields.hpp); refuses other keys.
+void read_detection_options(const Json& object, const std::string& path, geometry::DetectionOptions& options);
 
 /// Sets `out` from object[key] when present (which must then be true or false).
 void read_optional_bool(const Json& object, const std::string& path, const char* key, bool& out);

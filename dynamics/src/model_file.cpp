@@ -5,19 +5,18 @@
 #include <cmath>
 #include <fstream>
 #include <initializer_list>
-#include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "clearjoint/dynamics/clearance_revolute_joint.hpp"
 #include "clearjoint/dynamics/errors.hpp"
-#include "json/bounded_json.hpp"
+#include "json/json_reader.hpp"
+#include "json/read_detection_options.hpp"
 
 namespace clearjoint::dynamics {
 
 namespace {
 
-using Json = nlohmann::json;
-using json::quote;  // a JSON value for a message, shortened when long
+using json::Json;
 
 /// Relative slack of the inertia triangle inequality: a flat plate's Izz = Ixx + Iyy written
 /// with 6 significant digits can fall short by a few parts in 1e7.
@@ -39,81 +38,52 @@ std::string shortest(const Vector3& v) {
   return "[" + shortest(v[0]) + ", " + shortest(v[1]) + ", " + shortest(v[2]) + "]";
 }
 
-/// A JSON object together with its path in the file, for messages like "bodies[1].mass".
+/// A value of the model file with its path ("bodies[1].mass"), read with the shared JSON reader
+/// (support/json/json_reader.hpp); what it adds is the model's: "comment" and "notes" allowed in
+/// every object, names, and Eigen vectors.
 class Node {
  public:
-  Node(const Json& json, std::string path) : json_(json), path_(std::move(path)) {}
+  explicit Node(json::JsonField field) : field_(std::move(field)) {}
 
-  const std::string& path() const { return path_; }
-  std::string field(std::string_view key) const {
-    return path_.empty() ? std::string(key) : path_ + "." + std::string(key);
-  }
+  const std::string& path() const { return field_.path(); }
+  std::string field(std::string_view key) const { return field_.member_path(key); }
 
   void require_object(std::initializer_list<std::string_view> allowed) const {
-    if (!json_.is_object()) throw ModelError(where() + " must be a JSON object");
-    for (const auto& [key, value] : json_.items()) {
-      bool known = key == "comment" || key == "notes";
-      for (std::string_view a : allowed) known = known || key == a;
-      if (!known) throw ModelError(field(key) + ": unknown key (a typo?)");
-    }
+    field_.require_object(allowed, {"comment", "notes"});
+  }
+  void require_object(const std::vector<std::string_view>& allowed) const {
+    field_.require_object(allowed, {"comment", "notes"});
   }
 
-  bool has(std::string_view key) const { return json_.contains(key); }
+  bool has(std::string_view key) const { return field_.has(key); }
+  json::JsonField member(std::string_view key) const { return field_.member(key); }
+  Node child(std::string_view key) const { return Node(field_.member(key)); }
 
-  const Json& get(std::string_view key) const {
-    if (!has(key)) throw ModelError(field(key) + " is missing");
-    return json_.at(std::string(key));
-  }
-
-  Node child(std::string_view key) const { return {get(key), field(key)}; }
-
-  double number(std::string_view key) const {
-    const Json& j = get(key);
-    if (!j.is_number()) throw ModelError(field(key) + " = " + quote(j) + ": must be a number");
-    const double value = j.get<double>();
-    require_finite(field(key), value);
-    return value;
-  }
+  double number(std::string_view key) const { return field_.member(key).number(); }
   double number(std::string_view key, double fallback) const {
     return has(key) ? number(key) : fallback;
   }
 
-  std::string text(std::string_view key) const {
-    const Json& j = get(key);
-    if (!j.is_string()) throw ModelError(field(key) + " = " + quote(j) + ": must be a string");
-    return j.get<std::string>();
+  std::string text(std::string_view key) const { return field_.member(key).text(); }
+  std::string text(std::string_view key, std::string fallback) const {
+    return has(key) ? text(key) : fallback;
   }
   /// A name (of a body, joint or force element): non-empty, at most kMaxNameBytes, since names
   /// become file names (body_<name>.csv) and CSV column headers.
   std::string name(std::string_view key) const {
-    std::string value = text(key);
-    if (value.empty()) throw ModelError(field(key) + " = \"\": must not be empty");
+    const json::JsonField entry = field_.member(key);
+    std::string value = entry.text();
+    if (value.empty()) entry.refuse("must not be empty");
     if (value.size() > kMaxNameBytes) {
-      throw ModelError(field(key) + " = \"" + json::excerpt(value) + "\": longer than " +
-                       std::to_string(kMaxNameBytes) + " bytes, the limit for a name");
+      entry.refuse("longer than " + std::to_string(kMaxNameBytes) + " bytes, the limit for a name");
     }
     return value;
   }
 
-  std::string text(std::string_view key, std::string fallback) const {
-    return has(key) ? text(key) : fallback;
-  }
-
   template <int N>
   Eigen::Matrix<double, N, 1> vector(std::string_view key) const {
-    const Json& j = get(key);
-    if (!j.is_array() || j.size() != N) {
-      throw ModelError(field(key) + " = " + quote(j) + ": must be an array of " +
-                       std::to_string(N) + " numbers");
-    }
-    Eigen::Matrix<double, N, 1> v;
-    for (int k = 0; k < N; ++k) {
-      const std::string entry = field(key) + "[" + std::to_string(k) + "]";
-      if (!j[k].is_number()) throw ModelError(entry + " = " + quote(j[k]) + ": must be a number");
-      v[k] = j[k].get<double>();
-      require_finite(entry, v[k]);
-    }
-    return v;
+    const auto numbers = field_.member(key).numbers<N>();
+    return Eigen::Map<const Eigen::Matrix<double, N, 1>>(numbers.data());
   }
   template <int N>
   Eigen::Matrix<double, N, 1> vector(std::string_view key,
@@ -122,35 +92,25 @@ class Node {
   }
 
   std::vector<Node> array(std::string_view key) const {
-    const Json& j = get(key);
-    if (!j.is_array()) throw ModelError(field(key) + ": must be an array");
     std::vector<Node> items;
-    for (size_t k = 0; k < j.size(); ++k) items.emplace_back(j[k], field(key) + "[" + std::to_string(k) + "]");
+    for (json::JsonField& entry : field_.member(key).items()) items.emplace_back(std::move(entry));
     return items;
   }
-  /// An array of strings, e.g. body names; `what` says what each must be.
+  std::vector<Node> array_or_empty(std::string_view key) const {
+    return has(key) ? array(key) : std::vector<Node>{};
+  }
+  /// An array of strings, e.g. body names; `what` says what each must be ("a body name").
   std::vector<std::string> names(std::string_view key, std::string_view what) const {
-    const Json& j = get(key);
-    if (!j.is_array()) throw ModelError(field(key) + ": must be an array of " + std::string(what) + "s");
     std::vector<std::string> result;
-    for (size_t k = 0; k < j.size(); ++k) {
-      if (!j[k].is_string()) {
-        throw ModelError(field(key) + "[" + std::to_string(k) + "] = " + quote(j[k]) + ": must be " +
-                         std::string(what));
-      }
-      result.push_back(j[k].get<std::string>());
+    for (const json::JsonField& entry : field_.member(key).items()) {
+      if (!entry.json().is_string()) entry.refuse("must be " + std::string(what));
+      result.push_back(entry.text());
     }
     return result;
   }
 
-  std::vector<Node> array_or_empty(std::string_view key) const {
-    return has(key) ? array(key) : std::vector<Node>{};
-  }
-
  private:
-  std::string where() const { return path_.empty() ? "the model" : path_; }
-  const Json& json_;
-  std::string path_;
+  json::JsonField field_;
 };
 
 /// Principal moments of a real body obey I1 + I2 >= I3 (each is a sum of two of the three
@@ -285,9 +245,8 @@ ClearanceRevoluteDescription parse_clearance_revolute(const Node& n) {
     f.velocity_coefficient = friction.number("velocity_coefficient", f.velocity_coefficient);
   }
   if (n.has("detection")) {
-    const Node detection = n.child("detection");
-    detection.require_object({"parallel_angle_tolerance"});
-    d.parameters.detection.parallel_angle_tolerance = detection.number("parallel_angle_tolerance", 0.0);
+    // Every option of the detection, by the keys of the command line's "options".
+    json::read_detection_options(n.member("detection"), d.parameters.detection, {"comment", "notes"});
   }
   if (n.has("lubrication")) d.parameters.lubrication = parse_lubrication(n.child("lubrication"));
   // Validate here so that messages name the file's fields (forces[k].journal.radius, ...); body
@@ -324,17 +283,12 @@ void parse_initial_conditions(const Node& n, ModelDescription& model) {
   for (const Node& h : n.array_or_empty("hold_positions")) {
     h.require_object({"body", "components"});
     const std::string body = h.text("body");
-    const Json& components = h.get("components");
-    if (!components.is_array()) {
-      throw ModelError(h.field("components") + " = " + quote(components) +
-                       ": must be an array such as [\"x\", \"y\", \"z\", \"rx\", \"ry\", \"rz\"]");
+    const json::JsonField components = h.member("components");
+    if (!components.json().is_array()) {
+      components.refuse("must be an array such as [\"x\", \"y\", \"z\", \"rx\", \"ry\", \"rz\"]");
     }
-    for (size_t k = 0; k < components.size(); ++k) {
-      if (!components[k].is_string()) {
-        throw ModelError(h.field("components") + "[" + std::to_string(k) + "] = " +
-                         quote(components[k]) + ": must be a string");
-      }
-      model.held_positions.push_back({body, components[k].get<std::string>()});
+    for (const json::JsonField& component : components.items()) {
+      model.held_positions.push_back({body, component.text()});
     }
   }
   for (const Node& h : n.array_or_empty("hold_velocities")) {
@@ -369,21 +323,9 @@ void parse_solver(const Node& n, ModelDescription& model) {
 
 ModelDescription parse_model(std::string_view json_text, std::string_view source) {
   const std::string prefix = std::string(source) + ": ";
-  if (json_text.size() > kMaxModelFileBytes) {
-    throw ModelError(prefix + std::to_string(json_text.size()) + " bytes, more than " +
-                     std::to_string(kMaxModelFileBytes) + ", the limit for a model file");
-  }
-  Json json;
   try {
-    json = json::parse_bounded<Json>(json_text);
-  } catch (const Json::exception& e) {
-    // parse_error for malformed text, out_of_range for a number that overflows (1e400).
-    throw ModelError(prefix + "not valid JSON: " + e.what());
-  } catch (const json::JsonLimitError& e) {
-    throw ModelError(prefix + e.what());
-  }
-  try {
-    const Node root(json, "");
+    const Json json = json::parse_input(json_text, kMaxModelFileBytes, "a model file");
+    const Node root(json::JsonField(json, "", "the model"));
     root.require_object({"name", "gravity", "bodies", "joints", "forces", "initial_conditions",
                          "solver", "output"});
     ModelDescription model;
@@ -424,7 +366,8 @@ ModelDescription parse_model(std::string_view json_text, std::string_view source
       for (const BodyDescription& b : model.bodies) model.output_bodies.push_back(b.properties.name);
     }
     return model;
-  } catch (const ModelError& e) {
+  } catch (const ValidationError& e) {
+    // The reader's, the description's and the joint's checks alike: named with the file.
     throw ModelError(prefix + e.what());
   }
 }

@@ -19,6 +19,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "clearjoint/validation_error.hpp"
+
 namespace clearjoint::json {
 
 /// Deepest nesting of arrays and objects accepted in any JSON input. The deepest valid input
@@ -29,10 +31,11 @@ inline constexpr int kMaxNestingDepth = 64;
 /// Longest JSON value quoted in an error message (bytes); longer ones are cut and end in "...".
 inline constexpr std::size_t kMaxQuotedValue = 60;
 
-/// Input that breaks a limit or a number that underflows; what() names the limit or the field.
-class JsonLimitError : public std::runtime_error {
+/// Input that breaks a limit, a number that underflows or a key given twice: a ValidationError
+/// whose path names the field (empty for nesting, whose message names the place).
+class JsonLimitError : public ValidationError {
  public:
-  using std::runtime_error::runtime_error;
+  using ValidationError::ValidationError;
 };
 
 /// `text` cut to at most `limit` bytes at a UTF-8 character boundary, with "..." when cut.
@@ -78,7 +81,7 @@ class BoundedSaxParser : public nlohmann::detail::json_sax_dom_parser<BasicJson>
     // something else. Refuse rather than read 1e-400 as 0. Subnormal values are kept: they are
     // doubles, and read back as written.
     if (v == 0.0 && has_nonzero_digit(text)) {
-      throw JsonLimitError(excerpt(path(), 200) + " = " + excerpt(text) +
+      throw JsonLimitError(excerpt(path(), 200), " = " + excerpt(text) +
                            ": underflows to 0 (its magnitude is below 4.9e-324, the smallest "
                            "double); write 0 or rescale");
     }
@@ -92,8 +95,7 @@ class BoundedSaxParser : public nlohmann::detail::json_sax_dom_parser<BasicJson>
     // nlohmann keeps the last of two equal keys and drops the first without a word ("gravity"
     // given twice made a ball float): one of them is a mistake, and which one is for the user.
     if (!frames_.back().keys.insert(k).second) {
-      throw JsonLimitError(excerpt(path(), 200) +
-                           ": key given twice in one object (each key may appear once)");
+      throw JsonLimitError(excerpt(path(), 200), ": key given twice in one object (each key may appear once)");
     }
     return Base::key(k);
   }
@@ -162,6 +164,7 @@ class BoundedSaxParser : public nlohmann::detail::json_sax_dom_parser<BasicJson>
 
 /// Parses `text` as one JSON value with the limits above. Throws BasicJson::parse_error for
 /// malformed text (nlohmann's message) and JsonLimitError for a limit or an underflow.
+/// json_reader.hpp's parse_input adds a size limit and makes every error a ValidationError.
 template <class BasicJson>
 BasicJson parse_bounded(std::string_view text) {
   BasicJson result;

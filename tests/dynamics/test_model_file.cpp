@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "clearjoint/dynamics/errors.hpp"
+#include "clearjoint/geometry/option_fields.hpp"
 
 namespace clearjoint::dynamics {
 namespace {
@@ -49,9 +50,10 @@ TEST(ModelFile, RejectsNonNumbersWhereNumbersBelong) {
             "m.json: bodies[0].inertia = [1,1]: must be an array of 3 numbers");
 }
 
-TEST(ModelFile, RejectsUnknownKeysAsLikelyTypos) {
+TEST(ModelFile, RejectsUnknownKeysListingTheKnownOnes) {
   EXPECT_EQ(error_of(R"({"bodies": [{"name": "b", "mas": 1, "inertia": [1,1,1], "position": [0,0,0]}]})"),
-            "m.json: bodies[0].mas: unknown key (a typo?)");
+            "m.json: bodies[0].mas: unknown field (expected name, mass, inertia, position, "
+            "euler_parameters, velocity, angular_velocity)");
 }
 
 TEST(ModelFile, RejectsAKeyGivenTwiceNamingItsPath) {
@@ -76,7 +78,10 @@ TEST(ModelFile, RejectsUnknownJointTypes) {
 }
 
 TEST(ModelFile, ReportsMalformedJson) {
-  EXPECT_NE(error_of("{\"bodies\": [").find("m.json: not valid JSON"), std::string::npos);
+  EXPECT_EQ(error_of("{\"bodies\": [\n"),
+            "m.json: malformed JSON: parse error at line 2, column 1: syntax error while parsing value - "
+            "unexpected end of input; expected '[', '{', or a literal");
+  EXPECT_EQ(error_of(R"({"gravity": [0, 0, 1e400]})"), "m.json: malformed JSON: number overflow parsing '1e400'");
 }
 
 TEST(ModelFile, ReportsAMissingFile) {
@@ -131,7 +136,31 @@ TEST(ModelFile, RejectsAnUnknownContactLawAndAMisspeltFrictionKey) {
   EXPECT_NE(error_of(model).find("forces[0].normal_force.model = \"kelvin\": unknown normal force model"),
             std::string::npos) << error_of(model);
   EXPECT_EQ(error_of(clearance_model("0.0099", R"(, "friction": {"coeficient": 0.1})")),
-            "m.json: forces[0].friction.coeficient: unknown key (a typo?)");
+            "m.json: forces[0].friction.coeficient: unknown field (expected coefficient, velocity_coefficient)");
+}
+
+TEST(ModelFile, ReadsEveryDetectionOptionByTheKeyOfTheOptionList) {
+  // One option at a time, changed from its default: a member added to DetectionOptions (and so
+  // to its option list, which the compiler requires) that the model file cannot set fails here.
+  for (int k = 0; k < geometry::kDetectionOptionCount; ++k) {
+    const geometry::OptionChange change = geometry::change_one_option(k);
+    std::string value;
+    geometry::visit_options(change.options, [&](std::string_view key, const auto& v) {
+      if (key != change.key) return;
+      if constexpr (std::is_same_v<std::decay_t<decltype(v)>, bool>) {
+        value = v ? "true" : "false";
+      } else {
+        value = format_number(v);
+      }
+    });
+    const std::string detection = R"(, "detection": {")" + std::string(change.key) + R"(": )" + value + "}";
+    const ModelDescription m = parse_model(clearance_model("0.0099", detection), "m.json");
+    const auto& read = std::get<ClearanceRevoluteDescription>(m.forces[0]).parameters.detection;
+    EXPECT_EQ(geometry::option_values(read), geometry::option_values(change.options)) << detection;
+  }
+  EXPECT_EQ(error_of(clearance_model("0.0099", R"(, "detection": {"certfy": false})")),
+            "m.json: forces[0].detection.certfy: unknown field (expected certify, exact_fallback, "
+            "parallel_angle_tolerance)");
 }
 
 TEST(ModelFile, ReadsAClearanceJointsOilFilmWithDefaultsForWhatItOmits) {
@@ -169,7 +198,7 @@ TEST(ModelFile, NamesTheFieldOfABadOilFilm) {
   EXPECT_EQ(lubricated(R"("viscosity": 0.04, "film_thickness_limit": 0)"),
             "m.json: forces[0].lubrication.film_thickness_limit = 0: must be positive");
   EXPECT_EQ(lubricated(R"("viscosity": 0.04)"),
-            "m.json: forces[0].lubrication.film_thickness_limit is missing");
+            "m.json: forces[0].lubrication.film_thickness_limit: missing");
   EXPECT_EQ(lubricated(R"("viscosity": 0.04, "film_thickness_limit": 2e-6, "method": "grid", "grid": [1, 1])"),
             "m.json: forces[0].lubrication.grid = [1, 1]: options.circumferential_cells = 1: must be at least 8");
   EXPECT_EQ(lubricated(R"("viscosity": 0.04, "film_thickness_limit": 2e-6, "grid": [48.5, 12])"),
@@ -178,7 +207,8 @@ TEST(ModelFile, NamesTheFieldOfABadOilFilm) {
                 .find("forces[0].lubrication.method = \"finite\": unknown film method"),
             std::string::npos);
   EXPECT_EQ(lubricated(R"("viscosity": 0.04, "film_thickness_limit": 2e-6, "viscosty": 1)"),
-            "m.json: forces[0].lubrication.viscosty: unknown key (a typo?)");
+            "m.json: forces[0].lubrication.viscosty: unknown field (expected viscosity, cavitation, method, "
+            "grid, groove_direction, supply_pressure, film_thickness_limit, transition_width)");
 }
 
 TEST(ModelFile, ReadsASpringDamperAndAPointLoadWithEveryField) {

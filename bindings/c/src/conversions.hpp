@@ -7,12 +7,16 @@
 /// Enum values are cast: the C codes are the codes of the library's enum tables, which never
 /// change once released (enum_table.hpp).
 
+#include <sstream>
+#include <string>
+
 #include "clearjoint/clearjoint.h"
 #include "clearjoint/geometry/certificate.hpp"
 #include "clearjoint/geometry/contact_scenario.hpp"
 #include "clearjoint/geometry/detect_contacts.hpp"
 #include "clearjoint/geometry/intersect_circle_cylinder.hpp"
 #include "clearjoint/geometry/intersect_circle_plane.hpp"
+#include "clearjoint/validation_error.hpp"
 #include "status_reporting.hpp"
 
 namespace clearjoint::c_api {
@@ -38,8 +42,21 @@ inline geo::PartPose pose_of(const cj_pose& p) {
   return {Eigen::Map<const geo::Vector3>(p.p_WP), Eigen::Map<const geo::Vector3>(p.axis_W)};
 }
 
-/// Throw InvalidInput naming the first nonzero reserved field of `options`.
-[[noreturn]] void reject_reserved(const cj_options& options);
+/// Throw ValidationError naming the first nonzero reserved field of `options`. Defined here so that
+/// the tests of these conversions link without the library's internals; never inlined, so that
+/// cj_detect's path stays as small as it was.
+[[noreturn, gnu::cold, gnu::noinline]] inline void reject_reserved(const cj_options& options) {
+  for (int k = 0; k < 4; ++k) {
+    if (options.reserved[k] != 0.0) {
+      std::ostringstream message;
+      message.precision(17);
+      message << " = " << options.reserved[k]
+              << ": must be 0 (start from cj_default_options() or a zero-initialised struct)";
+      throw ValidationError("options.reserved[" + std::to_string(k) + "]", message.str());
+    }
+  }
+  throw ValidationError("options.reserved", ": must be 0");
+}
 
 /// The kernel's options from the caller's (defaults for NULL); rejects a nonzero reserved field
 /// (a field of a later version of the API). The range of parallel_angle_tolerance is the
@@ -54,6 +71,17 @@ inline geo::DetectionOptions detection_options_of(const cj_options* options) {
   out.intersection.certify = options->certify != 0;
   out.intersection.exact_fallback = options->exact_fallback != 0;
   out.parallel_angle_tolerance = options->parallel_angle_tolerance;
+  return out;
+}
+
+/// The caller's options for the kernel's (cj_default_options: the defaults); reserved fields 0.
+/// detection_options_of(&options_of(o)) gives `o` back, which
+/// tests/bindings/c/test_c_descriptions.cpp checks one option at a time.
+inline cj_options options_of(const geo::DetectionOptions& options) {
+  cj_options out{};
+  out.certify = options.intersection.certify ? 1 : 0;
+  out.exact_fallback = options.intersection.exact_fallback ? 1 : 0;
+  out.parallel_angle_tolerance = options.parallel_angle_tolerance;
   return out;
 }
 

@@ -261,8 +261,10 @@ def detect(dims: JointDimensions, bearing_center: ArrayLike, bearing_axis: Array
     if not isinstance(dims, JointDimensions):
         hint = " (JointDimensions(**dims) for a dict)" if isinstance(dims, Mapping) else ""
         raise TypeError(f"dims = {dims!r}: must be a clearjoint.JointDimensions{hint}")
-    result = _core.detect(dims, bearing_center, bearing_axis, journal_center, journal_axis,
-                          certify, exact_fallback, parallel_angle_tolerance, threads)
+    # By the keys of the library's option list (tests/test_detect.py checks there is one keyword each).
+    options = {"certify": certify, "exact_fallback": exact_fallback,
+               "parallel_angle_tolerance": parallel_angle_tolerance}
+    result = _core.detect(dims, bearing_center, bearing_axis, journal_center, journal_axis, options, threads)
     return DetectionBatch(result) if isinstance(result, dict) else result
 
 

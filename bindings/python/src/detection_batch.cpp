@@ -19,11 +19,15 @@
 #include <limits>
 #include <mutex>
 #include <new>
+#include <stdexcept>
 #include <string>
+#include <string_view>
+#include <type_traits>
 #include <vector>
 
 #include "bindings.hpp"
 #include "clearjoint/geometry/detect_contacts.hpp"
+#include "clearjoint/geometry/option_fields.hpp"
 #include "array_block.hpp"
 #include "numpy_views.hpp"
 #include "parallel_chunks.hpp"
@@ -267,18 +271,42 @@ py::dict detect_batch(const geo::JointDimensions& dimensions, const PoseRows& po
   return out;
 }
 
+/// The options clearjoint.detect passes by their keys in the option list (option_fields.hpp),
+/// each checked as its keyword argument. A key it does not pass is an error of the package, not
+/// of the caller: tests/test_detect.py checks that detect has a keyword for each.
+geo::DetectionOptions detection_options(const py::dict& given) {
+  geo::DetectionOptions options;
+  geo::visit_options(options, [&given](std::string_view key, auto& value) {
+    const std::string name(key);
+    if (!given.contains(name)) throw std::logic_error("clearjoint.detect passes no option " + name);
+    const py::handle argument = given[py::str(name)];
+    if constexpr (std::is_same_v<std::remove_reference_t<decltype(value)>, bool>) {
+      value = flag_argument(argument, name.c_str());
+    } else {
+      value = number_argument(argument, name);
+    }
+  });
+  return options;
+}
+
+/// Every option's default by its key, for the check of detect's keywords.
+py::dict detection_option_defaults() {
+  py::dict defaults;
+  const geo::DetectionOptions options;
+  geo::visit_options(options, [&defaults](std::string_view key, const auto& value) {
+    defaults[py::str(std::string(key))] = value;
+  });
+  return defaults;
+}
+
 py::object detect(const geo::JointDimensions& dimensions, const py::handle& bearing_center,
                   const py::handle& bearing_axis, const py::handle& journal_center,
-                  const py::handle& journal_axis, const py::handle& certify, const py::handle& exact_fallback,
-                  const py::handle& parallel_angle_tolerance, const py::object& threads) {
+                  const py::handle& journal_axis, const py::dict& option_arguments, const py::object& threads) {
   const PoseRows poses{VectorRows(bearing_center, "bearing_center"), VectorRows(bearing_axis, "bearing_axis"),
                        VectorRows(journal_center, "journal_center"), VectorRows(journal_axis, "journal_axis")};
   const Broadcast shape =
       broadcast(poses.bearing_center, poses.bearing_axis, poses.journal_center, poses.journal_axis);
-  geo::DetectionOptions options;
-  options.intersection.certify = flag_argument(certify, "certify");
-  options.intersection.exact_fallback = flag_argument(exact_fallback, "exact_fallback");
-  options.parallel_angle_tolerance = number_argument(parallel_angle_tolerance, "parallel_angle_tolerance");
+  const geo::DetectionOptions options = detection_options(option_arguments);
   const unsigned thread_limit = thread_count(threads);
   if (shape.batched) return detect_batch(dimensions, poses, shape.rows, options, thread_limit);
   geo::JointContacts result;
@@ -295,9 +323,10 @@ py::object detect(const geo::JointDimensions& dimensions, const py::handle& bear
 
 void bind_detection_batch(py::module_& module) {
   module.def("detect", &detect, py::arg("dims"), py::arg("bearing_center"), py::arg("bearing_axis"),
-             py::arg("journal_center"), py::arg("journal_axis"), py::arg("certify"),
-             py::arg("exact_fallback"), py::arg("parallel_angle_tolerance"), py::arg("threads"),
+             py::arg("journal_center"), py::arg("journal_axis"), py::arg("options"), py::arg("threads"),
              "clearjoint.detect's compiled half: a JointContacts, or a dict of arrays for a batch.");
+  module.def("_detection_option_defaults", &detection_option_defaults,
+             "Each detection option's default by its key (the library's option list).");
 }
 
 }  // namespace clearjoint::python

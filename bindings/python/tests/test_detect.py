@@ -1,6 +1,7 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """clearjoint.detect: the C++ tests' scenario cases bit for bit, batches of mixed shapes,
 broadcasting, threads, and bad inputs."""
+import inspect
 import json
 import math
 import pickle
@@ -453,3 +454,24 @@ def test_exact_fallback_false_leaves_a_tangency_uncertain_with_its_reason():
     assert left.certificate.reason == clearjoint.CertificateReason.plane_filter_undecided_exact_fallback_off
     batch = clearjoint.detect(d, [0, 0, 0], [0, 0, 1], [[0, 1, 3], [0, 0, 0]], [0, 3, 4], exact_fallback=False)
     assert batch.certificate_reason[0] == clearjoint.CertificateReason.plane_filter_undecided_exact_fallback_off
+
+
+def test_detect_has_a_keyword_for_every_detection_option_with_the_librarys_default():
+    # The library's option list by key (a member added to DetectionOptions is in it, or the
+    # library does not build): detect must take each, keyword-only, defaulting as C++ does.
+    defaults = clearjoint._core._detection_option_defaults()
+    for detect in (clearjoint.detect,):
+        parameters = inspect.signature(detect).parameters
+        for key, default in defaults.items():
+            assert key in parameters, f"detect has no keyword {key}"
+            assert parameters[key].kind is inspect.Parameter.KEYWORD_ONLY
+            assert parameters[key].default == default, key
+
+
+def test_detect_passes_each_detection_option_on_to_the_library():
+    # One option at a time, to a value the library refuses: the refusal names the option, so it
+    # reached the library's reader under its own name.
+    wrong = {"certify": 2, "exact_fallback": 2, "parallel_angle_tolerance": "wide"}
+    for key in clearjoint._core._detection_option_defaults():
+        with pytest.raises(TypeError, match=rf"^{key} = "):
+            clearjoint.detect(dims(TABLE2), [0, 0, 0], [0, 0, 1], [0, 0, 0], [0, 0, 1], **{key: wrong[key]})

@@ -17,6 +17,7 @@
 
 #include <gtest/gtest.h>
 
+#include "clearjoint/geometry/option_fields.hpp"
 #include "clearjoint/geometry/result_field_changes.hpp"
 #include "conversions.hpp"
 
@@ -75,6 +76,41 @@ TEST(CDescriptions, EveryEnumValueHasItsConstantAndItsKey) {
   expect_constants<geo::CirclePlaneTopology>("CJ_CIRCLE_PLANE_", false, cj_circle_plane_topology_string);
   expect_constants<geo::CircleCylinderTopology>("CJ_CIRCLE_CYLINDER_", false,
                                                 cj_circle_cylinder_topology_string);
+}
+
+TEST(CDescriptions, TheOptionsCarryEveryDetectionOptionByItsKey) {
+  // One option at a time, changed from its default, through cj_options and back: a member added
+  // to DetectionOptions (and so to its option list, which the compiler requires) that the C API
+  // cannot pass fails here, as does a cj_options member spelt otherwise than the list's key.
+  const std::string header = read_file(CLEARJOINT_C_HEADER);
+  const auto options_struct = header.substr(header.find("typedef struct cj_options {"));
+  const std::string declaration = options_struct.substr(0, options_struct.find("} cj_options;"));
+  for (int k = 0; k < geo::kDetectionOptionCount; ++k) {
+    const geo::OptionChange change = geo::change_one_option(k);
+    const cj_options c = clearjoint::c_api::options_of(change.options);
+    const geo::DetectionOptions back = clearjoint::c_api::detection_options_of(&c);
+    EXPECT_EQ(geo::option_values(back), geo::option_values(change.options)) << change.key;
+    EXPECT_TRUE(std::regex_search(declaration, std::regex("\\b" + std::string(change.key) + ";")))
+        << "cj_options has no member " << change.key;
+  }
+  const cj_options defaults = cj_default_options();
+  EXPECT_EQ(geo::option_values(clearjoint::c_api::detection_options_of(&defaults)),
+            geo::option_values(geo::DetectionOptions{}));
+}
+
+TEST(CDescriptions, TheFortranAndMexOptionsNameEveryDetectionOption) {
+  // The Fortran module mirrors cj_options; the MEX gateways read a struct's fields by name.
+  const std::string fortran = read_file(CLEARJOINT_FORTRAN_MODULE);
+  const auto type_start = fortran.find("type, bind(c), public :: cj_options");
+  ASSERT_NE(type_start, std::string::npos);
+  const std::string fortran_type = fortran.substr(type_start, fortran.find("end type", type_start) - type_start);
+  const std::string mex = read_file(CLEARJOINT_MEX_INPUTS);
+  const geo::DetectionOptions defaults;
+  geo::visit_options(defaults, [&](std::string_view key, const auto&) {
+    const std::string name(key);
+    EXPECT_TRUE(std::regex_search(fortran_type, std::regex("\\b" + name + "\\b"))) << "Fortran cj_options lacks " << name;
+    EXPECT_NE(mex.find("strcmp(field, \"" + name + "\")"), std::string::npos) << "the MEX options lack " << name;
+  });
 }
 
 template <class CStruct>
