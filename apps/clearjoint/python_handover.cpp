@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The hand-over to Python for subcommands written in it (python_handover.hpp). The interpreter is
 // the one the package was built for, found at configure time; the package is looked up next to
-// this program: in the build tree (build/bindings/python) or under the install prefix. The same
-// scheme as study_command.cpp.
+// this program: in the build tree (build/bindings/python) or under the install prefix. Used by
+// plot, view and study.
 
 #include "python_handover.hpp"
 
@@ -24,9 +24,14 @@ namespace {
 namespace fs = std::filesystem;
 
 /// Imports the command's main and hands it the arguments; a package that cannot be imported is
-/// reported in one line instead of a traceback.
+/// reported in one line instead of a traceback. With -c, Python puts the current folder ('') first
+/// on sys.path, where a folder named clearjoint would shadow the package this program was built
+/// with (PYTHONPATH puts that first otherwise); the bootstrap drops it, as -P does from Python
+/// 3.11 on.
 std::string bootstrap(const std::string& command, const std::string& module) {
   return "import sys\n"
+         "if sys.path and sys.path[0] == '':\n"
+         "    del sys.path[0]\n"
          "try:\n"
          "    from " + module + ".__main__ import main\n"
          "except ImportError as error:\n"

@@ -8,9 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
 #include <optional>
-#include <sstream>
 #include <nlohmann/json.hpp>
 #include <cstring>
 #include <string>
@@ -195,12 +193,10 @@ int parse(Arguments args, SimulateArguments& a) {
 
 /// The model file as given, with the command line's overrides written in: model.json of the
 /// run folder, what `clearjoint plot` and `view` read back.
-std::string model_json(const char* model_path, const SimulateArguments& a) {
-  std::ifstream in(model_path, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-  if (!a.report_step && !a.decimation) return text.str();
-  nlohmann::ordered_json model = nlohmann::ordered_json::parse(text.str());
+std::string model_json(const std::string& text, const SimulateArguments& a) {
+  if (!a.report_step && !a.decimation) return text;
+  // parse_model has read the text already, within the same limits.
+  auto model = json::parse_bounded<nlohmann::ordered_json>(text);
   if (a.report_step) model["solver"]["report_step"] = *a.report_step;
   if (a.decimation) model["output"]["decimation"] = *a.decimation;
   return model.dump(1) + "\n";
@@ -212,7 +208,9 @@ int run_simulate(Arguments args) {
   SimulateArguments a;
   if (const int status = parse(args, a); status >= 0) return status;
 
-  dynamics::ModelDescription model = dynamics::read_model_file(a.model_path);
+  // The text is read once: parsed here, and written (with the overrides) as the run's model.json.
+  const std::string model_text = dynamics::read_model_text(a.model_path);
+  dynamics::ModelDescription model = dynamics::parse_model(model_text, a.model_path);
   if (a.report_step) {
     model.solver.report_step = *a.report_step;
     dynamics::validate(model.solver);  // names solver.report_step when the value is unusable
@@ -229,11 +227,11 @@ int run_simulate(Arguments args) {
   try {
     const auto progress = [&bar](double f) { bar.update(f); };
     if (a.engine == kDefaultEngine) {
-      summary = dynamics::write_run_folder(run, model_json(a.model_path, a), a.out_dir, options, progress);
+      summary = dynamics::write_run_folder(run, model_json(model_text, a), a.out_dir, options, progress);
     } else {
       summary = dynamics::write_run_folder(
           [&](dynamics::SimulationOutput& output) { return simulate_with_engine(a.engine, run, output, progress); },
-          model_json(a.model_path, a), a.out_dir, options);
+          model_json(model_text, a), a.out_dir, options);
     }
   } catch (...) {
     bar.finish();

@@ -1,83 +1,13 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// clearjoint study ...: hands over to the Python study runner (python3 -m clearjoint.study), which
-// runs parameter studies on Dask (docs/studies.md). The interpreter is the one the Python package
-// was built for, found at configure time; the package is looked up next to this program: in the
-// build tree (build/bindings/python) or under the install prefix.
-
-#include <unistd.h>
-
-#include <cerrno>
-#include <cstdio>
-#include <cstdlib>
-#include <cstring>
-#include <filesystem>
-#include <string>
-#include <system_error>
-#include <vector>
+// clearjoint study ...: hands over to the Python study runner (clearjoint.study), which runs
+// parameter studies on Dask (docs/studies.md), through the hand-over that plot and view use
+// (python_handover.hpp): the same interpreter and the same package lookup.
 
 #include "commands.hpp"
+#include "python_handover.hpp"
 
 namespace clearjoint::app {
 
-namespace {
-
-namespace fs = std::filesystem;
-
-// Imports the runner and hands it the arguments; a missing package is reported in one line
-// instead of a traceback. With -c, Python puts the current folder ('') first on sys.path, where a
-// folder named clearjoint would shadow the package this program was built with (PYTHONPATH puts
-// that first otherwise); the bootstrap drops it, as -P does from Python 3.11 on.
-constexpr const char* kBootstrap =
-    "import sys\n"
-    "if sys.path and sys.path[0] == '':\n"
-    "    del sys.path[0]\n"
-    "try:\n"
-    "    from clearjoint.study.__main__ import main\n"
-    "except ImportError as error:\n"
-    "    sys.exit('clearjoint study: the clearjoint Python package is not importable by ' + sys.executable +\n"
-    "             ' (' + str(error) + '); build it (CLEARJOINT_BUILD_PYTHON) and install it, or set PYTHONPATH')\n"
-    "sys.exit(main(sys.argv[1:]))\n";
-
-/// The directory holding the clearjoint package for this program: the build tree's when the
-/// program runs from the build tree, else the install location relative to the program.
-fs::path package_directory() {
-  std::error_code error;
-  const fs::path program = fs::read_symlink("/proc/self/exe", error);
-  const fs::path program_directory = error ? fs::path() : program.parent_path();
-  const fs::path build_program_directory = CLEARJOINT_STUDY_BUILD_PROGRAM_DIR;
-  if (!program_directory.empty() && fs::equivalent(program_directory, build_program_directory, error)) {
-    return CLEARJOINT_STUDY_BUILD_PYTHONPATH;
-  }
-  const fs::path installed = CLEARJOINT_STUDY_INSTALL_PYTHONPATH;
-  if (installed.is_absolute() || program_directory.empty()) return installed;
-  return (program_directory / CLEARJOINT_STUDY_INSTALL_PREFIX_FROM_BINDIR / installed).lexically_normal();
-}
-
-}  // namespace
-
-int run_study(Arguments args) {
-  const std::string python = CLEARJOINT_STUDY_PYTHON;
-  const fs::path package = package_directory();
-  std::string path = package.string();
-  if (const char* existing = std::getenv("PYTHONPATH"); existing != nullptr && *existing != '\0') {
-    path.append(":").append(existing);
-  }
-  if (::setenv("PYTHONPATH", path.c_str(), 1) != 0) {
-    std::fprintf(stderr, "clearjoint study: cannot set PYTHONPATH (%s)\n", std::strerror(errno));
-    return 1;
-  }
-  std::vector<char*> argv;
-  argv.push_back(const_cast<char*>(python.c_str()));
-  argv.push_back(const_cast<char*>("-c"));
-  argv.push_back(const_cast<char*>(kBootstrap));
-  for (char* a : args) argv.push_back(a);
-  argv.push_back(nullptr);
-  ::execv(python.c_str(), argv.data());
-  std::fprintf(stderr,
-               "clearjoint study: cannot start the Python interpreter %s (%s); the study runner needs "
-               "the interpreter the clearjoint Python package was built for\n",
-               python.c_str(), std::strerror(errno));
-  return 1;
-}
+int run_study(Arguments args) { return hand_over_to_python("study", "clearjoint.study", args); }
 
 }  // namespace clearjoint::app

@@ -1,8 +1,8 @@
 # SPDX-License-Identifier: BSD-3-Clause
 # The study runner (clearjoint.study, docs/studies.md): its Python files and the study schema go
 # into the package in the build tree and are installed with it; the clearjoint program gets its
-# `study` subcommand, which runs `python3 -m clearjoint.study` with this interpreter.
-# Included from bindings/python/CMakeLists.txt after the package is set up.
+# `study` subcommand, which runs clearjoint.study with this interpreter. Included from
+# bindings/python/CMakeLists.txt after the package is set up, with plot_view.cmake.
 
 file(GLOB clearjoint_study_files RELATIVE ${CMAKE_CURRENT_SOURCE_DIR}/clearjoint/study CONFIGURE_DEPENDS
      ${CMAKE_CURRENT_SOURCE_DIR}/clearjoint/study/*.py)
@@ -16,17 +16,8 @@ install(FILES ${clearjoint_study_files} ${clearjoint_study_schema}
         DESTINATION ${clearjoint_python_destination}/study)
 
 if(TARGET clearjoint)
-  # From the installed program (PREFIX/bin) up to the prefix, for a relative package directory.
-  file(RELATIVE_PATH clearjoint_study_bin_to_prefix "/prefix/${CMAKE_INSTALL_BINDIR}" "/prefix")
-  if(clearjoint_study_bin_to_prefix STREQUAL "")
-    set(clearjoint_study_bin_to_prefix ".")
-  endif()
+  # The subcommand hands over through apps/clearjoint/python_handover.cpp, which plot_view.cmake
+  # adds with the interpreter and the package's location.
   target_sources(clearjoint PRIVATE ${PROJECT_SOURCE_DIR}/apps/clearjoint/study_command.cpp)
-  target_compile_definitions(clearjoint PRIVATE
-    CLEARJOINT_WITH_STUDY
-    CLEARJOINT_STUDY_PYTHON="${Python3_EXECUTABLE}"
-    CLEARJOINT_STUDY_BUILD_PROGRAM_DIR="$<TARGET_FILE_DIR:clearjoint>"
-    CLEARJOINT_STUDY_BUILD_PYTHONPATH="${CMAKE_CURRENT_BINARY_DIR}"
-    CLEARJOINT_STUDY_INSTALL_PYTHONPATH="${CLEARJOINT_PYTHON_INSTALL_DIR}"
-    CLEARJOINT_STUDY_INSTALL_PREFIX_FROM_BINDIR="${clearjoint_study_bin_to_prefix}")
+  target_compile_definitions(clearjoint PRIVATE CLEARJOINT_WITH_STUDY)
 endif()

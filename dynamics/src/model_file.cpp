@@ -372,19 +372,24 @@ ModelDescription parse_model(std::string_view json_text, std::string_view source
   }
 }
 
-ModelDescription read_model_file(const std::filesystem::path& path) {
+std::string read_model_text(const std::filesystem::path& path) {
   std::error_code error;
   if (std::filesystem::is_directory(path, error)) {
     throw ModelError(path.string() + ": is a directory, not a model file");
   }
   std::ifstream file(path, std::ios::binary);
   if (!file) throw ModelError(path.string() + ": cannot open the model file");
-  // Read at most one byte past the limit: a huge file (or /dev/zero) is refused, not slurped.
+  // Read at most one byte past the limit: a huge file (or /dev/zero) is refused, not slurped;
+  // parse_model names the limit.
   std::string text(kMaxModelFileBytes + 1, '\0');
   file.read(text.data(), static_cast<std::streamsize>(text.size()));
   if (file.bad()) throw ModelError(path.string() + ": cannot read the model file");
   text.resize(static_cast<size_t>(file.gcount()));
-  return parse_model(text, path.string());
+  return text;
+}
+
+ModelDescription read_model_file(const std::filesystem::path& path) {
+  return parse_model(read_model_text(path), path.string());
 }
 
 }  // namespace clearjoint::dynamics

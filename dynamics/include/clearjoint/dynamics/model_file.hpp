@@ -5,6 +5,7 @@
 /// errors (they are usually typos), except "comment" and "notes", allowed in every object.
 
 #include <filesystem>
+#include <string>
 #include <string_view>
 
 #include "clearjoint/dynamics/model_description.hpp"
@@ -34,7 +35,13 @@ inline constexpr size_t kMaxNameBytes = 128;
 /// field path (e.g. "model.json: bodies[1].mass = -1: must be positive").
 ModelDescription parse_model(std::string_view json_text, std::string_view source);
 
-/// Read and parse a model file. Throws ModelError if it cannot be read or parsed.
+/// A model file's text as read, unparsed (at most kMaxModelFileBytes + 1 bytes: parse_model
+/// refuses a longer one): for callers that keep the text beside the model, as a run folder's
+/// model.json. Throws ModelError if it cannot be read.
+std::string read_model_text(const std::filesystem::path& path);
+
+/// Read and parse a model file: parse_model(read_model_text(path), path). Throws ModelError if it
+/// cannot be read or parsed.
 ModelDescription read_model_file(const std::filesystem::path& path);
 
 }  // namespace clearjoint::dynamics
