@@ -19,9 +19,10 @@ using RationalPolynomial = CGAL::Polynomial<Rational>;
 
 /// Coefficients (or Sturm chain members) held inside their owner up to this count, on the heap
 /// beyond it: a polynomial of degree 4 (the rim-cylinder eliminant P, docs/circle-cylinder.md)
-/// has five coefficients and a Sturm chain of at most five members. An isolation forms some
-/// twenty such polynomials and chains per query; a heap block for each cost more than the
-/// arithmetic on their small coefficients.
+/// has five coefficients and a Sturm chain of at most five members. One exact tangency forms
+/// dozens of such polynomials and chains (Yun's factorisation, the chain's remainders, local
+/// expansions); on the heap each would take a malloc and a free, held inline none.
+/// (GMP's integers inside them still allocate.)
 inline constexpr std::size_t kInlineCoefficients = 5;
 template <class T>
 using SmallVector = boost::container::small_vector<T, kInlineCoefficients>;
