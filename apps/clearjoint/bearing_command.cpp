@@ -13,7 +13,9 @@
 #include <utility>
 
 #include "clearjoint/lubrication/bearing_characteristics.hpp"
+#include "clearjoint/lubrication/result_fields.hpp"
 #include "commands.hpp"
+#include "result_json.hpp"
 
 namespace clearjoint::app {
 
@@ -91,7 +93,7 @@ int run_bearing(Arguments args) {
       *eps, *width_ratio, {.motion = motion, .method = method, .cavitation = cavitation, .grid = grid});
   const lubrication::BearingCharacteristics r = lubrication::bearing_characteristics(query);
   const bool on_grid = query.method == lubrication::BearingMethod::grid;
-  nlohmann::ordered_json out;
+  Json out;
   out["eccentricity_ratio"] = query.eccentricity_ratio;
   out["width_ratio"] = query.width_ratio;
   out["motion"] = lubrication::to_string(query.motion);
@@ -99,12 +101,7 @@ int run_bearing(Arguments args) {
   out["cavitation"] = lubrication::to_string(query.cavitation);
   out["grid"] = on_grid ? nlohmann::ordered_json::array({query.grid.circumferential_cells, query.grid.axial_cells})
                         : nlohmann::ordered_json(nullptr);
-  out["sommerfeld_number"] = r.sommerfeld_number;
-  out["attitude_angle"] = r.attitude_angle;
-  out["side_flow_variable"] = r.side_flow_variable;
-  out["max_pressure_ratio"] = r.max_pressure_ratio;
-  out["iterations"] = r.iterations;
-  out["converged"] = r.converged;
+  write_result(r, ResultStyle::intersect, out);
   std::printf("%s\n", out.dump().c_str());
   return 0;
 }

@@ -11,6 +11,7 @@
 
 #include "bindings.hpp"
 #include "clearjoint/lubrication/bearing_characteristics.hpp"
+#include "result_dicts.hpp"
 
 namespace py = pybind11;
 
@@ -29,13 +30,7 @@ py::dict characteristics(double eccentricity_ratio, double width_ratio, const st
     py::gil_scoped_release release;  // a fine grid takes milliseconds
     result = lubrication::bearing_characteristics(query);
   }
-  py::dict d;
-  d["sommerfeld_number"] = result.sommerfeld_number;
-  d["attitude_angle"] = result.attitude_angle;
-  d["side_flow_variable"] = result.side_flow_variable;
-  d["max_pressure_ratio"] = result.max_pressure_ratio;
-  d["iterations"] = result.iterations;
-  d["converged"] = result.converged;
+  py::dict d = as_dict(result);
   d["cavitation"] = std::string(lubrication::to_string(query.cavitation));
   d["grid"] = query.method == lubrication::BearingMethod::grid
                   ? py::object(py::make_tuple(query.grid.circumferential_cells, query.grid.axial_cells))

@@ -2,6 +2,7 @@
 #include "result_dicts.hpp"
 
 #include "clearjoint/geometry/result_fields.hpp"
+#include "clearjoint/lubrication/result_fields.hpp"
 
 #include <pybind11/stl.h>
 
@@ -138,6 +139,7 @@ py::dict as_dict(const geo::Certificate& c) {
 
 py::dict as_dict(const geo::RimCrossing& c) { return dict_of(c); }
 py::dict as_dict(const geo::RimArc& a) { return dict_of(a); }
+py::dict as_dict(const lubrication::BearingCharacteristics& r) { return dict_of(r); }
 py::dict as_dict(const geo::Contact& c) { return dict_of(c); }
 py::dict as_dict(const geo::CirclePlaneIntersection& r) { return dict_of(r); }
 py::dict as_dict(const geo::CircleCylinderIntersection& r) { return dict_of(r); }

@@ -11,6 +11,7 @@
 #include "clearjoint/geometry/intersect_circle_cylinder.hpp"
 #include "clearjoint/geometry/intersect_circle_plane.hpp"
 #include "clearjoint/geometry/rim_arc.hpp"
+#include "clearjoint/lubrication/bearing_characteristics.hpp"
 #include "enum_codes.hpp"
 
 namespace clearjoint::python {
@@ -32,6 +33,9 @@ pybind11::dict as_dict(const geometry::JointContacts& r);
 pybind11::dict as_dict(const geometry::CirclePlaneIntersection& r);
 // {"topology", "crossings", "penetration_arcs", "certificate", "certificate_reason"}
 pybind11::dict as_dict(const geometry::CircleCylinderIntersection& r);
+// {"sommerfeld_number", "attitude_angle", "side_flow_variable", "max_pressure_ratio",
+//  "iterations", "converged"}
+pybind11::dict as_dict(const lubrication::BearingCharacteristics& r);
 
 /// The inverses: a result from its as_dict() (TypeError, KeyError or ValueError for another dict).
 template <typename Result>
