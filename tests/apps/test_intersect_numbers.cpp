@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <cstdlib>
@@ -25,7 +26,8 @@ using nlohmann::json;
 std::map<std::string, json> answers() {
   const fs::path dir = fs::path(CLEARJOINT_TEST_WORK_DIR);
   fs::create_directories(dir);
-  const fs::path out = dir / "rims_answers.jsonl";
+  // One file per process: ctest runs each case in a process of its own, in parallel.
+  const fs::path out = dir / ("rims_answers_" + std::to_string(getpid()) + ".jsonl");
   const std::string command = "\"" CLEARJOINT_PROGRAM "\" intersect \"" CLEARJOINT_SOURCE_DIR
                               "/examples/rims.jsonl\" > \"" + out.string() + "\"";
   const int status = std::system(command.c_str());
@@ -36,6 +38,8 @@ std::map<std::string, json> answers() {
     const json answer = json::parse(line);
     by_id[answer.at("id").get<std::string>()] = answer;
   }
+  in.close();
+  fs::remove(out);
   return by_id;
 }
 
