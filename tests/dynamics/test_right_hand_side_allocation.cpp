@@ -1,16 +1,11 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The right-hand side allocates nothing: MultibodySystem::derivative (with the clearance joint's
 // detection, contact forces and the constraint solve), begins_event and update_extra_states are
-// called hundreds of thousands of times per simulated second. This executable replaces malloc,
-// calloc and realloc by counting wrappers around glibc's own (__libc_malloc etc.); operator new
-// and Eigen's dynamic storage both end in malloc, so every heap allocation is counted. Under
-// AddressSanitizer (scripts/run-sanitizers.sh) malloc belongs to the sanitizer's runtime, which
-// aborts at start-up when the program replaces it; there the sanitizer's allocation hook, which
-// every malloc, calloc, realloc and operator new of its allocator calls, counts instead.
+// called hundreds of thousands of times per simulated second. Every heap allocation of this
+// program is counted (support/testing/heap_allocation_counter.hpp).
 
 #include <gtest/gtest.h>
 
-#include <atomic>
 #include <cstddef>
 #include <vector>
 
@@ -18,55 +13,7 @@
 #include "clearjoint/dynamics/integrator.hpp"
 #include "clearjoint/dynamics/model_builder.hpp"
 #include "dynamics_test_support.hpp"
-
-#if defined(__SANITIZE_ADDRESS__)  // GCC
-#define CLEARJOINT_TEST_UNDER_ASAN 1
-#elif defined(__has_feature)  // Clang
-#if __has_feature(address_sanitizer)
-#define CLEARJOINT_TEST_UNDER_ASAN 1
-#endif
-#endif
-
-#ifdef CLEARJOINT_TEST_UNDER_ASAN
-#include <sanitizer/allocator_interface.h>
-#endif
-
-namespace {
-std::atomic<long> heap_allocations{0};
-}  // namespace
-
-#ifdef CLEARJOINT_TEST_UNDER_ASAN
-namespace {
-void count_allocation(const volatile void*, std::size_t) {
-  heap_allocations.fetch_add(1, std::memory_order_relaxed);
-}
-void ignore_release(const volatile void*) {}
-// Installed before main, so before any test runs (the runtime takes both hooks or none).
-const bool hooks_installed =
-    __sanitizer_install_malloc_and_free_hooks(count_allocation, ignore_release) != 0;
-}  // namespace
-#else
-extern "C" {
-void* __libc_malloc(std::size_t size);
-void* __libc_calloc(std::size_t count, std::size_t size);
-void* __libc_realloc(void* pointer, std::size_t size);
-}
-
-extern "C" {
-void* malloc(std::size_t size) {
-  heap_allocations.fetch_add(1, std::memory_order_relaxed);
-  return __libc_malloc(size);
-}
-void* calloc(std::size_t count, std::size_t size) {
-  heap_allocations.fetch_add(1, std::memory_order_relaxed);
-  return __libc_calloc(count, size);
-}
-void* realloc(void* pointer, std::size_t size) {
-  heap_allocations.fetch_add(1, std::memory_order_relaxed);
-  return __libc_realloc(pointer, size);
-}
-}
-#endif
+#include "heap_allocation_counter.hpp"
 
 namespace clearjoint::dynamics {
 namespace {
@@ -103,10 +50,10 @@ Counted count_allocations(const char* file, const std::vector<std::vector<double
   for (size_t k = 0; k < states.size(); ++k) {
     const double t = 1e-5 * static_cast<double>(k);
     accepted = states[k];
-    const long before = heap_allocations.load();
+    const long before = clearjoint::testing::heap_allocations();
     system.derivative(t, states[k], rate);
     system.begins_event(t, states[k]);
-    counted.allocations += heap_allocations.load() - before;
+    counted.allocations += clearjoint::testing::heap_allocations() - before;
     // The kinematics of the last derivative() call are still those of states[k].
     if (joint != nullptr) {
       const ClearanceJointState s = joint->evaluate(t, system.kinematics(), system.extra_state(states[k], system.force_elements().size() - 1));
@@ -148,16 +95,16 @@ TEST(RightHandSide, AllocatesNothingForTheIdealSliderCranks) {
 
 TEST(RightHandSide, CountsAllocationsWhenThereAreSome) {
 #ifdef CLEARJOINT_TEST_UNDER_ASAN
-  ASSERT_TRUE(hooks_installed) << "the sanitizer refused the allocation hooks";
+  ASSERT_TRUE(clearjoint::testing::heap_allocations_are_counted()) << "the sanitizer refused the allocation hooks";
 #endif
   // The counter itself works: a vector of doubles is one allocation.
-  const long before = heap_allocations.load();
+  const long before = clearjoint::testing::heap_allocations();
   std::vector<double> v(100);
   v[0] = 1.0;
   // The vector's storage escapes into an empty asm statement: without it Clang elides the
   // allocation and its release ([expr.new]/13 lets a compiler omit them), and nothing is counted.
   asm volatile("" : : "r"(v.data()) : "memory");
-  EXPECT_EQ(heap_allocations.load() - before, 1);
+  EXPECT_EQ(clearjoint::testing::heap_allocations() - before, 1);
 }
 
 }  // namespace

@@ -1,65 +1,19 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Heap allocations of a detection (issue: "no heap allocation in a detection that does not reach
 // the exact tier"). A simulation detects at every evaluation of its right-hand side, so an
-// allocation there is paid hundreds of thousands of times per simulated second. This executable
-// replaces malloc, calloc and realloc by counting wrappers around glibc's own (__libc_malloc etc.);
-// operator new and GMP's default allocator both end in malloc, so every heap allocation is counted.
-// Under AddressSanitizer, whose runtime owns malloc and refuses a program that replaces it, the
-// sanitizer's allocation hook counts instead (as tests/dynamics/test_right_hand_side_allocation.cpp).
+// allocation there is paid hundreds of thousands of times per simulated second. Every heap
+// allocation of this program is counted (support/testing/heap_allocation_counter.hpp).
 
 #include <gtest/gtest.h>
 
-#include <atomic>
 #include <cmath>
 #include <cstddef>
 #include <vector>
 
 #include "clearjoint/geometry/detect_contacts.hpp"
 #include "clearjoint/geometry/intersect_circle_plane.hpp"
+#include "heap_allocation_counter.hpp"
 #include "tilted_journal_scenarios.hpp"
-
-#if defined(__SANITIZE_ADDRESS__)  // GCC
-#define CLEARJOINT_TEST_UNDER_ASAN 1
-#elif defined(__has_feature)  // Clang
-#if __has_feature(address_sanitizer)
-#define CLEARJOINT_TEST_UNDER_ASAN 1
-#endif
-#endif
-
-#ifdef CLEARJOINT_TEST_UNDER_ASAN
-#include <sanitizer/allocator_interface.h>
-#endif
-
-namespace {
-std::atomic<long> heap_allocations{0};
-}  // namespace
-
-#ifdef CLEARJOINT_TEST_UNDER_ASAN
-namespace {
-void count_allocation(const volatile void*, std::size_t) { heap_allocations.fetch_add(1, std::memory_order_relaxed); }
-void ignore_release(const volatile void*) {}
-const bool hooks_installed = __sanitizer_install_malloc_and_free_hooks(count_allocation, ignore_release) != 0;
-}  // namespace
-#else
-extern "C" {
-void* __libc_malloc(std::size_t size);
-void* __libc_calloc(std::size_t count, std::size_t size);
-void* __libc_realloc(void* pointer, std::size_t size);
-
-void* malloc(std::size_t size) {
-  heap_allocations.fetch_add(1, std::memory_order_relaxed);
-  return __libc_malloc(size);
-}
-void* calloc(std::size_t count, std::size_t size) {
-  heap_allocations.fetch_add(1, std::memory_order_relaxed);
-  return __libc_calloc(count, size);
-}
-void* realloc(void* pointer, std::size_t size) {
-  heap_allocations.fetch_add(1, std::memory_order_relaxed);
-  return __libc_realloc(pointer, size);
-}
-}
-#endif
 
 namespace clearjoint::geometry {
 namespace {
@@ -102,10 +56,10 @@ Counted count_floating_point_detections(const std::vector<PartPose>& journals) {
   JointContacts reused = detect_contacts(kTable2, bearing, journals.front());
   Counted counted;
   for (const PartPose& journal : journals) {
-    const long before = heap_allocations.load();
+    const long before = clearjoint::testing::heap_allocations();
     const JointContacts fresh = detect_contacts(kTable2, bearing, journal);
     detect_contacts(kTable2, bearing, journal, reused);
-    const long allocated = heap_allocations.load() - before;
+    const long allocated = clearjoint::testing::heap_allocations() - before;
     if (fresh.certificate.level == Certainty::exact) continue;
     counted.allocations += allocated;
     ++counted.detections;
@@ -116,7 +70,7 @@ Counted count_floating_point_detections(const std::vector<PartPose>& journals) {
 
 TEST(DetectionAllocations, ADetectionDecidedInFloatingPointAllocatesNothing) {
 #ifdef CLEARJOINT_TEST_UNDER_ASAN
-  ASSERT_TRUE(hooks_installed) << "the sanitizer refused the allocation hooks";
+  ASSERT_TRUE(clearjoint::testing::heap_allocations_are_counted()) << "the sanitizer refused the allocation hooks";
 #endif
   const std::vector<PartPose> journals = journals_around_the_bearing();
   const Counted counted = count_floating_point_detections(journals);
@@ -137,9 +91,9 @@ TEST(DetectionAllocations, AnExactTangencyOfARimWithAPlaneAllocatesNothing) {
   const Circle3 table2_rim{{0, 0, 9900.5}, {0, 0, 1}, 9900};
   (void)intersect_circle_plane(unit_rim, ground);
   for (const auto& [rim, plane] : {std::pair{unit_rim, ground}, std::pair{table2_rim, tilted_base}}) {
-    const long before = heap_allocations.load();
+    const long before = clearjoint::testing::heap_allocations();
     const CirclePlaneIntersection answer = intersect_circle_plane(rim, plane);
-    const long allocated = heap_allocations.load() - before;
+    const long allocated = clearjoint::testing::heap_allocations() - before;
     EXPECT_EQ(answer.topology, CirclePlaneTopology::tangent);
     EXPECT_EQ(answer.certificate.level, Certainty::exact);
     EXPECT_EQ(allocated, 0);
@@ -148,15 +102,15 @@ TEST(DetectionAllocations, AnExactTangencyOfARimWithAPlaneAllocatesNothing) {
 
 TEST(DetectionAllocations, CountsAllocationsWhenThereAreSome) {
 #ifdef CLEARJOINT_TEST_UNDER_ASAN
-  ASSERT_TRUE(hooks_installed) << "the sanitizer refused the allocation hooks";
+  ASSERT_TRUE(clearjoint::testing::heap_allocations_are_counted()) << "the sanitizer refused the allocation hooks";
 #endif
   // The counter itself works: a vector of doubles is one allocation.
-  const long before = heap_allocations.load();
+  const long before = clearjoint::testing::heap_allocations();
   std::vector<double> v(100);
   v[0] = 1.0;
   // The storage escapes into an empty asm statement: without it Clang may elide the allocation.
   asm volatile("" : : "r"(v.data()) : "memory");
-  EXPECT_EQ(heap_allocations.load() - before, 1);
+  EXPECT_EQ(clearjoint::testing::heap_allocations() - before, 1);
 }
 
 }  // namespace
