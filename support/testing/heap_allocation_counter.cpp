@@ -3,6 +3,7 @@
 
 #include <atomic>
 #include <cstddef>
+#include <cstdlib>
 
 #if defined(__SANITIZE_ADDRESS__)  // GCC
 #define CLEARJOINT_TEST_UNDER_ASAN 1
@@ -56,6 +57,13 @@ namespace clearjoint::testing {
 
 long heap_allocations() noexcept { return allocations.load(std::memory_order_relaxed); }
 
-bool heap_allocations_are_counted() noexcept { return hooks_installed; }
+bool heap_allocations_are_counted() noexcept {
+  if (!hooks_installed) return false;
+  const long before = heap_allocations();
+  // Through a volatile pointer, so that the compiler cannot omit the allocation and its release.
+  void* volatile probe = std::malloc(64);
+  std::free(probe);
+  return heap_allocations() - before == 1;
+}
 
 }  // namespace clearjoint::testing

@@ -13,7 +13,8 @@ namespace clearjoint::testing {
 /// Heap allocations since the program started.
 long heap_allocations() noexcept;
 
-/// False when the sanitizer refused the allocation hook (nothing would be counted).
+/// True when one allocation made now is counted once: false when the sanitizer refused its hook,
+/// or when the program was linked without this counter's malloc.
 bool heap_allocations_are_counted() noexcept;
 
 }  // namespace clearjoint::testing
