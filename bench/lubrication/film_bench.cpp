@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Cost of one film load (issue 36): the closed forms, and the Reynolds grid cold and warm-started,
-// at 48 x 12 (the grid at which bearing_characteristics_test meets the published-table accuracy),
+// at 48 x 12 (the grid at which test_bearing_characteristics meets the published-table accuracy),
 // at twice and at two thirds of it, each with the band LU and with the general sparse LU it
 // replaced (the baseline, third argument 1). The warm rows alternate between two nearby states
 // (eps 0.6 and 0.601, the step of a dynamics run), so each call starts from the other's

@@ -4,7 +4,7 @@
 # tables, the same columns and report times, and values that agree (the planar aligned
 # slider-crank over 0.1 s: the slider within 1e-6 m, the figure of docs/engines.md); and so it does
 # with --decimation 3 and with --format hdf5 (over 20 ms: every column within a part in 1e-4 of
-# its largest magnitude, the agreement of tests/engines/simbody_simulate_in_simbody_test.cpp).
+# its largest magnitude, the agreement of tests/engines/test_simbody_simulate_in_simbody.cpp).
 #   simulate_engine_test.sh CLEARJOINT MODELS_DIR WORK_DIR
 set -euo pipefail
 clearjoint=$1 models=$2 work=$3

@@ -136,13 +136,13 @@ TEST(SimulateInSimbody, WritesEveryReportTimeWhenTheDecimationExceedsTheirCount)
 }
 
 // A lubricated journal (1 kg) free in a grounded bearing, no gravity, thrown across the clearance
-// while spinning: the film alone catches it (tests/dynamics/joint_film_test.cpp runs it in
+// while spinning: the film alone catches it (tests/dynamics/test_joint_film.cpp runs it in
 // clearjoint).
 const dynamics::Vector3 kThrowVelocity(0.05, 0.02, 0.0);  // m/s
 /// What the film can take: the journal's translation, 1/2 m v^2 [J].
 const double kThrowEnergy = 0.5 * kThrowVelocity.squaredNorm();
 /// |E(t) - E(0) - W_film(t)| / kThrowEnergy at tolerance 1e-10: clearjoint's own run keeps it
-/// under 1e-6 (joint_film_test); the same bound for Simbody's.
+/// under 1e-6 (test_joint_film); the same bound for Simbody's.
 constexpr double kFilmEnergyBalance = 1e-6;
 
 dynamics::ModelDescription thrown_lubricated_journal() {
