@@ -22,9 +22,16 @@ import argparse
 import json
 import os
 import random
+import re
 import statistics
 import subprocess
 import sys
+
+
+def row_key(name):
+    """A benchmark's name without Google Benchmark's "/iterations:N": programs that fix a row's
+    iterations from a measured cost (bench_detection) name the same row differently in each build."""
+    return re.sub(r"/iterations:\d+", "", name)
 
 
 def run(program, benchmark_filter, extra, out_path):
@@ -70,7 +77,7 @@ def compare(args):
         for build in builds:
             program = getattr(args, build)
             for b in run(program, args.filter, args.extra, os.path.join(args.out, "%s_%d.json" % (build, r))):
-                times[build].setdefault(b["name"], []).append(b)
+                times[build].setdefault(row_key(b["name"]), []).append(b)
         print("round %d of %d done (%s first)" % (r + 1, args.rounds, builds[0]), file=sys.stderr)
     print("seed %d, %d interleaved rounds; medians; ratio = candidate / baseline" % (args.seed, args.rounds))
     print()

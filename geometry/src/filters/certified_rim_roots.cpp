@@ -360,7 +360,76 @@ void collect_distinct(const RootEnclosure* found, int count, int seen_sign, RimR
   sort_and_wrap(result);
 }
 
-bool subdivision_proof(const RimDistancePolynomial& g, RimRoots& result) {
+// ---- Tier 2's stop at a proved multiple root (docs/circle-cylinder.md, section 3.1) -------
+// Let an arc [low, high] hold a root t0 of multiplicity >= 2 of the function g encloses. At t0 both
+// g and g' vanish, and |g''| <= M2 (second_derivative_bound) everywhere, so at the middle m of any
+// arc holding t0, with rho >= |m - t0|: |g(m)| <= M2 rho^2 / 2 and |g'(m)| <= M2 rho. The
+// enclosures of g(m) and g'(m) contain those values, so neither the no-root test nor the
+// monotone test below can pass on such an arc: the search halves it to kMaxDepth and fails there
+// with interval_proof_failed_near_multiple_root, about 2 (kMaxDepth - depth) evaluations later.
+// (No more than four roots can turn up first: a double root leaves at most two others.) So where
+// the exact tier, asked once, proves a multiple root inside the arc, the search stops at once
+// with that reason: the answer and its certificate are the ones the full search leads to, and
+// the tangencies that took tier 2 some 65 evaluations take a score.
+
+/// Arcs at least this deep (width 2 pi / 16 / 2^8, about 1.5e-3 rad) where both tests fail are
+/// checked for a tangency (looks_like_tangency). Shallower arcs fail both tests around any
+/// pair of roots (their Newton start is too far for the check to mean much); deeper checks save
+/// less of the descent (about 1.6 arcs per level at the benchmark's tangencies).
+constexpr int kTangencyCheckDepth = 8;
+/// Newton steps on g' from the arc's middle towards the critical point: from within 1.5e-3 rad of
+/// it, three reach it to double precision (quadratic convergence).
+constexpr int kCriticalPointSteps = 3;
+/// A critical value of |g| at most this many times its own error bound looks like a tangency: at
+/// a double root the computed value is its rounding alone, far inside the bound; a pair of roots
+/// whose critical value exceeds the bound sixteenfold is one tier 2 usually separates, and the
+/// exact tier would be asked for nothing.
+constexpr double kTangencyNoiseFactor = 16;
+/// Critical points checked per query before the exact tier is asked (a rim has at most two
+/// minima of |g| near zero).
+constexpr int kMaxTangencyChecks = 2;
+/// The argument above multiplies M2 by the squared radius of a kMaxDepth arc (~2^-74): above this
+/// bound on M2 the products stay normal numbers, whose roundings kSlack covers.
+constexpr double kSmallestCurvatureForStop = 0x1p-900;
+
+/// How far beyond an arc the critical point may lie, in arc widths: the search meets the arcs
+/// beside a tangency's (which fail both tests too) before the arc that holds it.
+constexpr double kCriticalPointReach = 2.0;
+
+/// Whether the minimum of |g| near `middle` (within kCriticalPointReach arc widths of [low, high])
+/// lies within kTangencyNoiseFactor times its error bound: the sign of a tangency that tier 2
+/// would halve its way into.
+bool looks_like_tangency(const RimDistancePolynomial& g, double middle, double low, double high_end) {
+  const double reach = kCriticalPointReach * (high_end - low);
+  double theta = middle;
+  for (int i = 0; i < kCriticalPointSteps; ++i) {
+    const ValueAndSlope at = g.approximate_at(CosSin{std::cos(theta), std::sin(theta)});
+    if (!(at.curvature != 0.0)) return false;
+    const double next = std::clamp(theta - at.slope / at.curvature, low - reach, high_end + reach);
+    if (!std::isfinite(next)) return false;
+    theta = next;
+  }
+  const Bounded at = g.value(theta);
+  return std::fabs(at.value) <= kTangencyNoiseFactor * at.error;
+}
+
+/// Whether one of `exact`'s roots of multiplicity >= 2 lies, with its whole enclosure, inside
+/// [low, high] (tier 2's arcs start at kSubdivisionStart, the roots' angles lie in [0, 2 pi)).
+bool holds_multiple_root(const RimRoots& exact, double low, double high_end) {
+  for (int i = 0; i < exact.count; ++i) {
+    const RootEnclosure& root = exact.roots[static_cast<std::size_t>(i)];
+    if (root.multiplicity < 2) continue;
+    for (const double turn : {0.0, kTwoPi}) {
+      const double angle = root.angle + turn;
+      // The rounded 2 pi and the sums here: a few ulps of the angle.
+      const double margin = root.radius * kSlack + 4 * kUnitRoundoff * angle;
+      if (angle - margin >= low && angle + margin <= high_end) return true;
+    }
+  }
+  return false;
+}
+
+bool subdivision_proof(const RimDistancePolynomial& g, RimRoots& result, ExactRootsOnRequest* exact) {
   const double curvature = g.second_derivative_bound();
   Arc stack[kMaxDepth * 2 + kInitialArcs + 2];
   int top = 0;
@@ -375,6 +444,10 @@ bool subdivision_proof(const RimDistancePolynomial& g, RimRoots& result) {
   }
   int seen_sign = 0, arcs_done = 0, found = 0;
   RootEnclosure roots[5];
+  // The tangency check's state: checks made, whether the exact tier was asked, its roots.
+  int tangency_checks = 0;
+  bool exact_asked = exact == nullptr || !(curvature >= kSmallestCurvatureForStop);
+  const RimRoots* exact_roots = nullptr;
   while (top > 0) {
     const Arc arc = stack[--top];
     if (++arcs_done > kMaxArcs) {
@@ -391,7 +464,8 @@ bool subdivision_proof(const RimDistancePolynomial& g, RimRoots& result) {
       seen_sign = at.value > 0 ? 1 : -1;
       continue;  // no root on this arc
     }
-    if (std::fabs(slope.value) - slope.error * kSlack > curvature * radius * kSlack) {
+    const bool monotone = std::fabs(slope.value) - slope.error * kSlack > curvature * radius * kSlack;
+    if (monotone) {
       // g' keeps its sign on the arc: at most one root; the end signs say whether there is one.
       const int direction = slope.value > 0 ? 1 : -1;
       const int sign_low = arc.sign_low != kSignNotYetKnown ? arc.sign_low : g.value(arc.low).sign();
@@ -420,7 +494,21 @@ bool subdivision_proof(const RimDistancePolynomial& g, RimRoots& result) {
         // rather than reporting the whole arc as a uselessly wide enclosure. Falls through.
       }
     }
-    if (arc.depth >= kMaxDepth) {
+    if (!monotone && arc.depth >= kTangencyCheckDepth) {
+      if (!exact_asked && tangency_checks < kMaxTangencyChecks) {
+        ++tangency_checks;
+        if (looks_like_tangency(g, middle, arc.low, arc.high)) {
+          exact_asked = true;
+          exact_roots = exact->roots();
+        }
+      }
+    }
+    // The stop of section 3.1, where the arc budget leaves room for the whole descent (the full
+    // search cannot then run out of arcs before failing on this arc's way down).
+    const bool proved_doomed = exact_roots != nullptr && !monotone &&
+                               arcs_done + 2 * (kMaxDepth - arc.depth) + 2 <= kMaxArcs &&
+                               holds_multiple_root(*exact_roots, arc.low, arc.high);
+    if (arc.depth >= kMaxDepth || proved_doomed) {
       result.failure = CertificateReason::interval_proof_failed_near_multiple_root;
       // Best guess for the uncertain path: g vanishes to double precision here.
       seen_sign = at.value > 0 ? 1 : -1;
@@ -438,7 +526,7 @@ bool subdivision_proof(const RimDistancePolynomial& g, RimRoots& result) {
 
 }  // namespace
 
-RimRoots certified_rim_roots(const RimDistancePolynomial& g) {
+RimRoots certified_rim_roots(const RimDistancePolynomial& g, ExactRootsOnRequest* exact) {
   RimRoots result;
   result.side_without_roots = g.k[0].value > 0 ? RimSideWithoutRoots::beyond : RimSideWithoutRoots::inside;  // only a guess until proved
   // Bounded::finite() of every coefficient, each value and error in the two lanes: x - x is +0
@@ -454,7 +542,7 @@ RimRoots certified_rim_roots(const RimDistancePolynomial& g) {
   }
   if (first_harmonic_proof(g, result)) return result;
   result = RimRoots{};
-  subdivision_proof(g, result);
+  subdivision_proof(g, result, exact);
   return result;
 }
 

@@ -162,9 +162,26 @@ inline void sort_by_angle(RimRoots& roots) {
   }
 }
 
+/// The roots of the rim that g encloses, decided by a tier beyond floating point (the exact tier,
+/// rim_cylinder_exact.hpp, which this layer does not see), computed at most once and only when
+/// tier 2 asks. Tier 2 asks where its search has narrowed to a minimum of |g| inside the
+/// evaluation's noise, the mark of a tangency: a root of multiplicity >= 2 there is one the
+/// subdivision can never prove (docs/circle-cylinder.md, section 3.1), and the search stops
+/// instead of halving its way to kMaxDepth. The caller hands the same roots on as its answer.
+class ExactRootsOnRequest {
+ public:
+  /// The roots (RimRoots::proved), or nullptr when the tier could not decide them.
+  virtual const RimRoots* roots() = 0;
+
+ protected:
+  ~ExactRootsOnRequest() = default;
+};
+
 /// Tier 1 then tier 2. Never returns a wrong `proved` answer (under the arithmetic model of
-/// error_bounded.hpp).
-RimRoots certified_rim_roots(const RimDistancePolynomial& g);
+/// error_bounded.hpp). With `exact`, tier 2 may ask it for the roots near a suspected tangency
+/// and stop early where they prove one (the failure reason is the one the full search gives:
+/// interval_proof_failed_near_multiple_root).
+RimRoots certified_rim_roots(const RimDistancePolynomial& g, ExactRootsOnRequest* exact = nullptr);
 
 /// The same search without proofs: used when the caller switched certificates off, and as the
 /// best guess when a proof fails and the exact fallback is disabled. `proved` stays false.

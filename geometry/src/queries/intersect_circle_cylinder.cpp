@@ -89,6 +89,28 @@ void fill(const Circle3& circle, const RimRoots& roots, bool bounded, double cen
   }
 }
 
+/// The exact tier's roots of one query, computed at the first request: tier 2's tangency check
+/// (certified_rim_roots.hpp) or the fallback after the filter, whichever asks first; the other
+/// gets the same roots.
+class ExactRimRoots final : public detail::ExactRootsOnRequest {
+ public:
+  ExactRimRoots(const Circle3& circle, const Cylinder3& cylinder, const detail::RoundedPoint* centre,
+                int scale_exponent)
+      : circle_(circle), cylinder_(cylinder), centre_(centre), scale_exponent_(scale_exponent) {}
+  const RimRoots& result() {
+    if (!roots_) roots_ = detail::exact_rim_roots(circle_, cylinder_, centre_, scale_exponent_);
+    return *roots_;
+  }
+  const RimRoots* roots() override { return result().proved ? &*roots_ : nullptr; }
+
+ private:
+  const Circle3& circle_;
+  const Cylinder3& cylinder_;
+  const detail::RoundedPoint* centre_;
+  int scale_exponent_;
+  std::optional<RimRoots> roots_;
+};
+
 /// The query on rescaled inputs; `centre` (unscaled recipe) and `scale_exponent` only for the
 /// exact tier, `centre_error` already scaled.
 CircleCylinderIntersection intersect_scaled(const Circle3& circle, const Cylinder3& cylinder,
@@ -198,19 +220,21 @@ CircleCylinderIntersection intersect_scaled(const Circle3& circle, const Cylinde
   std::optional<CircleFrame> frame;
   detail::RimDistancePolynomial g = detail::rim_distance_polynomial(circle, cylinder, offset, a_priori, frame);
   using Verdict = detail::TierVerdict<CertificateReason>;
+  const bool exact_tier_on = options.certify && options.exact_fallback;
+  ExactRimRoots exact_roots(circle, cylinder, centre, scale_exponent);
   detail::filtered_exact_or_fallback<CertificateReason>(
-      options.certify && options.exact_fallback,
+      exact_tier_on,
       [&] {
         if (!options.certify) return Verdict::open(CertificateReason::certificate_switched_off);
         detail::widen_for_centre_error(g, circle, offset, centre_error);
-        const RimRoots roots = detail::certified_rim_roots(g);
+        const RimRoots roots = detail::certified_rim_roots(g, exact_tier_on ? &exact_roots : nullptr);
         if (!roots.proved) return Verdict::open(roots.failure);
         fill(circle, roots, true, centre_error, out, frame);
         out.certificate = {Certainty::certified, CertificateReason::none};
         return Verdict::done();
       },
       [&](CertificateReason filter_failure) {
-        const RimRoots exact = detail::exact_rim_roots(circle, cylinder, centre, scale_exponent);
+        const RimRoots& exact = exact_roots.result();
         if (!exact.proved) return Verdict::open(exact.failure);
         fill(circle, exact, true, centre_error, out);
         out.certificate = {Certainty::exact, filter_failure};
