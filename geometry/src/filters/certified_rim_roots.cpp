@@ -370,24 +370,28 @@ void collect_distinct(const RootEnclosure* found, int count, int seen_sign, RimR
 // (No more than four roots can turn up first: a double root leaves at most two others.) So where
 // the exact tier, asked once, proves a multiple root inside the arc, the search stops at once
 // with that reason: the answer and its certificate are the ones the full search leads to, and
-// the tangencies that took tier 2 some 65 evaluations take a score.
+// the tangencies that took tier 2 some 65 evaluations take about 30.
 
 /// Arcs at least this deep (width 2 pi / 16 / 2^8, about 1.5e-3 rad) where both tests fail are
 /// checked for a tangency (looks_like_tangency). Shallower arcs fail both tests around any
 /// pair of roots (their Newton start is too far for the check to mean much); deeper checks save
-/// less of the descent (about 1.6 arcs per level at the benchmark's tangencies).
+/// less of the descent (about 1.6 arcs per level at the benchmark's tangencies: the exact-tangency
+/// benchmark measured 8.7 us per rim checking from depth 8, 9.5 us from depth 12).
 constexpr int kTangencyCheckDepth = 8;
 /// Newton steps on g' from the arc's middle towards the critical point: from within 1.5e-3 rad of
-/// it, three reach it to double precision (quadratic convergence).
-constexpr int kCriticalPointSteps = 3;
+/// it, the second step leaves an error near 1e-11 rad (quadratic convergence), which moves the
+/// critical value by some 1e-22 of g'', far below any error bound of g.
+constexpr int kCriticalPointSteps = 2;
 /// A critical value of |g| at most this many times its own error bound looks like a tangency: at
-/// a double root the computed value is its rounding alone, far inside the bound; a pair of roots
-/// whose critical value exceeds the bound sixteenfold is one tier 2 usually separates, and the
-/// exact tier would be asked for nothing.
-constexpr double kTangencyNoiseFactor = 16;
-/// Critical points checked per query before the exact tier is asked (a rim has at most two
-/// minima of |g| near zero).
-constexpr int kMaxTangencyChecks = 2;
+/// a double root the computed value is its rounding alone, inside the bound. At 16 the check
+/// also caught near-tangent pairs that tier 2 goes on to separate, and asked the exact tier for
+/// nothing (the detection suite's near_tangent k=11 set took 2.3 times as long).
+constexpr double kTangencyNoiseFactor = 2;
+/// Critical points checked per query, each three evaluations of g: the first check looks up to
+/// kCriticalPointReach arc widths around its arc, and once the exact roots are known every later
+/// arc is tested against them without a check. A second check cost the near-tangent pairs that
+/// tier 2 separates 5 % and caught no tangency the first one missed.
+constexpr int kMaxTangencyChecks = 1;
 /// The argument above multiplies M2 by the squared radius of a kMaxDepth arc (~2^-74): above this
 /// bound on M2 the products stay normal numbers, whose roundings kSlack covers.
 constexpr double kSmallestCurvatureForStop = 0x1p-900;
