@@ -162,11 +162,13 @@ parts to see where it acts.
 * **The quick rejection works:** a rim well inside the wall costs a fraction of a random pose, and
   free flight a fraction of a detection in contact: the candidate prefilters prove all four
   candidates clear at once, straight from the poses.
-* **The exact fallback is the expensive path,** hundreds of times a random wall query, and part of
-  it is spent before it starts: the floating-point attempt that fails near a tangency (the
-  `no_exact_fallback` rows). On inputs far from the paper's scale it is slower still, because its
-  rationals grow with the inputs' binary exponents (the `extreme` family of
-  [benchmarks.md](benchmarks.md)).
+* **The exact fallback is the expensive path,** hundreds of times a random wall query. At an
+  exact tangency the subdivision tier stops as soon as the exact roots prove the tangency it
+  could never certify (docs/circle-cylinder.md, section 3.1), so most of a `certified` row is the
+  exact tier itself. A `no_exact_fallback` row instead runs the failing search to its end, and
+  then the uncertified search for its best guess. On inputs far from the paper's scale the exact
+  tier is slower still, because its integers grow with the inputs' binary exponents (the
+  `extreme` family of [benchmarks.md](benchmarks.md)).
 * **Why the first harmonic starts tier 1.** On realistic poses the rim distance polynomial is
   dominated by its first harmonic (offset term) next to the second (tilt term), so the roots of
   k0 + A cos(theta - phi) are within about 1e-3 rad of the true ones; two Halley steps from there
