@@ -18,6 +18,7 @@
 #include <numbers>
 #include <random>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -243,6 +244,27 @@ TEST(CircleCylinder, FindsTwoExternalTangenciesAtAngleZeroAndPiOfARimWhosePlaneC
   const Cylinder3 wall = z_cylinder(1);
   expect_answer(intersect_circle_cylinder(rim, wall), rim, wall, Topology::crossing,
                 {{Vector3(1, 0, 2), 2}, {Vector3(1, 0, -2), 2}}, 2, 8);
+}
+
+TEST(CircleCylinder, CertifiesEveryTangencyExactlyNamingTheSubdivisionsFailure) {
+  // The subdivision stops early at a tangency the exact tier proves (docs/circle-cylinder.md,
+  // section 3.1); the certificate still says why the floating-point tiers could not decide, as
+  // the full search does: exact, interval_proof_failed_near_multiple_root. Without the exact
+  // tier the same search answers unproved, for the same reason.
+  const std::vector<std::pair<Circle3, Cylinder3>> tangencies = {
+      {flat_rim(Vector3(1, 0, 0), 1.0), kZ2}, {flat_rim(Vector3(3, 0, 0), 1.0), kZ2},
+      {tilted_rim(), z_cylinder(4.0)},        {tilted_rim(), z_cylinder(5.0)},
+      {upright_rim(0), kZ2},                  {upright_rim(1), z_cylinder(1)}};
+  IntersectionOptions without_exact;
+  without_exact.exact_fallback = false;
+  for (const auto& [rim, wall] : tangencies) {
+    const CircleCylinderIntersection r = intersect_circle_cylinder(rim, wall);
+    EXPECT_EQ(r.certificate.level, Certainty::exact) << r.certificate.reason_text();
+    EXPECT_EQ(r.certificate.reason, CertificateReason::interval_proof_failed_near_multiple_root);
+    const CircleCylinderIntersection guess = intersect_circle_cylinder(rim, wall, without_exact);
+    EXPECT_EQ(guess.certificate.level, Certainty::uncertain);
+    EXPECT_EQ(guess.certificate.reason, CertificateReason::interval_proof_failed_near_multiple_root);
+  }
 }
 
 TEST(CircleCylinder, FindsFourCrossingsOfAnOffsetRimWhosePlaneContainsTheAxis) {
