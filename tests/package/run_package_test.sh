@@ -19,13 +19,17 @@
 #                                         (Namespace::name), never a bare library name or path
 # Environment: CXX and CC, the compilers the consumers are built with, CXXFLAGS, CFLAGS and
 # LDFLAGS, their C++, C and link flags (CMake reads them itself); CLEARJOINT_VERSION, the version
-# the package must report.
+# the package must report; CLEARJOINT_WITH_DYNAMICS (ON, the default, or OFF), whether it must
+# hold the dynamics module (without it, its consumer is not built).
 set -euo pipefail
 step=$1 scratch=$2
 shift 2
 prefix=$scratch/prefix
 cxx=${CXX:-c++}
 cc=${CC:-cc}
+with_dynamics=${CLEARJOINT_WITH_DYNAMICS:-ON}
+[[ $with_dynamics == ON || $with_dynamics == OFF ]] ||
+  { echo "CLEARJOINT_WITH_DYNAMICS=$with_dynamics: must be ON or OFF" >&2; exit 2; }
 fail() { echo "FAIL: $*" >&2; exit 1; }
 
 case $step in
@@ -61,12 +65,13 @@ cmake-consumer)
   consumer=$1
   rm -rf "$scratch/cmake-consumer"
   cmake -S "$consumer" -B "$scratch/cmake-consumer" -DCMAKE_BUILD_TYPE=Release \
-        -DCMAKE_CXX_COMPILER="$cxx" -DCMAKE_C_COMPILER="$cc" -DCMAKE_PREFIX_PATH="$prefix"
+        -DCMAKE_CXX_COMPILER="$cxx" -DCMAKE_C_COMPILER="$cc" -DCMAKE_PREFIX_PATH="$prefix" \
+        -DCONSUMER_WITH_DYNAMICS="$with_dynamics"
   cmake --build "$scratch/cmake-consumer" -j2
   # Shared: the libraries are found through the consumer's build RPATH, and the dynamics library
   # finds the geometry library beside it through its own RUNPATH.
   "$scratch/cmake-consumer/consumer"
-  "$scratch/cmake-consumer/dynamics_consumer"
+  if [[ $with_dynamics == ON ]]; then "$scratch/cmake-consumer/dynamics_consumer"; fi
   "$scratch/cmake-consumer/c_consumer"
   ;;
 pkg-config-consumer)
@@ -77,7 +82,9 @@ pkg-config-consumer)
   PKG_CONFIG_PATH=$(echo "$prefix"/lib*/pkgconfig)
   static=()
   if ls "$prefix"/lib*/libclearjoint_geometry.a > /dev/null 2>&1; then static=(--static); fi
-  for module in clearjoint-geometry clearjoint-dynamics clearjoint-c; do
+  modules=(clearjoint-geometry clearjoint-c)
+  if [[ $with_dynamics == ON ]]; then modules+=(clearjoint-dynamics); fi
+  for module in "${modules[@]}"; do
     pkg-config --exists --print-errors "$module"
     [[ $(pkg-config --modversion "$module") == "$CLEARJOINT_VERSION" ]] ||
       fail "$module.pc says version $(pkg-config --modversion "$module"), the project $CLEARJOINT_VERSION"
@@ -86,21 +93,25 @@ pkg-config-consumer)
   # shellcheck disable=SC2086 # CXXFLAGS holds separate words
   "$cxx" ${CXXFLAGS:-} ${LDFLAGS:-} -std=c++20 -o "$out/consumer" "$consumer/main.cpp" \
     $(pkg-config "${static[@]}" --cflags --libs clearjoint-geometry)
-  # shellcheck disable=SC2046
-  # shellcheck disable=SC2086
-  "$cxx" ${CXXFLAGS:-} ${LDFLAGS:-} -std=c++20 -o "$out/dynamics_consumer" "$consumer/dynamics_main.cpp" \
-    $(pkg-config "${static[@]}" --cflags --libs clearjoint-dynamics)
+  if [[ $with_dynamics == ON ]]; then
+    # shellcheck disable=SC2046
+    # shellcheck disable=SC2086
+    "$cxx" ${CXXFLAGS:-} ${LDFLAGS:-} -std=c++20 -o "$out/dynamics_consumer" "$consumer/dynamics_main.cpp" \
+      $(pkg-config "${static[@]}" --cflags --libs clearjoint-dynamics)
+    echo "pkg-config ${static[*]} --libs clearjoint-dynamics: $(pkg-config "${static[@]}" --libs clearjoint-dynamics)"
+  elif pkg-config --exists clearjoint-dynamics; then
+    fail "clearjoint-dynamics.pc installed by a build without the dynamics module"
+  fi
   # The C API from C, compiled by the C compiler.
   # shellcheck disable=SC2046
   # shellcheck disable=SC2086
   "$cc" ${CFLAGS:-} ${LDFLAGS:-} -std=c99 -o "$out/c_consumer" "$consumer/c_main.c" \
     $(pkg-config "${static[@]}" --cflags --libs clearjoint-c) -lm
-  echo "pkg-config ${static[*]} --libs clearjoint-dynamics: $(pkg-config "${static[@]}" --libs clearjoint-dynamics)"
   echo "pkg-config ${static[*]} --libs clearjoint-c: $(pkg-config "${static[@]}" --libs clearjoint-c)"
   # Shared: the .pc files' Libs give the programs a run path to the prefix's libraries; they run
   # with an empty environment (no LD_LIBRARY_PATH).
   env -i "$out/consumer"
-  env -i "$out/dynamics_consumer"
+  if [[ $with_dynamics == ON ]]; then env -i "$out/dynamics_consumer"; fi
   env -i "$out/c_consumer"
   ;;
 installed-program)
