@@ -448,9 +448,10 @@ bool subdivision_proof(const RimDistancePolynomial& g, RimRoots& result, ExactRo
   }
   int seen_sign = 0, arcs_done = 0, found = 0;
   RootEnclosure roots[5];
-  // The tangency check's state: checks made, whether the exact tier was asked, its roots.
+  // The tangency check's state: checks made, whether the exact tier may still be asked (once, and
+  // only where section 3.1's argument holds), its roots once asked (nullptr if undecided).
   int tangency_checks = 0;
-  bool exact_asked = exact == nullptr || !(curvature >= kSmallestCurvatureForStop);
+  bool may_ask = exact != nullptr && curvature >= kSmallestCurvatureForStop;
   const RimRoots* exact_roots = nullptr;
   while (top > 0) {
     const Arc arc = stack[--top];
@@ -499,10 +500,10 @@ bool subdivision_proof(const RimDistancePolynomial& g, RimRoots& result, ExactRo
       }
     }
     if (!monotone && arc.depth >= kTangencyCheckDepth) {
-      if (!exact_asked && tangency_checks < kMaxTangencyChecks) {
+      if (may_ask && tangency_checks < kMaxTangencyChecks) {
         ++tangency_checks;
         if (looks_like_tangency(g, middle, arc.low, arc.high)) {
-          exact_asked = true;
+          may_ask = false;
           exact_roots = exact->roots();
         }
       }
