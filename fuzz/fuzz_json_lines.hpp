@@ -41,7 +41,7 @@ inline void answer_lines(const app::JsonLinesCommand& command, const std::uint8_
       check(answer.is_object() && answer.contains("id"), "an answer is an object with an id");
       check(!failed || (answer.size() == 3 && answer.contains("v") && answer["error"].is_string()),
             "an error line holds only the format version, the id and the error message");
-      const std::string text = answer.dump(-1, ' ', false, app::Json::error_handler_t::replace);
+      const std::string text = app::answer_text(answer, line);
       check(app::Json::accept(text), "the printed answer is valid JSON");
     }
     start = end + 1;

@@ -13,6 +13,8 @@
 #include <fstream>
 #include <iostream>
 #include <istream>
+#include <optional>
+#include <string_view>
 
 #include "clearjoint/geometry/primitives.hpp"
 #include "json/json_reader.hpp"
@@ -54,7 +56,100 @@ LineRead read_line(std::streambuf& input, std::string& line) {
   return LineRead::line;
 }
 
+bool is_json_space(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; }
+
+/// The end of the JSON string that starts at `text[at]` ('"'): one past its closing quote.
+std::size_t string_end(std::string_view text, std::size_t at) {
+  for (std::size_t k = at + 1; k < text.size(); ++k) {
+    if (text[k] == '\\') {
+      ++k;  // the escaped character, whatever it is
+    } else if (text[k] == '"') {
+      return k + 1;
+    }
+  }
+  return std::string_view::npos;
+}
+
+/// The end of the JSON value that starts at `text[at]`: a string, an array or object (brackets
+/// counted, strings skipped), or a literal or number (up to the next delimiter).
+std::size_t value_end(std::string_view text, std::size_t at) {
+  if (text[at] == '"') return string_end(text, at);
+  if (text[at] == '{' || text[at] == '[') {
+    long depth = 0;
+    for (std::size_t k = at; k < text.size();) {
+      const char c = text[k];
+      if (c == '"') {
+        k = string_end(text, k);
+        if (k == std::string_view::npos) return k;
+        continue;
+      }
+      if (c == '{' || c == '[') ++depth;
+      if (c == '}' || c == ']') --depth;
+      ++k;
+      if (depth == 0) return k;
+    }
+    return std::string_view::npos;
+  }
+  std::size_t k = at;
+  while (k < text.size() && text[k] != ',' && text[k] != '}' && text[k] != ']' && !is_json_space(text[k])) ++k;
+  return k;
+}
+
+/// The text of the member "id" of the JSON object `line` (already parsed, so well formed) when it
+/// is a number: the digits as the user wrote them. A scan of the top level, not a second parse:
+/// nlohmann-json keeps a number's value, not its text (-0 becomes 0, and an integer beyond 64 bits
+/// a double). Keys are compared after decoding ("\u0069d" is "id"); a key is unique in a line
+/// (the reader refuses one given twice).
+std::optional<std::string_view> id_number_text(std::string_view line) {
+  std::size_t k = 0;
+  const auto skip_space = [&] {
+    while (k < line.size() && is_json_space(line[k])) ++k;
+  };
+  skip_space();
+  if (k == line.size() || line[k] != '{') return std::nullopt;
+  ++k;
+  for (;;) {
+    skip_space();
+    if (k >= line.size() || line[k] != '"') return std::nullopt;
+    const std::size_t key_end = string_end(line, k);
+    if (key_end == std::string_view::npos) return std::nullopt;
+    const std::string_view key = line.substr(k, key_end - k);
+    k = key_end;
+    skip_space();
+    if (k >= line.size() || line[k] != ':') return std::nullopt;
+    ++k;
+    skip_space();
+    if (k >= line.size()) return std::nullopt;
+    const std::size_t start = k;
+    k = value_end(line, start);
+    if (k == std::string_view::npos) return std::nullopt;
+    const bool is_id = key == "\"id\"" || (key.find('\\') != std::string_view::npos &&
+                                            Json::parse(key, nullptr, false) == "id");
+    if (is_id) {
+      const char first = line[start];
+      if (first == '-' || (first >= '0' && first <= '9')) return line.substr(start, k - start);
+      return std::nullopt;
+    }
+    skip_space();
+    if (k >= line.size() || line[k] != ',') return std::nullopt;
+    ++k;
+  }
+}
+
 }  // namespace
+
+std::string answer_text(const Json& answer, std::string_view line) {
+  std::string text = answer.dump(-1, ' ', false, Json::error_handler_t::replace);
+  const auto id = answer.find("id");
+  if (id == answer.end() || !id->is_number()) return text;
+  const std::optional<std::string_view> written = id_number_text(line);
+  if (!written) return text;
+  // Every answer and error line starts with the format version, then the id (json_lines.hpp).
+  const std::string head = "{\"v\":" + std::to_string(kFormatVersion) + ",\"id\":";
+  const std::string printed = head + id->dump();
+  if (text.compare(0, printed.size(), printed) != 0) return text;
+  return head + std::string(*written) + text.substr(printed.size());
+}
 
 Json answer_line(const JsonLinesCommand& command, const std::string& line, long line_number,
                  bool& failed) {
@@ -121,7 +216,7 @@ int answer_all(const JsonLinesCommand& command, std::istream& input, const std::
       answer = answer_line(command, line, line_number, failed);
     }
     if (failed) ++failures;
-    std::cout << answer.dump(-1, ' ', false, Json::error_handler_t::replace) << '\n';
+    std::cout << answer_text(answer, line) << '\n';
     if (flush_each_line) std::cout.flush();
     if (!std::cout) return write_error(command, line_number, errno);
   }

@@ -116,6 +116,12 @@ const JsonLinesCommand& detect_command();
 Json answer_line(const JsonLinesCommand& command, const std::string& line, long line_number,
                  bool& failed);
 
+/// `answer` (answer_line's, for `line`) as the text of its output line. A number id is written as
+/// the text it had in `line`, character for character (docs/command-line.md: the id is copied
+/// unchanged): 1.23e29, -0 and 123000000000000000000000000000 come back so, not as the shortest
+/// form of the double they round to. Any other id is written as its JSON value.
+std::string answer_text(const Json& answer, std::string_view line);
+
 /// `clearjoint <name> [FILE]`: answers every line of FILE (or standard input, flushed line by
 /// line), in order. Returns the exit status: 0 every line answered, 1 some line got an error
 /// line, 2 usage error or unreadable FILE.

@@ -3,7 +3,7 @@
 # docs/command-line.md. Run by ctest, one case per test:
 #   cmake -DCLEARJOINT=<program> -DSOURCE_DIR=<repository> -DWORK_DIR=<scratch dir> -DCASE=<case>
 #         -P detect_command_test.cmake
-# Cases: example, scenarios, stdin, exact, bad_lines, missing_file, usage, help.
+# Cases: example, scenarios, stdin, exact, bad_lines, number_ids, missing_file, usage, help.
 # Any failed check ends the script with FATAL_ERROR, which fails the test. The checks themselves
 # are in json_lines_checks.cmake.
 
@@ -253,6 +253,11 @@ elseif(CASE STREQUAL "bad_lines")
   expect_no_error(24)
   expect_in("${ERR}" "detect_bad_lines.jsonl" "stderr")
   expect_in("${ERR}" "23 line(s)" "stderr")
+
+elseif(CASE STREQUAL "number_ids")
+  # As for intersect: a number id comes back as the text it was written in, also where no double
+  # prints that text (1.23e29, an integer beyond 64 bits, -0) and on an error line.
+  expect_ids_as_written("${SOURCE_DIR}/tests/apps/detect_number_ids.jsonl" 1)
 
 elseif(CASE STREQUAL "missing_file")
   set(missing "${WORK_DIR}/no-such-joints.jsonl")

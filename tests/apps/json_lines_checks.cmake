@@ -61,6 +61,30 @@ function(json_type out line)
   set(${out} "${value}" PARENT_SCOPE)
 endfunction()
 
+# expect_ids_as_written(file status): runs the command on `file`, whose lines start with
+# {"id": ID, expects the exit status `status`, and checks that each answer (or error line) starts
+# with {"v":1,"id":ID, with ID character for character.
+function(expect_ids_as_written input_file status)
+  run("" "${input_file}")
+  expect_status(${status})
+  file(READ "${input_file}" input)
+  split_lines("${input}" IN SKIP_BLANK)
+  split_lines("${OUT}" OUT_LINE)
+  if(NOT OUT_LINE_COUNT EQUAL IN_COUNT OR IN_COUNT EQUAL 0)
+    fail("${OUT_LINE_COUNT} output lines for ${IN_COUNT} input lines")
+  endif()
+  math(EXPR last "${IN_COUNT} - 1")
+  foreach(k RANGE ${last})
+    string(REGEX MATCH "^{\"id\": ([^,]+)," matched "${IN_${k}}")
+    set(written "${CMAKE_MATCH_1}")
+    # Every output line starts with the format version, then the id.
+    string(REGEX MATCH "^{\"v\":1,\"id\":([^,]+)," matched "${OUT_LINE_${k}}")
+    if(NOT "${CMAKE_MATCH_1}" STREQUAL "${written}")
+      fail("id ${written} came back as '${CMAKE_MATCH_1}': ${OUT_LINE_${k}}")
+    endif()
+  endforeach()
+endfunction()
+
 function(expect_status expected)
   if(NOT "${RC}" STREQUAL "${expected}")
     fail("exit status ${RC}, expected ${expected}\nstdout:\n${OUT}\nstderr:\n${ERR}")
