@@ -13,7 +13,9 @@
 #include <cstring>
 #include <string>
 
+#include "clearjoint/dynamics/errors.hpp"
 #include "clearjoint/dynamics/model_file.hpp"
+#include "clearjoint/dynamics/model_overrides.hpp"
 #include "clearjoint/dynamics/simulation.hpp"
 #include "json/bounded_json.hpp"
 #include "run_folder.hpp"
@@ -26,7 +28,8 @@ namespace {
 
 constexpr const char* kUsage =
     "usage: clearjoint simulate MODEL.json --out DIR [--format csv|hdf5] [--report-step S]\n"
-    "                           [--decimation K] [--engine NAME] [--force] [--allow-large] [--plot]\n"
+    "                           [--decimation K] [--end-time T] [--set PATH=VALUE ...] [--engine NAME]\n"
+    "                           [--force] [--allow-large] [--plot]\n"
     "  Integrates the model and writes into DIR its tables (csv: body_<name>.csv, energy.csv,\n"
     "  reactions.csv and, for force elements with outputs (clearance joints), force_<name>.csv;\n"
     "  hdf5: run.h5 with one dataset per table), model.json (the model run) and summary.json.\n"
@@ -35,6 +38,12 @@ constexpr const char* kUsage =
     "  --format       csv (default) or hdf5\n"
     "  --report-step  the report interval [s], in place of the model's solver.report_step\n"
     "  --decimation   write every K-th report time (and the last), in place of output.decimation\n"
+    "  --end-time     the simulated end time [s], in place of the model's solver.end_time\n"
+    "  --set          PATH=VALUE: one value of the model in place of the file's, validated like\n"
+    "                 the file; PATH dotted (solver.end_time, bodies[1].mass) or a JSON pointer\n"
+    "                 (/bodies/1/mass); VALUE JSON (1e-3, true, [0, 0, -9.81], \"text\"), or a\n"
+    "                 word beginning with a letter, taken as a string (model=hertz); repeatable,\n"
+    "                 one field once. model.json records the model run, summary.json the values\n"
     "  --engine       the integrating engine: clearjoint (default) or simbody; the same tables,\n"
     "                 columns, formats and decimation (docs/engines.md)\n"
     "  --force        replace DIR if it is an earlier result (otherwise an error)\n"
@@ -104,9 +113,14 @@ struct SimulateArguments {
   bool plot = false;
   std::string format = "csv";
   std::string engine = std::string(kDefaultEngine);
-  std::optional<double> report_step;
-  std::optional<long> decimation;
+  /// --report-step, --decimation, --end-time and --set, in the order given: written into the
+  /// model's JSON before it is read (model_overrides.hpp), so that they are validated as the
+  /// file's values are.
+  dynamics::ModelOverrides overrides;
 };
+
+/// A number as JSON text in its shortest round-trip form (what model.json then holds).
+std::string json_number(double value) { return nlohmann::json(value).dump(); }
 
 /// A number option's value, or a usage error naming the option.
 bool read_number_option(const char* option, const char* text, double& out) {
@@ -148,7 +162,21 @@ int parse(Arguments args, SimulateArguments& a) {
       const char* text = value("a time step in seconds");
       double step = 0.0;
       if (text == nullptr || !read_number_option("--report-step", text, step)) return 2;
-      a.report_step = step;
+      a.overrides.push_back({"solver.report_step", json_number(step), std::string("--report-step ") + text});
+    } else if (std::strcmp(arg, "--end-time") == 0) {
+      const char* text = value("a time in seconds");
+      double end = 0.0;
+      if (text == nullptr || !read_number_option("--end-time", text, end)) return 2;
+      a.overrides.push_back({"solver.end_time", json_number(end), std::string("--end-time ") + text});
+    } else if (std::strcmp(arg, "--set") == 0) {
+      const char* text = value("PATH=VALUE");
+      if (text == nullptr) return 2;
+      try {
+        a.overrides.push_back(dynamics::parse_override_assignment(text, std::string("--set ") + text));
+      } catch (const dynamics::ModelError& e) {
+        std::fprintf(stderr, "clearjoint simulate: %s\n%s", e.what(), kUsage);
+        return 2;
+      }
     } else if (std::strcmp(arg, "--decimation") == 0) {
       const char* text = value("a whole number");
       double decimation = 0.0;
@@ -157,7 +185,8 @@ int parse(Arguments args, SimulateArguments& a) {
         std::fprintf(stderr, "clearjoint simulate: --decimation = '%s': must be a whole number in [1, 1e9]\n", text);
         return 2;
       }
-      a.decimation = static_cast<long>(decimation);
+      a.overrides.push_back({"output.decimation", std::to_string(static_cast<long>(decimation)),
+                             std::string("--decimation ") + text});
     } else if (std::strcmp(arg, "--engine") == 0) {
       const char* engine = value("an engine name");
       if (engine == nullptr) return 2;
@@ -191,47 +220,33 @@ int parse(Arguments args, SimulateArguments& a) {
   return -1;
 }
 
-/// The model file as given, with the command line's overrides written in: model.json of the
-/// run folder, what `clearjoint plot` and `view` read back.
-std::string model_json(const std::string& text, const SimulateArguments& a) {
-  if (!a.report_step && !a.decimation) return text;
-  // parse_model has read the text already, within the same limits.
-  auto model = json::parse_bounded<nlohmann::ordered_json>(text);
-  if (a.report_step) model["solver"]["report_step"] = *a.report_step;
-  if (a.decimation) model["output"]["decimation"] = *a.decimation;
-  return model.dump(1) + "\n";
-}
-
 }  // namespace
 
 int run_simulate(Arguments args) {
   SimulateArguments a;
   if (const int status = parse(args, a); status >= 0) return status;
 
-  // The text is read once: parsed here, and written (with the overrides) as the run's model.json.
-  const std::string model_text = dynamics::read_model_text(a.model_path);
-  dynamics::ModelDescription model = dynamics::parse_model(model_text, a.model_path);
-  if (a.report_step) {
-    model.solver.report_step = *a.report_step;
-    dynamics::validate(model.solver);  // names solver.report_step when the value is unusable
-  }
-  if (a.decimation) model.output_decimation = *a.decimation;
+  // The text is read once, the overrides written into it, and that text parsed (validated as a
+  // file holding those values) and written as the run's model.json: the model as run.
+  std::string model_text = dynamics::read_model_text(a.model_path);
+  if (!a.overrides.empty()) model_text = dynamics::apply_overrides(model_text, a.model_path, a.overrides);
+  const dynamics::ModelDescription model = dynamics::parse_model(model_text, a.model_path);
   // Every check that can fail before the run, before the output folder exists: the model is
   // built once, its tables planned (name collisions) and the size guard applied to that plan.
   // Another engine refuses the features it does not support, naming them, before the folder exists.
   dynamics::SimulationRun run(model, dynamics::RunOptions{.allow_large = a.allow_large});
   check_model_for_engine(a.engine, model);
-  const dynamics::RunFolderOptions options{dynamics::run_format(a.format), a.force};
+  const dynamics::RunFolderOptions options{dynamics::run_format(a.format), a.force, a.overrides};
   ProgressReport bar;
   dynamics::SimulationSummary summary;
   try {
     const auto progress = [&bar](double f) { bar.update(f); };
     if (a.engine == kDefaultEngine) {
-      summary = dynamics::write_run_folder(run, model_json(model_text, a), a.out_dir, options, progress);
+      summary = dynamics::write_run_folder(run, model_text, a.out_dir, options, progress);
     } else {
       summary = dynamics::write_run_folder(
           [&](dynamics::SimulationOutput& output) { return simulate_with_engine(a.engine, run, output, progress); },
-          model_json(model_text, a), a.out_dir, options);
+          model_text, a.out_dir, options);
     }
   } catch (...) {
     bar.finish();

@@ -60,6 +60,7 @@ SimulationSummary write_run_folder(const std::function<SimulationSummary(Simulat
 #ifdef CLEARJOINT_WITH_HDF5
     Hdf5Tables file(folder.staging() / "run.h5", model_json);
     summary = run_into(file);
+    summary.overrides = options.overrides;
     file.add_text_attribute("summary", summary_json(summary));
 #else
     throw std::invalid_argument("format = \"hdf5\": this clearjoint was built without HDF5 (libhdf5-dev)");
@@ -67,6 +68,7 @@ SimulationSummary write_run_folder(const std::function<SimulationSummary(Simulat
   } else {
     CsvDirectory files(folder.staging());
     summary = run_into(files);
+    summary.overrides = options.overrides;
   }
   write_text(folder.staging() / "model.json", model_json);
   write_text(folder.staging() / "summary.json", summary_json(summary));

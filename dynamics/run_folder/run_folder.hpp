@@ -26,6 +26,9 @@ bool hdf5_available();
 struct RunFolderOptions {
   RunFormat format = RunFormat::csv;
   bool replace_existing = false;  ///< --force: replace an earlier result (OutputFolder)
+  /// The values set in place of the model file's (already written into model_json), recorded in
+  /// summary.json.
+  ModelOverrides overrides;
 };
 
 /// Runs `run` into `destination`. `model_json` is written as model.json (and into run.h5).

@@ -161,7 +161,8 @@ ClearanceRevoluteJoint::ClearanceRevoluteJoint(std::string name, const Clearance
     if (lubrication.transition_width == 0.0) {
       lubrication.transition_width = lubrication.film_thickness_limit;
     }
-    validate(lubrication, name_ + ".lubrication");
+    validate(lubrication, name_ + ".lubrication",
+             parameters_.dimensions.bearing_radius - parameters_.dimensions.journal_radius);
     film_ = std::make_unique<JointFilm>(lubrication, parameters_.dimensions);
   }
 }

@@ -25,10 +25,33 @@ lubrication::CavitationModel cavitation_model_from_string(std::string_view name,
                    lubrication::known_names(lubrication::kCavitationModels) + ")");
 }
 
-void validate(const JointLubrication& l, const std::string& name) {
+namespace {
+
+/// ModelError "<field> = <value>: must be in [low, high] <unit> (<why>)" unless low <= value <=
+/// high (and finite); `open_high` makes the upper end excluded.
+void require_in(const std::string& field, double value, double low, double high, bool open_high,
+                const std::string& unit_and_why) {
+  require_finite(field, value);
+  if (value >= low && (open_high ? value < high : value <= high)) return;
+  throw ModelError(field, " = " + format_shortest(value) + ": must be in [" + format_shortest(low) + ", " +
+                              format_shortest(high) + (open_high ? ")" : "]") + unit_and_why);
+}
+
+}  // namespace
+
+void validate(const JointLubrication& l, const std::string& name, double radial_clearance) {
   require_positive(name + ".viscosity", l.viscosity);
+  require_in(name + ".viscosity", l.viscosity, kSmallestViscosity, kLargestViscosity, false,
+             " Pa s (gases to the stiffest greases)");
   require_positive(name + ".film_thickness_limit", l.film_thickness_limit);
   require_positive(name + ".transition_width", l.transition_width);
+  if (std::isfinite(radial_clearance) && radial_clearance > 0.0) {
+    const double smallest = kSmallestFilmLengthOfClearance * radial_clearance;
+    require_in(name + ".film_thickness_limit", l.film_thickness_limit, smallest, radial_clearance,
+               true, " m (from 1e-6 of the radial clearance to below it: the film is never thicker)");
+    require_in(name + ".transition_width", l.transition_width, smallest, radial_clearance, false,
+               " m (from 1e-6 of the radial clearance to the clearance)");
+  }
   if (l.method == FilmMethod::grid) {
     lubrication::ReynoldsGridOptions grid;
     grid.circumferential_cells = l.circumferential_cells;
@@ -55,6 +78,8 @@ void validate(const JointLubrication& l, const std::string& name) {
     throw ModelError(name + ".supply_pressure", " = " + format_number(l.supply_pressure) +
                      ": must not be negative (a gauge pressure the oil is fed at)");
   }
+  require_in(name + ".supply_pressure", l.supply_pressure, 0.0, kLargestSupplyPressure, false,
+             " Pa (a gauge pressure; 1 GPa is above any oil feed)");
 }
 
 double film_weight(const JointLubrication& l, double min_thickness) noexcept {

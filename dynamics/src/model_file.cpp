@@ -211,8 +211,9 @@ JointLubrication parse_lubrication(const Node& n) {
   l.supply_pressure = n.number("supply_pressure", 0.0);
   l.film_thickness_limit = n.number("film_thickness_limit");
   l.transition_width = n.number("transition_width", l.film_thickness_limit);
-  // Named with the file's path (forces[k].lubrication.viscosity); the joint checks again.
-  validate(l, n.path());
+  // Checked once, by the joint built from this description in parse_clearance_revolute under
+  // the file's path (forces[k].lubrication.viscosity = ...: must be in [...]), after the
+  // dimensions whose radial clearance bounds film_thickness_limit and transition_width.
   return l;
 }
 
@@ -322,7 +323,6 @@ void parse_solver(const Node& n, ModelDescription& model) {
 }  // namespace
 
 ModelDescription parse_model(std::string_view json_text, std::string_view source) {
-  const std::string prefix = std::string(source) + ": ";
   try {
     const Json json = json::parse_input(json_text, kMaxModelFileBytes, "a model file");
     const Node root(json::JsonField(json, "", "the model"));
@@ -367,8 +367,9 @@ ModelDescription parse_model(std::string_view json_text, std::string_view source
     }
     return model;
   } catch (const ValidationError& e) {
-    // The reader's, the description's and the joint's checks alike: named with the file.
-    throw ModelError(prefix + e.what());
+    // The reader's, the description's and the joint's checks alike: named with the file, the
+    // field's path kept (ValidationError::field_path()).
+    throw ModelError(e, source);
   }
 }
 

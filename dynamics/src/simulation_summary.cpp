@@ -29,6 +29,7 @@ std::string summary_json(const SimulationSummary& s) {
   j["max_velocity_violation"] = s.max_velocity_violation;
   j["max_euler_norm_drift"] = s.max_euler_norm_drift;
   j["element_statistics"] = s.element_statistics;
+  j["overrides"] = nlohmann::ordered_json::parse(overrides_json(s.overrides));
   return j.dump(2) + "\n";
 }
 

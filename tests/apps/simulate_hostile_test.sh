@@ -309,6 +309,88 @@ unknown_engine)
   expect_in err.txt '--engine bogus: unknown engine; the engines are clearjoint (default)'
   expect_no_output
   ;;
+end_time_and_set_shape_the_run)
+  # --end-time and --set give the run of a file edited by hand to the same values, bit for bit;
+  # model.json is the model as run and summary.json lists the values set.
+  model "$ball" >m.json
+  run "$clearjoint" simulate m.json --out set --end-time 0.05 --set 'bodies[0].mass=2' --set 'gravity=[0, 0, -1]'
+  expect_rc 0
+  /usr/bin/python3 - <<'PY' || fail "the hand-edited model could not be written"
+import json
+m = json.load(open("m.json"))
+m["solver"]["end_time"] = 0.05
+m["bodies"][0]["mass"] = 2
+m["gravity"] = [0, 0, -1]
+json.dump(m, open("edited.json", "w"))
+PY
+  run "$clearjoint" simulate edited.json --out edited
+  expect_rc 0
+  for table in energy body_ball reactions; do
+    cmp -s "set/$table.csv" "edited/$table.csv" || fail "$table.csv differs from the run of the edited file"
+  done
+  # Free fall under g = 1 m/s^2 from rest: z(0.05 s) = -g t^2 / 2 = -0.00125 m, the last row.
+  /usr/bin/python3 - <<'PY' || fail "the run does not end at 0.05 s with the fall of g = 1 m/s^2"
+import csv, json
+rows = list(csv.DictReader(open("set/body_ball.csv")))
+assert float(rows[-1]["time"]) == 0.05, rows[-1]["time"]
+assert abs(float(rows[-1]["z"]) + 0.00125) < 1e-12, rows[-1]["z"]
+m = json.load(open("set/model.json"))
+assert m["solver"]["end_time"] == 0.05 and m["bodies"][0]["mass"] == 2 and m["gravity"] == [0, 0, -1], m
+s = json.load(open("set/summary.json"))
+assert s["overrides"] == {"solver.end_time": 0.05, "bodies[0].mass": 2, "gravity": [0, 0, -1]}, s["overrides"]
+assert list(s["overrides"]) == ["solver.end_time", "bodies[0].mass", "gravity"]
+assert json.load(open("edited/summary.json"))["overrides"] == {}
+PY
+  ;;
+set_of_a_missing_field_is_refused)
+  model "$ball" >m.json
+  run "$clearjoint" simulate m.json --out out --set solver.end_tme=1
+  expect_rc 1
+  expect_in err.txt 'clearjoint simulate: m.json: solver.end_tme: unknown field (expected start_time, end_time,'
+  expect_no_output
+  run "$clearjoint" simulate m.json --out out --set 'bodies[3].mass=1'
+  expect_rc 1
+  expect_in err.txt "clearjoint simulate: --set bodies[3].mass=1: bodies has 1 element, [0]: there is no [3]"
+  expect_no_output
+  run "$clearjoint" simulate m.json --out out --set bodies.0.mass=1
+  expect_rc 1
+  expect_in err.txt "bodies is an array: write its elements as bodies[0]"
+  expect_no_output
+  run "$clearjoint" simulate m.json --out out --set 'bodies[0].mass'
+  expect_rc 2
+  expect_in err.txt "clearjoint simulate: --set bodies[0].mass: must be PATH=VALUE"
+  expect_no_output
+  ;;
+set_of_a_wrong_type_is_refused)
+  model "$ball" >m.json
+  run "$clearjoint" simulate m.json --out out --set 'bodies[0].mass=heavy'
+  expect_rc 1
+  expect_in err.txt 'clearjoint simulate: m.json: bodies[0].mass = "heavy": must be a number'
+  expect_no_output
+  run "$clearjoint" simulate m.json --out out --set 'gravity=[0, 0]'
+  expect_rc 1
+  expect_in err.txt 'gravity = [0,0]: must be an array of 3 numbers'
+  expect_no_output
+  run "$clearjoint" simulate m.json --out out --set 'solver.end_time=.5'
+  expect_rc 2
+  expect_in err.txt '--set solver.end_time=.5: the VALUE is not JSON'
+  expect_no_output
+  run "$clearjoint" simulate m.json --out out --end-time soon
+  expect_rc 2
+  expect_in err.txt "--end-time = 'soon': must be a number"
+  expect_no_output
+  ;;
+set_of_one_field_twice_is_refused)
+  model "$ball" >m.json
+  run "$clearjoint" simulate m.json --out out --end-time 1 --set /solver/end_time=2
+  expect_rc 1
+  expect_in err.txt 'clearjoint simulate: --set /solver/end_time=2: sets solver.end_time, which --end-time 1 sets too'
+  expect_no_output
+  run "$clearjoint" simulate m.json --out out --set 'bodies[0].mass=2' --set 'bodies[0]={}'
+  expect_rc 1
+  expect_in err.txt 'sets bodies[0], which overlaps bodies[0].mass set by --set bodies[0].mass=2'
+  expect_no_output
+  ;;
 *) fail "unknown case" ;;
 esac
 echo "simulate_hostile_test [$case]: passed"

@@ -15,6 +15,7 @@ namespace {
 
 constexpr double kLimit = 2e-6;  // m, h_l
 constexpr double kWidth = 1e-6;  // m, w
+constexpr double kClearance = 1e-4;  // m, c: the paper's Table 2 joint
 
 JointLubrication oil() {
   JointLubrication l;
@@ -26,7 +27,7 @@ JointLubrication oil() {
 
 std::string error_of(const JointLubrication& l) {
   try {
-    validate(l, "joint.lubrication");
+    validate(l, "joint.lubrication", kClearance);
   } catch (const ModelError& e) {
     return e.what();
   }
@@ -85,6 +86,35 @@ TEST(JointLubrication, NamesTheFieldOfANegativeViscosityABadLimitAndATinyGrid) {
   l.method = FilmMethod::grid;
   l.circumferential_cells = l.axial_cells = 1;
   EXPECT_EQ(error_of(l), "joint.lubrication.grid = [1, 1]: options.circumferential_cells = 1: must be at least 8");
+}
+
+TEST(JointLubrication, NamesTheFieldAndTheRangeOfAViscositySupplyPressureLimitOrWidthOutOfRange) {
+  JointLubrication l = oil();
+  l.viscosity = 1e300;
+  EXPECT_EQ(error_of(l), "joint.lubrication.viscosity = 1e+300: must be in [1e-06, 1e+06] Pa s "
+                         "(gases to the stiffest greases)");
+  l.viscosity = 1e-7;
+  EXPECT_NE(error_of(l).find("joint.lubrication.viscosity = 1e-07: must be in [1e-06"), std::string::npos);
+  l = oil();
+  l.supply_pressure = 1e300;
+  EXPECT_EQ(error_of(l), "joint.lubrication.supply_pressure = 1e+300: must be in [0, 1e+09] Pa "
+                         "(a gauge pressure; 1 GPa is above any oil feed)");
+  l.supply_pressure = 1e9;  // the largest accepted
+  EXPECT_EQ(error_of(l), "no error");
+  l = oil();
+  l.film_thickness_limit = 1e300;
+  EXPECT_NE(error_of(l).find("joint.lubrication.film_thickness_limit = 1e+300: must be in ["),
+            std::string::npos);
+  l.film_thickness_limit = kClearance;  // the film is never thicker: it would never act
+  EXPECT_NE(error_of(l).find("joint.lubrication.film_thickness_limit = 1e-04: must be in"), std::string::npos);
+  l.film_thickness_limit = 1e-11;
+  EXPECT_NE(error_of(l).find("joint.lubrication.film_thickness_limit = 1e-11"), std::string::npos);
+  l = oil();
+  l.transition_width = 1e300;
+  EXPECT_NE(error_of(l).find("joint.lubrication.transition_width = 1e+300: must be in ["),
+            std::string::npos);
+  l.transition_width = kClearance;  // the largest accepted
+  EXPECT_EQ(error_of(l), "no error");
 }
 
 TEST(JointLubrication, RefusesAMassConservingClosedFormAndAMassConservingFilmWithoutAGroove) {

@@ -197,6 +197,19 @@ TEST(ModelFile, NamesTheFieldOfABadOilFilm) {
             "m.json: forces[0].lubrication.viscosity = -0.040000000000000001: must be positive");
   EXPECT_EQ(lubricated(R"("viscosity": 0.04, "film_thickness_limit": 0)"),
             "m.json: forces[0].lubrication.film_thickness_limit = 0: must be positive");
+  // Ranges, named where the file gives them (the Table 2 joint's clearance is 1e-4 m).
+  EXPECT_EQ(lubricated(R"("viscosity": 1e300, "film_thickness_limit": 2e-6)"),
+            "m.json: forces[0].lubrication.viscosity = 1e+300: must be in [1e-06, 1e+06] Pa s "
+            "(gases to the stiffest greases)");
+  EXPECT_EQ(lubricated(R"("viscosity": 0.04, "film_thickness_limit": 2e-6, "supply_pressure": 1e300)"),
+            "m.json: forces[0].lubrication.supply_pressure = 1e+300: must be in [0, 1e+09] Pa "
+            "(a gauge pressure; 1 GPa is above any oil feed)");
+  EXPECT_NE(lubricated(R"("viscosity": 0.04, "film_thickness_limit": 1e300)")
+                .find("m.json: forces[0].lubrication.film_thickness_limit = 1e+300: must be in ["),
+            std::string::npos);
+  EXPECT_NE(lubricated(R"("viscosity": 0.04, "film_thickness_limit": 2e-6, "transition_width": 1e300)")
+                .find("m.json: forces[0].lubrication.transition_width = 1e+300: must be in ["),
+            std::string::npos);
   EXPECT_EQ(lubricated(R"("viscosity": 0.04)"),
             "m.json: forces[0].lubrication.film_thickness_limit: missing");
   EXPECT_EQ(lubricated(R"("viscosity": 0.04, "film_thickness_limit": 2e-6, "method": "grid", "grid": [1, 1])"),

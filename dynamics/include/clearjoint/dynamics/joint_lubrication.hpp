@@ -73,10 +73,28 @@ struct JointLubrication {
   double transition_width = 0.0;
 };
 
-/// Throw ModelError naming "<name>.<field>" for a non-positive or non-finite viscosity, limit or
-/// width, a grid below 8 x 2 cells, a closed form with the mass-conserving model, a mass-conserving
-/// film without a groove, a zero groove direction or a negative supply pressure.
-void validate(const JointLubrication& lubrication, const std::string& name);
+/// The viscosities accepted, Pa s: every fluid a journal bearing runs on lies inside, from gases
+/// (hydrogen 8.9e-6, air 1.8e-5) to bitumen-like greases (about 1e5); beyond, the film force of
+/// any joint the geometry accepts leaves the range the integrator's step control can follow.
+inline constexpr double kSmallestViscosity = 1e-6;
+inline constexpr double kLargestViscosity = 1e6;
+/// The largest gauge supply pressure, Pa: 1 GPa is above any oil feed (hydrostatic bearings run
+/// at tens of MPa) and of the order of the peak pressures of elastohydrodynamic contacts.
+inline constexpr double kLargestSupplyPressure = 1e9;
+/// h_l and w relative to the radial clearance c: at least 1e-6 c (with c >= 10 um that is below
+/// 1e-11 m, under an atomic diameter, so any physical asperity height lies above; the film force
+/// at h_l, which grows as (c / h_l)^2, then stays within 1e12 of its centred value), and h_l
+/// below c, w at most c: the film is never thicker than c (eps = 0), so a larger limit or band
+/// would leave the film never (or never fully) applied.
+inline constexpr double kSmallestFilmLengthOfClearance = 1e-6;
+
+/// Throw ModelError naming "<name>.<field>" and the accepted range for a viscosity outside
+/// [kSmallestViscosity, kLargestViscosity], a supply pressure outside [0, kLargestSupplyPressure],
+/// a film_thickness_limit outside [1e-6 c, c) or a transition_width outside [1e-6 c, c] (c the
+/// joint's radial clearance, kSmallestFilmLengthOfClearance), a grid below 8 x 2 cells or above
+/// the solver's cost limit without allow_large_grid, a closed form with the mass-conserving model,
+/// a mass-conserving film without a groove, or a zero groove direction.
+void validate(const JointLubrication& lubrication, const std::string& name, double radial_clearance);
 
 /// lambda(h) of the file comment: the share of the film force applied at minimum thickness h.
 double film_weight(const JointLubrication& lubrication, double min_thickness) noexcept;

@@ -25,6 +25,7 @@
 #include <string_view>
 
 #include "clearjoint/dynamics/model_builder.hpp"
+#include "clearjoint/dynamics/model_overrides.hpp"
 #include "clearjoint/dynamics/run_size.hpp"
 #include "clearjoint/dynamics/simulation_output.hpp"
 #include "clearjoint/dynamics/simulator.hpp"
@@ -40,13 +41,17 @@ struct SimulationSummary {
   double max_velocity_violation = 0.0;
   double max_euler_norm_drift = 0.0;
   std::vector<std::string> element_statistics;  ///< ForceElement::statistics_text(), non-empty ones
+  /// The values set in place of the model file's (model_overrides.hpp), set by the caller that
+  /// applied them; the run does not see them (its model has them written in).
+  ModelOverrides overrides;
 };
 
 /// The summary as strict JSON text, one key per field (steps, derivative_calls, smallest_step,
 /// largest_step, restarts, failed_attempts, located_onsets, onset_probes,
 /// initial_condition_iterations, initial_position_residual, initial_velocity_residual,
 /// initial_energy, max_energy_change, max_position_violation, max_velocity_violation,
-/// max_euler_norm_drift, element_statistics): summary.json of a run folder, the Python dict.
+/// max_euler_norm_drift, element_statistics, overrides: {path: value} in the order given, {} for
+/// none): summary.json of a run folder, the Python dict.
 std::string summary_json(const SimulationSummary& summary);
 
 /// progress(fraction in [0, 1]) is called at report times and, between them, after an accepted
