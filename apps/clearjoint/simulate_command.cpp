@@ -43,7 +43,7 @@ constexpr const char* kUsage =
     "                 the file; PATH dotted (solver.end_time, bodies[1].mass) or a JSON pointer\n"
     "                 (/bodies/1/mass); VALUE JSON (1e-3, true, [0, 0, -9.81], \"text\"), or a\n"
     "                 word beginning with a letter, taken as a string (model=hertz); repeatable,\n"
-    "                 one field once. model.json records the model run, summary.json the values\n"
+    "                 one field once; model.json records the model run, summary.json the values set\n"
     "  --engine       the integrating engine: clearjoint (default) or simbody; the same tables,\n"
     "                 columns, formats and decimation (docs/engines.md)\n"
     "  --force        replace DIR if it is an earlier result (otherwise an error)\n"
