@@ -234,7 +234,7 @@ def detect(dims: JointDimensions, bearing_center: ArrayLike, bearing_axis: Array
         contacts are uncertain.
     threads:
         Threads for a batch (default None: every core; any positive integer, a limit capped at
-        1024). The answers do not depend on it.
+        1024 and at the cores the process may run on). The answers do not depend on it.
 
     Returns
     -------
@@ -252,7 +252,7 @@ def detect(dims: JointDimensions, bearing_center: ArrayLike, bearing_axis: Array
         Arguments that are not numbers (or ``dims`` not a :class:`JointDimensions`, a switch
         not True or False, ``threads`` not an integer).
     MemoryError
-        The batch's results do not fit in memory.
+        The batch's results do not fit in memory (the message names the batch's size).
     KeyboardInterrupt
         Ctrl-C: a batch looks for it every 50 ms or so and stops.
 

@@ -308,7 +308,10 @@ py::object detect(const geo::JointDimensions& dimensions, const py::handle& bear
       broadcast(poses.bearing_center, poses.bearing_axis, poses.journal_center, poses.journal_axis);
   const geo::DetectionOptions options = detection_options(option_arguments);
   const unsigned thread_limit = thread_count(threads);
-  if (shape.batched) return detect_batch(dimensions, poses, shape.rows, options, thread_limit);
+  if (shape.batched) {
+    return within_memory("detect", shape.rows, "poses",
+                         [&]() -> py::object { return detect_batch(dimensions, poses, shape.rows, options, thread_limit); });
+  }
   geo::JointContacts result;
   try {
     py::gil_scoped_release release;

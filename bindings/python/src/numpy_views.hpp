@@ -133,6 +133,29 @@ std::string argument_message(const RowError& error, std::initializer_list<FieldN
 /// ValueError (bad input) or RuntimeError with argument_message's text.
 [[noreturn]] void raise(const RowError& error, std::initializer_list<FieldName> fields);
 
+/// Run `batch()` (with the GIL held); when it runs out of memory (std::bad_alloc from the
+/// library or a worker, MemoryError from NumPy), raise MemoryError naming the call and the
+/// batch's size, "detect: a batch of 2000000 poses does not fit in the memory available ...",
+/// instead of a bare "std::bad_alloc".
+template <class Batch>
+auto within_memory(const char* call, std::size_t rows, const char* row_name, Batch&& batch) {
+  const auto refuse = [&]() -> pybind11::error_already_set {
+    PyErr_Format(PyExc_MemoryError,
+                 "%s: a batch of %zu %s does not fit in the memory available for its results; "
+                 "pass fewer at a time",
+                 call, rows, row_name);
+    return pybind11::error_already_set();
+  };
+  try {
+    return batch();
+  } catch (const std::bad_alloc&) {
+    throw refuse();
+  } catch (pybind11::error_already_set& e) {
+    if (!e.matches(PyExc_MemoryError)) throw;
+    throw refuse();
+  }
+}
+
 /// A number given as a scalar: a Python int or float or a NumPy integer or floating scalar;
 /// TypeError naming `name` for anything else (bools, None, strings, complex).
 double number_argument(const pybind11::handle& value, const std::string& name);

@@ -4,6 +4,18 @@
 // Results are written per row or per chunk, so they do not depend on the thread count.
 // Hand-written rather than a library pool: std::thread is all it needs, and Debian's TBB or
 // OpenMP would add a runtime dependency to the module for one loop.
+//
+// Threads are a cost under memory pressure, not only a speed-up: each one reserves a stack
+// (RLIMIT_STACK, 8 MB by default), on its first allocation its own malloc arena (64 MB of address
+// space), and the thread-local storage of the libraries loaded with the module (CGAL's, MPFR's,
+// libstdc++'s). glibc cannot report a failure of that last allocation: it ends the process
+// ("cannot allocate memory for thread-local data: ABORT", exit status 127). Under an address-space
+// limit (ulimit -v) sixteen threads on a two-core machine made that happen; so no more threads
+// are started than the process has cores and the batch has chunks, and a thread the system
+// refuses to start (std::system_error) leaves its share to the threads that did start. Stacks
+// keep their default size: they are reserved, not committed, and the cap bounds their number.
+
+#include <sched.h>
 
 #include <algorithm>
 #include <atomic>
@@ -14,17 +26,40 @@
 
 namespace clearjoint::python {
 
+/// The cores this process may run on: the size of its affinity mask (what taskset, a cgroup
+/// cpuset or a batch scheduler allots), else what std::thread::hardware_concurrency reports;
+/// at least 1. Threads beyond it add no speed, only the memory each thread costs.
+inline unsigned available_cores() {
+#ifdef CPU_COUNT
+  cpu_set_t cores;
+  if (sched_getaffinity(0, sizeof cores, &cores) == 0 && CPU_COUNT(&cores) > 0) {
+    return static_cast<unsigned>(CPU_COUNT(&cores));
+  }
+#endif
+  return std::max(1u, std::thread::hardware_concurrency());
+}
+
+/// The threads a batch runs on, the caller's among them: the caller's limit, capped at the
+/// available cores and at the number of chunks (a thread without a chunk would only cost its
+/// memory); at least 1.
+inline unsigned worker_count(unsigned threads, std::size_t chunks) {
+  const std::size_t workers = std::min<std::size_t>({threads, available_cores(), chunks});
+  return static_cast<unsigned>(std::max<std::size_t>(workers, 1));
+}
+
 /// Rows per chunk: about eight chunks per thread (balance: a pose in contact costs several times
 /// a free one), at least 64 rows (a chunk must outweigh its hand-out), at most 512: the calling
 /// thread looks for Ctrl-C between its chunks, and 512 rows at the exact tier's tens of
 /// microseconds a pose still end within a few tenths of a second on a loaded machine (4096 took
 /// 2.8 s there).
 inline std::size_t chunk_rows(std::size_t rows, unsigned threads) {
-  return std::clamp<std::size_t>(rows / (8 * std::size_t{threads}), 64, 512);
+  const std::size_t workers = std::max(1u, std::min(threads, available_cores()));
+  return std::clamp<std::size_t>(rows / (8 * workers), 64, 512);
 }
 
-/// Call body(chunk, begin, end) for every chunk [begin, end) of [0, rows), on up to `threads`
-/// threads (the caller's among them; fewer when the system refuses to start more).
+/// Call body(chunk, begin, end) for every chunk [begin, end) of [0, rows), on up to
+/// worker_count(threads, chunks) threads (the caller's among them; fewer when the system refuses
+/// to start more: then the threads that started, or the caller alone, do every chunk).
 ///
 /// A body that throws stops the hand-out: the chunks already handed out, which include every
 /// chunk before the failed one, finish, and once every thread is done the exception of the
@@ -59,15 +94,15 @@ void for_each_chunk(std::size_t rows, std::size_t chunk, unsigned threads, std::
   };
   std::exception_ptr interrupt;
   {
-    const std::size_t helpers = std::min<std::size_t>(threads, chunks) - (chunks > 0 ? 1 : 0);
+    const std::size_t helpers = worker_count(threads, chunks) - 1;
     std::vector<std::jthread> pool;
-    pool.reserve(helpers);
-    for (std::size_t t = 0; t < helpers; ++t) {
-      try {
-        pool.emplace_back(work);
-      } catch (const std::exception&) {
-        break;  // no more threads to be had (std::system_error): the ones running do the work
-      }
+    try {
+      pool.reserve(helpers);
+      for (std::size_t t = 0; t < helpers; ++t) pool.emplace_back(work);
+    } catch (const std::exception&) {
+      // No more threads to be had (std::system_error: EAGAIN when their stacks or thread
+      // descriptors cannot be mapped) or no memory for the list (std::bad_alloc): the threads
+      // that started and the caller do the work.
     }
     while (!stop.load(std::memory_order_relaxed)) {
       try {

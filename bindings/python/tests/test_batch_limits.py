@@ -82,3 +82,34 @@ except KeyboardInterrupt:
     waited = time.monotonic() - sent
     assert out.split()[0] == "interrupted", (out, err)
     assert waited < 1.0, waited
+
+
+def test_many_threads_under_an_address_space_limit_finish_or_raise_memory_error_naming_the_batch():
+    # The issue's batch: 2e6 poses with four contacts each (about 1 GB of results) on 16 threads,
+    # under ulimit -v at several margins above what the interpreter holds once the package is
+    # loaded, three times each. Sixteen threads on a two-core machine ended the process in glibc
+    # ("cannot allocate memory for thread-local data: ABORT", exit status 127) in about one run in
+    # nine at these margins; each run takes about half a second.
+    probe = subprocess.run([sys.executable, "-c", textwrap.dedent(SLOW_POSES + """
+slow_batch(64, 2)
+with open("/proc/self/status") as status:
+    print(next(int(line.split()[1]) for line in status if line.startswith("VmSize:")))
+""")], capture_output=True, text=True, check=True)
+    held_kb = int(probe.stdout)
+    script = textwrap.dedent(SLOW_POSES + """
+try:
+    clearjoint.detect(dims, [0, 0, 0], [0, 0, 1], np.zeros((2000000, 3)), [0, 0.013, 1.0], threads=16)
+    print("finished")
+except MemoryError as error:
+    print("MemoryError:", error)
+""")
+    outcomes = []
+    for margin_mb in (150, 200, 250, 300) * 3:
+        run = subprocess.run(["bash", "-c", f'ulimit -v {held_kb + margin_mb * 1024}; exec "$0" -c "$1"',
+                              sys.executable, script], capture_output=True, text=True, timeout=120)
+        outcomes.append((margin_mb, run.returncode, run.stdout.strip(), run.stderr.strip()[-300:]))
+    for margin_mb, returncode, out, err in outcomes:
+        assert returncode == 0, outcomes
+        assert out == "finished" or out == (
+            "MemoryError: detect: a batch of 2000000 poses does not fit in the memory available for its "
+            "results; pass fewer at a time"), outcomes
