@@ -166,5 +166,27 @@ TEST(MujocoClearanceJoints, NamesAnUnknownForceLaw) {
   EXPECT_NE(error.find("hooke"), std::string::npos) << error;
 }
 
+TEST(MujocoClearanceJoints, NamesAMisspeltFieldAndTheKnownOnes) {
+  // A misspelt optional field left the joint at paper Table 2's friction without a word.
+  const std::string error = error_for_edited_example("clearance:rod_slider:friction", "clearance:rod_slider:frictoin");
+  EXPECT_NE(error.find("<numeric name=\"clearance:rod_slider:frictoin\">: unknown field \"frictoin\""),
+            std::string::npos) << error;
+  EXPECT_NE(error.find("dimensions, normal_force, friction, parallel_angle_tolerance"), std::string::npos) << error;
+}
+
+TEST(MujocoClearanceJoints, NamesAFieldOfAJointThatIsNotDeclared) {
+  const std::string error = error_for_edited_example("clearance:rod_slider:normal_force\"",
+                                                     "clearance:rod_slidr:normal_force\"");
+  EXPECT_NE(error.find("no clearance joint \"rod_slidr\" is declared"), std::string::npos) << error;
+  EXPECT_NE(error.find("the declared ones: \"rod_slider\""), std::string::npos) << error;
+}
+
+TEST(MujocoClearanceJoints, NamesAFieldGivenAsTheWrongElement) {
+  const std::string error =
+      error_for_edited_example("<text name=\"clearance:rod_slider:normal_force_model\" data=\"lankarani_nikravesh\"",
+                               "<numeric name=\"clearance:rod_slider:normal_force_model\" data=\"1\"");
+  EXPECT_NE(error.find("\"normal_force_model\" must be a <text> element"), std::string::npos) << error;
+}
+
 }  // namespace
 }  // namespace clearjoint::mujoco

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <array>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include "clearjoint/dynamics/errors.hpp"
 #include "two_body_clearance_joint.hpp"
@@ -46,6 +48,67 @@ std::vector<double> numeric(const mjModel* m, const std::string& name, int count
   }
   const mjtNum* data = m->numeric_data + m->numeric_adr[id];
   return std::vector<double>(data, data + count);
+}
+
+/// The fields a joint's declaration may have, by element type (clearance_joints.hpp).
+constexpr std::array<std::string_view, 4> kNumericFields = {"dimensions", "normal_force", "friction",
+                                                            "parallel_angle_tolerance"};
+constexpr std::array<std::string_view, 1> kTextFields = {"normal_force_model"};
+
+template <size_t N>
+std::string joined(const std::array<std::string_view, N>& names) {
+  std::string list;
+  for (std::string_view name : names) (list += list.empty() ? "" : ", ") += name;
+  return list;
+}
+
+template <size_t N>
+bool is_one_of(const std::string& field, const std::array<std::string_view, N>& names) {
+  return std::find(names.begin(), names.end(), field) != names.end();
+}
+
+/// Refuses every <text> or <numeric> element named "clearance:..." that no declaration reads (a
+/// misspelt field would otherwise leave its joint at the default values without a word).
+void refuse_unknown_keys(const mjModel* m) {
+  std::vector<std::string> joints;
+  for (int t = 0; t < m->ntext; ++t) {
+    const char* name = mj_id2name(m, mjOBJ_TEXT, t);
+    const std::string key = name == nullptr ? "" : name;
+    if (key.starts_with(kPrefix) && key.find(':', kPrefix.size()) == std::string::npos) {
+      joints.push_back(key.substr(kPrefix.size()));
+    }
+  }
+  std::string joint_list;
+  for (const std::string& joint : joints) (joint_list += joint_list.empty() ? "\"" : ", \"") += joint + "\"";
+  const auto check = [&](mjtObj type, int id) {
+    const char* name = mj_id2name(m, type, id);
+    const std::string key = name == nullptr ? "" : name;
+    if (!key.starts_with(kPrefix)) return;
+    const std::string element = std::string(type == mjOBJ_TEXT ? "<text" : "<numeric") + " name=\"" + key + "\">";
+    const size_t colon = key.find(':', kPrefix.size());
+    if (colon == std::string::npos) {
+      if (type == mjOBJ_TEXT) return;  // a declaration
+      throw ModelError(element + ": a clearance joint is declared by a <text> element naming its two sites");
+    }
+    const std::string joint = key.substr(kPrefix.size(), colon - kPrefix.size());
+    const std::string field = key.substr(colon + 1);
+    if (std::find(joints.begin(), joints.end(), joint) == joints.end()) {
+      throw ModelError(element + ": no clearance joint \"" + joint + "\" is declared (<text name=\"clearance:" +
+                       joint + "\">); the declared ones: " + (joint_list.empty() ? "none" : joint_list));
+    }
+    const bool known = type == mjOBJ_TEXT ? is_one_of(field, kTextFields) : is_one_of(field, kNumericFields);
+    const bool other_type = type == mjOBJ_TEXT ? is_one_of(field, kNumericFields) : is_one_of(field, kTextFields);
+    if (other_type) {
+      throw ModelError(element + ": \"" + field + "\" must be a <" + (type == mjOBJ_TEXT ? "numeric" : "text") +
+                       "> element");
+    }
+    if (!known) {
+      throw ModelError(element + ": unknown field \"" + field + "\"; a clearance joint's <numeric> fields are " +
+                       joined(kNumericFields) + ", its <text> field " + joined(kTextFields));
+    }
+  };
+  for (int t = 0; t < m->ntext; ++t) check(mjOBJ_TEXT, t);
+  for (int n = 0; n < m->nnumeric; ++n) check(mjOBJ_NUMERIC, n);
 }
 
 int site(const mjModel* m, const std::string& name, const std::string& declaration) {
@@ -93,6 +156,7 @@ struct ClearanceJoints::Joint {
 };
 
 ClearanceJoints::ClearanceJoints(const mjModel* model) : model_(model) {
+  refuse_unknown_keys(model);
   for (int t = 0; t < model->ntext; ++t) {
     const char* text_name = mj_id2name(model, mjOBJ_TEXT, t);
     if (text_name == nullptr) continue;
