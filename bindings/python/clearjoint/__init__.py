@@ -11,7 +11,8 @@ axial clearances", Mechanism and Machine Theory 116 (2017) 123-144. docs/python.
   (eqs. 11-15, 16-21);
 - ``simulate(model)``: run a multibody model file (or dict) and get its time series as arrays,
   or write them into a folder (CSV or HDF5); ``read_run(folder)`` reads one back;
-- ``Simulator(model)``: step a model yourself (controls, co-simulation, loads between steps).
+- ``Simulator(model)``: step a model yourself (controls, co-simulation, loads between steps);
+- ``Model``: build a model from Python calls, written and read as a model file.
 
 Lengths are in one unit of the caller's choice (metres in the shipped models), angles in radians,
 vectors in the world frame.
@@ -25,12 +26,13 @@ from ._detect import (MAX_CONTACTS, CircleCylinderBatch, CirclePlaneBatch, Detec
                       intersect_circle_cylinder, intersect_circle_plane)
 from ._simulate import SimulationResult, read_run, simulate
 from ._simulator import Simulator
+from .model import Model
 
 __all__ = [
     "MAX_CONTACTS", "Certainty", "Certificate", "CertificateReason", "CircleCylinderBatch",
     "CircleCylinderIntersection", "CircleCylinderTopology", "CirclePlaneBatch",
     "CirclePlaneIntersection", "CirclePlaneTopology", "Contact", "ContactBase", "ContactScenario",
-    "ContactType", "DetectionBatch", "JointContacts", "JointDimensions", "RimArc", "RimCrossing",
+    "ContactType", "DetectionBatch", "JointContacts", "JointDimensions", "Model", "RimArc", "RimCrossing",
     "SimulationResult", "Simulator", "SolverError", "__version__", "certificate_reason_text", "detect",
     "intersect_circle_cylinder", "intersect_circle_plane", "read_run", "scenario_label", "simulate",
 ]
