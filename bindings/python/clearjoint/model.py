@@ -6,7 +6,8 @@ The builder checks the types of its arguments as it takes them (a message names 
 argument becomes, ``bodies[1].mass = "heavy": must be a number (not str)``). Everything else,
 from names and references to bodies to ranges and the consistency of the joints, is checked by
 ``validate()``: the C++ reader and builder of model files, so that a message is the one the
-file would get (``<Model>: joints[0].body_i = "crnk": no body of that name ...``).
+file would get (``joints[0].body_i = "crnk": no body of that name ...``; the reader's own
+messages start with ``<Model>: `` where a file's would start with its path).
 """
 from __future__ import annotations
 
@@ -524,8 +525,9 @@ class Model:
         """Check the model with the C++ code that reads and builds model files: the reader's
         checks of every field, body names resolved, names unique, and the initial conditions made
         consistent (docs/dynamics.md, "Initial conditions"). Raises ValueError naming the field
-        as for a file (``<Model>: bodies[1].name = "rod": used by bodies[0] already``), or
-        clearjoint.SolverError when the joints cannot be satisfied at the start."""
+        as for a file (``bodies[1].name = "rod": used by bodies[0] already``; ``<Model>:
+        bodies[1].mass = -1: must be positive``), or clearjoint.SolverError when the joints
+        cannot be satisfied at the start."""
         _validate_text(self.to_json(indent=None), _SOURCE)
 
     def save(self, path: _Path, *, validate: bool = True) -> None:
