@@ -309,7 +309,9 @@ def simulate(model: Union[str, os.PathLike[str], Mapping[str, Any]], *,
              decimation: Optional[int] = ...,
              out: Union[None, str, os.PathLike[str]] = ...,
              format: str = ...,
-             force: bool = ...) -> SimulationResult: ...
+             force: bool = ...,
+             engine: str = ...,
+             overrides: Optional[Mapping[str, Any]] = ...) -> SimulationResult: ...
 
 def read_run(folder: Union[str, os.PathLike[str]]) -> SimulationResult: ...
 

@@ -8,7 +8,7 @@ import math
 import os
 import sys
 from dataclasses import dataclass, field
-from typing import Any, Callable, Dict, Mapping, Optional, Tuple, Union
+from typing import Any, Callable, Dict, List, Mapping, Optional, Tuple, Union
 
 import numpy as np
 
@@ -186,10 +186,37 @@ def _check_options(allow_large: Any, report_step: Any, decimation: Any, out: Any
         raise ValueError("format and force apply to a run written to a folder: give out=")
 
 
+def _override_items(overrides: Any) -> List[Tuple[str, str]]:
+    """simulate(overrides=...) as [(path, JSON text of the value)] in the order given, for the
+    C++ layer that writes them into the model (dynamics/model_overrides.hpp): the paths and
+    their errors are the command line's --set."""
+    if overrides is None:
+        return []
+    if not isinstance(overrides, Mapping):
+        raise TypeError(f"overrides = {overrides!r}: must be a dict {{path: value}}, e.g. "
+                        "{'solver.end_time': 0.01}")
+    items = []
+    for path, value in overrides.items():
+        if not isinstance(path, str):
+            raise TypeError(f"overrides: key {path!r} is a {type(path).__name__}; a path is a str such as "
+                            "'solver.end_time', 'bodies[1].mass' or '/bodies/1/mass'")
+        _check_json_values(value, f"overrides[{path!r}]")
+        items.append((path, json.dumps(value, default=_json_value, allow_nan=False)))
+    return items
+
+
+def _check_engine(engine: Any) -> str:
+    """The engine's name; the C++ layer refuses one this build cannot run, naming those it can."""
+    if not isinstance(engine, str):
+        raise TypeError(f"engine = {engine!r}: must be a str, one of {', '.join(_core.engines())}")
+    return engine
+
+
 def simulate(model: Model, *, progress: Progress = False, allow_large: bool = False,
              report_step: Optional[float] = None, decimation: Optional[int] = None,
              out: Union[None, str, "os.PathLike[str]"] = None, format: str = "csv",
-             force: bool = False) -> SimulationResult:
+             force: bool = False, engine: str = "clearjoint",
+             overrides: Optional[Mapping[str, Any]] = None) -> SimulationResult:
     """Run a multibody model in process and return its time series as NumPy arrays.
 
     Parameters
@@ -216,6 +243,20 @@ def simulate(model: Model, *, progress: Progress = False, allow_large: bool = Fa
         --out`` writes it (``format`` "csv" or "hdf5", ``force`` to replace an earlier result;
         docs/command-line.md, "Output folder"), and the result holds only the summary and the
         folder; ``read_run(out)`` reads it back.
+    engine:
+        The integrating engine, as ``clearjoint simulate --engine``: "clearjoint" (default) or
+        "simbody" (when the package was built with the Simbody adapter; ``clearjoint._core.engines()``
+        lists this build's), with the same tables and columns (docs/engines.md). Another name is
+        a ValueError naming the engines there are.
+    overrides:
+        ``{path: value}``: values of the model set in place of the model's, as ``clearjoint
+        simulate --set PATH=VALUE`` sets them (docs/command-line.md, "Setting model values"):
+        ``path`` dotted as error messages name fields (``"solver.end_time"``,
+        ``"bodies[1].mass"``) or a JSON pointer (``"/bodies/1/mass"``), ``value`` any JSON value
+        (numbers, NumPy numbers and arrays, str, bool, lists, dicts). The model is validated
+        with them written in, as a file holding those values; a path that does not exist, a
+        value of the wrong type and one field given twice are ValueErrors naming it. The run's
+        model.json holds the model as run, its summary the overrides (``summary["overrides"]``).
 
     Returns
     -------
@@ -240,11 +281,12 @@ def simulate(model: Model, *, progress: Progress = False, allow_large: bool = Fa
     The integration runs without the GIL; other Python threads keep running.
     """
     _check_options(allow_large, report_step, decimation, out, format, force)
+    run_choices = dict(overrides=_override_items(overrides), engine=_check_engine(engine))
     bar = _progress_bar(progress)
     try:
         options = dict(allow_large=allow_large,
                        report_step=None if report_step is None else float(report_step),
-                       decimation=None if decimation is None else int(decimation))
+                       decimation=None if decimation is None else int(decimation), **run_choices)
         if out is not None:
             text, source = _model_text(model)
             summary = _core.simulate_into_folder(text, source, os.fspath(out), format, force, bar, **options)

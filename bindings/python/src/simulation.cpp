@@ -14,14 +14,21 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "bindings.hpp"
 #include "clearjoint/dynamics/model_file.hpp"
+#include "clearjoint/dynamics/model_overrides.hpp"
 #include "clearjoint/dynamics/run_size.hpp"
 #include "clearjoint/dynamics/simulation.hpp"
 #include "clearjoint/dynamics/simulation_output.hpp"
 #include "clearjoint/dynamics/simulator.hpp"
 #include "run_folder.hpp"
+
+#ifdef CLEARJOINT_WITH_SIMBODY
+#include "clearjoint/simbody/simulate_in_simbody.hpp"
+#endif
 
 namespace py = pybind11;
 
@@ -59,7 +66,54 @@ struct RunRequest {
   bool allow_large = false;
   std::optional<double> report_step;
   std::optional<long> decimation;
+  /// simulate(overrides=...): written into the model's JSON text before it is read.
+  dynamics::ModelOverrides overrides;
+  std::string engine = "clearjoint";
 };
+
+/// The engines this module can run: clearjoint's own, and Simbody's when the module was built
+/// with the Simbody adapter (as the program's `simulate --engine`, apps/clearjoint/simulate_engine).
+std::vector<std::string> available_engines() {
+#ifdef CLEARJOINT_WITH_SIMBODY
+  return {"clearjoint", "simbody"};
+#else
+  return {"clearjoint"};
+#endif
+}
+
+void check_engine(const std::string& engine) {
+  const std::vector<std::string> engines = available_engines();
+  if (std::find(engines.begin(), engines.end(), engine) != engines.end()) return;
+  std::string names;
+  for (const std::string& name : engines) names += (names.empty() ? "" : ", ") + name;
+  if (engine == "simbody") {
+    throw py::value_error("engine = 'simbody': this clearjoint Python package was built without Simbody "
+                          "(CLEARJOINT_WITH_SIMBODY; Debian: libsimbody-dev, docs/engines.md); its engines: " + names);
+  }
+  throw py::value_error("engine = '" + engine + "': unknown engine; the engines of this build are " + names);
+}
+
+/// Python's overrides {path: JSON text of the value}, in the order given, named in messages as
+/// the argument ("overrides['solver.end_time']").
+dynamics::ModelOverrides overrides_of(const std::vector<std::pair<std::string, std::string>>& items) {
+  dynamics::ModelOverrides overrides;
+  for (const auto& [path, value] : items) overrides.push_back({path, value, "overrides['" + path + "']"});
+  return overrides;
+}
+
+/// The model text with the request's overrides written in (the text as given without any).
+std::string text_with_overrides(const std::string& json_text, const std::string& source, const RunRequest& request) {
+  return request.overrides.empty() ? json_text : dynamics::apply_overrides(json_text, source, request.overrides);
+}
+
+/// Runs `run` with the request's engine into `output`.
+dynamics::SimulationSummary run_with_engine(dynamics::SimulationRun& run, dynamics::SimulationOutput& output,
+                                            const RunRequest& request, const dynamics::ProgressCallback& progress) {
+#ifdef CLEARJOINT_WITH_SIMBODY
+  if (request.engine == "simbody") return simbody::simulate_in_simbody(run, output, progress);
+#endif
+  return run.run(output, progress);
+}
 
 dynamics::ModelDescription with_overrides(dynamics::ModelDescription model, const RunRequest& request) {
   if (request.report_step) {
@@ -95,8 +149,9 @@ py::tuple run_in_memory(const dynamics::ModelDescription& model, const py::objec
   dynamics::SimulationSummary summary;
   {
     py::gil_scoped_release release;
-    summary = run.run(tables, python_progress(progress));
+    summary = run_with_engine(run, tables, request, python_progress(progress));
   }
+  summary.overrides = request.overrides;
   return py::make_tuple(tables_to_python(tables), summary_to_python(summary));
 }
 
@@ -105,17 +160,24 @@ py::object run_into_folder(const dynamics::ModelDescription& model, const std::s
                            const py::object& progress, const RunRequest& request, const std::string& out,
                            const std::string& format, bool force) {
   dynamics::SimulationRun run(with_overrides(model, request), dynamics::RunOptions{.allow_large = request.allow_large});
-  const dynamics::RunFolderOptions options{dynamics::run_format(format), force};
+  const dynamics::RunFolderOptions options{dynamics::run_format(format), force, request.overrides};
   dynamics::SimulationSummary summary;
   {
     py::gil_scoped_release release;
-    summary = dynamics::write_run_folder(run, model_json, out, options, python_progress(progress));
+    const dynamics::ProgressCallback callback = python_progress(progress);
+    summary = dynamics::write_run_folder(
+        [&](dynamics::SimulationOutput& output) { return run_with_engine(run, output, request, callback); },
+        model_json, out, options);
   }
   return summary_to_python(summary);
 }
 
-RunRequest request_of(bool allow_large, std::optional<double> report_step, std::optional<long> decimation) {
-  return {allow_large, report_step, decimation};
+using OverrideItems = std::vector<std::pair<std::string, std::string>>;
+
+RunRequest request_of(bool allow_large, std::optional<double> report_step, std::optional<long> decimation,
+                      const OverrideItems& overrides, const std::string& engine) {
+  check_engine(engine);
+  return {allow_large, report_step, decimation, overrides_of(overrides), engine};
 }
 
 /// The state as a NumPy copy (the simulator's buffer changes at every step).
@@ -148,36 +210,45 @@ void bind_simulation(py::module_& module) {
   module.def(
       "simulate_text",
       [](const std::string& json_text, const std::string& source, const py::object& progress, bool allow_large,
-         std::optional<double> report_step, std::optional<long> decimation) {
-        return run_in_memory(dynamics::parse_model(json_text, source), progress,
-                             request_of(allow_large, report_step, decimation));
+         std::optional<double> report_step, std::optional<long> decimation, const OverrideItems& overrides,
+         const std::string& engine) {
+        const RunRequest request = request_of(allow_large, report_step, decimation, overrides, engine);
+        return run_in_memory(dynamics::parse_model(text_with_overrides(json_text, source, request), source), progress,
+                             request);
       },
       py::arg("json_text"), py::arg("source"), py::arg("progress") = py::none(), py::arg("allow_large") = false,
       py::arg("report_step") = py::none(), py::arg("decimation") = py::none(),
-      "Parse a model from JSON text (`source` names it in messages) and run it: "
-      "(tables, summary), tables = {name: (header, values[columns, rows])}.");
+      py::arg("overrides") = OverrideItems{}, py::arg("engine") = "clearjoint",
+      "Parse a model from JSON text (`source` names it in messages), with `overrides` [(path, JSON "
+      "value)] written in (model_overrides.hpp), and run it with `engine`: (tables, summary), "
+      "tables = {name: (header, values[columns, rows])}.");
   module.def(
       "simulate_file",
       [](const std::string& path, const py::object& progress, bool allow_large, std::optional<double> report_step,
-         std::optional<long> decimation) {
-        return run_in_memory(dynamics::read_model_file(path), progress, request_of(allow_large, report_step, decimation));
+         std::optional<long> decimation, const OverrideItems& overrides, const std::string& engine) {
+        const RunRequest request = request_of(allow_large, report_step, decimation, overrides, engine);
+        const std::string text = text_with_overrides(dynamics::read_model_text(path), path, request);
+        return run_in_memory(dynamics::parse_model(text, path), progress, request);
       },
       py::arg("path"), py::arg("progress") = py::none(), py::arg("allow_large") = false,
       py::arg("report_step") = py::none(), py::arg("decimation") = py::none(),
+      py::arg("overrides") = OverrideItems{}, py::arg("engine") = "clearjoint",
       "Read a model file and run it: (tables, summary) as simulate_text.");
   module.def(
       "simulate_into_folder",
       [](const std::string& json_text, const std::string& source, const std::string& out, const std::string& format,
          bool force, const py::object& progress, bool allow_large, std::optional<double> report_step,
-         std::optional<long> decimation) {
-        return run_into_folder(dynamics::parse_model(json_text, source), json_text, progress,
-                               request_of(allow_large, report_step, decimation), out, format, force);
+         std::optional<long> decimation, const OverrideItems& overrides, const std::string& engine) {
+        const RunRequest request = request_of(allow_large, report_step, decimation, overrides, engine);
+        const std::string text = text_with_overrides(json_text, source, request);
+        return run_into_folder(dynamics::parse_model(text, source), text, progress, request, out, format, force);
       },
       py::arg("json_text"), py::arg("source"), py::arg("out"), py::arg("format"), py::arg("force"),
       py::arg("progress") = py::none(), py::arg("allow_large") = false, py::arg("report_step") = py::none(),
-      py::arg("decimation") = py::none(),
-      "Run a model (JSON text) into the output folder `out` as `clearjoint simulate --out` does; "
-      "the summary.");
+      py::arg("decimation") = py::none(), py::arg("overrides") = OverrideItems{}, py::arg("engine") = "clearjoint",
+      "Run a model (JSON text) into the output folder `out` as `clearjoint simulate --out` does "
+      "(model.json: the model as run, overrides written in); the summary.");
+  module.def("engines", &available_engines, "The engines simulate() can run in this build.");
   module.def("hdf5_available", &dynamics::hdf5_available, "Whether this build writes HDF5 run files.");
 
   py::class_<dynamics::Simulator>(module, "Simulator")
