@@ -317,5 +317,16 @@ TEST(ModelFile, ReadsTheShippedModels) {
   }
 }
 
+TEST(ModelFile, NamesTheFileAndKeepsTheFieldPathOfABadField) {
+  // field_path() was empty once the file's name was put before the message.
+  try {
+    parse_model(R"({"bodies": [{"name": "ball", "mass": -0.3, "inertia": [1, 1, 1]}]})", "ball.json");
+    FAIL() << "accepted";
+  } catch (const ModelError& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("ball.json: bodies[0].mass = -0.3", 0), 0u) << e.what();
+    EXPECT_EQ(e.field_path(), "bodies[0].mass");
+  }
+}
+
 }  // namespace
 }  // namespace clearjoint::dynamics

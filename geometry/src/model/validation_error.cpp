@@ -8,4 +8,9 @@ ValidationError::ValidationError(std::string_view field_path, std::string_view d
 
 ValidationError::ValidationError(const std::string& message) : std::invalid_argument(message) {}
 
+ValidationError::ValidationError(const ValidationError& error, std::string_view source)
+    : std::invalid_argument(std::string(source).append(": ").append(error.what())),
+      path_offset_(source.size() + 2 + error.path_offset_),
+      path_length_(error.path_length_) {}
+
 }  // namespace clearjoint
