@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "clearjoint/dynamics/errors.hpp"
 
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 
@@ -10,6 +11,12 @@ std::string format_number(double value) {
   char buffer[32];
   std::snprintf(buffer, sizeof buffer, "%.17g", value);
   return buffer;
+}
+
+std::string format_shortest(double value) {
+  char buffer[32];
+  char* end = std::to_chars(buffer, buffer + sizeof buffer, value).ptr;
+  return std::string(buffer, end);
 }
 
 std::string format_vector(const Eigen::Ref<const Eigen::VectorXd>& v) {

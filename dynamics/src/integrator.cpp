@@ -9,6 +9,7 @@
 #include <string>
 
 #include "clearjoint/dynamics/errors.hpp"
+#include "clearjoint/dynamics/stall_guard.hpp"
 
 namespace clearjoint::dynamics {
 
@@ -109,10 +110,32 @@ void validate(const IntegratorSettings& s) {
                      ", the most the integrator counts");
   }
   require_positive("solver.relative_tolerance", s.relative_tolerance);
+  if (!(s.relative_tolerance >= kMinRelativeTolerance && s.relative_tolerance <= kMaxRelativeTolerance)) {
+    throw ModelError("solver.relative_tolerance", " = " + format_number(s.relative_tolerance) + ": must be in [" +
+                                                      format_shortest(kMinRelativeTolerance) + ", " +
+                                                      format_shortest(kMaxRelativeTolerance) + "]");
+  }
   require_positive("solver.absolute_tolerance", s.absolute_tolerance);
   require_positive("solver.initial_step", s.initial_step);
   require_positive("solver.minimum_step", s.minimum_step);
+  const double span = s.end_time - s.start_time;
+  if (!(s.minimum_step < span)) {
+    throw ModelError("solver.minimum_step", " = " + format_number(s.minimum_step) +
+                                                ": must be shorter than the run, solver.end_time - "
+                                                "solver.start_time = " + format_number(span) + " s");
+  }
+  if (!(s.minimum_step < s.report_step)) {
+    throw ModelError("solver.minimum_step", " = " + format_number(s.minimum_step) +
+                                                ": must be shorter than solver.report_step = " +
+                                                format_number(s.report_step) + " s");
+  }
+  if (!(s.minimum_step <= s.initial_step)) {
+    throw ModelError("solver.minimum_step", " = " + format_number(s.minimum_step) +
+                                                ": must not be longer than solver.initial_step = " +
+                                                format_number(s.initial_step) + " s");
+  }
   if (s.max_steps <= 0) throw ModelError("solver.max_steps = " + std::to_string(s.max_steps) + ": must be positive");
+  require_positive("solver.stall_wall_time", s.stall_wall_time);
 }
 
 /// The dense-output stepper and everything one accepted step needs, behind Integrator's pimpl
@@ -126,12 +149,14 @@ struct Integrator::Impl {
         settings(settings_in),
         stepper(odeint::make_dense_output(settings.absolute_tolerance, settings.relative_tolerance,
                                           odeint::runge_kutta_dopri5<State>())),
-        budget(settings, settings.start_time) {}
+        budget(settings, settings.start_time),
+        stall(settings, settings.start_time, 0) {}
 
   MultibodySystem& system;
   IntegratorSettings settings;
   Stepper stepper;
   StepBudget budget;
+  StallGuard stall;
   IntegrationStatistics stats;
   long report_count = 0;
   long next_report = 1;
@@ -239,6 +264,7 @@ void Integrator::step(const Observer& observer, const StepMonitor& monitor) {
                       " steps");
   }
   m.budget.check(stats.steps, interval.second);
+  m.stall.check(interval.second, stats.steps);
   // A new event (contact onset) seen at the end of the step: bracket its first instant.
   double onset_time = stepper.current_time();
   bool located = false;

@@ -16,14 +16,61 @@ namespace {
 /// below minimum_step it would read as a collapse.
 constexpr double kArrivalUlps = 4 * std::numeric_limits<double>::epsilon();
 
+/// How far from 1 the norm of a body's Euler parameters in set_state may be. The integrator lets
+/// |p| drift (it reads rotations from p / |p|, SystemKinematics::update), by far less than this
+/// over a run (summary max_euler_norm_drift); a state read from state() and changed, or Euler
+/// parameters computed in double, are within it. A zero or far from unit p is no rotation the
+/// constraints were written for, and the next step fails ("Jacobian lost rank").
+constexpr double kStateEulerNormTolerance = 1e-6;
+
 const ClearanceRevoluteJoint* as_clearance_joint(const ForceElement& element) {
   return dynamic_cast<const ClearanceRevoluteJoint*>(&element);
+}
+
+/// Throw ModelError naming the first clearance joint that is beyond the paper's model in
+/// `state` (geometry::ContactScenario::beyond_model: a penetration deeper than the clearance in
+/// its direction, eqs. 1-2, or a rim beyond the wall or a base all round), with its deepest
+/// contact and the clearance. A run that starts there is no clearance joint in contact: the force
+/// law of Sec. 4 is fitted to depths far below the clearance, and the integrator would take steps
+/// of 1e-10 s for hours pushing the journal back.
+void refuse_start_beyond_model(MultibodySystem& system, double time, std::span<const double> state) {
+  const auto elements = system.force_elements();
+  bool kinematics_set = false;
+  for (std::size_t e = 0; e < elements.size(); ++e) {
+    const ClearanceRevoluteJoint* joint = as_clearance_joint(*elements[e]);
+    if (joint == nullptr) continue;
+    if (!kinematics_set) {
+      system.begins_event(time, state);  // the kinematics at `state`
+      kinematics_set = true;
+    }
+    const ClearanceJointState at_start = joint->evaluate(time, system.kinematics(), system.extra_state(state, e));
+    const geometry::JointContacts& found = at_start.contacts;
+    if (found.scenario != geometry::ContactScenario::beyond_model) continue;
+    const geometry::JointDimensions& d = joint->parameters().dimensions;
+    std::string deepest = "no single contact deeper than its clearance (a rim crosses the wall four times)";
+    double worst = -INFINITY;
+    for (int k = 0; k < found.contact_count; ++k) {
+      const geometry::Contact& c = found.contacts[k];
+      const bool radial = c.type == geometry::ContactType::radial;
+      const double clearance = radial ? d.radial_clearance() : d.axial_clearance();
+      if (c.depth / clearance <= worst) continue;
+      worst = c.depth / clearance;
+      deepest = std::string("a ") + (radial ? "radial" : "axial") + " penetration of " + format_number(c.depth) +
+                " m, deeper than the " + (radial ? "radial" : "axial") + " clearance of " +
+                format_number(clearance) + " m";
+    }
+    throw ModelError("forces: clearance joint \"" + std::string(joint->name()) + "\" starts beyond its model (" +
+                     deepest + "; geometry scenario beyond_model): place the journal within its clearance "
+                     "(bodies[].initial) or hold coordinates that keep it there (initial_conditions)");
+  }
 }
 
 }  // namespace
 
 Simulator::Simulator(const ModelDescription& model)
-    : model_(model), built_(build_model(model_)), impacts_seen_(built_.system->force_elements().size(), 0) {}
+    : model_(model), built_(build_model(model_)), impacts_seen_(built_.system->force_elements().size(), 0) {
+  refuse_start_beyond_model(*built_.system, model_.solver.start_time, built_.initial_state);
+}
 
 Simulator::~Simulator() = default;
 
@@ -50,11 +97,28 @@ BodyState Simulator::body_state(std::string_view body) const {
 }
 
 void Simulator::set_state(std::span<const double> state) {
-  ensure_started();
-  if (state.size() != integrator_->state().size()) {
+  // Every check before anything changes: a refused state leaves the simulator as it was.
+  if (state.size() != built_.initial_state.size()) {
     throw ModelError("state: " + std::to_string(state.size()) + " values for a state of " +
-                     std::to_string(integrator_->state().size()));
+                     std::to_string(built_.initial_state.size()));
   }
+  for (std::size_t k = 0; k < state.size(); ++k) {
+    if (!std::isfinite(state[k])) {
+      throw ModelError("state[" + std::to_string(k) + "]", " = " + format_number(state[k]) + ": must be finite");
+    }
+  }
+  const StateLayout& layout = built_.system->layout();
+  for (BodyIndex b = 0; b < layout.body_count; ++b) {
+    const std::size_t p0 = static_cast<std::size_t>(layout.position_offset(b)) + 3;
+    const Vector4 p(state[p0], state[p0 + 1], state[p0 + 2], state[p0 + 3]);
+    if (!(std::fabs(p.norm() - 1.0) <= kStateEulerNormTolerance)) {
+      throw ModelError("state[" + std::to_string(p0) + ":" + std::to_string(p0 + 4) + "]",
+                       " = " + format_vector(p) + ": the Euler parameters of body \"" +
+                           built_.system->bodies()[b].name + "\" must have norm 1 (within " +
+                           format_shortest(kStateEulerNormTolerance) + "); their norm is " + format_number(p.norm()));
+    }
+  }
+  ensure_started();
   integrator_->restart(state);
 }
 

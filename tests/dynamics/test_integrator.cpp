@@ -170,6 +170,36 @@ TEST(Integrator, StopsEarlyNamingTheStepWhenTheStepsLeftWouldExceedTheBudget) {
   EXPECT_EQ(steps, kStallWindowSteps - 1);  // the monitor is not called for the step that stopped it
 }
 
+TEST(Integrator, StopsACollapsedRunWithinItsStallWallTimeAlsoWhenItsStepsFitTheBudget) {
+  // 4 ms at 1.5e-11 s a step: some 2.7e8 steps, under a max_steps of 1e9, so the step budget
+  // lets it run for many minutes; the stall rule, on a stall_wall_time shortened to 0.2 s, stops
+  // it after about 0.1 s of wall time.
+  std::vector<std::unique_ptr<ForceElement>> forces;
+  forces.push_back(std::make_unique<VeryStiffSpring>());
+  MultibodySystem system({{"ball", 1.0, Vector3(1, 1, 1)}}, {}, std::move(forces), {});
+  BodyState s;
+  s.position_W.x() = 1e-3;
+  std::vector<double> y = system.pack(std::vector<BodyState>{s});
+  IntegratorSettings settings;
+  settings.end_time = 0.004;
+  settings.report_step = 0.004;
+  settings.max_steps = 1'000'000'000;
+  settings.stall_wall_time = 0.2;
+  constexpr long kWentOn = 1'000'000;  // steps: seconds of wall time
+  long steps = 0;
+  try {
+    integrate(system, y, settings, [](double, std::span<const double>) {}, [&](double) {
+      if (++steps == kWentOn) throw std::runtime_error("the run went on past 1,000,000 steps");
+    });
+    FAIL() << "the run finished";
+  } catch (const SolverError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("the step size has collapsed to a mean of"), std::string::npos) << message;
+    EXPECT_NE(message.find("(the stall rule"), std::string::npos) << message;
+  }
+  EXPECT_LT(steps, kWentOn);
+}
+
 TEST(Integrator, RunsOnWhenTheProjectedStepsStayWithinTheBudget) {
   // The same spring over a span that fits the budget: 1e-5 s is some 30,000 steps.
   std::vector<std::unique_ptr<ForceElement>> forces;
@@ -284,6 +314,53 @@ TEST(Integrator, RetriesAShorterStepWhenATrialStageCannotBeEvaluated) {
   // 1e-10 used here. The bound leaves a margin of 9.
   constexpr double kReboundTolerance = 1e-8;
   EXPECT_NEAR(y[7], -1.0, kReboundTolerance);
+}
+
+/// validate()'s message for `settings` changed by `edit` ("accepted" when it passes).
+template <typename Edit>
+std::string refusal(Edit edit) {
+  IntegratorSettings settings;
+  edit(settings);
+  try {
+    validate(settings);
+  } catch (const ModelError& e) {
+    return e.what();
+  }
+  return "accepted";
+}
+
+TEST(IntegratorSettings, RejectARelativeToleranceOutsideTheRangeDoublePrecisionCanMeetNamingIt) {
+  // Simbody's setAccuracy aborts at 1; at 1e-300 odeint's steps shrink until the run stalls.
+  EXPECT_EQ(refusal([](auto& s) { s.relative_tolerance = 1.0; }),
+            "solver.relative_tolerance = 1: must be in [1e-14, 0.1]");
+  EXPECT_EQ(refusal([](auto& s) { s.relative_tolerance = 1e-300; }),
+            "solver.relative_tolerance = 1e-300: must be in [1e-14, 0.1]");
+  EXPECT_EQ(refusal([](auto& s) { s.relative_tolerance = kMaxRelativeTolerance; }), "accepted");
+  EXPECT_EQ(refusal([](auto& s) { s.relative_tolerance = kMinRelativeTolerance; }), "accepted");
+}
+
+TEST(IntegratorSettings, RejectAMinimumStepThatNoStepOfTheRunCouldRespectNamingIt) {
+  // Simbody aborts on minimum_step 1.0 in a 1 s run reported every 1e-5 s.
+  EXPECT_EQ(refusal([](auto& s) { s.minimum_step = 1.0; }),
+            "solver.minimum_step = 1: must be shorter than the run, solver.end_time - solver.start_time = 1 s");
+  EXPECT_EQ(refusal([](auto& s) { s.minimum_step = 1e-5; }),
+            "solver.minimum_step = 1.0000000000000001e-05: must be shorter than solver.report_step = "
+            "1.0000000000000001e-05 s");
+  EXPECT_EQ(refusal([](auto& s) { s.minimum_step = 2e-6; }),
+            "solver.minimum_step = 1.9999999999999999e-06: must not be longer than solver.initial_step = "
+            "9.9999999999999995e-07 s");
+  EXPECT_EQ(refusal([](auto& s) { s.stall_wall_time = 0.0; }), "solver.stall_wall_time = 0: must be positive");
+}
+
+TEST(IntegratorSettings, KeepTheFieldPathOfARefusedSetting) {
+  IntegratorSettings settings;
+  settings.minimum_step = 1.0;
+  try {
+    validate(settings);
+    FAIL();
+  } catch (const ModelError& e) {
+    EXPECT_EQ(e.field_path(), "solver.minimum_step");
+  }
 }
 
 TEST(IntegratorSettings, RejectNonPositiveToleranceNamingTheField) {

@@ -221,22 +221,52 @@ TEST(SpatialSliderCrankWithClearance, RefusesTwoForceElementsWhoseFileNamesColli
   EXPECT_TRUE(tables.tables().empty());
 }
 
-TEST(MisalignedSliderCrank, StopsWithinSecondsNamingTheCollapsedStepWhenItStartsDeepBeyondItsClearance) {
+TEST(MisalignedSliderCrank, IsRefusedBeforeItRunsWhenItStartsDeepBeyondItsClearance) {
   // The bearing's axis tilted half a radian off the journal's puts the joint far beyond its
-  // clearance at the start: steps of 7e-11 s, 20,000 steps a second, and about two hours before
-  // max_steps stopped it, with nothing printed. The step budget projects the steps left after
-  // the first kStallWindowSteps and stops there.
+  // clearance at the start: steps of 1e-10 s and hours of wall time, also with end_time 0.004
+  // s (under max_steps). The run is refused before its first step, naming the joint.
   ModelDescription model = test::shipped_model("slider_crank_planar_clearance_misaligned.json");
   auto& joint = std::get<ClearanceRevoluteDescription>(model.forces.at(0));
   joint.bearing.axis_B.x() = 0.5;
-  model.solver.end_time = 0.01;
+  model.solver.end_time = 0.004;
   TablesInMemory tables;
   try {
     simulate(model, tables);
     FAIL() << "the run went on";
-  } catch (const SolverError& e) {
-    EXPECT_NE(std::string(e.what()).find("the step size has collapsed to a mean of"), std::string::npos) << e.what();
+  } catch (const ModelError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("clearance joint \"" + joint.name + "\" starts beyond its model"), std::string::npos)
+        << message;
   }
+  EXPECT_TRUE(tables.tables().empty());
+}
+
+TEST(SimulationRun, RefusesAJournalThatStartsBeyondItsClearanceNamingTheJointAndTheDepth) {
+  // The journal's point moved 5 cm along the rod: the journal lies outside its bearing.
+  ModelDescription model = test::shipped_model("slider_crank_planar_clearance_aligned.json");
+  auto& joint = std::get<ClearanceRevoluteDescription>(model.forces.at(0));
+  joint.journal.point_B.y() += 0.05;
+  try {
+    SimulationRun run(model);
+    FAIL() << "the run was planned";
+  } catch (const ModelError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("clearance joint \"rod-slider clearance\" starts beyond its model (a radial "
+                           "penetration of "),
+              std::string::npos)
+        << message;
+    EXPECT_NE(message.find("m, deeper than the radial clearance of 9.9999999999999395e-05 m"), std::string::npos)
+        << message;
+  }
+}
+
+TEST(SimulationRun, AcceptsAJournalThatStartsInContactWithinItsClearance) {
+  // A tenth of the clearance deep: a contact the force law describes.
+  ModelDescription model = test::shipped_model("slider_crank_planar_clearance_aligned.json");
+  auto& joint = std::get<ClearanceRevoluteDescription>(model.forces.at(0));
+  const double clearance = joint.parameters.dimensions.radial_clearance();
+  joint.journal.point_B.y() += 1.1 * clearance;
+  EXPECT_NO_THROW(SimulationRun run(model));
 }
 
 TEST(SimulationOutputNames, SanitiseBodyNamesLikeForceElementNames) {

@@ -133,6 +133,40 @@ TEST(Simulator, ContinuesFromAStateSetBetweenSteps) {
   EXPECT_THROW(sim.set_state(std::vector<double>(3, 0.0)), ModelError);
 }
 
+TEST(Simulator, RefusesAStateWithZeroOrNonUnitEulerParametersLeavingItUsable) {
+  // A zero quaternion once left the simulator failing every step ("Jacobian lost rank").
+  Simulator sim(short_clearance_run());
+  sim.advance_to(1e-3);
+  const std::vector<double> before(sim.state().begin(), sim.state().end());
+  for (const double scale : {0.0, 0.5, 1.0 + 1e-5}) {
+    SCOPED_TRACE(scale);
+    std::vector<double> y = before;
+    for (int k = 3; k < 7; ++k) y[k] *= scale;  // the first body's Euler parameters
+    try {
+      sim.set_state(y);
+      ADD_FAILURE() << "accepted";
+    } catch (const ModelError& e) {
+      EXPECT_EQ(e.field_path(), "state[3:7]");
+      EXPECT_NE(std::string(e.what()).find("must have norm 1 (within 1e-06)"), std::string::npos) << e.what();
+    }
+    EXPECT_EQ(std::vector<double>(sim.state().begin(), sim.state().end()), before);
+  }
+  sim.advance_to(2e-3);  // still usable
+  EXPECT_NEAR(sim.time(), 2e-3, 1e-15);
+}
+
+TEST(Simulator, RefusesANonFiniteStateNamingTheEntry) {
+  Simulator sim(short_clearance_run());
+  std::vector<double> y(sim.state().begin(), sim.state().end());
+  y[8] = NAN;
+  try {
+    sim.set_state(y);
+    FAIL() << "accepted";
+  } catch (const ModelError& e) {
+    EXPECT_EQ(e.field_path(), "state[8]");
+  }
+}
+
 TEST(SimulationRun, BuildsTheModelOnceAndPlansItsTablesBeforeTheRun) {
   const SimulationRun run(short_clearance_run());
   std::vector<std::string> names;

@@ -7,10 +7,15 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <limits>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "clearjoint/dynamics/model_file.hpp"
 #include "clearjoint/simbody/model_in_simbody.hpp"
@@ -211,6 +216,110 @@ TEST(SimulateInSimbody, StopsARunThatTakesMoreStepsThanTheBudgetNamingIt) {
     EXPECT_NE(std::string(e.what()).find("solver.max_steps = 10"), std::string::npos) << e.what();
   }
   EXPECT_FALSE(simbody.committed());
+}
+
+/// The planar ideal slider-crank with its slider tied to the ground by a spring so stiff (1e18
+/// N/m) that Simbody's explicit steps stay near 1e-10 s: legal steps far above minimum_step,
+/// hours for 20 ms.
+dynamics::ModelDescription stiff_run() {
+  dynamics::ModelDescription model = shipped_model("slider_crank_planar_ideal.json");
+  model.solver.end_time = 0.02;
+  model.solver.report_step = 0.02;
+  model.solver.max_steps = 1'000'000'000;
+  dynamics::SpringDamperDescription spring;
+  spring.name = "stiff";
+  spring.body_i = "ground";
+  spring.body_j = "slider";
+  spring.point_i_B = dynamics::Vector3(0.5, 0.0, 0.0);
+  spring.parameters.stiffness = 1e18;
+  spring.parameters.free_length = 0.1;
+  model.forces.push_back(spring);
+  return model;
+}
+
+/// Thrown by a test's progress callback to end a run that went on.
+struct WentOn {};
+
+TEST(SimulateInSimbody, StopsARunWhoseStepHasCollapsedWithinItsStallWallTime) {
+  // stall_wall_time shortened to 0.2 s: stopped after about 0.1 s. The progress callback ends
+  // the run if it goes on for 20 s.
+  dynamics::ModelDescription model = stiff_run();
+  model.solver.stall_wall_time = 0.2;
+  const auto start = std::chrono::steady_clock::now();
+  TablesInMemory simbody;
+  try {
+    simulate_in_simbody(model, simbody, [&](double) {
+      if (std::chrono::steady_clock::now() - start > std::chrono::seconds(20)) throw WentOn{};
+    });
+    ADD_FAILURE() << "the run finished";
+  } catch (const dynamics::SolverError& e) {
+    const std::string message = e.what();
+    EXPECT_EQ(message.rfind("Simbody integration stopped at t = ", 0), 0u) << message;
+    EXPECT_NE(message.find("the step size has collapsed to a mean of"), std::string::npos) << message;
+  } catch (const WentOn&) {
+    ADD_FAILURE() << "the run went on for 20 s";
+  }
+  EXPECT_FALSE(simbody.committed());
+}
+
+TEST(SimulateInSimbody, ReportsProgressBetweenReportTimes) {
+  // One report step for the whole run: progress comes from between the report times, and a
+  // callback that throws there (a user's interrupt) stops the run.
+  dynamics::ModelDescription model = stiff_run();
+  model.solver.max_steps = 3'000'000;  // ends a run that never reports
+  TablesInMemory simbody;
+  double reported = -1.0;
+  try {
+    simulate_in_simbody(model, simbody, [&](double fraction) {
+      if (fraction > 0.0 && fraction < 1.0) {
+        reported = fraction;
+        throw WentOn{};
+      }
+    });
+    ADD_FAILURE() << "the run finished";
+  } catch (const WentOn&) {
+  } catch (const dynamics::SolverError& e) {
+    ADD_FAILURE() << e.what();
+  }
+  EXPECT_GT(reported, 0.0);
+  EXPECT_FALSE(simbody.committed());
+}
+
+TEST(SimulateInSimbody, RefusesSolverSettingsSimbodyWouldAbortOnNamingTheField) {
+  // Simbody's Integrator asserts (SIGABRT) on these.
+  for (const auto& [edit, field] : std::vector<std::pair<std::function<void(dynamics::IntegratorSettings&)>, std::string>>{
+           {[](auto& s) { s.minimum_step = 1.0; }, "solver.minimum_step"},
+           {[](auto& s) { s.relative_tolerance = 1.0; }, "solver.relative_tolerance"},
+           {[](auto& s) { s.relative_tolerance = 1e-300; }, "solver.relative_tolerance"}}) {
+    SCOPED_TRACE(field);
+    dynamics::ModelDescription model = short_planar_run();
+    edit(model.solver);
+    TablesInMemory simbody;
+    try {
+      simulate_in_simbody(model, simbody);
+      ADD_FAILURE() << "accepted";
+    } catch (const dynamics::ModelError& e) {
+      EXPECT_EQ(e.field_path(), field) << e.what();
+    }
+    EXPECT_TRUE(simbody.tables().empty());
+  }
+}
+
+TEST(SimulateInSimbody, RefusesAJournalThatStartsBeyondItsClearance) {
+  // 5 cm beyond: Simbody ran it for minutes.
+  dynamics::ModelDescription model = short_planar_run();
+  std::get<dynamics::ClearanceRevoluteDescription>(model.forces.at(0)).journal.point_B.y() += 0.05;
+  model.solver.max_steps = 1'000'000;  // ends the run if it is not refused
+  TablesInMemory simbody;
+  try {
+    simulate_in_simbody(model, simbody);
+    ADD_FAILURE() << "the run went on";
+  } catch (const dynamics::ModelError& e) {
+    EXPECT_NE(std::string(e.what()).find("clearance joint \"rod-slider clearance\" starts beyond its model"),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_TRUE(simbody.tables().empty());
 }
 
 TEST(SimulateInSimbody, BuildsEveryShippedModel) {

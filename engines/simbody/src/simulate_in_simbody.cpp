@@ -2,12 +2,14 @@
 #include "clearjoint/simbody/simulate_in_simbody.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <stdexcept>
 
 #include "clearjoint/simbody/model_in_simbody.hpp"
 #include "clearjoint/dynamics/csv_directory.hpp"
 #include "clearjoint/dynamics/simulation.hpp"
+#include "clearjoint/dynamics/stall_guard.hpp"
 
 namespace clearjoint::simbody {
 
@@ -17,9 +19,13 @@ namespace {
 /// ulps before end_time.
 constexpr double kReportCountSlack = 1e-9;
 /// Most steps Simbody takes inside one stepTo before it hands control back, so that the step
-/// budget (solver.max_steps) is checked at least this often, also when the steps collapse between
-/// two report times. Some 10,000 steps are a fraction of a second of a run.
-constexpr int kStepsBetweenBudgetChecks = 10'000;
+/// budget (solver.max_steps), the stall rule (dynamics::StallGuard) and the progress callback are
+/// looked at at least this often, also when the steps collapse between two report times. Some
+/// 1,000 steps are milliseconds of a run.
+constexpr int kStepsBetweenChecks = 1'000;
+/// Wall-clock time between two progress calls made between report times, as clearjoint's own
+/// run makes them (dynamics::SimulationRun).
+constexpr std::chrono::milliseconds kProgressInterval{100};
 
 std::vector<std::string> body_header() {
   return {"time", "x", "y", "z", "e0", "e1", "e2", "e3", "vx", "vy", "vz", "wx", "wy", "wz",
@@ -228,14 +234,18 @@ dynamics::SimulationSummary simulate_in_simbody(const dynamics::SimulationRun& r
   integrator.setInitialStepSize(model.solver.initial_step);
   integrator.setMinimumStepSize(model.solver.minimum_step);
   integrator.setFinalTime(model.solver.end_time);
-  integrator.setInternalStepLimit(kStepsBetweenBudgetChecks);
+  integrator.setInternalStepLimit(kStepsBetweenChecks);
   SimTK::TimeStepper stepper(system, integrator);
+  // Hand control back at the step limit too (the TimeStepper otherwise goes on inside stepTo).
+  stepper.setReportAllSignificantStates(true);
   stepper.initialize(built.initial_state());
   observe(stepper.getState(), false);
 
   const long report_count = std::max(
       1L, std::lround(std::ceil(span / model.solver.report_step * (1.0 - kReportCountSlack))));
   summary.integration.smallest_step = model.solver.report_step;
+  dynamics::StallGuard stall(model.solver, model.solver.start_time, 0);
+  auto last_progress = std::chrono::steady_clock::now();
   for (long k = 1; k <= report_count; ++k) {
     const double t = k == report_count ? model.solver.end_time
                                        : model.solver.start_time + double(k) * model.solver.report_step;
@@ -253,6 +263,14 @@ dynamics::SimulationSummary simulate_in_simbody(const dynamics::SimulationRun& r
       const double step = integrator.getPreviousStepSizeTaken();
       summary.integration.smallest_step = std::min(summary.integration.smallest_step, step);
       summary.integration.largest_step = std::max(summary.integration.largest_step, step);
+      stall.check(stepper.getTime(), integrator.getNumStepsTaken(), "Simbody");
+      // Between report times too, so that a long report step or collapsed steps still show
+      // progress and a callback that throws on a user's interrupt stops the run at once.
+      const auto now = std::chrono::steady_clock::now();
+      if (progress && stepper.getTime() < t && now - last_progress >= kProgressInterval) {
+        last_progress = now;
+        progress((stepper.getTime() - model.solver.start_time) / span);
+      }
     }
     observe(stepper.getState(), k == report_count);
   }

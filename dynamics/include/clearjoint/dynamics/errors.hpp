@@ -31,6 +31,9 @@ class SolverError : public std::runtime_error {
 /// "[1, 2, 3]" with round-trip precision, for messages.
 std::string format_vector(const Eigen::Ref<const Eigen::VectorXd>& v);
 std::string format_number(double value);
+/// The shortest text that reads back as `value` ("0.1", not format_number's
+/// "0.10000000000000001"): for limits and tolerances quoted in messages.
+std::string format_shortest(double value);
 
 /// Throw ModelError "<field> = <value>: must be finite" unless every entry is finite.
 void require_finite(std::string_view field, double value);

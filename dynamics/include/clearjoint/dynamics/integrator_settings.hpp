@@ -6,6 +6,17 @@
 
 namespace clearjoint::dynamics {
 
+/// Largest solver.relative_tolerance: an error of 10 % per step already leaves nothing of the
+/// trajectory to compare (the paper uses 1e-7); Simbody's Integrator::setAccuracy aborts at 1.
+inline constexpr double kMaxRelativeTolerance = 0.1;
+/// Smallest solver.relative_tolerance: about 45 ulps of double precision (epsilon 2.2e-16). The
+/// error estimate of a step is itself rounded to a few ulps, so a tighter tolerance is never met
+/// and the step shrinks until the run stalls.
+inline constexpr double kMinRelativeTolerance = 1e-14;
+/// Default IntegratorSettings::stall_wall_time [s]: no run goes on for more than a minute of wall
+/// time after its step size has collapsed (stall_guard.hpp).
+inline constexpr double kStallWallTime = 60.0;
+
 /// What the integrator does when an accepted step ends with a new event (ForceElement::
 /// begins_event: a contact onset, whose impact velocity delta_dot(-) of eq. 28 is remembered).
 enum class OnsetHandling {
@@ -41,9 +52,17 @@ struct IntegratorSettings {
   /// 1 %, but restarting puts the interpolant's error at a non-smooth instant into the state
   /// (an elastic journal's energy drift over 57 impacts at 1e-11: 4.3e-6 against 2.1e-7).
   OnsetHandling onset = OnsetHandling::record_at_onset;
+  /// Wall time [s] within which a run whose step has collapsed is stopped (StallGuard,
+  /// stall_guard.hpp), in every engine. Not read from model files; tests shorten it.
+  double stall_wall_time = kStallWallTime;
 };
 
-/// Throw ModelError naming the field unless the settings are usable (finite, ordered, positive).
+/// Throw ModelError naming the field and its value unless the settings are usable: times finite
+/// and ordered; report_step, the tolerances, initial_step and minimum_step positive;
+/// relative_tolerance in [kMinRelativeTolerance, kMaxRelativeTolerance]; minimum_step shorter
+/// than the span (end_time - start_time) and the report step, and not longer than initial_step
+/// (the first step would already count as collapsed); max_steps and stall_wall_time positive.
+/// Every engine reads the settings only after this check (Simbody aborts on some of them).
 void validate(const IntegratorSettings& settings);
 
 }  // namespace clearjoint::dynamics
