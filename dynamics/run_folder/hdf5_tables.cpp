@@ -10,6 +10,8 @@
 #include <stdexcept>
 #include <system_error>
 
+#include "file_sha256.hpp"
+
 namespace clearjoint::dynamics {
 
 namespace {
@@ -175,6 +177,7 @@ void Hdf5Tables::commit() {
   std::filesystem::rename(impl_->temporary, impl_->path, error);
   if (error) throw std::runtime_error(impl_->path.string() + ": cannot write the output file (" + error.message() + ")");
   impl_->committed = true;
+  write_checksum_file(impl_->path);
 }
 
 void Hdf5Tables::add_text_attribute(const std::string& name, const std::string& text) {
@@ -182,6 +185,8 @@ void Hdf5Tables::add_text_attribute(const std::string& name, const std::string& 
   if (!file.valid()) fail(impl_->path, "cannot reopen the file");
   write_text_attribute(file.get(), name, text, impl_->path);
   if (H5Fflush(file.get(), H5F_SCOPE_GLOBAL) < 0) fail(impl_->path, "cannot write the file");
+  file.reset();  // closed before its bytes are hashed
+  write_checksum_file(impl_->path);
 }
 
 }  // namespace clearjoint::dynamics

@@ -8,6 +8,11 @@
 /// numbers as the CSV files, bit for bit (doubles are stored as they are). The file appears
 /// under its name only on commit() (written under a temporary name, then renamed).
 ///
+/// Beside it, `<name>.sha256` holds the file's SHA-256 in sha256sum's format (file_sha256.hpp),
+/// written on commit() and rewritten by add_text_attribute(), so that once committed the file and
+/// its checksum agree. libhdf5 trusts its input (one flipped byte in the file's metadata can
+/// crash a reader), so readers check the bytes against it first (clearjoint.read_run does).
+///
 ///   import h5py; f = h5py.File("run/run.h5"); t = f["tables/energy"]
 ///   dict(zip(t.attrs["columns"], t[:].T))   # column name -> array
 
@@ -37,10 +42,12 @@ class Hdf5Tables final : public SimulationOutput {
 
   std::size_t add_table(const std::string& name, const std::vector<std::string>& header) override;
   void write_row(std::size_t table, std::span<const double> values) override;
-  /// Writes the rows still buffered, closes the file and renames it to its name.
+  /// Writes the rows still buffered, closes the file, renames it to its name and writes its
+  /// checksum file.
   void commit() override;
 
-  /// Adds a text attribute to the committed file (the run's summary, known after the run).
+  /// Adds a text attribute to the committed file (the run's summary, known after the run) and
+  /// rewrites its checksum file.
   void add_text_attribute(const std::string& name, const std::string& text);
 
  private:

@@ -13,6 +13,7 @@ from typing import Any, Callable, Dict, List, Mapping, Optional, Tuple, Union
 import numpy as np
 
 from . import _core
+from ._run_files import HDF5_FILE, RunFileError, read_csv_table, read_hdf5_tables, read_json_bounded
 
 Model = Union[str, "os.PathLike[str]", Mapping[str, Any]]
 Progress = Union[bool, None, Callable[[float], None]]
@@ -147,11 +148,7 @@ def _model_path(model: Union[str, "os.PathLike[str]"]) -> str:
     """The path as a str, refusing what the C++ reader would misread: a NUL ends a C string
     ('ball.json\\0/etc/passwd' would run ball.json). A missing file is FileNotFoundError, as
     open() says it."""
-    path = os.fspath(model)
-    if isinstance(path, bytes):
-        path = os.fsdecode(path)
-    if "\0" in path:
-        raise ValueError(f"model = {path!r}: a path cannot contain a NUL character")
+    path = _check_path_text(model, "model")
     if not os.path.exists(path):
         raise FileNotFoundError(errno.ENOENT, "model file not found", path)
     if os.path.isdir(path):
@@ -184,6 +181,21 @@ def _check_options(allow_large: Any, report_step: Any, decimation: Any, out: Any
         raise ValueError(f"format = {format!r}: must be 'csv' or 'hdf5'")
     if out is None and (format != "csv" or force):
         raise ValueError("format and force apply to a run written to a folder: give out=")
+    if out is not None:
+        _check_path_text(out, "out")
+
+
+def _check_path_text(value: Any, name: str) -> str:
+    """`value` as a str path, refusing a NUL character: the C++ side would end the path there, so
+    'runs/a\\0/../../x' would name another folder than the one the checks saw."""
+    if not isinstance(value, (str, bytes, os.PathLike)):
+        raise TypeError(f"{name} = {value!r}: must be a path (str or os.PathLike)")
+    path = os.fspath(value)
+    if isinstance(path, bytes):
+        path = os.fsdecode(path)
+    if "\0" in path:
+        raise ValueError(f"{name} = {path!r}: a path cannot contain a NUL character")
+    return path
 
 
 def _override_items(overrides: Any) -> List[Tuple[str, str]]:
@@ -289,8 +301,9 @@ def simulate(model: Model, *, progress: Progress = False, allow_large: bool = Fa
                        decimation=None if decimation is None else int(decimation), **run_choices)
         if out is not None:
             text, source = _model_text(model)
-            summary = _core.simulate_into_folder(text, source, os.fspath(out), format, force, bar, **options)
-            return SimulationResult(tables={}, summary=summary, folder=os.fspath(out))
+            folder = _check_path_text(out, "out")
+            summary = _core.simulate_into_folder(text, source, folder, format, force, bar, **options)
+            return SimulationResult(tables={}, summary=summary, folder=folder)
         if isinstance(model, Mapping):
             text, source = _model_text(model)
             tables, summary = _core.simulate_text(text, source, bar, **options)
@@ -308,31 +321,28 @@ def simulate(model: Model, *, progress: Progress = False, allow_large: bool = Fa
 
 def read_run(folder: Union[str, "os.PathLike[str]"]) -> SimulationResult:
     """A run folder of ``clearjoint simulate`` (CSV files or run.h5) read back as the
-    SimulationResult that ``simulate`` returns in memory, bit for bit, with its summary."""
+    SimulationResult that ``simulate`` returns in memory, bit for bit, with its summary.
+
+    Files are read with the limits of docs/command-line.md ("Reading a run back"): regular files
+    only, no symbolic links, tables of at most 2 GiB; run.h5 only when its bytes match the
+    checksum beside it (run.h5.sha256). Anything else raises ValueError naming the file."""
     folder = os.fspath(folder)
     if not os.path.isdir(folder):
         raise FileNotFoundError(errno.ENOENT, "run folder not found", folder)
     summary_path = os.path.join(folder, "summary.json")
     summary: Dict[str, Any] = {}
-    if os.path.exists(summary_path):
-        with open(summary_path) as f:
-            summary = json.load(f)
-    h5_path = os.path.join(folder, "run.h5")
+    if os.path.lexists(summary_path):
+        loaded = read_json_bounded(summary_path, "summary")
+        if not isinstance(loaded, dict):
+            raise RunFileError(f"summary {summary_path!r}: not a JSON object")
+        summary = loaded
+    if os.path.lexists(os.path.join(folder, HDF5_FILE)):
+        return SimulationResult(tables=read_hdf5_tables(folder), summary=summary, folder=folder)
     tables: Dict[str, Dict[str, np.ndarray]] = {}
-    if os.path.exists(h5_path):
-        import h5py  # Debian: python3-h5py
-        with h5py.File(h5_path, "r") as f:
-            for name, dataset in f["tables"].items():
-                names = [c.decode() if isinstance(c, bytes) else str(c) for c in dataset.attrs["columns"]]
-                values = np.asarray(dataset[:], dtype=np.float64)
-                tables[name] = {column: np.ascontiguousarray(values[:, k]) for k, column in enumerate(names)}
-        return SimulationResult(tables=tables, summary=summary, folder=folder)
     for entry in sorted(os.listdir(folder)):
         if not entry.endswith(".csv"):
             continue
-        with open(os.path.join(folder, entry)) as f:
-            header = f.readline().strip().split(",")
-            values = np.loadtxt(f, delimiter=",", dtype=np.float64, ndmin=2).reshape(-1, len(header))
+        header, values = read_csv_table(os.path.join(folder, entry))
         tables[entry[:-4]] = {column: np.ascontiguousarray(values[:, k]) for k, column in enumerate(header)}
     if not tables:
         raise ValueError(f"{folder}: no run tables (CSV files or run.h5) in it")

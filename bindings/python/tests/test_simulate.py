@@ -312,8 +312,123 @@ def test_folder_options_are_checked_before_the_run(short_model, options, error):
         clearjoint.simulate(short_model, **options)
 
 
+@pytest.mark.parametrize("options, message", [
+    (dict(decimation=2**70), r"decimation = 1180591620717411303424: must be in \[1, 1e9\]"),
+    (dict(decimation=0), r"decimation = 0: must be in \[1, 1e9\]"),
+    (dict(report_step=2**1100), r"report_step = \d+: too large for a double")])
+def test_numbers_beyond_a_double_or_a_long_are_refused_naming_the_argument(short_model, options, message):
+    with pytest.raises(ValueError, match=message):
+        clearjoint.simulate(short_model, **options)
+
+
 def test_read_run_names_a_missing_folder(tmp_path):
     with pytest.raises(FileNotFoundError):
         clearjoint.read_run(tmp_path / "absent")
     with pytest.raises(ValueError, match="no run tables"):
         clearjoint.read_run(tmp_path)
+
+
+def test_out_with_a_nul_character_is_refused_naming_the_argument(short_model, tmp_path):
+    # A NUL ends the path where the C++ side reads it: 'nul/newdir\0/../../x' must not write x.
+    target = tmp_path / "nul" / "newdir\0" / ".." / ".." / "x"
+    with pytest.raises(ValueError, match=r"out = .*a path cannot contain a NUL character"):
+        clearjoint.simulate(short_model, out=str(target))
+    with pytest.raises(ValueError, match="out = "):
+        clearjoint.simulate(short_model, out=os.fsencode(str(target)))
+    assert list(tmp_path.iterdir()) == []
+
+
+# -- run.h5 and its checksum ------------------------------------------------------------------
+
+
+@pytest.fixture
+def hdf5_run(short_model, tmp_path):
+    folder = tmp_path / "run"
+    clearjoint.simulate(short_model, out=folder, format="hdf5")
+    return folder
+
+
+def test_an_hdf5_run_has_a_checksum_that_sha256sum_verifies(hdf5_run):
+    done = subprocess.run(["sha256sum", "-c", "run.h5.sha256"], cwd=hdf5_run, capture_output=True, text=True)
+    assert done.returncode == 0 and done.stdout == "run.h5: OK\n", done.stdout + done.stderr
+
+
+# Offsets of run.h5 whose byte set to 0xff made h5py crash the process (segmentation fault) in a
+# run of the spatial slider-crank; the sweep below covers the rest of the file.
+CRASHING_OFFSETS = (8272, 12303)
+SWEEP_FLIPS = 116
+
+FLIP_AND_READ = r"""
+import shutil, sys, clearjoint
+source, scratch = sys.argv[1], sys.argv[2]
+size = len(open(source + "/run.h5", "rb").read())
+offsets = [o for o in (8272, 12303) if o < size] + [k * size // %d for k in range(%d)]
+for offset in offsets:
+    shutil.rmtree(scratch, ignore_errors=True)
+    shutil.copytree(source, scratch)
+    with open(scratch + "/run.h5", "r+b") as f:
+        f.seek(offset)
+        byte = f.read(1)
+        f.seek(offset)
+        f.write(b"\xfe" if byte == b"\xff" else b"\xff")
+    try:
+        clearjoint.read_run(scratch)
+        print(offset, "read without an error")
+    except ValueError as error:
+        print(offset, error)
+""" % (SWEEP_FLIPS, SWEEP_FLIPS)
+
+
+def test_a_flipped_byte_anywhere_in_run_h5_gives_the_damaged_file_error_never_a_crash(hdf5_run, tmp_path):
+    # In a child process: a crash in libhdf5 ends it with a signal instead of ending the tests.
+    done = subprocess.run([sys.executable, "-c", FLIP_AND_READ, str(hdf5_run), str(tmp_path / "flipped")],
+                          capture_output=True, text=True, timeout=120)
+    assert done.returncode == 0, f"status {done.returncode}: {done.stderr[-2000:]}"
+    lines = done.stdout.splitlines()
+    assert len(lines) >= SWEEP_FLIPS + 1, "the sweep and at least one of the crashing offsets ran"
+    for line in lines:
+        offset, message = line.split(" ", 1)
+        assert message.startswith(f"run.h5 in {tmp_path / 'flipped'} does not match its checksum: "
+                                  "the file is damaged"), line
+
+
+def test_a_run_h5_without_its_checksum_is_refused_saying_how_to_add_one(hdf5_run):
+    (hdf5_run / "run.h5.sha256").unlink()
+    with pytest.raises(ValueError, match=r"has no checksum beside it \(run.h5.sha256\).*sha256sum run.h5"):
+        clearjoint.read_run(hdf5_run)
+    # The way out the message gives: the checksum of a file the user trusts.
+    subprocess.run("sha256sum run.h5 > run.h5.sha256", shell=True, cwd=hdf5_run, check=True)
+    assert "energy" in clearjoint.read_run(hdf5_run).tables
+
+
+def test_a_checksum_file_that_is_not_sha256sums_line_is_refused(hdf5_run):
+    (hdf5_run / "run.h5.sha256").write_text("not a checksum\n")
+    with pytest.raises(ValueError, match="not one SHA-256 line for run.h5"):
+        clearjoint.read_run(hdf5_run)
+
+
+def test_a_symbolic_link_as_run_h5_is_refused(hdf5_run, tmp_path):
+    elsewhere = tmp_path / "elsewhere.h5"
+    (hdf5_run / "run.h5").rename(elsewhere)
+    (hdf5_run / "run.h5").symlink_to(elsewhere)
+    with pytest.raises(ValueError, match="symbolic link"):
+        clearjoint.read_run(hdf5_run)
+
+
+def test_a_matching_file_hdf5_cannot_read_as_a_run_is_refused_in_one_sentence(hdf5_run):
+    # Bytes that match a checksum written for them, but are not an HDF5 run file.
+    (hdf5_run / "run.h5").write_bytes(b"\x89HDF\r\n\x1a\n" + bytes(4000))
+    subprocess.run("sha256sum run.h5 > run.h5.sha256", shell=True, cwd=hdf5_run, check=True)
+    with pytest.raises(ValueError, match=r"cannot be read as a run: the file is damaged or was not "
+                                         r"written by clearjoint simulate \(HDF5 cannot read it"):
+        clearjoint.read_run(hdf5_run)
+
+
+def test_read_run_refuses_a_table_linked_to_another_file(short_model, tmp_path):
+    folder = tmp_path / "run"
+    clearjoint.simulate(short_model, out=folder)
+    (tmp_path / "elsewhere.csv").write_bytes((folder / "energy.csv").read_bytes())
+    (folder / "energy.csv").unlink()
+    (folder / "energy.csv").symlink_to(tmp_path / "elsewhere.csv")
+    with pytest.raises(ValueError, match="energy.csv' is a symbolic link"):
+        clearjoint.read_run(folder)
