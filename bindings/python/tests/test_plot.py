@@ -20,6 +20,7 @@ from clearjoint.plot.joint_series import CONTACT_SLOTS  # noqa: E402
 from run_fixtures import short_model, write_run  # noqa: E402
 
 JOINT_TABLE = "force_ground-crank_clearance"
+JOINT_TABLE_FILE = JOINT_TABLE + ".csv"
 
 
 @pytest.fixture(scope="module")
@@ -191,3 +192,104 @@ def test_every_scenario_of_the_library_has_a_colour_and_a_label():
     assert len(set(plot.SCENARIO_COLOURS.values())) == len(codes)
     assert [entry["label"] for entry in plot.scenario_table()] == [
         clearjoint.scenario_label(clearjoint.ContactScenario(code)) for code in codes]
+
+
+# -- what a run folder's files may be ---------------------------------------------------------
+
+# A line of a file no table should be, with a marker that must never appear in a message.
+FOREIGN_MARKER = "Zq7-foreign-marker"
+FOREIGN_TEXT = f"root:x:0:0:{FOREIGN_MARKER}:/root:/bin/bash"
+
+
+# The address space of a child that reads a hostile table: a reader that tried to read /dev/zero
+# or a 2 GiB table whole would end in MemoryError instead of taking the machine's memory.
+CHILD_ADDRESS_SPACE_BYTES = 3 << 30
+
+
+def cap_memory():
+    import resource
+    resource.setrlimit(resource.RLIMIT_AS, (CHILD_ADDRESS_SPACE_BYTES, CHILD_ADDRESS_SPACE_BYTES))
+
+
+def run_plot_capped(*args):
+    return subprocess.run([sys.executable, "-m", "clearjoint.plot", *map(str, args)], capture_output=True,
+                          text=True, preexec_fn=cap_memory, timeout=120)
+
+
+def copy_run(runs, tmp_path, name="copy"):
+    folder = tmp_path / name
+    shutil.copytree(runs["clearance"], folder)
+    return folder
+
+
+def test_a_table_linked_to_another_file_is_refused_without_quoting_it(runs, tmp_path):
+    folder = copy_run(runs, tmp_path)
+    foreign = tmp_path / "passwd"
+    foreign.write_text(FOREIGN_TEXT + "\n")
+    (folder / "energy.csv").unlink()
+    (folder / "energy.csv").symlink_to(foreign)
+    done = run_plot(folder)
+    one_sentence_error(done, "energy.csv", "symbolic link")
+    assert FOREIGN_MARKER not in done.stderr
+
+
+def test_a_table_linked_to_dev_zero_is_refused_at_once(runs, tmp_path):
+    folder = copy_run(runs, tmp_path)
+    (folder / JOINT_TABLE_FILE).unlink()
+    (folder / JOINT_TABLE_FILE).symlink_to("/dev/zero")
+    one_sentence_error(run_plot_capped(folder), JOINT_TABLE_FILE, "symbolic link")
+
+
+def test_a_damaged_row_is_refused_without_quoting_its_text(runs, tmp_path):
+    folder = copy_run(runs, tmp_path)
+    table = folder / "energy.csv"
+    lines = table.read_text().splitlines(keepends=True)
+    # The marker where NumPy's parser fails first: the row's first field.
+    lines[3] = f"{FOREIGN_MARKER},x,0,0,root,/root,/bin/bash\n"
+    table.write_text("".join(lines))
+    done = run_plot(folder)
+    one_sentence_error(done, "energy.csv", "damaged")
+    assert FOREIGN_MARKER not in done.stderr
+
+
+# A sparse file of one byte more than the largest table read (_bounded_files.MAX_TABLE_BYTES,
+# 2 GiB): refused from its size, before a byte of it is read.
+TABLE_LIMIT_BYTES = 2 << 30
+
+
+def test_a_table_larger_than_the_limit_is_refused_naming_the_limit(runs, tmp_path):
+    folder = copy_run(runs, tmp_path)
+    with open(folder / "reactions.csv", "r+b") as table:
+        table.truncate(TABLE_LIMIT_BYTES + 1)
+    one_sentence_error(run_plot_capped(folder), "reactions.csv", str(TABLE_LIMIT_BYTES + 1),
+                       f"more than the {TABLE_LIMIT_BYTES} bytes")
+
+
+def edit_time(folder, table, row, value):
+    """Sets the time of data row `row` (1 = the first row after the header) of `table`."""
+    path = folder / table
+    lines = path.read_text().splitlines(keepends=True)
+    fields = lines[row].split(",")
+    fields[0] = value
+    lines[row] = ",".join(fields)
+    path.write_text("".join(lines))
+
+
+def test_a_time_column_that_runs_backwards_is_refused_naming_the_table_row_and_value(runs, tmp_path):
+    folder = copy_run(runs, tmp_path)
+    edit_time(folder, "energy.csv", 7, "0.0001")  # row 7 is at 6e-4 s, row 6 at 5e-4 s
+    one_sentence_error(run_plot(folder), "energy.csv row 7", "time = 0.0001", "backwards")
+
+
+def test_a_time_column_holding_nan_is_refused_naming_the_table_row_and_value(runs, tmp_path):
+    folder = copy_run(runs, tmp_path)
+    edit_time(folder, JOINT_TABLE_FILE, 12, "nan")
+    one_sentence_error(run_plot(folder), f"{JOINT_TABLE_FILE} row 12", "time = nan")
+
+
+def test_a_renamed_column_of_a_body_table_is_refused_naming_it(runs, tmp_path):
+    folder = copy_run(runs, tmp_path)
+    table = folder / "body_slider.csv"
+    text = table.read_text()
+    table.write_text(text.replace(",ax,", ",acc_x,", 1))
+    one_sentence_error(run_plot(folder, "--panels", "slider"), "body_slider.csv has no column ax")

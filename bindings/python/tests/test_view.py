@@ -130,3 +130,64 @@ def test_a_truncated_table_is_refused_in_one_sentence(run_folder, tmp_path):
     table = damaged / "body_crank.csv"
     table.write_text(table.read_text()[:-25])
     one_sentence_error(run_view(damaged), "truncated")
+
+
+def request_with_host(server, host, path="run/manifest.json"):
+    """Status of a GET whose Host header is `host` (None: no Host header at all)."""
+    import http.client
+    port = int(server.url.rsplit(":", 1)[1].strip("/"))
+    connection = http.client.HTTPConnection("127.0.0.1", port, timeout=10)
+    try:
+        connection.putrequest("GET", "/" + path, skip_host=True)
+        if host is not None:
+            connection.putheader("Host", host)
+        connection.endheaders()
+        response = connection.getresponse()
+        response.read()
+        return response.status
+    finally:
+        connection.close()
+
+
+def test_the_server_answers_only_requests_addressed_to_a_loopback_name_and_its_port(run_folder):
+    # A page of another site that rebinds its name to 127.0.0.1 sends that name as Host.
+    with view.serve(run_folder) as server:
+        port = int(server.url.rsplit(":", 1)[1].strip("/"))
+        for host in ("localhost", f"localhost:{port}", f"127.0.0.1:{port}", f"[::1]:{port}", "LOCALHOST"):
+            assert request_with_host(server, host) == 200, host
+        for host in (f"evil.example:{port}", "evil.example", f"127.0.0.1:{port + 1}", f"localhost.:{port}",
+                     f"127.0.0.1.evil.example:{port}", "", None):
+            assert request_with_host(server, host) == 421, host
+            assert request_with_host(server, host, "") == 421, host
+
+
+@pytest.mark.parametrize("option, value", [("--port", "99999"), ("--port", "-1"), ("--port", "http"),
+                                           ("--max-frames", "0"), ("--magnify", "nan"), ("--magnify", "-2")])
+def test_an_option_out_of_range_is_refused_naming_it_without_a_traceback(run_folder, option, value):
+    done = run_view(run_folder, option, value)
+    assert done.returncode == 2
+    assert "Traceback" not in done.stderr
+    assert f"argument {option}: '{value}'" in done.stderr, done.stderr
+
+
+def test_a_port_out_of_range_is_refused_by_serve(run_folder):
+    with pytest.raises(ValueError, match="port = 70000: must be a whole number from 0"):
+        view.serve(run_folder, port=70000)
+
+
+def test_a_renamed_column_of_the_joint_table_is_refused_naming_it(run_folder, tmp_path):
+    damaged = tmp_path / "renamed"
+    shutil.copytree(run_folder, damaged)
+    table = damaged / f"{JOINT_TABLE}.csv"
+    text = table.read_text()
+    table.write_text(text.replace("rim_a_u", "rim_a_x", 1))
+    one_sentence_error(run_view(damaged), f"{JOINT_TABLE}.csv has no column rim_a_u")
+
+
+def test_a_table_linked_to_another_file_is_refused(run_folder, tmp_path):
+    linked = tmp_path / "linked"
+    shutil.copytree(run_folder, linked)
+    (tmp_path / "elsewhere.csv").write_bytes((linked / "energy.csv").read_bytes())
+    (linked / "energy.csv").unlink()
+    (linked / "energy.csv").symlink_to(tmp_path / "elsewhere.csv")
+    one_sentence_error(run_view(linked), "energy.csv", "symbolic link")

@@ -57,6 +57,9 @@ def main(argv: Optional[List[str]] = None) -> int:
     except (RunError, ValueError, OSError) as error:
         print(f"clearjoint plot: {error}", file=sys.stderr)
         return 1
+    except MemoryError:
+        print(f"clearjoint plot: not enough memory to read and draw the run {args.run}", file=sys.stderr)
+        return 1
     for path in written:
         print(path)
     return 0

@@ -44,7 +44,8 @@ def _moving_body(run: Run, table: str) -> Optional[Tuple[str, np.ndarray]]:
 
 def _abscissa(run: Run, table: str, x: str, window: Window) -> Tuple[np.ndarray, str]:
     if x == "time":
-        return run.table(table)["time"][window_rows(run.table(table)["time"], window)], "time [s]"
+        time = run.column(table, "time")
+        return time[window_rows(time, window)], "time [s]"
     if x == "angle":
         moving = _moving_body(run, table)
         if moving is None:
@@ -70,11 +71,11 @@ def _slider_axis(run: Run, body: str) -> Tuple[np.ndarray, str]:
 
 def slider_acceleration(run: Run, body: str, window: Window = None) -> Tuple[np.ndarray, np.ndarray, str]:
     """(time, acceleration along the guide [m/s^2], component name) of an output body."""
-    columns = run.table("body_" + body)
-    keep = window_rows(columns["time"], window)
+    time, ax, ay, az = (run.column("body_" + body, c) for c in ("time", "ax", "ay", "az"))
+    keep = window_rows(time, window)
     axis, component = _slider_axis(run, body)
-    acceleration = axis[0] * columns["ax"] + axis[1] * columns["ay"] + axis[2] * columns["az"]
-    return columns["time"][keep], acceleration[keep], component
+    acceleration = axis[0] * ax + axis[1] * ay + axis[2] * az
+    return time[keep], acceleration[keep], component
 
 
 def default_slider(run: Run) -> Optional[str]:

@@ -103,8 +103,7 @@ def rotation_angle(run: Run, body: str, axis_B: np.ndarray,
     """The body's rotation about its own axis ``axis_B`` (unit, body frame) from its Euler
     parameters, unwrapped [rad]: 2 atan2(e . n, e0), exact for a rotation about n and the crank
     angle of a crank that turns about n (the joint axis) with small wobble."""
-    columns = run.table("body_" + body)
-    keep = window_rows(columns["time"], window)
-    e0 = columns["e0"]
-    along = columns["e1"] * axis_B[0] + columns["e2"] * axis_B[1] + columns["e3"] * axis_B[2]
+    time, e0, e1, e2, e3 = (run.column("body_" + body, c) for c in ("time", "e0", "e1", "e2", "e3"))
+    keep = window_rows(time, window)
+    along = e1 * axis_B[0] + e2 * axis_B[1] + e3 * axis_B[2]
     return np.unwrap(2.0 * np.arctan2(along, e0))[keep]

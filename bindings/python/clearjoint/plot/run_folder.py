@@ -8,13 +8,14 @@ truncated table, a model that does not match the tables), never a NumPy tracebac
 """
 from __future__ import annotations
 
-import json
 import os
 import re
 from dataclasses import dataclass, field
 from typing import Any, Dict, List, Mapping, Optional, Union
 
 import numpy as np
+
+from .._run_files import read_csv_table, read_json_bounded
 
 Tables = Dict[str, Dict[str, np.ndarray]]
 
@@ -71,6 +72,16 @@ class Run:
             raise RunError(f"{self.source}: has no table {name}.csv (tables: "
                            f"{', '.join(sorted(self.tables)) or 'none'})") from None
 
+    def column(self, table: str, name: str) -> np.ndarray:
+        """One column of a table; RunError naming both when the table lacks it (a damaged
+        table, or one not written by clearjoint simulate)."""
+        columns = self.table(table)
+        try:
+            return columns[name]
+        except KeyError:
+            raise RunError(f"{self.source}: {table}.csv has no column {name} (a damaged table, or "
+                           "one not written by clearjoint simulate)") from None
+
     def clearance_tables(self) -> List[str]:
         """Tables of clearance joints (force_*.csv with a scenario column), in name order."""
         return sorted(name for name, columns in self.tables.items()
@@ -117,19 +128,10 @@ def clearance_joints_of(model: Mapping[str, Any]) -> List[ClearanceJointModel]:
 
 
 def _read_table(path: str) -> Dict[str, np.ndarray]:
-    with open(path, encoding="utf-8") as stream:
-        header = stream.readline().strip().split(",")
-        if header == [""]:
-            raise RunError(f"{path}: empty (a truncated table)")
-        try:
-            values = np.loadtxt(stream, delimiter=",", ndmin=2, dtype=float)
-        except ValueError as error:
-            raise RunError(f"{path}: truncated or damaged ({error})") from None
-    if values.size == 0:
-        values = np.zeros((0, len(header)))
-    if values.shape[1] != len(header):
-        raise RunError(f"{path}: {values.shape[1]} columns in the rows, {len(header)} in the header "
-                       "(a truncated or damaged table)")
+    try:
+        header, values = read_csv_table(path)
+    except ValueError as error:  # RunFileError, and the bounded reader's refusals
+        raise RunError(str(error)) from None
     return {name: np.ascontiguousarray(values[:, k]) for k, name in enumerate(header)}
 
 
@@ -137,12 +139,33 @@ def _read_model(model: Union[str, "os.PathLike[str]", Mapping[str, Any], None]) 
     if model is None or isinstance(model, Mapping):
         return dict(model) if model is not None else None
     try:
-        with open(model, encoding="utf-8") as stream:
-            return json.load(stream)
-    except OSError as error:
-        raise RunError(f"model {os.fspath(model)}: cannot be read ({error.strerror})") from None
-    except json.JSONDecodeError as error:
-        raise RunError(f"model {os.fspath(model)}: not JSON ({error})") from None
+        loaded = read_json_bounded(os.fspath(model), "model")
+    except (FileNotFoundError, ValueError) as error:  # and the bounded reader's refusals
+        raise RunError(str(error)) from None
+    if not isinstance(loaded, dict):
+        raise RunError(f"model {os.fspath(model)}: not a model file (a JSON object)")
+    return loaded
+
+
+def _check_times(tables: Tables, source: str) -> None:
+    """Every table's time column holds numbers that never decrease (the report times, paper
+    Sec. 5's integration reported at solver.report_step): a NaN or a step back means the table
+    was damaged or edited, and figures drawn from it would be wrong without a word."""
+    for name, columns in sorted(tables.items()):
+        time = columns.get("time")
+        if time is None or len(time) == 0:
+            continue
+        bad = np.flatnonzero(~np.isfinite(time))
+        if len(bad):
+            row = int(bad[0])
+            raise RunError(f"{source}: {name}.csv row {row + 1}: time = {float(time[row])!r}: every report "
+                           "time must be a finite number (a damaged table)")
+        back = np.flatnonzero(np.diff(time) < 0)
+        if len(back):
+            row = int(back[0]) + 1
+            raise RunError(f"{source}: {name}.csv row {row + 1}: time = {float(time[row])!r} is before the "
+                           f"previous row's {float(time[row - 1])!r}: report times must not run backwards "
+                           "(a damaged table)")
 
 
 def _check_rows(tables: Tables, source: str) -> None:
@@ -160,6 +183,7 @@ def _check_rows(tables: Tables, source: str) -> None:
 
 def _with_model(tables: Tables, model: Optional[Dict[str, Any]], source: str) -> Run:
     _check_rows(tables, source)
+    _check_times(tables, source)
     joints: List[ClearanceJointModel] = []
     if model is not None:
         try:
@@ -194,6 +218,6 @@ def read_run(run: Any, model: Union[str, "os.PathLike[str]", Mapping[str, Any], 
     if "energy.csv" not in files:
         raise RunError(f"{folder}: not a run folder of clearjoint simulate (no energy.csv)")
     tables = {f[:-len(".csv")]: _read_table(os.path.join(folder, f)) for f in files}
-    if model is None and os.path.isfile(os.path.join(folder, MODEL_FILE_IN_RUN)):
+    if model is None and os.path.lexists(os.path.join(folder, MODEL_FILE_IN_RUN)):
         model = os.path.join(folder, MODEL_FILE_IN_RUN)
     return _with_model(tables, _read_model(model), folder)

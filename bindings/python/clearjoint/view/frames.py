@@ -102,12 +102,11 @@ def _body_pose(run: Run, body: str, rows: np.ndarray) -> Tuple[np.ndarray, np.nd
         e = np.zeros((len(rows), 4))
         e[:, 0] = 1.0
         return np.zeros((len(rows), 3)), e
-    table = run.tables.get("body_" + body)
-    if table is None:
+    if "body_" + body not in run.tables:
         raise RunError(f"{run.source}: no table body_{body}.csv; the viewer needs every body of a "
                        "clearance joint in the model's output.bodies")
-    position = np.stack([table[c][rows] for c in ("x", "y", "z")], axis=1)
-    return position, np.stack([table[c][rows] for c in ("e0", "e1", "e2", "e3")], axis=1)
+    position = np.stack([run.column("body_" + body, c)[rows] for c in ("x", "y", "z")], axis=1)
+    return position, np.stack([run.column("body_" + body, c)[rows] for c in ("e0", "e1", "e2", "e3")], axis=1)
 
 
 def _contacts_in_bearing_frame(run: Run, joint: ClearanceJointModel, rows: np.ndarray) -> np.ndarray:
@@ -148,7 +147,7 @@ def viewer_data(run: Run, max_frames: int = DEFAULT_MAX_FRAMES,
     if run.model is None:
         raise RunError(f"{run.source}: the viewer needs the run's model file for the shapes "
                        "(pass --model MODEL.json, or keep it in the run folder as model.json)")
-    time = run.table("energy")["time"]
+    time = run.column("energy", "time")
     step = decimation_step(len(time), max_frames)
     rows = np.arange(0, len(time), step)
     bodies = [b for b in run.model.get("bodies", []) if "body_" + b["name"] in run.tables]
@@ -172,9 +171,10 @@ def viewer_data(run: Run, max_frames: int = DEFAULT_MAX_FRAMES,
         # Largest force over the rows each frame stands for (rows[k] .. rows[k + 1] - 1).
         peak = np.maximum.reduceat(normal_force, rows) if len(rows) else normal_force[:0]
         contacts = _contacts_in_bearing_frame(run, joint, rows)
-        rims = np.stack([table[c][rows] for c in ("rim_a_u", "rim_a_v", "rim_a_axial",
-                                                    "rim_b_u", "rim_b_v", "rim_b_axial")], axis=1)
-        columns += [table["scenario"][rows][:, None], table["contact_count"][rows][:, None], rims,
+        rims = np.stack([run.column(joint.table, c)[rows] for c in ("rim_a_u", "rim_a_v", "rim_a_axial",
+                                                                  "rim_b_u", "rim_b_v", "rim_b_axial")], axis=1)
+        columns += [run.column(joint.table, "scenario")[rows][:, None],
+                    run.column(joint.table, "contact_count")[rows][:, None], rims,
                     normal_force[rows][:, None], peak[:, None],
                     contacts.reshape(len(rows), MAX_CONTACTS * CONTACT_FLOATS)]
         frame_b = bearing_frame_B(joint.bearing_axis)

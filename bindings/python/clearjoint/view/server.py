@@ -1,7 +1,12 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """The viewer's web server: the page and its vendored scripts from web/, and the run's manifest
 and frames from memory, on 127.0.0.1 only (a run may be private; nothing is listening on other
-interfaces). Nothing is fetched from the internet: the page works offline."""
+interfaces). Nothing is fetched from the internet: the page works offline.
+
+Listening on the loopback interface is not enough: a web page of another site can make its own
+name resolve to 127.0.0.1 (DNS rebinding) and then read this server as "its" origin. Such a
+request carries the other site's name in its Host header, so every request whose Host is not a
+loopback name with the served port is refused (421 Misdirected Request)."""
 from __future__ import annotations
 
 import json
@@ -32,11 +37,39 @@ def _static_files() -> Dict[str, str]:
     return files
 
 
+#: The host names a request may address the server by: the loopback names (RFC 6761 reserves
+#: "localhost"; 127.0.0.1 is where the server listens, and [::1] is IPv6's loopback).
+LOOPBACK_HOSTS = ("localhost", "127.0.0.1", "[::1]")
+
+#: Largest TCP port number (RFC 793: ports are 16-bit); 0 asks the system for a free one.
+MAX_PORT = 65535
+
+
+def check_port(port: int) -> int:
+    """`port` when it is a whole number from 0 (a free port) to MAX_PORT, else ValueError naming it."""
+    if isinstance(port, bool) or not isinstance(port, int) or not 0 <= port <= MAX_PORT:
+        raise ValueError(f"port = {port!r}: must be a whole number from 0 (a free port) to {MAX_PORT}")
+    return port
+
+
+def host_allowed(host: Optional[str], port: int) -> bool:
+    """Whether a request's Host header names this server: a loopback name, with the served port
+    or none (a browser omits the scheme's default port), compared without case."""
+    if host is None:
+        return False
+    host = host.strip().lower()
+    for name in LOOPBACK_HOSTS:
+        if host == name or host == f"{name}:{port}":
+            return True
+    return False
+
+
 class ViewerServer:
     """Serves one run's ViewerData; ``url`` is the page. Use as a context manager, or call
     ``serve_forever()`` / ``start()`` and ``close()``."""
 
     def __init__(self, data: ViewerData, port: int = 0, quiet: bool = True) -> None:
+        check_port(port)
         self.data = data
         payload: Dict[str, Tuple[bytes, str]] = {
             "/run/manifest.json": (json.dumps(data.manifest).encode(), "application/json"),
@@ -46,6 +79,10 @@ class ViewerServer:
 
         class Handler(BaseHTTPRequestHandler):
             def do_GET(self) -> None:  # noqa: N802 (the http.server name)
+                if not host_allowed(self.headers.get("Host"), self.server.server_address[1]):
+                    self.send_error(HTTPStatus.MISDIRECTED_REQUEST,
+                                    "this server answers only to localhost, 127.0.0.1 and [::1]")
+                    return
                 path = self.path.split("?", 1)[0]
                 if path in payload:
                     body, content_type = payload[path]
