@@ -32,6 +32,9 @@ std::vector<int> free_columns(int column_count, std::span<const int> held) {
 /// Minimum-norm solution x of J(:, columns) x = rhs, scattered back into a full-length vector.
 Eigen::VectorXd minimum_norm_step(const Eigen::MatrixXd& J, const std::vector<int>& columns,
                                   const Eigen::VectorXd& rhs) {
+  // Every coordinate held: nothing may move. Eigen's decompositions assert on a matrix without
+  // columns, so the step is zero here and the caller's residual check reports the contradiction.
+  if (columns.empty()) return Eigen::VectorXd::Zero(J.cols());
   Eigen::MatrixXd reduced(J.rows(), static_cast<Eigen::Index>(columns.size()));
   for (size_t k = 0; k < columns.size(); ++k) reduced.col(k) = J.col(columns[k]);
   Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod(reduced);

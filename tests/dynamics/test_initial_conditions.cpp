@@ -56,5 +56,25 @@ TEST(InitialConditions, ReportConstraintsThatCannotBeMet) {
   }
 }
 
+TEST(InitialConditions, ReportUnmetConstraintsWhenEveryCoordinateIsHeld) {
+  // Nothing may move, so the corrector has no column to solve for: a SolverError, not a crash in
+  // the decomposition of a matrix without columns.
+  ModelDescription model = shipped_model("slider_crank_planar_ideal.json");
+  model.joints[1].point_j_B = Vector3(-1.0, 0.0, 0.0);
+  model.held_positions.clear();
+  for (const auto& body : model.bodies) {
+    for (const char* component : {"x", "y", "z", "rx", "ry", "rz"}) {
+      model.held_positions.push_back({body.properties.name, component});
+    }
+  }
+  try {
+    build_model(model);
+    FAIL() << "inconsistent constraints were accepted";
+  } catch (const SolverError& e) {
+    EXPECT_NE(std::string(e.what()).find("too many coordinates are held"), std::string::npos)
+        << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace clearjoint::dynamics
