@@ -8,11 +8,14 @@
 
 #include <cerrno>
 #include <cstdio>
+#include <algorithm>
 #include <cstring>
 #include <random>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <system_error>
+#include <vector>
 
 namespace clearjoint::dynamics {
 
@@ -95,15 +98,175 @@ bool is_earlier_result(const fs::path& folder) {
   return fs::is_regular_file(fs::symlink_status(folder / OutputFolder::kMarkerName, error));
 }
 
-/// Refuses a destination that holds anything but an earlier result: --force replaces results,
-/// never a user's files (docs/command-line.md, "Output folder").
+/// Files named in a refusal; the rest are counted ("and 12 more").
+constexpr std::size_t kNamedFiles = 3;
+/// Longest manifest entry [bytes]: Linux's PATH_MAX, the longest path a system call takes.
+constexpr std::size_t kMaxEntryBytes = 4096;
+
+std::runtime_error not_clearjoints_manifest(const fs::path& destination, const std::string& why) {
+  return std::runtime_error(destination.string() + ": its " + OutputFolder::kMarkerName +
+                            " is not a manifest clearjoint wrote (" + why +
+                            "); --force replaces only an earlier result: choose another --out, or move the "
+                            "folder away yourself");
+}
+
+/// Why `entry` is not a path inside the folder, or "" when it is one.
+std::string entry_problem(const std::string& entry) {
+  if (entry.empty()) return "an empty entry";
+  if (entry.size() > kMaxEntryBytes) return "an entry longer than " + std::to_string(kMaxEntryBytes) + " bytes";
+  if (entry.find('\0') != std::string::npos) return "an entry holding a NUL byte";
+  if (entry.front() == '/') return "the absolute entry \"" + entry.substr(0, 200) + "\"";
+  size_t start = 0;
+  while (start <= entry.size()) {
+    const size_t end = std::min(entry.find('/', start), entry.size());
+    const std::string part = entry.substr(start, end - start);
+    if (part.empty() || part == "." || part == "..") {
+      return "the entry \"" + entry.substr(0, 200) + "\", which does not name a file inside the folder";
+    }
+    start = end + 1;
+  }
+  return "";
+}
+
+/// The entries of `destination`'s manifest (format: output_folder.hpp). Read through a
+/// descriptor opened without following a link, at most kMaxManifestBytes + 1 bytes.
+std::set<std::string> read_manifest(const fs::path& destination) {
+  const fs::path path = destination / OutputFolder::kMarkerName;
+  const int fd = ::open(path.c_str(), O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC);
+  if (fd < 0) throw failure(path, "cannot read the result's manifest", errno);
+  struct stat info {};
+  if (::fstat(fd, &info) != 0 || !S_ISREG(info.st_mode)) {
+    ::close(fd);
+    throw not_clearjoints_manifest(destination, "not a regular file");
+  }
+  std::string text;
+  char buffer[65536];
+  for (;;) {
+    const ssize_t got = ::read(fd, buffer, sizeof buffer);
+    if (got < 0 && errno == EINTR) continue;
+    if (got < 0) {
+      const int error_number = errno;
+      ::close(fd);
+      throw failure(path, "cannot read the result's manifest", error_number);
+    }
+    if (got == 0) break;
+    text.append(buffer, static_cast<size_t>(got));
+    if (text.size() > OutputFolder::kMaxManifestBytes) {
+      ::close(fd);
+      throw not_clearjoints_manifest(destination, "larger than " + std::to_string(OutputFolder::kMaxManifestBytes) +
+                                                      " bytes");
+    }
+  }
+  ::close(fd);
+  const size_t header_end = text.find('\n');
+  if (header_end == std::string::npos || !text.starts_with(OutputFolder::kManifestHeader)) {
+    throw not_clearjoints_manifest(destination, std::string("its first line is not \"") +
+                                                    OutputFolder::kManifestHeader + " ...\"");
+  }
+  std::set<std::string> entries;
+  size_t line_number = 1;
+  for (size_t start = header_end + 1; start < text.size();) {
+    ++line_number;
+    size_t end = text.find('\n', start);
+    if (end == std::string::npos) end = text.size();
+    std::string entry = text.substr(start, end - start);
+    start = end + 1;
+    if (const std::string problem = entry_problem(entry); !problem.empty()) {
+      throw not_clearjoints_manifest(destination, "line " + std::to_string(line_number) + ": " + problem);
+    }
+    entries.insert(std::move(entry));
+  }
+  return entries;
+}
+
+/// Every file (anything but a folder, links included, which are never followed) under `folder`,
+/// as '/'-separated paths relative to it, the marker aside, passed to `visit`.
+template <class Visit>
+void for_each_file(const fs::path& folder, Visit&& visit) {
+  std::error_code error;
+  fs::recursive_directory_iterator it(folder, fs::directory_options::none, error);
+  for (; !error && it != fs::recursive_directory_iterator(); it.increment(error)) {
+    std::error_code status_error;
+    if (fs::is_directory(it->symlink_status(status_error))) continue;
+    const std::string relative = it->path().lexically_relative(folder).generic_string();
+    if (relative != OutputFolder::kMarkerName) visit(relative);
+  }
+  if (error) {
+    throw std::runtime_error(folder.string() + ": cannot list the folder's files (" + error.message() +
+                             "); --force replaces only a result it can check");
+  }
+}
+
+/// Refuses a destination that holds anything but an earlier result, or an earlier result beside
+/// files its manifest does not list: --force replaces what runs wrote, never a user's files
+/// (docs/command-line.md, "Output folder").
 void require_replaceable(const fs::path& destination) {
   std::error_code error;
-  if (fs::is_empty(destination, error) || is_earlier_result(destination)) return;
-  throw std::runtime_error(destination.string() + ": holds files that are not a clearjoint result (no " +
-                           OutputFolder::kMarkerName +
-                           " marker); --force replaces only an earlier result: choose another --out, "
-                           "or move those files away yourself");
+  if (fs::is_empty(destination, error)) return;
+  if (!is_earlier_result(destination)) {
+    throw std::runtime_error(destination.string() + ": holds files that are not a clearjoint result (no " +
+                             OutputFolder::kMarkerName +
+                             " marker); --force replaces only an earlier result: choose another --out, "
+                             "or move those files away yourself");
+  }
+  const std::set<std::string> listed = read_manifest(destination);
+  std::vector<std::string> named;
+  size_t unlisted = 0;
+  // The first kNamedFiles in name order, whatever order the directory lists them in.
+  for_each_file(destination, [&](const std::string& file) {
+    if (listed.contains(file)) return;
+    ++unlisted;
+    named.insert(std::upper_bound(named.begin(), named.end(), file), file);
+    if (named.size() > kNamedFiles) named.pop_back();
+  });
+  if (unlisted == 0) return;
+  std::string list;
+  for (const std::string& file : named) list += (list.empty() ? "" : ", ") + file;
+  if (unlisted > named.size()) list += " and " + std::to_string(unlisted - named.size()) + " more";
+  throw std::runtime_error(destination.string() + ": holds files no clearjoint run wrote (" + list +
+                           "); --force replaces only the files listed in an earlier result's " +
+                           OutputFolder::kMarkerName + ": move those files out of the folder, or choose "
+                           "another --out");
+}
+
+/// Everything that refuses `destination` as it is now; creates nothing.
+void require_usable(const fs::path& destination, bool replace_existing) {
+  std::error_code error;
+  const fs::file_status status = fs::symlink_status(destination, error);
+  if (!fs::exists(status)) return;
+  if (!fs::is_directory(status)) {
+    throw std::runtime_error(destination.string() + ": exists and is not a folder");
+  }
+  if (is_mount_point(destination)) {
+    throw std::runtime_error(destination.string() +
+                             ": is a mount point, which a run cannot replace (the results are "
+                             "published by renaming a folder over it); choose a folder inside it");
+  }
+  if (!replace_existing && !fs::is_empty(destination, error)) {
+    throw std::runtime_error(destination.string() +
+                             ": the folder exists and is not empty (an earlier result?); "
+                             "use --force to replace it");
+  }
+  require_replaceable(destination);
+}
+
+/// `destination`, or the folder it links to when it is a symbolic link: a run is published at
+/// the link's target, next to which its lock and staging folder go, and the link stays.
+fs::path resolved(const fs::path& destination) {
+  std::error_code error;
+  if (!fs::is_symlink(fs::symlink_status(destination, error))) return destination;
+  const fs::path target = fs::canonical(destination, error);
+  if (error) {
+    const fs::path link = fs::read_symlink(destination, error);
+    throw std::runtime_error(destination.string() + ": is a symbolic link to " + link.string() +
+                             ", which does not lead to a folder; create that folder, or give --out a "
+                             "folder's own name");
+  }
+  if (!fs::is_directory(target, error)) {
+    throw std::runtime_error(destination.string() + ": is a symbolic link to " + target.string() +
+                             ", which is not a folder");
+  }
+  return target;
 }
 
 /// A name no other staging folder has: the process id and 64 random bits.
@@ -121,19 +284,26 @@ fs::path fresh_staging(const fs::path& destination) {
   throw std::runtime_error(destination.string() + ": cannot find a free staging folder name");
 }
 
-/// The marker that makes a published folder recognisable as a result.
-void write_marker(const fs::path& staging) {
+/// The manifest (output_folder.hpp) that makes a published folder recognisable as a result:
+/// its header, then `files`, one a line.
+void write_manifest(const fs::path& staging, const std::vector<std::string>& files, const char* mode) {
   const fs::path marker = staging / OutputFolder::kMarkerName;
-  std::FILE* file = std::fopen(marker.c_str(), "wx");
+  std::FILE* file = std::fopen(marker.c_str(), mode);
   if (file == nullptr) throw failure(marker, "cannot create the result marker", errno);
-  const bool written = std::fputs("a clearjoint result folder: `clearjoint simulate --force` may replace it\n", file) >= 0;
+  bool written = std::fprintf(file,
+                              "%s: the files clearjoint wrote into this folder; `clearjoint simulate --force` "
+                              "replaces the folder only while it holds nothing else\n",
+                              OutputFolder::kManifestHeader) >= 0;
+  for (const std::string& entry : files) {
+    written = written && std::fputs(entry.c_str(), file) >= 0 && std::fputc('\n', file) != EOF;
+  }
   if (std::fclose(file) != 0 || !written) throw failure(marker, "cannot write the result marker", errno);
 }
 
 }  // namespace
 
 OutputFolder::OutputFolder(const fs::path& destination, bool replace_existing)
-    : destination_(normalised(destination)) {
+    : destination_(resolved(normalised(destination))) {
   std::error_code error;
   if (holds_working_folder(destination_)) {
     throw std::runtime_error(destination.string() +
@@ -141,6 +311,9 @@ OutputFolder::OutputFolder(const fs::path& destination, bool replace_existing)
                              "output folder (publishing replaces the folder); choose a new folder "
                              "inside it, e.g. --out results");
   }
+  // Every refusal before anything is created (the lock file, a parent folder): a refused run
+  // leaves the file system as it was. Checked again below, under the lock.
+  require_usable(destination_, replace_existing);
   if (!fs::is_directory(destination_.parent_path(), error)) {
     fs::create_directories(destination_.parent_path(), error);
     if (error) {
@@ -167,26 +340,12 @@ OutputFolder::OutputFolder(const fs::path& destination, bool replace_existing)
     throw failure(lock, "cannot lock", error_number);
   }
   try {
+    // A dead run's earlier result may be put back, and another run may have published since the
+    // first check: the checks again, now that no other run can change the destination.
     remove_stale_staging(destination_);
-    const fs::file_status status = fs::symlink_status(destination_, error);
-    if (fs::exists(status)) {
-      if (!fs::is_directory(status)) {
-        throw std::runtime_error(destination_.string() + ": exists and is not a folder");
-      }
-      if (is_mount_point(destination_)) {
-        throw std::runtime_error(destination_.string() +
-                                 ": is a mount point, which a run cannot replace (the results are "
-                                 "published by renaming a folder over it); choose a folder inside it");
-      }
-      if (!replace_existing && !fs::is_empty(destination_, error)) {
-        throw std::runtime_error(destination_.string() +
-                                 ": the folder exists and is not empty (an earlier result?); "
-                                 "use --force to replace it");
-      }
-      require_replaceable(destination_);
-    }
+    require_usable(destination_, replace_existing);
     staging_ = fresh_staging(destination_);
-    write_marker(staging_);
+    write_manifest(staging_, {}, "wx");
   } catch (...) {
     ::close(lock_fd_);
     throw;
@@ -202,6 +361,10 @@ OutputFolder::~OutputFolder() {
 }
 
 void OutputFolder::publish() {
+  std::vector<std::string> files;
+  for_each_file(staging_, [&files](const std::string& file) { files.push_back(file); });
+  std::sort(files.begin(), files.end());
+  write_manifest(staging_, files, "w");
   // Checked again just before the swap: the folder may have been filled since the constructor.
   std::error_code error;
   if (fs::exists(fs::symlink_status(destination_, error))) require_replaceable(destination_);

@@ -163,9 +163,8 @@ size_guard)
   ;;
 existing_folder)
   model "$ball" >m.json
-  run "$clearjoint" simulate m.json --out out
+  run "$clearjoint" simulate m.json --out out --format hdf5  # an earlier run with other outputs
   expect_rc 0
-  echo stale >out/force_old.csv  # a file an earlier run with other outputs left
   cp -r out before
   run "$clearjoint" simulate m.json --out out
   expect_rc 1
@@ -173,7 +172,7 @@ existing_folder)
   diff -r before out >/dev/null || fail "the refused run changed the folder"
   run "$clearjoint" simulate m.json --out out --force
   expect_rc 0
-  [[ ! -e out/force_old.csv ]] || fail "a file of the earlier run stayed beside the new result"
+  [[ ! -e out/run.h5 ]] || fail "a file of the earlier run stayed beside the new result"
   [[ -f out/body_ball.csv ]] || fail "new result missing"
   mkdir empty && run "$clearjoint" simulate m.json --out empty
   expect_rc 0  # an empty folder is no result to protect
@@ -257,6 +256,53 @@ force_keeps_user_files)
   expect_rc 1
   expect_in err.txt 'holds files that are not a clearjoint result'
   [[ $(cat linked/keep.txt) == keep ]] || fail "the linked folder changed"
+  ;;
+force_keeps_added_files)
+  # --force deleted the files a user added inside an earlier result: it replaces only what runs
+  # wrote (the manifest .clearjoint-result) and names the rest.
+  model "$ball" >m.json
+  run "$clearjoint" simulate m.json --out res
+  expect_rc 0
+  echo precious >res/mynotes.txt && mkdir res/mysub && echo '{}' >res/mysub/analysis.ipynb
+  cp -r res before
+  run "$clearjoint" simulate m.json --out res --force
+  expect_rc 1
+  expect_in err.txt 'holds files no clearjoint run wrote (mynotes.txt, mysub/analysis.ipynb)'
+  expect_in err.txt 'move those files out of the folder, or choose another --out'
+  diff -r before res >/dev/null || fail "the refused run changed the folder"
+  rm -r res/mynotes.txt res/mysub
+  run "$clearjoint" simulate m.json --out res --force
+  expect_rc 0
+  grep -qx body_ball.csv res/.clearjoint-result || fail "the manifest does not list body_ball.csv"
+  ;;
+refused_run_creates_nothing)
+  # A refused run created .DIR.lock beside DIR (--out ~ created /.root.lock).
+  model "$ball" >m.json
+  mkdir -p home && echo mine >home/.bashrc
+  run "$clearjoint" simulate m.json --out home
+  expect_rc 1
+  run "$clearjoint" simulate m.json --out home --force
+  expect_rc 1
+  run "$clearjoint" simulate m.json --out m.json --force
+  expect_rc 1
+  [[ -z $(ls -A | grep -e lock -e staging) ]] || fail "a refused run left: $(ls -A)"
+  ;;
+link_out)
+  # A link to a folder got "exists and is not a folder": the run is published at its target and
+  # the link stays.
+  model "$ball" >m.json
+  mkdir target && ln -s target link
+  run "$clearjoint" simulate m.json --out link
+  expect_rc 0
+  [[ -L link && -f target/body_ball.csv ]] || fail "not published at the target: $(ls -lA . target)"
+  run "$clearjoint" simulate m.json --out link/ --force
+  expect_rc 0
+  [[ -L link && -f link/.clearjoint-result ]] || fail "the link was replaced: $(ls -lA)"
+  ln -s nowhere dangling
+  run "$clearjoint" simulate m.json --out dangling
+  expect_rc 1
+  expect_in err.txt 'dangling: is a symbolic link to nowhere, which does not lead to a folder'
+  [[ ! -e nowhere ]] || fail "the link's target was created"
   ;;
 mount_point_out)
   # --out on a mount point ran the whole model, then failed to publish (EBUSY): refused up front.

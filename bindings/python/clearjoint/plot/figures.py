@@ -11,6 +11,7 @@ import numpy as np
 
 from . import panels as draw
 from .joint_series import ClearanceJointSeries, joint_series, rotation_angle, window_rows
+from .result_manifest import register_written
 from .run_folder import Run, RunError, read_run
 
 #: Panels in the order they are drawn; ``panels=`` picks among them.
@@ -245,4 +246,6 @@ def save_joint_figures(run: Any, out_dir: Any = None, *, model: Any = None, join
             figure.savefig(path, dpi=dpi)
             written.append(path)
         plt.close(figure)
+    if os.path.isdir(run.source):
+        register_written(run.source, written)  # so that `simulate --force` replaces them too
     return written

@@ -11,23 +11,48 @@
 ///                          and removed by the next run into the same destination
 ///   .<leaf>.replaced       the previous result, only for an instant on file systems without
 ///                          an atomic exchange (then put back by the next run if it was killed)
+///
+/// A destination that is a symbolic link to a folder is resolved: the run is published at the
+/// link's target (the names above sit next to the target) and the link stays as it was.
+///
+/// The marker file kMarkerName is also the result's manifest, the list of the files clearjoint
+/// wrote into the folder. `replace_existing` replaces a folder only while it holds nothing else,
+/// so that notes a user added inside an earlier result are never deleted with it. Format (text,
+/// one entry a line, '\n'-terminated):
+///
+///   clearjoint result manifest 1            kManifestHeader, then anything up to the end of line
+///   energy.csv                              a path relative to the folder, '/'-separated
+///   figures/joint_pin.png                   (written by `clearjoint plot`, which appends its lines)
+///
+/// Directories are not listed: an empty folder inside a result is replaced with it. A manifest
+/// larger than kMaxManifestBytes, without the header, or with an entry that is absolute, empty or
+/// holds a "." or ".." component, is not one clearjoint wrote, and its folder is refused.
 
+#include <cstddef>
 #include <filesystem>
 
 namespace clearjoint::dynamics {
 
 class OutputFolder {
  public:
-  /// The file every result folder holds (written into the staging folder): only a folder with it
-  /// (or an empty one) is replaced when `replace_existing` is set.
+  /// The file every result folder holds (written into the staging folder), its manifest: only a
+  /// folder with it (or an empty one) is replaced when `replace_existing` is set, and only while
+  /// the folder holds no file the manifest does not list.
   static constexpr const char* kMarkerName = ".clearjoint-result";
+  /// The manifest's first line starts with this text (the format's name and version).
+  static constexpr const char* kManifestHeader = "clearjoint result manifest 1";
+  /// Largest manifest read [bytes]. A run's files are named after the model's bodies and force
+  /// elements, each of which takes more bytes of the model file than its manifest lines (its table,
+  /// and a joint's two figures) take: twice the largest model file (model_file.hpp,
+  /// kMaxModelFileBytes, 16 MiB) bounds every manifest clearjoint writes.
+  static constexpr std::size_t kMaxManifestBytes = std::size_t{32} << 20;
 
-
-  /// Takes the destination's lock (throws std::runtime_error if another run holds it), removes
-  /// the staging folders of dead runs, and creates a fresh staging folder holding kMarkerName.
-  /// Refuses (std::runtime_error) the current folder and its parents, a mount point, a
-  /// destination that exists and is not an empty folder unless `replace_existing`, and, even
-  /// then, one that is not an earlier result (no kMarkerName).
+  /// Refuses (std::runtime_error), before creating anything: the current folder and its parents,
+  /// a mount point, a destination that exists and is not an empty folder unless
+  /// `replace_existing`, and, even then, one that is not an earlier result (no kMarkerName, or a
+  /// manifest that is not clearjoint's) or holds files its manifest does not list (named in the
+  /// message). Then takes the destination's lock (throws if another run holds it), removes the
+  /// staging folders of dead runs, and creates a fresh staging folder holding kMarkerName.
   OutputFolder(const std::filesystem::path& destination, bool replace_existing);
   OutputFolder(const OutputFolder&) = delete;
   OutputFolder& operator=(const OutputFolder&) = delete;
@@ -38,9 +63,10 @@ class OutputFolder {
   const std::filesystem::path& staging() const { return staging_; }
   const std::filesystem::path& destination() const { return destination_; }
 
-  /// Makes the staging folder the destination in one rename (an atomic exchange when the
-  /// destination exists), then removes the previous result. Checks again first that an existing
-  /// destination is empty or an earlier result. Throws std::runtime_error.
+  /// Writes the manifest (every file now in the staging folder), then makes the staging folder
+  /// the destination in one rename (an atomic exchange when the destination exists) and removes
+  /// the previous result. Checks again first that an existing destination is empty or an earlier
+  /// result holding only what its manifest lists. Throws std::runtime_error.
   void publish();
 
  private:
