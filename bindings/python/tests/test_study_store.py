@@ -96,18 +96,40 @@ def test_a_new_store_inside_a_users_folder_is_made_marked_and_reused_and_leaves_
     assert {k: v for k, v in after.items() if not k.startswith("results")} == users_files
 
 
-def test_an_empty_folder_and_a_store_of_an_earlier_version_are_accepted(tmp_path):
+def test_an_empty_folder_is_accepted_and_marked(tmp_path):
     from clearjoint.study.store import MARKER
     empty = tmp_path / "empty"
     empty.mkdir()
     Store(str(empty)).open_for_writing({})
-    assert os.path.exists(empty / MARKER)
-    earlier = tmp_path / "earlier"  # what a store held before it had a marker
-    (earlier / "runs").mkdir(parents=True)
-    (earlier / "study.json").write_text("{}")
-    (earlier / "writes.log").write_text("")
-    Store(str(earlier)).open_for_writing({})
-    assert os.path.exists(earlier / MARKER)
+    assert os.path.isfile(empty / MARKER)
+
+
+LOOKALIKE_STORES = {
+    "a summary and figures of the user's": {"summary/runs.csv": "point_id,mine\n1,precious\n", "figures/": None},
+    "the files of a store but no marker": {"runs/": None, "study.json": "{}", "writes.log": "",
+                                           "summary/runs.csv": "precious\n"},
+    "a marker that is a folder": {".clearjoint-study-store/": None, "summary/runs.csv": "precious\n"},
+}
+
+
+@pytest.mark.parametrize("contents", LOOKALIKE_STORES.values(), ids=LOOKALIKE_STORES.keys())
+def test_a_folder_that_only_looks_like_a_store_is_refused_naming_the_missing_marker(tmp_path, models_dir, capsys,
+                                                                                   contents):
+    from clearjoint.study.store import MARKER
+    for name, text in contents.items():
+        (tmp_path / "results" / name).parent.mkdir(parents=True, exist_ok=True)
+        if text is None:
+            (tmp_path / "results" / name).mkdir()
+        else:
+            (tmp_path / "results" / name).write_text(text)
+    path = edit_study(write_study(tmp_path, models_dir, radial=(0.1,), members=1), lambda s: s.update(store="results"))
+    before = snapshot(tmp_path)
+    for command in (["run", path] + RUN_ARGUMENTS, ["summary", path], ["plot", path]):
+        assert main(command) == 2, command
+        err = one_line_error(capsys)
+        assert "store = 'results'" in err and "not a study store" in err and "no marker %s" % MARKER in err, err
+        assert str(tmp_path / "results") in err
+    assert snapshot(tmp_path) == before
 
 
 def test_a_store_that_is_a_file_is_one_line_and_status_2(tmp_path, models_dir, capsys):

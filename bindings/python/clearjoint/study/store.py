@@ -30,11 +30,13 @@ key (runner.reuse_key: model, outputs, library and reducing code); otherwise it 
 the file replaced. One client runs a study at a time: it holds an flock on STORE/.lock, which the
 kernel releases however it ends.
 
-A store is a folder the study owns: one the runner created (it holds the marker) or an empty one;
-a folder holding anything else is refused, so that a mistyped store cannot scatter a study's files
-over a folder of the user's. When the store's folder is group-writable, everything the runner
-creates in it is group-writable too, whatever the umask, so that the members of a group can take
-turns running a study into a shared store.
+A store is a folder the study owns: one that holds the marker (a regular file the runner writes
+before anything else), or an empty or new one; a folder holding anything else is refused, however
+much it looks like a store (a summary/runs.csv of the user's is not the runner's), so that a
+mistyped store cannot scatter a study's files over a folder of the user's or overwrite them. When
+the store's folder is group-writable, everything the runner creates in it is group-writable too,
+whatever the umask, so that the members of a group can take turns running a study into a shared
+store.
 """
 import fcntl
 import hashlib
@@ -48,8 +50,7 @@ import numpy as np
 
 FORMAT = 2  # bump when the layout or the attributes of a run file change
 MARKER = ".clearjoint-study-store"
-# What a store made before the marker existed may hold; a folder holding only these is a store.
-STORE_ENTRIES = {MARKER, ".lock", "study.json", "writes.log", "runs", "summary", "figures", "quarantine"}
+MARKER_TEXT = "A clearjoint study store (docs/studies.md); the study runner writes into this folder.\n"
 REUSE_ATTRIBUTES = ("model_sha256", "outputs_sha256", "library_version", "library_build", "reduction_sha256")
 
 
@@ -121,14 +122,21 @@ class Store:
         if not os.path.isdir(self.path):
             raise StoreError("%s is a file, not a folder" % self.path)
         try:
-            entries = set(os.listdir(self.path))
+            entries = sorted(os.listdir(self.path))
         except OSError as error:
             raise StoreError("cannot read the folder %s (%s)" % (self.path, error.strerror))
-        foreign = sorted(entries - STORE_ENTRIES)
-        if MARKER not in entries and foreign:
-            raise StoreError("%s is a folder that holds other files (%s%s) and is not a study store (no %s); "
-                             "give a new or empty folder" % (self.path, ", ".join(foreign[:3]),
-                                                             ", ..." if len(foreign) > 3 else "", MARKER))
+        if not entries or self._has_marker():
+            return
+        raise StoreError("%s is not a study store: it holds %s%s but no marker %s (a regular file the runner "
+                         "writes into every store it makes); give a new or empty folder (a store made by a "
+                         "version without the marker: create the marker file in it)"
+                         % (self.path, ", ".join(entries[:3]), ", ..." if len(entries) > 3 else "", MARKER))
+
+    def _has_marker(self):
+        try:
+            return stat.S_ISREG(os.lstat(os.path.join(self.path, MARKER)).st_mode)
+        except OSError:
+            return False
 
     def _share(self, path):
         """Makes what the runner created group-writable when the store's folder is."""
@@ -177,13 +185,14 @@ class Store:
             self._create_store_folder()
             if not os.access(self.path, os.W_OK | os.X_OK):
                 raise PermissionError(13, "Permission denied")
+            # The marker first: a client killed at any later point leaves a folder that is a store.
+            if not self._has_marker():
+                marker = os.path.join(self.path, MARKER)
+                with open(marker, "w") as f:
+                    f.write(MARKER_TEXT)
+                self._share(marker)
             if self._lock is None:
                 self._take_lock()
-            marker = os.path.join(self.path, MARKER)
-            if not os.path.exists(marker):
-                with open(marker, "w") as f:
-                    f.write("A clearjoint study store (docs/studies.md); the study runner writes into this folder.\n")
-                self._share(marker)
             for folder in (self.runs, self.partial, self.summary):
                 self._make_folder(folder)
             for leftover in os.listdir(self.partial):
