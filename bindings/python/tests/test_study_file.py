@@ -190,3 +190,65 @@ def test_the_documented_schema_validation_accepts_the_shipped_studies_and_names_
     assert list(answer.iter_errors({"v": 1, "id": None, "error": "line 1: not JSON"})) == []
     assert list(answer.iter_errors({"v": 1, "id": None, "error": 3})) != []
     assert [e.message for e in namespace["study"].iter_errors({"study_format": 2})] != []
+
+
+# -- files that must not be read whole -------------------------------------------------------------
+
+def unreadable_file(tmp_path, models_dir, kind):
+    """A path that is not a study or model file to read: (path, what the error must say)."""
+    from clearjoint._bounded_files import MAX_DESCRIPTION_BYTES
+    if kind == "device":
+        return "/dev/zero", "'/dev/zero' is not a regular file"
+    path = tmp_path / ("named." + kind)
+    if kind == "fifo":
+        os.mkfifo(path)  # nobody writes into it: an open for reading would wait forever
+        return str(path), "%r is not a regular file" % str(path)
+    if kind == "link":
+        os.symlink(write_study(tmp_path, models_dir), path)
+        return str(path), "%r is a symbolic link" % str(path)
+    with open(path, "wb") as f:  # sparse: a hole of the limit and one byte
+        f.truncate(MAX_DESCRIPTION_BYTES + 1)
+    return str(path), "%r holds %d bytes, more than the %d bytes accepted" % (
+        str(path), MAX_DESCRIPTION_BYTES + 1, MAX_DESCRIPTION_BYTES)
+
+
+def study_program(cli, *args):
+    """`clearjoint study ...` as a user types it, with a timeout that fails a hang."""
+    import subprocess
+    return subprocess.run([str(cli), "study", *args], capture_output=True, text=True, timeout=60)
+
+
+@pytest.mark.parametrize("kind", ["device", "fifo", "link", "oversized"])
+def test_a_study_file_that_is_a_device_a_fifo_a_link_or_too_large_is_refused_naming_it_and_the_limit(
+        tmp_path, models_dir, cli, kind):
+    path, message = unreadable_file(tmp_path, models_dir, kind)
+    for command in ("summary", "run", "plot"):
+        done = study_program(cli, command, path)
+        assert done.returncode == 2, (command, done.stderr)
+        assert done.stderr.count("\n") == 1 and "Traceback" not in done.stderr, done.stderr
+        assert "the study file " + message in done.stderr, done.stderr
+
+
+@pytest.mark.parametrize("kind", ["device", "fifo", "link", "oversized"])
+def test_a_model_file_that_is_a_device_a_fifo_a_link_or_too_large_is_refused_naming_the_field(
+        tmp_path, models_dir, cli, kind):
+    model, message = unreadable_file(tmp_path, models_dir, kind)
+    path = edited(tmp_path, models_dir, lambda s: s.update(model=model))
+    done = study_program(cli, "summary", path)
+    assert done.returncode == 2 and done.stderr.count("\n") == 1 and "Traceback" not in done.stderr, done.stderr
+    assert "model = %r: the model file " % model + message in done.stderr, done.stderr
+
+
+def test_model_paths_are_relative_to_the_study_file_not_the_current_folder(tmp_path, models_dir, monkeypatch):
+    import shutil
+    (tmp_path / "studies").mkdir()
+    (tmp_path / "models").mkdir()
+    shutil.copy(models_dir / "slider_crank_spatial_clearance.json", tmp_path / "models" / "crank.json")
+    path = edited(tmp_path / "studies", models_dir, lambda s: s.update(model="../models/crank.json"))
+    elsewhere = tmp_path / "elsewhere"
+    elsewhere.mkdir()
+    monkeypatch.chdir(elsewhere)
+    study = load_study(os.path.relpath(path, elsewhere))
+    with open(models_dir / "slider_crank_spatial_clearance.json") as f:
+        assert study.base_models[""] == json.load(f)
+    assert study.store_path == str(tmp_path / "studies" / "store_small")

@@ -258,6 +258,48 @@ def test_study_summary_names_a_corrupted_run_file_instead_of_reading_it(tmp_path
     assert list(summary["unreadable_runs"]) == [corrupted] and summary["stored_runs"] == 1
 
 
+def _fifo(path):
+    os.mkfifo(path)
+
+
+def _link_to_dev_zero(path):
+    os.symlink("/dev/zero", path)
+
+
+def _oversized(path, limit):
+    with open(path, "wb") as f:  # sparse: a hole of the limit and one byte
+        f.truncate(limit + 1)
+
+
+STORE_FILES_NOT_TO_READ = {
+    "a run file that is a fifo": ("run", _fifo, "is not a regular file"),
+    "a run file linked to /dev/zero": ("run", _link_to_dev_zero, "is a symbolic link"),
+    "a checksum that is a fifo": ("checksum", _fifo, "is not a regular file"),
+    "a checksum linked to /dev/zero": ("checksum", _link_to_dev_zero, "is a symbolic link"),
+    # 4096: store.MAX_CHECKSUM_BYTES
+    "an oversized checksum": ("checksum", lambda path: _oversized(path, 4096), "more than the 4096 bytes"),
+}
+
+
+@pytest.mark.parametrize("which, replace, message", STORE_FILES_NOT_TO_READ.values(),
+                         ids=STORE_FILES_NOT_TO_READ.keys())
+def test_a_store_file_that_is_not_a_small_regular_file_is_named_and_set_aside_not_read(tmp_path, models_dir, client,
+                                                                                        which, replace, message):
+    path = write_study(tmp_path, models_dir, radial=(0.1,), members=1)
+    study = load_study(path)
+    [run_id] = run_study(study, client=client, progress=False).computed
+    store = Store(study.store_path)
+    target = store.run_path(run_id) if which == "run" else store.checksum_path(run_id)
+    os.remove(target)
+    replace(target)
+    done = subprocess.run(study_command("summary", path), capture_output=True, text=True, timeout=60)
+    assert done.returncode == 1, done.stderr  # not a hang on the fifo, not /dev/zero read forever
+    assert "Traceback" not in done.stderr and repr(target) in done.stderr and message in done.stderr, done.stderr
+    again = run_study(study, client=client, progress=False, stream=io.StringIO())
+    assert again.computed == [run_id] and message in again.set_aside[run_id][0]
+    assert store.verify(run_id) is None
+
+
 def test_each_stored_run_has_a_checksum_sha256sum_verifies(tmp_path):
     store = Store(str(tmp_path / "store"))
     store.open_for_writing({})

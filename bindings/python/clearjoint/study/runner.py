@@ -126,8 +126,7 @@ def run_study(study, scheduler=None, workers=None, progress=True, force=False, s
     limit = worker_memory_limit(study, memory_limit) if client is None and not scheduler else 0
     store = Store(study.store_path)
     outputs_hash = outputs_sha256(study)
-    with open(study.path) as f:
-        study_sha256 = sha256_text(f.read())
+    study_sha256 = sha256_text(study.text)
     try:
         store.open_for_writing({"name": study.name, "study_file": os.path.abspath(study.path),
                                 "study_sha256": study_sha256, "outputs_sha256": outputs_hash,

@@ -48,9 +48,23 @@ import time
 import h5py
 import numpy as np
 
+from .._bounded_files import MAX_TABLE_BYTES, open_bounded, read_text_bounded
+
 FORMAT = 2  # bump when the layout or the attributes of a run file change
 MARKER = ".clearjoint-study-store"
 MARKER_TEXT = "A clearjoint study store (docs/studies.md); the study runner writes into this folder.\n"
+# Every file the store reads is opened with _bounded_files: a regular file, not through a symbolic
+# link, of at most these sizes, so that a run file replaced by a FIFO, a link to /dev/zero or a
+# runaway file is named and set aside instead of hanging or exhausting the reader.
+# A checksum file is one line of sha256sum's format: 64 hex digits, two spaces and the run file's
+# name (a 20-character run id and ".h5"); 4 KiB leaves room for any name.
+MAX_CHECKSUM_BYTES = 4096
+# A run file holds a run's reductions and its kept time series, gzip-compressed, and `read` loads
+# them whole: the limit of a table `read_run` loads, which the kept series are sampled from.
+MAX_RUN_FILE_BYTES = MAX_TABLE_BYTES
+# writes.log grows by one line of about 80 bytes per run written, and is read line by line: the
+# table limit allows some 25 million writes.
+MAX_WRITE_LOG_BYTES = MAX_TABLE_BYTES
 REUSE_ATTRIBUTES = ("model_sha256", "outputs_sha256", "library_version", "library_build", "reduction_sha256")
 
 
@@ -86,8 +100,10 @@ def _write_json_atomically(path, value):
 
 
 def file_sha256(path):
+    """The SHA-256 of a run file's bytes; ValueError for anything but a regular file of at most
+    MAX_RUN_FILE_BYTES (a FIFO would block, /dev/zero never end)."""
     digest = hashlib.sha256()
-    with open(path, "rb") as f:
+    with open_bounded(path, "the run file", MAX_RUN_FILE_BYTES, "rb") as f:
         for block in iter(lambda: f.read(1 << 20), b""):
             digest.update(block)
     return digest.hexdigest()
@@ -225,19 +241,25 @@ class Store:
         return {name[:-3] for name in os.listdir(self.runs) if name.endswith(".h5")}
 
     def has_checksum(self, run_id):
-        return os.path.exists(self.checksum_path(run_id))
+        return os.path.lexists(self.checksum_path(run_id))
 
     def verify(self, run_id):
         """None when the run file's bytes match its checksum, else why not."""
         try:
-            with open(self.checksum_path(run_id)) as f:
-                expected = f.read().split()[0]
-        except (OSError, IndexError):
+            text = read_text_bounded(self.checksum_path(run_id), "its checksum", MAX_CHECKSUM_BYTES)
+            expected = text.split()[0]
+        except FileNotFoundError:
             return "no checksum beside it (%s)" % os.path.basename(self.checksum_path(run_id))
+        except ValueError as error:
+            return str(error)
+        except IndexError:
+            return "its checksum %s is empty" % os.path.basename(self.checksum_path(run_id))
         try:
             actual = file_sha256(self.run_path(run_id))
         except OSError as error:
-            return "unreadable (%s)" % error.strerror
+            return "unreadable (%s)" % (error.strerror or error)
+        except ValueError as error:
+            return str(error)
         if actual != expected:
             return "its bytes do not match its checksum (SHA-256 %s, recorded %s)" % (actual[:12], expected[:12])
         return None
@@ -353,7 +375,7 @@ class Store:
         if not os.path.exists(self.log):
             return []
         ids = []
-        with open(self.log) as f:
+        with open_bounded(self.log, "the store's writes.log", MAX_WRITE_LOG_BYTES) as f:
             for line in f:
                 try:
                     ids.append(json.loads(line)["run_id"])

@@ -10,6 +10,8 @@ from dataclasses import dataclass, field
 
 import jsonschema
 
+from .._bounded_files import MAX_DESCRIPTION_BYTES, read_text_bounded
+
 SCHEMA_FILE = "study-v1.schema.json"
 # The most runs a study may expand to, counted before expanding (points x members per design):
 # each run is a file in one folder and a task on the scheduler, and a typo such as members = 1e9
@@ -46,9 +48,13 @@ class _NonFinite:
         self.text = text
 
 
-def _read_json(path):
-    with open(path) as f:
-        return json.load(f, parse_constant=_NonFinite)
+def _read_json(path, what):
+    """The text of a study or model file of at most MAX_DESCRIPTION_BYTES (the limit of model
+    files) and its JSON value, read with _bounded_files: a FIFO, a device such as /dev/zero, a
+    symbolic link or a larger file is refused (ValueError naming `what`, the path and the limit)
+    before it is read."""
+    text = read_text_bounded(path, what, MAX_DESCRIPTION_BYTES)
+    return text, json.loads(text, parse_constant=_NonFinite)
 
 
 def _non_finite_field(value, where=()):
@@ -86,6 +92,7 @@ class Study:
     path: str
     spec: dict
     base_models: dict = field(default_factory=dict)
+    text: str = ""  # the study file as read (its hash goes into the store's study.json)
 
     @property
     def name(self):
@@ -124,11 +131,13 @@ def _load_model(study_path, where, model):
         return copy.deepcopy(model)
     path = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(study_path)), model))
     try:
-        loaded = _read_json(path)
-    except OSError as error:
-        raise StudyError("%s: %s = %r: cannot read %s (%s)" % (study_path, where, model, path, error.strerror))
-    except (json.JSONDecodeError, UnicodeDecodeError) as error:
+        _, loaded = _read_json(path, "the model file")
+    except json.JSONDecodeError as error:
         raise StudyError("%s: %s = %r: %s is not JSON (%s)" % (study_path, where, model, path, error))
+    except FileNotFoundError:
+        raise StudyError("%s: %s = %r: cannot read %s (no such file)" % (study_path, where, model, path))
+    except ValueError as error:  # _bounded_files' refusal: it names the file and the limit
+        raise StudyError("%s: %s = %r: %s" % (study_path, where, model, error))
     _reject_non_finite(study_path, "%s = %r: %s: " % (where, model, path), loaded)
     return loaded
 
@@ -240,11 +249,13 @@ def _integers(spec):
 def load_study(path):
     """Reads and checks a study file; raises StudyError naming the field and value at fault."""
     try:
-        spec = _read_json(path)
-    except OSError as error:
-        raise StudyError("%s: cannot read the study file (%s)" % (path, error.strerror))
-    except (json.JSONDecodeError, UnicodeDecodeError) as error:
+        text, spec = _read_json(path, "the study file")
+    except json.JSONDecodeError as error:
         raise StudyError("%s: not JSON (%s)" % (path, error))
+    except FileNotFoundError:
+        raise StudyError("%s: cannot read the study file (no such file)" % path)
+    except ValueError as error:  # _bounded_files' refusal: it names the file and the limit
+        raise StudyError(str(error))
     _reject_non_finite(path, "", spec)
     validator = jsonschema.Draft202012Validator(schema())
     errors = sorted(validator.iter_errors(spec), key=lambda e: list(e.absolute_path))
@@ -254,7 +265,7 @@ def load_study(path):
     _integers(spec)
     _check_references(path, spec)
     _check_size(path, spec)
-    study = Study(path=path, spec=spec)
+    study = Study(path=path, spec=spec, text=text)
     study.base_models[""] = _load_model(path, "model", spec["model"])
     for design in spec["designs"]:
         if "model" in design:
