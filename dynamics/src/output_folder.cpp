@@ -161,7 +161,9 @@ std::set<std::string> read_manifest(const fs::path& destination) {
   const size_t header_end = text.find('\n');
   if (header_end == std::string::npos || !text.starts_with(OutputFolder::kManifestHeader)) {
     throw not_clearjoints_manifest(destination, std::string("its first line is not \"") +
-                                                    OutputFolder::kManifestHeader + " ...\"");
+                                                    OutputFolder::kManifestHeader +
+                                                    " ...\"; results of a clearjoint older than the "
+                                                    "manifest have none");
   }
   std::set<std::string> entries;
   size_t line_number = 1;
