@@ -12,8 +12,8 @@
 // inside a fixed bearing of the paper's Table 2 under gravity, and bouncing until it settles.
 #include <clearjoint/dynamics/normal_contact_force.hpp>
 #include <clearjoint/dynamics/regularised_friction.hpp>
-#include <clearjoint/geometry/contact_kinematics.hpp>
-#include <clearjoint/geometry/detect_contacts.hpp>
+#include <clearjoint/geometry/joint/contact_kinematics.hpp>
+#include <clearjoint/geometry/joint/detect_contacts.hpp>
 
 #include <algorithm>
 #include <array>

@@ -2,7 +2,7 @@
 // Joint-level contact detection: which scenario of the paper's Fig. 2 holds, and each contact's
 // points, normal, depth, error bounds and certificate. The joint is the paper's Table 2 one, in
 // metres, with the journal tilted so that its rim at base A presses into the bearing wall.
-#include <clearjoint/geometry/detect_contacts.hpp>
+#include <clearjoint/geometry/joint/detect_contacts.hpp>
 
 #include <cstdio>
 #include <string>

@@ -2,7 +2,7 @@
 // The kernel underneath detect_contacts: one journal rim (a circle) against the bearing wall (a
 // cylinder). Every crossing is found and proved, with an enclosure of its angle and point, and the
 // answer says how far it can be trusted.
-#include <clearjoint/geometry/intersect_circle_cylinder.hpp>
+#include <clearjoint/geometry/queries/intersect_circle_cylinder.hpp>
 
 #include <cstdio>
 #include <string>

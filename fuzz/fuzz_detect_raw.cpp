@@ -17,7 +17,7 @@
 
 #include <fuzzer/FuzzedDataProvider.h>
 
-#include "clearjoint/geometry/primitives.hpp"
+#include "clearjoint/geometry/model/primitives.hpp"
 #include "joint_properties.hpp"
 
 namespace {

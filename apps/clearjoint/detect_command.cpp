@@ -9,11 +9,11 @@
 #include <optional>
 #include <string>
 
-#include "clearjoint/geometry/certificate.hpp"
-#include "clearjoint/geometry/contact_kinematics.hpp"
-#include "clearjoint/geometry/contact_scenario.hpp"
-#include "clearjoint/geometry/detect_contacts.hpp"
-#include "clearjoint/geometry/joint_geometry.hpp"
+#include "clearjoint/geometry/model/certificate.hpp"
+#include "clearjoint/geometry/joint/contact_kinematics.hpp"
+#include "clearjoint/geometry/model/contact_scenario.hpp"
+#include "clearjoint/geometry/joint/detect_contacts.hpp"
+#include "clearjoint/geometry/model/joint_geometry.hpp"
 #include "commands.hpp"
 #include "json_lines.hpp"
 #include "result_json.hpp"

@@ -7,11 +7,11 @@
 
 #include <string>
 
-#include "clearjoint/geometry/certificate.hpp"
-#include "clearjoint/geometry/intersect_circle_cylinder.hpp"
-#include "clearjoint/geometry/intersect_circle_plane.hpp"
-#include "clearjoint/geometry/primitives.hpp"
-#include "clearjoint/geometry/rim_arc.hpp"
+#include "clearjoint/geometry/model/certificate.hpp"
+#include "clearjoint/geometry/queries/intersect_circle_cylinder.hpp"
+#include "clearjoint/geometry/queries/intersect_circle_plane.hpp"
+#include "clearjoint/geometry/model/primitives.hpp"
+#include "clearjoint/geometry/model/rim_arc.hpp"
 #include "commands.hpp"
 #include "json_lines.hpp"
 #include "result_json.hpp"

@@ -16,9 +16,9 @@
 #include <optional>
 #include <string_view>
 
-#include "clearjoint/geometry/primitives.hpp"
-#include "json/json_reader.hpp"
-#include "json/read_detection_options.hpp"
+#include "clearjoint/geometry/model/primitives.hpp"
+#include "clearjoint/json_input/json_reader.hpp"
+#include "clearjoint/json_input/read_detection_options.hpp"
 #include "result_json.hpp"
 
 namespace clearjoint::app {

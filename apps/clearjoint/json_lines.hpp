@@ -13,16 +13,16 @@
 
 #include <nlohmann/json.hpp>
 
-#include "clearjoint/geometry/certificate.hpp"
-#include "clearjoint/geometry/detection_options.hpp"
-#include "clearjoint/geometry/vector3.hpp"
+#include "clearjoint/geometry/model/certificate.hpp"
+#include "clearjoint/geometry/model/detection_options.hpp"
+#include "clearjoint/geometry/arithmetic/vector3.hpp"
 #include "clearjoint/validation_error.hpp"
 #include "commands.hpp"
 
 namespace clearjoint::app {
 
 // ordered_json keeps the keys in the order they are written, so answers read like the docs; the
-// readers below are the shared JSON reader's (support/json/json_reader.hpp), with its messages.
+// readers below are the shared JSON reader's (clearjoint/json_input/json_reader.hpp), with its messages.
 // Its dump() writes every double in the shortest form that reads back to the same double, and
 // writes non-finite values as null (JSON has neither NaN nor infinity).
 using Json = nlohmann::ordered_json;
@@ -44,7 +44,7 @@ class LineError : public ValidationError {
 
 /// Longest query line read (bytes, without its newline). A longer line gets an error line and the
 /// lines after it are still answered. Real queries are a few hundred bytes; the limit keeps one
-/// hostile line from taking the memory. Nesting and number limits: support/json/bounded_json.hpp.
+/// hostile line from taking the memory. Nesting and number limits: clearjoint/json_input/bounded_json.hpp.
 inline constexpr std::size_t kMaxLineBytes = std::size_t{1} << 20;
 
 /// `value` as JSON text for an error message, shortened when long.

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The library's results as the JSON Lines answers write them, through their field lists
-// (clearjoint/geometry/result_fields.hpp): a field added to a result reaches both commands' output
+// (clearjoint/geometry/joint/result_fields.hpp): a field added to a result reaches both commands' output
 // with its key; a field of a type written nowhere here does not compile. The formats themselves
 // (docs/command-line.md, docs/schema/) are as before:
 //  - enum values are their keys (enum_table.hpp), a certificate reason its sentence;
@@ -17,7 +17,7 @@
 #include <string>
 #include <string_view>
 
-#include "clearjoint/geometry/result_fields.hpp"
+#include "clearjoint/geometry/joint/result_fields.hpp"
 #include "json_lines.hpp"
 
 namespace clearjoint::app {

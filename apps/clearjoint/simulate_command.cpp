@@ -17,7 +17,7 @@
 #include "clearjoint/dynamics/model_file.hpp"
 #include "clearjoint/dynamics/model_overrides.hpp"
 #include "clearjoint/dynamics/simulation.hpp"
-#include "json/bounded_json.hpp"
+#include "clearjoint/json_input/bounded_json.hpp"
 #include "run_folder.hpp"
 #include "simulate_engine.hpp"
 #include "commands.hpp"

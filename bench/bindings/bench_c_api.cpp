@@ -20,7 +20,7 @@
 #include <vector>
 
 #include "clearjoint/clearjoint.h"
-#include "clearjoint/geometry/detect_contacts.hpp"
+#include "clearjoint/geometry/joint/detect_contacts.hpp"
 #include "detection_poses.hpp"
 
 namespace {

@@ -23,8 +23,8 @@
 #include <string>
 #include <vector>
 
-#include "clearjoint/geometry/certificate.hpp"
-#include "clearjoint/geometry/detect_contacts.hpp"
+#include "clearjoint/geometry/model/certificate.hpp"
+#include "clearjoint/geometry/joint/detect_contacts.hpp"
 #include "joint_reference.hpp"
 
 namespace clearjoint::bench {

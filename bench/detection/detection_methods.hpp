@@ -6,7 +6,7 @@
 #include <array>
 #include <string_view>
 
-#include "clearjoint/geometry/detect_contacts.hpp"
+#include "clearjoint/geometry/joint/detect_contacts.hpp"
 #include "input_families.hpp"
 
 namespace clearjoint::bench {

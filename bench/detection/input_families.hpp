@@ -27,7 +27,7 @@
 #include <string>
 #include <vector>
 
-#include "clearjoint/geometry/joint_geometry.hpp"
+#include "clearjoint/geometry/model/joint_geometry.hpp"
 
 namespace clearjoint::bench {
 

@@ -46,10 +46,10 @@
 
 #include <boost/multiprecision/mpfr.hpp>
 
-#include "clearjoint/geometry/contact_scenario.hpp"
-#include "clearjoint/geometry/detect_contacts.hpp"
-#include "clearjoint/geometry/joint_geometry.hpp"
-#include "clearjoint/geometry/vector3.hpp"
+#include "clearjoint/geometry/model/contact_scenario.hpp"
+#include "clearjoint/geometry/joint/detect_contacts.hpp"
+#include "clearjoint/geometry/model/joint_geometry.hpp"
+#include "clearjoint/geometry/arithmetic/vector3.hpp"
 
 namespace clearjoint::bench {
 

@@ -9,7 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "clearjoint/geometry/contact_scenario.hpp"
+#include "clearjoint/geometry/model/contact_scenario.hpp"
 #include "input_families.hpp"
 #include "joint_reference.hpp"
 

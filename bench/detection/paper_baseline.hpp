@@ -23,7 +23,7 @@
 ///
 /// Every answer is `uncertain` (nothing is proved). No heap allocation.
 
-#include "clearjoint/geometry/detect_contacts.hpp"
+#include "clearjoint/geometry/joint/detect_contacts.hpp"
 
 namespace clearjoint::bench {
 

@@ -10,9 +10,9 @@
 #include <Eigen/Geometry>
 
 #include "answer_text.hpp"
-#include "clearjoint/geometry/detect_contacts.hpp"
-#include "clearjoint/geometry/intersect_circle_cylinder.hpp"
-#include "clearjoint/geometry/intersect_circle_plane.hpp"
+#include "clearjoint/geometry/joint/detect_contacts.hpp"
+#include "clearjoint/geometry/queries/intersect_circle_cylinder.hpp"
+#include "clearjoint/geometry/queries/intersect_circle_plane.hpp"
 #include "uniform_source.hpp"
 
 namespace clearjoint::bench {

@@ -23,7 +23,7 @@
 #include <string_view>
 #include <variant>
 
-#include "clearjoint/geometry/joint_geometry.hpp"
+#include "clearjoint/geometry/model/joint_geometry.hpp"
 
 namespace clearjoint::bench {
 

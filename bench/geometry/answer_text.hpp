@@ -33,9 +33,9 @@
 #include <exception>
 #include <string>
 
-#include "clearjoint/geometry/detect_contacts.hpp"
-#include "clearjoint/geometry/intersect_circle_cylinder.hpp"
-#include "clearjoint/geometry/intersect_circle_plane.hpp"
+#include "clearjoint/geometry/joint/detect_contacts.hpp"
+#include "clearjoint/geometry/queries/intersect_circle_cylinder.hpp"
+#include "clearjoint/geometry/queries/intersect_circle_plane.hpp"
 
 namespace clearjoint::bench {
 

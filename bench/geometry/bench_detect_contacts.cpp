@@ -26,7 +26,7 @@
 #include <utility>
 #include <vector>
 
-#include "clearjoint/geometry/detect_contacts.hpp"
+#include "clearjoint/geometry/joint/detect_contacts.hpp"
 
 namespace {
 

@@ -18,9 +18,9 @@
 #include <string>
 #include <vector>
 
-#include "clearjoint/geometry/detect_contacts.hpp"
-#include "clearjoint/geometry/intersect_circle_cylinder.hpp"
-#include "clearjoint/geometry/intersect_circle_plane.hpp"
+#include "clearjoint/geometry/joint/detect_contacts.hpp"
+#include "clearjoint/geometry/queries/intersect_circle_cylinder.hpp"
+#include "clearjoint/geometry/queries/intersect_circle_plane.hpp"
 #include "detection_poses.hpp"
 #include "filters/certified_rim_roots.hpp"
 #include "predicates/rim_distance_polynomial.hpp"

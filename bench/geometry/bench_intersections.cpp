@@ -29,11 +29,11 @@
 #include <utility>
 #include <vector>
 
-#include "clearjoint/geometry/certificate.hpp"
-#include "clearjoint/geometry/intersect_circle_cylinder.hpp"
-#include "clearjoint/geometry/intersect_circle_plane.hpp"
-#include "clearjoint/geometry/intersection_options.hpp"
-#include "clearjoint/geometry/primitives.hpp"
+#include "clearjoint/geometry/model/certificate.hpp"
+#include "clearjoint/geometry/queries/intersect_circle_cylinder.hpp"
+#include "clearjoint/geometry/queries/intersect_circle_plane.hpp"
+#include "clearjoint/geometry/model/intersection_options.hpp"
+#include "clearjoint/geometry/model/primitives.hpp"
 
 namespace {
 

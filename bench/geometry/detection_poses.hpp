@@ -9,7 +9,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "clearjoint/geometry/detect_contacts.hpp"
+#include "clearjoint/geometry/joint/detect_contacts.hpp"
 
 namespace clearjoint::bench {
 

@@ -13,8 +13,8 @@
 #include <cmath>
 #include <numbers>
 
-#include "clearjoint/geometry/intersect_circle_plane.hpp"
-#include "clearjoint/geometry/primitives.hpp"
+#include "clearjoint/geometry/queries/intersect_circle_plane.hpp"
+#include "clearjoint/geometry/model/primitives.hpp"
 
 namespace clearjoint::bench {
 

@@ -8,7 +8,7 @@
 #include <optional>
 
 #include "clearjoint/dynamics/joint_lubrication.hpp"
-#include "clearjoint/geometry/joint_geometry.hpp"
+#include "clearjoint/geometry/model/joint_geometry.hpp"
 #include "clearjoint/lubrication/relative_motion.hpp"
 #include "clearjoint/lubrication/reynolds_grid.hpp"
 

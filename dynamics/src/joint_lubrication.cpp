@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "clearjoint/dynamics/errors.hpp"
-#include "clearjoint/geometry/primitives.hpp"
+#include "clearjoint/geometry/model/primitives.hpp"
 #include "clearjoint/lubrication/names.hpp"
 
 namespace clearjoint::dynamics {

@@ -9,8 +9,8 @@
 
 #include "clearjoint/dynamics/clearance_revolute_joint.hpp"
 #include "clearjoint/dynamics/errors.hpp"
-#include "json/json_reader.hpp"
-#include "json/read_detection_options.hpp"
+#include "clearjoint/json_input/json_reader.hpp"
+#include "clearjoint/json_input/read_detection_options.hpp"
 
 namespace clearjoint::dynamics {
 
@@ -39,7 +39,7 @@ std::string shortest(const Vector3& v) {
 }
 
 /// A value of the model file with its path ("bodies[1].mass"), read with the shared JSON reader
-/// (support/json/json_reader.hpp); what it adds is the model's: "comment" and "notes" allowed in
+/// (clearjoint/json_input/json_reader.hpp); what it adds is the model's: "comment" and "notes" allowed in
 /// every object, names, and Eigen vectors.
 class Node {
  public:

@@ -7,7 +7,7 @@
 
 #include "clearjoint/dynamics/errors.hpp"
 #include "clearjoint/dynamics/model_file.hpp"
-#include "json/json_reader.hpp"
+#include "clearjoint/json_input/json_reader.hpp"
 
 namespace clearjoint::dynamics {
 

@@ -6,7 +6,7 @@
 #include <sstream>
 #include <string>
 
-#include "clearjoint/geometry/primitives.hpp"
+#include "clearjoint/geometry/model/primitives.hpp"
 #include "clearjoint/lubrication/long_bearing.hpp"
 #include "clearjoint/lubrication/names.hpp"
 #include "clearjoint/lubrication/short_bearing.hpp"

@@ -5,7 +5,7 @@
 #include <sstream>
 #include <string>
 
-#include "clearjoint/geometry/primitives.hpp"
+#include "clearjoint/geometry/model/primitives.hpp"
 #include "clearjoint/lubrication/names.hpp"
 
 namespace clearjoint::lubrication {

@@ -6,7 +6,7 @@
 #include <numbers>
 #include <sstream>
 
-#include "clearjoint/geometry/primitives.hpp"
+#include "clearjoint/geometry/model/primitives.hpp"
 
 namespace clearjoint::lubrication {
 

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "clearjoint/geometry/primitives.hpp"
+#include "clearjoint/geometry/model/primitives.hpp"
 #include "clearjoint/lubrication/film_conditions.hpp"
 
 namespace clearjoint::lubrication {

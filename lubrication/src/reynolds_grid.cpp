@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "band_lu.hpp"
-#include "clearjoint/geometry/primitives.hpp"
+#include "clearjoint/geometry/model/primitives.hpp"
 
 namespace clearjoint::lubrication {
 

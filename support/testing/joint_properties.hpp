@@ -26,9 +26,9 @@
 
 #include <Eigen/Geometry>
 
-#include "clearjoint/geometry/certificate.hpp"
-#include "clearjoint/geometry/detect_contacts.hpp"
-#include "clearjoint/geometry/joint_geometry.hpp"
+#include "clearjoint/geometry/model/certificate.hpp"
+#include "clearjoint/geometry/joint/detect_contacts.hpp"
+#include "clearjoint/geometry/model/joint_geometry.hpp"
 
 namespace clearjoint::geometry::properties {
 

@@ -33,9 +33,9 @@
 
 #include <boost/multiprecision/mpfr.hpp>
 
-#include "clearjoint/geometry/intersect_circle_cylinder.hpp"
-#include "clearjoint/geometry/intersect_circle_plane.hpp"
-#include "clearjoint/geometry/primitives.hpp"
+#include "clearjoint/geometry/queries/intersect_circle_cylinder.hpp"
+#include "clearjoint/geometry/queries/intersect_circle_plane.hpp"
+#include "clearjoint/geometry/model/primitives.hpp"
 
 namespace clearjoint::test::reference {
 

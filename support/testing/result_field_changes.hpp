@@ -12,7 +12,7 @@
 #include <string>
 #include <string_view>
 
-#include "clearjoint/geometry/result_fields.hpp"
+#include "clearjoint/geometry/joint/result_fields.hpp"
 
 namespace clearjoint::geometry {
 

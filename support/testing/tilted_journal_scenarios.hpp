@@ -10,8 +10,8 @@
 #include <cmath>
 #include <string_view>
 
-#include "clearjoint/geometry/contact_scenario.hpp"
-#include "clearjoint/geometry/joint_geometry.hpp"
+#include "clearjoint/geometry/model/contact_scenario.hpp"
+#include "clearjoint/geometry/model/joint_geometry.hpp"
 
 namespace clearjoint::geometry::testing {
 

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The command line's detection options against the library's option list
-// (geometry/option_fields.hpp): `detect` reads every option by its key, and the query schema and
+// (geometry/model/option_fields.hpp): `detect` reads every option by its key, and the query schema and
 // the model schema name each one. A member added to DetectionOptions (and so to its list, which
 // the compiler requires) that the command line or a schema lacks fails here, naming the key.
 
@@ -11,8 +11,9 @@
 #include <string>
 #include <type_traits>
 
-#include "clearjoint/geometry/option_fields.hpp"
+#include "clearjoint/geometry/model/option_fields.hpp"
 #include "json_lines.hpp"
+#include "option_changes.hpp"
 
 namespace clearjoint::app {
 namespace {

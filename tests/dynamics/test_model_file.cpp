@@ -4,7 +4,8 @@
 #include <gtest/gtest.h>
 
 #include "clearjoint/dynamics/errors.hpp"
-#include "clearjoint/geometry/option_fields.hpp"
+#include "clearjoint/geometry/model/option_fields.hpp"
+#include "option_changes.hpp"
 
 namespace clearjoint::dynamics {
 namespace {

@@ -11,7 +11,7 @@
 
 #include <Eigen/Geometry>
 
-#include "clearjoint/geometry/primitives.hpp"
+#include "clearjoint/geometry/model/primitives.hpp"
 
 namespace clearjoint::geometry::testing {
 

@@ -10,7 +10,7 @@
 #include <array>
 #include <cmath>
 
-#include "clearjoint/geometry/primitives.hpp"
+#include "clearjoint/geometry/model/primitives.hpp"
 
 namespace clearjoint::geometry::internal_testing {
 

@@ -19,7 +19,7 @@
 #include <string>
 #include <utility>
 
-#include "clearjoint/geometry/primitives.hpp"
+#include "clearjoint/geometry/model/primitives.hpp"
 
 namespace clearjoint::lubrication {
 namespace {

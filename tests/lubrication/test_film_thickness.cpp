@@ -8,7 +8,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "clearjoint/geometry/primitives.hpp"
+#include "clearjoint/geometry/model/primitives.hpp"
 
 namespace clearjoint::lubrication {
 namespace {

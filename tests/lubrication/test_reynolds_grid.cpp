@@ -10,7 +10,7 @@
 #include <numbers>
 #include <string>
 
-#include "clearjoint/geometry/primitives.hpp"
+#include "clearjoint/geometry/model/primitives.hpp"
 #include "clearjoint/lubrication/long_bearing.hpp"
 #include "clearjoint/lubrication/short_bearing.hpp"
 

@@ -16,7 +16,7 @@
 #include <optional>
 #include <vector>
 
-#include "clearjoint/geometry/detect_contacts.hpp"
+#include "clearjoint/geometry/joint/detect_contacts.hpp"
 #include "input_families.hpp"
 
 namespace py = pybind11;

@@ -10,7 +10,7 @@
 
 #include <gtest/gtest.h>
 
-#include "clearjoint/geometry/detect_contacts.hpp"
+#include "clearjoint/geometry/joint/detect_contacts.hpp"
 #include "joint_reference.hpp"
 
 namespace clearjoint::bench {

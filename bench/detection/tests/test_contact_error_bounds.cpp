@@ -9,7 +9,7 @@
 
 #include <gtest/gtest.h>
 
-#include "clearjoint/geometry/detect_contacts.hpp"
+#include "clearjoint/geometry/joint/detect_contacts.hpp"
 #include "input_families.hpp"
 #include "joint_reference.hpp"
 

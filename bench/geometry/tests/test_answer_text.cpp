@@ -5,7 +5,7 @@
 
 #include "answer_text.hpp"
 
-#include "clearjoint/geometry/result_field_changes.hpp"
+#include "result_field_changes.hpp"
 
 #include <gtest/gtest.h>
 

@@ -11,7 +11,7 @@
 #include <numbers>
 #include <random>
 
-#include "clearjoint/geometry/intersect_circle_plane.hpp"
+#include "clearjoint/geometry/queries/intersect_circle_plane.hpp"
 
 namespace clearjoint::bench {
 namespace {

@@ -11,11 +11,11 @@
 #include <string>
 
 #include "clearjoint/clearjoint.h"
-#include "clearjoint/geometry/certificate.hpp"
-#include "clearjoint/geometry/contact_scenario.hpp"
-#include "clearjoint/geometry/detect_contacts.hpp"
-#include "clearjoint/geometry/intersect_circle_cylinder.hpp"
-#include "clearjoint/geometry/intersect_circle_plane.hpp"
+#include "clearjoint/geometry/model/certificate.hpp"
+#include "clearjoint/geometry/model/contact_scenario.hpp"
+#include "clearjoint/geometry/joint/detect_contacts.hpp"
+#include "clearjoint/geometry/queries/intersect_circle_cylinder.hpp"
+#include "clearjoint/geometry/queries/intersect_circle_plane.hpp"
 #include "clearjoint/validation_error.hpp"
 #include "status_reporting.hpp"
 

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The C API's static strings: versions, status and enum names. The enum names are the keys of
-// the library's tables (clearjoint/geometry/enum_table.hpp), a reason's text its sentence.
+// the library's tables (clearjoint/geometry/model/enum_table.hpp), a reason's text its sentence.
 
 #include "clearjoint/version.hpp"
 #include "conversions.hpp"

@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """The library's enums as :class:`enum.IntEnum` classes, built from the compiled module's rows of
 member names, codes and labels, which are the C++ library's enum tables
-(clearjoint/geometry/enum_table.hpp): each value is written down once, for every front-end.
+(clearjoint/geometry/model/enum_table.hpp): each value is written down once, for every front-end.
 
 Being IntEnums, members compare equal to their codes: ``batch.scenario ==
 ContactScenario.beyond_model`` compares element by element, ``np.isin`` works, and

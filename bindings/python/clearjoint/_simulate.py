@@ -119,7 +119,7 @@ def _json_value(value: Any) -> Any:
     raise TypeError(f"model: a value of type {type(value).__name__} is not a JSON value")
 
 
-#: Deepest nesting of a model dict, as for model files (support/json/bounded_json.hpp).
+#: Deepest nesting of a model dict, as for model files (clearjoint/json_input/bounded_json.hpp).
 _MAX_NESTING_DEPTH = 64
 
 

@@ -12,11 +12,11 @@
 #include <vector>
 
 #include "bindings.hpp"
-#include "clearjoint/geometry/certificate.hpp"
-#include "clearjoint/geometry/contact_scenario.hpp"
-#include "clearjoint/geometry/detect_contacts.hpp"
-#include "clearjoint/geometry/joint_geometry.hpp"
-#include "clearjoint/geometry/rim_arc.hpp"
+#include "clearjoint/geometry/model/certificate.hpp"
+#include "clearjoint/geometry/model/contact_scenario.hpp"
+#include "clearjoint/geometry/joint/detect_contacts.hpp"
+#include "clearjoint/geometry/model/joint_geometry.hpp"
+#include "clearjoint/geometry/model/rim_arc.hpp"
 #include "numpy_views.hpp"
 #include "result_dicts.hpp"
 #include "result_types.hpp"

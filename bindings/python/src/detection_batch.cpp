@@ -26,8 +26,8 @@
 #include <vector>
 
 #include "bindings.hpp"
-#include "clearjoint/geometry/detect_contacts.hpp"
-#include "clearjoint/geometry/option_fields.hpp"
+#include "clearjoint/geometry/joint/detect_contacts.hpp"
+#include "clearjoint/geometry/model/option_fields.hpp"
 #include "array_block.hpp"
 #include "numpy_views.hpp"
 #include "parallel_chunks.hpp"

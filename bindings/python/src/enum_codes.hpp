@@ -9,16 +9,16 @@
 
 #include <type_traits>
 
-#include "clearjoint/geometry/certificate.hpp"
-#include "clearjoint/geometry/contact_scenario.hpp"
-#include "clearjoint/geometry/enum_table.hpp"
-#include "clearjoint/geometry/detect_contacts.hpp"
-#include "clearjoint/geometry/intersect_circle_cylinder.hpp"
-#include "clearjoint/geometry/intersect_circle_plane.hpp"
+#include "clearjoint/geometry/model/certificate.hpp"
+#include "clearjoint/geometry/model/contact_scenario.hpp"
+#include "clearjoint/geometry/model/enum_table.hpp"
+#include "clearjoint/geometry/joint/detect_contacts.hpp"
+#include "clearjoint/geometry/queries/intersect_circle_cylinder.hpp"
+#include "clearjoint/geometry/queries/intersect_circle_plane.hpp"
 
 namespace clearjoint::python {
 
-/// Every enum with a table in the library (clearjoint/geometry/enum_table.hpp) is an IntEnum
+/// Every enum with a table in the library (clearjoint/geometry/model/enum_table.hpp) is an IntEnum
 /// class of the table's type name, with the table's names as members and its codes as values.
 template <typename E>
 struct PythonEnum : std::false_type {};

@@ -19,8 +19,8 @@
 #include <vector>
 
 #include "bindings.hpp"
-#include "clearjoint/geometry/intersect_circle_cylinder.hpp"
-#include "clearjoint/geometry/intersect_circle_plane.hpp"
+#include "clearjoint/geometry/queries/intersect_circle_cylinder.hpp"
+#include "clearjoint/geometry/queries/intersect_circle_plane.hpp"
 #include "numpy_views.hpp"
 #include "parallel_chunks.hpp"
 #include "signal_check.hpp"

@@ -12,7 +12,7 @@
 #include <new>
 #include <string>
 
-#include "clearjoint/geometry/vector3.hpp"
+#include "clearjoint/geometry/arithmetic/vector3.hpp"
 #include "clearjoint/validation_error.hpp"
 
 namespace clearjoint::python {

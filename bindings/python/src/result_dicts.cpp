@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "result_dicts.hpp"
 
-#include "clearjoint/geometry/result_fields.hpp"
+#include "clearjoint/geometry/joint/result_fields.hpp"
 #include "clearjoint/lubrication/result_fields.hpp"
 
 #include <pybind11/stl.h>

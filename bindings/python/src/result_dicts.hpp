@@ -6,11 +6,11 @@
 
 #include <pybind11/pybind11.h>
 
-#include "clearjoint/geometry/certificate.hpp"
-#include "clearjoint/geometry/detect_contacts.hpp"
-#include "clearjoint/geometry/intersect_circle_cylinder.hpp"
-#include "clearjoint/geometry/intersect_circle_plane.hpp"
-#include "clearjoint/geometry/rim_arc.hpp"
+#include "clearjoint/geometry/model/certificate.hpp"
+#include "clearjoint/geometry/joint/detect_contacts.hpp"
+#include "clearjoint/geometry/queries/intersect_circle_cylinder.hpp"
+#include "clearjoint/geometry/queries/intersect_circle_plane.hpp"
+#include "clearjoint/geometry/model/rim_arc.hpp"
 #include "clearjoint/lubrication/bearing_characteristics.hpp"
 #include "enum_codes.hpp"
 

@@ -5,9 +5,9 @@
 #include <string>
 #include <vector>
 
-#include "clearjoint/geometry/certificate.hpp"
-#include "clearjoint/geometry/rim_arc.hpp"
-#include "clearjoint/geometry/vector3.hpp"
+#include "clearjoint/geometry/model/certificate.hpp"
+#include "clearjoint/geometry/model/rim_arc.hpp"
+#include "clearjoint/geometry/arithmetic/vector3.hpp"
 #include "enum_codes.hpp"  // every file that binds results converts their enums the same way
 
 namespace clearjoint::python {

@@ -44,7 +44,7 @@ constexpr const char* kUsage =
 /// times (dynamics/src/integrator.cpp, kMaxReportCount), which --allow-large does not lift.
 constexpr double kMaxStepCount = 1e15;
 /// Most characters of an argument quoted in a message: the JSON readers' limit
-/// (support/json/bounded_json.hpp, kMaxQuotedValue).
+/// (clearjoint/json_input/bounded_json.hpp, kMaxQuotedValue).
 constexpr size_t kQuotedCharacters = 60;
 
 /// The shortest text that reads back as `value` ("5e-07"), for the numbers quoted in messages.

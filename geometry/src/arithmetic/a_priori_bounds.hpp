@@ -12,7 +12,7 @@
 
 #include "arithmetic/error_bounded.hpp"
 #include "arithmetic/twinned.hpp"
-#include "clearjoint/geometry/vector3.hpp"
+#include "clearjoint/geometry/arithmetic/vector3.hpp"
 
 namespace clearjoint::geometry::detail {
 

@@ -7,7 +7,7 @@
 #include <array>
 
 #include "arithmetic/pair_lanes.hpp"
-#include "clearjoint/geometry/vector3.hpp"
+#include "clearjoint/geometry/arithmetic/vector3.hpp"
 
 namespace clearjoint::geometry::detail {
 

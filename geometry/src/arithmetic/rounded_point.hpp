@@ -11,7 +11,7 @@
 #include <cmath>
 
 #include "arithmetic/error_bounded.hpp"
-#include "clearjoint/geometry/vector3.hpp"
+#include "clearjoint/geometry/arithmetic/vector3.hpp"
 
 namespace clearjoint::geometry::detail {
 

@@ -10,7 +10,7 @@
 #include <cmath>
 #include <cstdint>
 
-#include "clearjoint/geometry/vector3.hpp"
+#include "clearjoint/geometry/arithmetic/vector3.hpp"
 
 namespace clearjoint::geometry::detail {
 

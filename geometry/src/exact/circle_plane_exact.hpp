@@ -3,8 +3,8 @@
 // Exact fallback of the circle-plane topology predicate (CGAL rationals).
 
 #include "arithmetic/rounded_point.hpp"
-#include "clearjoint/geometry/circle_plane_topology.hpp"
-#include "clearjoint/geometry/primitives.hpp"
+#include "clearjoint/geometry/model/circle_plane_topology.hpp"
+#include "clearjoint/geometry/model/primitives.hpp"
 
 namespace clearjoint::geometry::detail {
 

@@ -23,7 +23,7 @@
 
 #include <gmpxx.h>
 
-#include "clearjoint/geometry/certificate.hpp"
+#include "clearjoint/geometry/model/certificate.hpp"
 #include "exact/exact_numbers.hpp"
 
 namespace clearjoint::geometry::detail {

@@ -12,7 +12,7 @@
 #include <limits>
 #include <utility>
 
-#include "clearjoint/geometry/certificate.hpp"
+#include "clearjoint/geometry/model/certificate.hpp"
 #include "predicates/rim_distance_polynomial.hpp"
 
 namespace clearjoint::geometry::detail {

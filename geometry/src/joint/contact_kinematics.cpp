@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "clearjoint/geometry/contact_kinematics.hpp"
+#include "clearjoint/geometry/joint/contact_kinematics.hpp"
 
 namespace clearjoint::geometry {
 namespace {

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "clearjoint/geometry/certificate.hpp"
+#include "clearjoint/geometry/model/certificate.hpp"
 
 namespace clearjoint::geometry {
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "clearjoint/geometry/contact_scenario.hpp"
+#include "clearjoint/geometry/model/contact_scenario.hpp"
 
 namespace clearjoint::geometry {
 

@@ -9,8 +9,8 @@
 #include <string>
 #include <string_view>
 
-#include "clearjoint/geometry/joint_geometry.hpp"
-#include "clearjoint/geometry/primitives.hpp"
+#include "clearjoint/geometry/model/joint_geometry.hpp"
+#include "clearjoint/geometry/model/primitives.hpp"
 
 namespace clearjoint::geometry::detail {
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "clearjoint/geometry/joint_geometry.hpp"
+#include "clearjoint/geometry/model/joint_geometry.hpp"
 
 #include <cmath>
 #include <string>

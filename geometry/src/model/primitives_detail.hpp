@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 #include <cmath>
-#include "clearjoint/geometry/joint_geometry.hpp"
-#include "clearjoint/geometry/primitives.hpp"
+#include "clearjoint/geometry/model/joint_geometry.hpp"
+#include "clearjoint/geometry/model/primitives.hpp"
 #include "model/input_checks.hpp"
 
 namespace clearjoint::geometry {

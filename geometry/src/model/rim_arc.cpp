@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "clearjoint/geometry/rim_arc.hpp"
+#include "clearjoint/geometry/model/rim_arc.hpp"
 
 #include <numbers>
 

@@ -16,8 +16,8 @@
 #include <cmath>
 
 #include "arithmetic/error_bounded.hpp"
-#include "clearjoint/geometry/rim_arc.hpp"
-#include "clearjoint/geometry/vector3.hpp"
+#include "clearjoint/geometry/model/rim_arc.hpp"
+#include "clearjoint/geometry/arithmetic/vector3.hpp"
 
 namespace clearjoint::geometry::detail {
 

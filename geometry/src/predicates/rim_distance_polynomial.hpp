@@ -11,7 +11,7 @@
 #include "arithmetic/angle_grid.hpp"
 #include "arithmetic/error_bounded.hpp"
 #include "arithmetic/pair_lanes.hpp"
-#include "clearjoint/geometry/primitives.hpp"
+#include "clearjoint/geometry/model/primitives.hpp"
 #include "predicates/rim_reach_terms.hpp"
 
 namespace clearjoint::geometry::detail {

@@ -9,7 +9,7 @@
 #include <cmath>
 
 #include "arithmetic/error_bounded.hpp"
-#include "clearjoint/geometry/primitives.hpp"
+#include "clearjoint/geometry/model/primitives.hpp"
 #include "predicates/plane_terms.hpp"
 
 namespace clearjoint::geometry::detail {

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "clearjoint/geometry/intersect_circle_cylinder.hpp"
+#include "clearjoint/geometry/queries/intersect_circle_cylinder.hpp"
 
 #include <algorithm>
 #include <cmath>

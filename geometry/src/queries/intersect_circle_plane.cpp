@@ -8,7 +8,7 @@
 // s^2 |n_c|^2 - r^2 |n_p x n_c|^2 (plane_terms.hpp), decided by a filter then exactly
 // (filtered_predicate.hpp).
 
-#include "clearjoint/geometry/intersect_circle_plane.hpp"
+#include "clearjoint/geometry/queries/intersect_circle_plane.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -5,8 +5,8 @@
 // only for the rounded ones. The public queries are these with exact points (nullptr).
 
 #include "arithmetic/rounded_point.hpp"
-#include "clearjoint/geometry/intersect_circle_cylinder.hpp"
-#include "clearjoint/geometry/intersect_circle_plane.hpp"
+#include "clearjoint/geometry/queries/intersect_circle_cylinder.hpp"
+#include "clearjoint/geometry/queries/intersect_circle_plane.hpp"
 
 namespace clearjoint::geometry::detail {
 

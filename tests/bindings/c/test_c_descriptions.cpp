@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The C API and the Fortran module against the library's descriptions of its enums and results
-// (clearjoint/geometry/enum_table.hpp, result_fields.hpp). Both list codes and copy fields by
+// (clearjoint/geometry/model/enum_table.hpp, result_fields.hpp). Both list codes and copy fields by
 // hand, as C and Fortran must; these tests fail when a value or a field the library has is
 // missing from them:
 //  - every enum value has its constant, CJ_<ENUM>_<NAME> = code, in clearjoint.h (and in the
@@ -17,9 +17,10 @@
 
 #include <gtest/gtest.h>
 
-#include "clearjoint/geometry/option_fields.hpp"
-#include "clearjoint/geometry/result_field_changes.hpp"
+#include "clearjoint/geometry/model/option_fields.hpp"
 #include "conversions.hpp"
+#include "option_changes.hpp"
+#include "result_field_changes.hpp"
 
 namespace {
 

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "clearjoint/clearjoint.h"  // CJ_INVALID_INPUT
-#include "clearjoint/geometry/detect_contacts.hpp"
+#include "clearjoint/geometry/joint/detect_contacts.hpp"
 #include "equivalence_line.hpp"
 
 namespace {

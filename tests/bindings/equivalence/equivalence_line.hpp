@@ -10,7 +10,7 @@
 #include <cstring>
 #include <string>
 
-#include "clearjoint/geometry/detect_contacts.hpp"
+#include "clearjoint/geometry/joint/detect_contacts.hpp"
 
 namespace clearjoint::equivalence {
 

@@ -7,8 +7,8 @@
 
 #include <gtest/gtest.h>
 
-#include "clearjoint/geometry/result_field_changes.hpp"
 #include "equivalence_line.hpp"
+#include "result_field_changes.hpp"
 
 namespace {
 

@@ -13,7 +13,7 @@
 #include <random>
 #include <vector>
 
-#include "clearjoint/geometry/detect_contacts.hpp"
+#include "clearjoint/geometry/joint/detect_contacts.hpp"
 #include "tilted_journal_scenarios.hpp"
 
 namespace {

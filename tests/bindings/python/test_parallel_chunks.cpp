@@ -16,7 +16,7 @@
 #include <thread>
 #include <vector>
 
-#include "clearjoint/geometry/detect_contacts.hpp"
+#include "clearjoint/geometry/joint/detect_contacts.hpp"
 #include "parallel_chunks.hpp"
 #include "tilted_journal_scenarios.hpp"
 

@@ -3,7 +3,7 @@
 // of rigidly moved points, the approach speed against finite differences of the detected depth,
 // and the face contact point (a material point of the journal) against its own finite difference.
 
-#include "clearjoint/geometry/contact_kinematics.hpp"
+#include "clearjoint/geometry/joint/contact_kinematics.hpp"
 
 #include <cmath>
 

@@ -4,7 +4,7 @@
 // point has a closed form (derived below); invariance under rigid motions, flipping the journal
 // axis and changes of units; the parallel-axes decision and its tolerance option.
 
-#include "clearjoint/geometry/detect_contacts.hpp"
+#include "clearjoint/geometry/joint/detect_contacts.hpp"
 
 #include <algorithm>
 #include <array>

@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "clearjoint/geometry/detect_contacts.hpp"
+#include "clearjoint/geometry/joint/detect_contacts.hpp"
 #include "tilted_journal_scenarios.hpp"
 
 namespace clearjoint::geometry {

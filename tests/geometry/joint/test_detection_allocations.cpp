@@ -10,8 +10,8 @@
 #include <cstddef>
 #include <vector>
 
-#include "clearjoint/geometry/detect_contacts.hpp"
-#include "clearjoint/geometry/intersect_circle_plane.hpp"
+#include "clearjoint/geometry/joint/detect_contacts.hpp"
+#include "clearjoint/geometry/queries/intersect_circle_plane.hpp"
 #include "heap_allocation_counter.hpp"
 #include "tilted_journal_scenarios.hpp"
 

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Certificate: trust levels, their names, and how the parts of one answer combine.
 
-#include "clearjoint/geometry/certificate.hpp"
+#include "clearjoint/geometry/model/certificate.hpp"
 
 #include <array>
 #include <set>

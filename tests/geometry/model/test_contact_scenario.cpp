@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Tests of contact_scenario: Fig. 2's names and the rule that picks one from the contacts.
 
-#include "clearjoint/geometry/contact_scenario.hpp"
+#include "clearjoint/geometry/model/contact_scenario.hpp"
 
 #include <set>
 #include <string>

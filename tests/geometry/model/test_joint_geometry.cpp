@@ -2,7 +2,7 @@
 // Tests of joint_geometry: dimensions and clearances (eqs. 1-2), validation, base centres
 // (eqs. 3-4).
 
-#include "clearjoint/geometry/joint_geometry.hpp"
+#include "clearjoint/geometry/model/joint_geometry.hpp"
 
 #include <cmath>
 #include <limits>

@@ -2,7 +2,7 @@
 // Primitives: validation of every field, and the documented rim parametrisation (frame_of,
 // point_at).
 
-#include "clearjoint/geometry/primitives.hpp"
+#include "clearjoint/geometry/model/primitives.hpp"
 
 #include <algorithm>
 #include <cctype>

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // RimArc: middle and sweep of counter-clockwise arcs on a rim, including arcs through angle 0.
 
-#include "clearjoint/geometry/rim_arc.hpp"
+#include "clearjoint/geometry/model/rim_arc.hpp"
 
 #include <cmath>
 #include <limits>

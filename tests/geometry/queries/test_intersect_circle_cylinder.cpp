@@ -9,7 +9,7 @@
 // x(theta) = (-5 sin, 4 cos, -3 cos), whose distance to the z axis is sqrt(16 + 9 sin^2): an ellipse
 // with semi-axes 5 and 4 seen along the axis.
 
-#include "clearjoint/geometry/intersect_circle_cylinder.hpp"
+#include "clearjoint/geometry/queries/intersect_circle_cylinder.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -6,7 +6,7 @@
 // known answer. The parametrisation of the rim is the documented one (frame_of), recomputed
 // independently in long double by geometry_test_support.hpp.
 
-#include "clearjoint/geometry/intersect_circle_plane.hpp"
+#include "clearjoint/geometry/queries/intersect_circle_plane.hpp"
 
 #include <bit>
 #include <cmath>

@@ -28,8 +28,8 @@
 
 #include <gtest/gtest.h>
 
-#include "clearjoint/geometry/intersect_circle_cylinder.hpp"
-#include "clearjoint/geometry/intersect_circle_plane.hpp"
+#include "clearjoint/geometry/queries/intersect_circle_cylinder.hpp"
+#include "clearjoint/geometry/queries/intersect_circle_plane.hpp"
 #include "geometry_test_support.hpp"
 #include "multiprecision_reference.hpp"
 

@@ -3,7 +3,7 @@
 // Hertz force K delta^n of paper Sec. 4 at a known depth, and a full-joint detection through the
 // geometry library it depends on (so a missing runtime path to it fails here).
 #include <clearjoint/dynamics/normal_contact_force.hpp>
-#include <clearjoint/geometry/detect_contacts.hpp>
+#include <clearjoint/geometry/joint/detect_contacts.hpp>
 
 #include <cmath>
 #include <cstdio>

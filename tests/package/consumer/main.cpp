@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Exits 0 only if the installed library answers a known query: a rim touching the wall from
 // inside at one point (exact tangency, multiplicity 2).
-#include <clearjoint/geometry/intersect_circle_cylinder.hpp>
+#include <clearjoint/geometry/queries/intersect_circle_cylinder.hpp>
 
 #include <cstdio>
 

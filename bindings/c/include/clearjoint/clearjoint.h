@@ -8,7 +8,7 @@
  * is made of. C99, usable from C and C++, and from any language that can call C (the MATLAB/Octave
  * MEX gateway in bindings/matlab and the Fortran module in bindings/fortran are built on it).
  *
- * It wraps the C++ API (clearjoint/geometry/detect_contacts.hpp and the headers it includes,
+ * It wraps the C++ API (clearjoint/geometry/joint/detect_contacts.hpp and the headers it includes,
  * where the mathematics and the conventions are documented): the answers are the C++ answers,
  * bit for bit. No C++ type and no exception crosses it.
  *
@@ -162,7 +162,7 @@ typedef enum cj_circle_cylinder_topology {
 } cj_circle_cylinder_topology;
 
 /** Static strings; "unknown" for a value this version does not know. Each is the value's key in
- * the C++ library's enum table (clearjoint/geometry/enum_table.hpp), the one spelling that
+ * the C++ library's enum table (clearjoint/geometry/model/enum_table.hpp), the one spelling that
  * `clearjoint detect` and `clearjoint intersect` write and Python's members are named by:
  * scenarios "none", "a" ... "l" (the letters of the paper's Fig. 2), "beyond_model"; "exact",
  * "certified", "uncertain"; "radial", "axial"; bases "a", "b", "mid"; "disjoint", "tangent",

@@ -9,8 +9,8 @@
 #include "clearjoint/dynamics/joint_lubrication.hpp"
 #include "clearjoint/dynamics/normal_contact_force.hpp"
 #include "clearjoint/dynamics/regularised_friction.hpp"
-#include "clearjoint/geometry/detection_options.hpp"
-#include "clearjoint/geometry/joint_geometry.hpp"
+#include "clearjoint/geometry/model/detection_options.hpp"
+#include "clearjoint/geometry/model/joint_geometry.hpp"
 
 namespace clearjoint::dynamics {
 

@@ -61,8 +61,8 @@
 #include "clearjoint/dynamics/joint_lubrication.hpp"
 #include "clearjoint/dynamics/normal_contact_force.hpp"
 #include "clearjoint/dynamics/regularised_friction.hpp"
-#include "clearjoint/geometry/contact_kinematics.hpp"
-#include "clearjoint/geometry/detect_contacts.hpp"
+#include "clearjoint/geometry/joint/contact_kinematics.hpp"
+#include "clearjoint/geometry/joint/detect_contacts.hpp"
 
 namespace clearjoint::dynamics {
 

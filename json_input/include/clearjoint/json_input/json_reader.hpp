@@ -20,7 +20,7 @@
 #include <nlohmann/json.hpp>
 
 #include "clearjoint/validation_error.hpp"
-#include "json/bounded_json.hpp"
+#include "clearjoint/json_input/bounded_json.hpp"
 
 namespace clearjoint::json {
 

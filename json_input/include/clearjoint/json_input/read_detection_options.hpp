@@ -2,16 +2,16 @@
 #pragma once
 // The detection options as a JSON object, for every JSON input that has them (the command line's
 // "options" of `detect`, a model file's "detection" of a clearance joint): one key per entry of
-// the option list (geometry/option_fields.hpp), so that an option added to the library is read
-// by both at once.
+// the option list (clearjoint/geometry/model/option_fields.hpp), so that an option added to the
+// library is read by both at once.
 
 #include <initializer_list>
 #include <string_view>
 #include <type_traits>
 #include <vector>
 
-#include "clearjoint/geometry/option_fields.hpp"
-#include "json/json_reader.hpp"
+#include "clearjoint/geometry/model/option_fields.hpp"
+#include "clearjoint/json_input/json_reader.hpp"
 
 namespace clearjoint::json {
 

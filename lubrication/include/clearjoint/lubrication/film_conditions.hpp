@@ -8,7 +8,7 @@
 #include <optional>
 #include <string_view>
 
-#include "clearjoint/geometry/vector3.hpp"
+#include "clearjoint/geometry/arithmetic/vector3.hpp"
 
 namespace clearjoint::lubrication {
 

@@ -14,7 +14,7 @@
 /// lubricated and a dry joint agree on where the surfaces are. h < 0 where the journal's cylinder
 /// reaches through the wall.
 
-#include "clearjoint/geometry/joint_geometry.hpp"
+#include "clearjoint/geometry/model/joint_geometry.hpp"
 #include "clearjoint/lubrication/relative_motion.hpp"
 
 namespace clearjoint::lubrication {

@@ -3,7 +3,7 @@
 /// \file
 /// The journal's motion relative to its bearing: all a film needs to know about velocities.
 
-#include "clearjoint/geometry/vector3.hpp"
+#include "clearjoint/geometry/arithmetic/vector3.hpp"
 
 namespace clearjoint::lubrication {
 

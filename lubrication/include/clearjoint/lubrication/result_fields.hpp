@@ -2,14 +2,14 @@
 #pragma once
 /// \file
 /// The field list of the lubrication library's public results, in the form of
-/// clearjoint/geometry/result_fields.hpp: one list per type, with the keys every front-end spells
+/// clearjoint/geometry/joint/result_fields.hpp: one list per type, with the keys every front-end spells
 /// them by. `clearjoint bearing` and Python's `bearing_characteristics` write the result through
 /// geometry::visit_fields, and the static_assert below fails the build when a member of
 /// BearingCharacteristics has no line here.
 
 #include <tuple>
 
-#include "clearjoint/geometry/result_fields.hpp"
+#include "clearjoint/geometry/joint/result_fields.hpp"
 #include "clearjoint/lubrication/bearing_characteristics.hpp"
 
 namespace clearjoint::geometry {

@@ -30,7 +30,7 @@
 #include <memory>
 #include <string_view>
 
-#include "clearjoint/geometry/joint_geometry.hpp"
+#include "clearjoint/geometry/model/joint_geometry.hpp"
 #include "clearjoint/lubrication/film_conditions.hpp"
 #include "clearjoint/lubrication/film_load.hpp"
 #include "clearjoint/lubrication/relative_motion.hpp"

@@ -3,8 +3,8 @@
 /// \file
 /// Velocities at a contact: paper eqs. (24)-(26).
 
-#include "clearjoint/geometry/detect_contacts.hpp"
-#include "clearjoint/geometry/vector3.hpp"
+#include "clearjoint/geometry/joint/detect_contacts.hpp"
+#include "clearjoint/geometry/arithmetic/vector3.hpp"
 
 namespace clearjoint::geometry {
 

@@ -30,13 +30,13 @@
 #include <array>
 #include <string_view>
 
-#include "clearjoint/geometry/certificate.hpp"
-#include "clearjoint/geometry/contact_scenario.hpp"
-#include "clearjoint/geometry/detection_options.hpp"
-#include "clearjoint/geometry/enum_table.hpp"
-#include "clearjoint/geometry/joint_geometry.hpp"
-#include "clearjoint/geometry/rim_arc.hpp"
-#include "clearjoint/geometry/vector3.hpp"
+#include "clearjoint/geometry/model/certificate.hpp"
+#include "clearjoint/geometry/model/contact_scenario.hpp"
+#include "clearjoint/geometry/model/detection_options.hpp"
+#include "clearjoint/geometry/model/enum_table.hpp"
+#include "clearjoint/geometry/model/joint_geometry.hpp"
+#include "clearjoint/geometry/model/rim_arc.hpp"
+#include "clearjoint/geometry/arithmetic/vector3.hpp"
 
 namespace clearjoint::geometry {
 

@@ -11,116 +11,16 @@
 /// static_asserts at the end count an aggregate's members), so a field added to Contact without
 /// its line here does not build, and a front-end written through visit_fields gets it at once.
 ///
-/// A visitor is called as visitor(key, value) with, for each kind of field:
-///   plain     a reference to the member (double, int, bool, Vector3, an enum, Certificate,
-///             PlaneSide, RimArc)
-///   ErrorBound<D>       an error bound in metres or radians (kNoErrorBound when none is known)
-///   FieldList<A, C>     an array and the member counting its entries in use
-///   OptionalField<V, F> a value and the flag saying whether it is present
-/// with the constness of the result visited (const results for writers, non-const for readers).
+/// The kinds of field a visitor sees, and visit_fields itself: model/field_lists.hpp.
 
-#include <cstddef>
-#include <string_view>
-#include <tuple>
-#include <type_traits>
-
-#include "clearjoint/geometry/certificate.hpp"
-#include "clearjoint/geometry/detect_contacts.hpp"
-#include "clearjoint/geometry/intersect_circle_cylinder.hpp"
-#include "clearjoint/geometry/intersect_circle_plane.hpp"
-#include "clearjoint/geometry/rim_arc.hpp"
+#include "clearjoint/geometry/joint/detect_contacts.hpp"
+#include "clearjoint/geometry/model/certificate.hpp"
+#include "clearjoint/geometry/model/field_lists.hpp"
+#include "clearjoint/geometry/model/rim_arc.hpp"
+#include "clearjoint/geometry/queries/intersect_circle_cylinder.hpp"
+#include "clearjoint/geometry/queries/intersect_circle_plane.hpp"
 
 namespace clearjoint::geometry {
-
-/// An error bound (D is double or const double).
-template <class D>
-struct ErrorBound {
-  D& value;
-};
-
-/// items[0, count) are in use.
-template <class Array, class Count>
-struct FieldList {
-  Array& items;
-  Count& count;
-};
-
-/// `value` means something only when `present`.
-template <class Value, class Flag>
-struct OptionalField {
-  Value& value;
-  Flag& present;
-};
-
-namespace fields {
-
-// One entry of a field list: a key and the member(s) it reads. `members` is how many members of
-// the struct the entry covers.
-template <class S, class M>
-struct Plain {
-  std::string_view key;
-  M S::*member;
-  static constexpr int members = 1;
-  template <class R>
-  constexpr auto view(R& r) const -> decltype((r.*member)) { return r.*member; }
-};
-
-template <class S>
-struct Bound {
-  std::string_view key;
-  double S::*member;
-  static constexpr int members = 1;
-  template <class R>
-  constexpr auto view(R& r) const {
-    return ErrorBound<std::remove_reference_t<decltype(r.*member)>>{r.*member};
-  }
-};
-
-template <class S, class A>
-struct List {
-  std::string_view key;
-  A S::*items;
-  int S::*count;
-  static constexpr int members = 2;
-  template <class R>
-  constexpr auto view(R& r) const {
-    return FieldList<std::remove_reference_t<decltype(r.*items)>, std::remove_reference_t<decltype(r.*count)>>{
-        r.*items, r.*count};
-  }
-};
-
-template <class S, class V>
-struct Optional {
-  std::string_view key;
-  V S::*value;
-  bool S::*present;
-  static constexpr int members = 2;
-  template <class R>
-  constexpr auto view(R& r) const {
-    return OptionalField<std::remove_reference_t<decltype(r.*value)>,
-                         std::remove_reference_t<decltype(r.*present)>>{r.*value, r.*present};
-  }
-};
-
-template <class S, class M>
-constexpr Plain<S, M> plain(std::string_view key, M S::*member) { return {key, member}; }
-template <class S>
-constexpr Bound<S> bound(std::string_view key, double S::*member) { return {key, member}; }
-template <class S, class A>
-constexpr List<S, A> list(std::string_view key, A S::*items, int S::*count) { return {key, items, count}; }
-template <class S, class V>
-constexpr Optional<S, V> optional(std::string_view key, V S::*value, bool S::*present) {
-  return {key, value, present};
-}
-
-}  // namespace fields
-
-/// Specialised for each public result below: `static constexpr std::tuple fields`.
-template <class Result>
-struct ResultFields;
-
-template <class Result>
-concept DescribedResult = requires { ResultFields<std::remove_const_t<Result>>::fields; };
 
 template <>
 struct ResultFields<Certificate> {
@@ -187,44 +87,6 @@ struct ResultFields<CircleCylinderIntersection> {
                                      fields::list("penetration_arcs", &Y::penetration_arcs, &Y::arc_count),
                                      fields::plain("certificate", &Y::certificate)};
 };
-
-/// Call visitor(key, view) for each field of `result`, in the list's order.
-template <DescribedResult Result, class Visitor>
-constexpr void visit_fields(Result& result, Visitor&& visitor) {
-  std::apply([&](const auto&... field) { (visitor(field.key, field.view(result)), ...); },
-             ResultFields<std::remove_const_t<Result>>::fields);
-}
-
-namespace detail {
-
-/// Converts to anything, in unevaluated operands only: how many of these an aggregate's braces
-/// take is its member count.
-struct AnyMember {
-  template <class T>
-  operator T() const;
-};
-
-template <class T, class... Members>
-constexpr int aggregate_member_count() {
-  if constexpr (requires { T{Members{}..., AnyMember{}}; }) {
-    return aggregate_member_count<T, Members..., AnyMember>();
-  } else {
-    return static_cast<int>(sizeof...(Members));
-  }
-}
-
-template <class Result>
-constexpr int listed_member_count() {
-  return std::apply([](const auto&... field) { return (0 + ... + field.members); },
-                    ResultFields<Result>::fields);
-}
-
-template <class Result>
-constexpr bool lists_every_member() {
-  return listed_member_count<Result>() == aggregate_member_count<Result>();
-}
-
-}  // namespace detail
 
 // A member added to one of these structs needs its line in the struct's field list above.
 static_assert(detail::lists_every_member<Certificate>(), "a member of Certificate is missing from its field list");

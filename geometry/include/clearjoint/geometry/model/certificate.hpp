@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <string_view>
 
-#include "clearjoint/geometry/enum_table.hpp"
+#include "clearjoint/geometry/model/enum_table.hpp"
 
 namespace clearjoint::geometry {
 

@@ -8,7 +8,7 @@
 #include <array>
 #include <string_view>
 
-#include "clearjoint/geometry/enum_table.hpp"
+#include "clearjoint/geometry/model/enum_table.hpp"
 
 namespace clearjoint::geometry {
 

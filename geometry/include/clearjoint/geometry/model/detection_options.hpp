@@ -4,7 +4,7 @@
 /// The options of the joint's contact detection (detect_contacts.hpp), apart from the detection,
 /// so that a parameter struct can hold them without depending on the kernel's queries.
 
-#include "clearjoint/geometry/intersection_options.hpp"
+#include "clearjoint/geometry/model/intersection_options.hpp"
 
 namespace clearjoint::geometry {
 

@@ -6,8 +6,8 @@
 
 #include <string_view>
 
-#include "clearjoint/geometry/primitives.hpp"
-#include "clearjoint/geometry/vector3.hpp"
+#include "clearjoint/geometry/model/primitives.hpp"
+#include "clearjoint/geometry/arithmetic/vector3.hpp"
 
 namespace clearjoint::geometry {
 

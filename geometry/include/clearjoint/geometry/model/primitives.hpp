@@ -9,7 +9,7 @@
 
 #include <string_view>
 
-#include "clearjoint/geometry/vector3.hpp"
+#include "clearjoint/geometry/arithmetic/vector3.hpp"
 #include "clearjoint/validation_error.hpp"
 
 namespace clearjoint::geometry {

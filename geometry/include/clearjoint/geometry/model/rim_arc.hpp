@@ -5,7 +5,7 @@
 
 #include <limits>
 
-#include "clearjoint/geometry/vector3.hpp"
+#include "clearjoint/geometry/arithmetic/vector3.hpp"
 
 namespace clearjoint::geometry {
 

@@ -11,11 +11,11 @@
 #include <array>
 #include <string_view>
 
-#include "clearjoint/geometry/certificate.hpp"
-#include "clearjoint/geometry/enum_table.hpp"
-#include "clearjoint/geometry/intersection_options.hpp"
-#include "clearjoint/geometry/primitives.hpp"
-#include "clearjoint/geometry/rim_arc.hpp"
+#include "clearjoint/geometry/model/certificate.hpp"
+#include "clearjoint/geometry/model/enum_table.hpp"
+#include "clearjoint/geometry/model/intersection_options.hpp"
+#include "clearjoint/geometry/model/primitives.hpp"
+#include "clearjoint/geometry/model/rim_arc.hpp"
 
 namespace clearjoint::geometry {
 

@@ -5,11 +5,11 @@
 
 #include <array>
 
-#include "clearjoint/geometry/certificate.hpp"
-#include "clearjoint/geometry/circle_plane_topology.hpp"
-#include "clearjoint/geometry/intersection_options.hpp"
-#include "clearjoint/geometry/primitives.hpp"
-#include "clearjoint/geometry/rim_arc.hpp"
+#include "clearjoint/geometry/model/certificate.hpp"
+#include "clearjoint/geometry/model/circle_plane_topology.hpp"
+#include "clearjoint/geometry/model/intersection_options.hpp"
+#include "clearjoint/geometry/model/primitives.hpp"
+#include "clearjoint/geometry/model/rim_arc.hpp"
 
 namespace clearjoint::geometry {
 

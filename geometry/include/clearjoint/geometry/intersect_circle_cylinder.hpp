@@ -1,0 +1,6 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+/// \file
+/// Forwarding header, kept for one release: the header is clearjoint/geometry/queries/intersect_circle_cylinder.hpp
+/// (docs/architecture.md, "Public headers of the kernel").
+#include "clearjoint/geometry/queries/intersect_circle_cylinder.hpp"
