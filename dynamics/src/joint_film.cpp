@@ -29,6 +29,7 @@ JointFilm::JointFilm(const JointLubrication& lubrication, const geometry::JointD
     lubrication::ReynoldsGridOptions options;
     options.circumferential_cells = lubrication_.circumferential_cells;
     options.axial_cells = lubrication_.axial_cells;
+    options.allow_large_grid = lubrication_.allow_large_grid;
     options.cavitation = lubrication_.cavitation;
     grid_.emplace(options);
   }

@@ -56,8 +56,9 @@ void validate(const JointLubrication& l, const std::string& name, double radial_
     lubrication::ReynoldsGridOptions grid;
     grid.circumferential_cells = l.circumferential_cells;
     grid.axial_cells = l.axial_cells;
+    grid.allow_large_grid = l.allow_large_grid;
     try {
-      lubrication::validate(grid);  // the solver's own minima
+      lubrication::validate(grid);  // the solver's own minima and cost limits
     } catch (const geometry::InvalidInput& e) {
       throw ModelError(name + ".grid", " = [" + std::to_string(l.circumferential_cells) + ", " +
                        std::to_string(l.axial_cells) + "]: " + e.what());

@@ -185,10 +185,10 @@ ClearancePartDescription parse_clearance_part(const Node& n, double& radius, dou
   return {n.text("body"), n.vector<3>("point", Vector3::Zero()), n.vector<3>("axis")};
 }
 
-/// A clearance joint's oil film: {"viscosity", "cavitation", "method", "grid", "groove_direction",
+/// A clearance joint's oil film: {"viscosity", "cavitation", "method", "grid", "allow_large_grid", "groove_direction",
 /// "supply_pressure", "film_thickness_limit", "transition_width"} (joint_lubrication.hpp).
 JointLubrication parse_lubrication(const Node& n) {
-  n.require_object({"viscosity", "cavitation", "method", "grid", "groove_direction",
+  n.require_object({"viscosity", "cavitation", "method", "grid", "allow_large_grid", "groove_direction",
                     "supply_pressure", "film_thickness_limit", "transition_width"});
   JointLubrication l;
   l.viscosity = n.number("viscosity");
@@ -207,6 +207,7 @@ JointLubrication parse_lubrication(const Node& n) {
     l.circumferential_cells = static_cast<int>(grid[0]);
     l.axial_cells = static_cast<int>(grid[1]);
   }
+  if (n.has("allow_large_grid")) l.allow_large_grid = n.member("allow_large_grid").boolean();
   if (n.has("groove_direction")) l.groove_direction_B = n.vector<3>("groove_direction");
   l.supply_pressure = n.number("supply_pressure", 0.0);
   l.film_thickness_limit = n.number("film_thickness_limit");
@@ -369,7 +370,7 @@ ModelDescription parse_model(std::string_view json_text, std::string_view source
   } catch (const ValidationError& e) {
     // The reader's, the description's and the joint's checks alike: named with the file, the
     // field's path kept (ValidationError::field_path()).
-    throw ModelError(e, source);
+    throw ModelError(std::string(source) + ": " + e.what());
   }
 }
 

@@ -21,6 +21,8 @@ namespace {
 constexpr int kSmallestCircumferentialCells = 8;  // fewer cannot resolve one pressure lobe
 constexpr int kSmallestAxialCells = 2;            // at least one unknown row between the ends
 
+constexpr double kMebibyte = 1024.0 * 1024.0;  // for messages
+
 enum Neighbour { kSelf = 0, kEast, kWest, kNorth, kSouth, kNeighbours };
 
 void require_grid(bool holds, const char* field, int value, const char* rule) {
@@ -40,6 +42,38 @@ void validate(const ReynoldsGridOptions& options) {
                "them otherwise)");
   require_grid(options.max_iterations >= 1, "max_iterations", options.max_iterations,
                "must be at least 1");
+  const ReynoldsGridCost cost = estimate_cost(options);
+  const double entries = cost.band_bytes / sizeof(double);
+  const bool too_large = cost.band_bytes > kMaxGridBandBytes || cost.operations > kMaxGridOperations;
+  if (entries > kMaxGridBandEntries || (too_large && !options.allow_large_grid)) {
+    std::ostringstream message;
+    message.precision(2);
+    message << "options.circumferential_cells x axial_cells = " << options.circumferential_cells << "x"
+            << options.axial_cells << ": estimated " << cost.band_bytes / kMebibyte << " MiB of band and "
+            << cost.operations << " operations a linear solve, ";
+    if (entries > kMaxGridBandEntries) {
+      message << "more band entries than an int counts (" << kMaxGridBandEntries << "): too large to store";
+    } else {
+      message << "above the limits (" << kMaxGridBandBytes / kMebibyte << " MiB, " << kMaxGridOperations
+              << " operations, about half a second a solve); allow_large_grid (--allow-large-grid) "
+                 "solves it anyway";
+    }
+    throw geometry::InvalidInput(message.str());
+  }
+}
+
+ReynoldsGridCost estimate_cost(const ReynoldsGridOptions& options) noexcept {
+  ReynoldsGridCost cost;
+  // In double: the counts of a grid near the int limit overflow an int.
+  const double rows = std::max(0.0, static_cast<double>(options.axial_cells) - 1.0);
+  const double columns = std::max(0.0, static_cast<double>(options.circumferential_cells));
+  const double half_band = 2.0 * rows;  // periodic: neighbours folded two columns apart
+  cost.unknowns = columns * rows;
+  cost.band_bytes = cost.unknowns * (3.0 * half_band + 1.0) * sizeof(double);
+  // Each of the unknowns' eliminations updates half_band rows over 2 half_band columns (the
+  // pivots' fill included), a multiplication and an addition each.
+  cost.operations = 4.0 * cost.unknowns * half_band * half_band;
+  return cost;
 }
 
 std::string_view to_string(ReynoldsLinearSolver solver) noexcept {

@@ -188,6 +188,24 @@ TEST(ModelFile, ReadsAClearanceJointsOilFilmWithDefaultsForWhatItOmits) {
   EXPECT_EQ(*g.groove_direction_B, Vector3::UnitY());
   EXPECT_EQ(g.supply_pressure, 1e5);
   EXPECT_EQ(g.transition_width, 1e-6);
+  EXPECT_FALSE(g.allow_large_grid);
+}
+
+TEST(ModelFile, RefusesAGridAboveTheSolversCostLimitsUnlessTheFileAllowsIt) {
+  const auto model = [](const std::string& extra) {
+    return clearance_model("0.0099", R"(, "lubrication": {"viscosity": 0.04, "film_thickness_limit": 2e-6,
+        "method": "grid", "grid": [96, 400])" + extra + "}");
+  };
+  const std::string refused = error_of(model(""));
+  EXPECT_NE(refused.find("m.json: forces[0].lubrication.grid = [96, 400]: options.circumferential_cells x "
+                         "axial_cells = 96x400: estimated"),
+            std::string::npos)
+      << refused;
+  EXPECT_NE(refused.find("allow_large_grid"), std::string::npos) << refused;
+  const ModelDescription allowed = parse_model(model(R"(, "allow_large_grid": true)"), "m.json");
+  EXPECT_TRUE(std::get<ClearanceRevoluteDescription>(allowed.forces[0]).parameters.lubrication->allow_large_grid);
+  EXPECT_EQ(error_of(model(R"(, "allow_large_grid": 1)")),
+            "m.json: forces[0].lubrication.allow_large_grid = 1: must be true or false");
 }
 
 TEST(ModelFile, NamesTheFieldOfABadOilFilm) {
@@ -222,7 +240,7 @@ TEST(ModelFile, NamesTheFieldOfABadOilFilm) {
             std::string::npos);
   EXPECT_EQ(lubricated(R"("viscosity": 0.04, "film_thickness_limit": 2e-6, "viscosty": 1)"),
             "m.json: forces[0].lubrication.viscosty: unknown field (expected viscosity, cavitation, method, "
-            "grid, groove_direction, supply_pressure, film_thickness_limit, transition_width)");
+            "grid, allow_large_grid, groove_direction, supply_pressure, film_thickness_limit, transition_width)");
 }
 
 TEST(ModelFile, ReadsASpringDamperAndAPointLoadWithEveryField) {
@@ -321,10 +339,11 @@ TEST(ModelFile, ReadsTheShippedModels) {
 TEST(ModelFile, NamesTheFileAndKeepsTheFieldPathOfABadField) {
   // field_path() was empty once the file's name was put before the message.
   try {
-    parse_model(R"({"bodies": [{"name": "ball", "mass": -0.3, "inertia": [1, 1, 1]}]})", "ball.json");
+    parse_model(R"({"bodies": [{"name": "ball", "mass": -0.5, "inertia": [1, 1, 1], "position": [0, 0, 0]}]})",
+                "ball.json");
     FAIL() << "accepted";
   } catch (const ModelError& e) {
-    EXPECT_EQ(std::string(e.what()).rfind("ball.json: bodies[0].mass = -0.3", 0), 0u) << e.what();
+    EXPECT_EQ(std::string(e.what()).rfind("ball.json: bodies[0].mass = -0.5: must be positive", 0), 0u) << e.what();
     EXPECT_EQ(e.field_path(), "bodies[0].mass");
   }
 }

@@ -84,8 +84,10 @@ TEST(ReynoldsGrid, TendsToTheLongBearingAsTheWidthGrowsWithErrorOfOrderOneOverWi
   double previous_error = 0.0;
   for (const double bd : {4.0, 8.0, 16.0}) {
     const double width = bd * 2 * kRadius;
-    const double grid_force =
-        force(width, 0.5, grid(96, static_cast<int>(24 * bd), CavitationModel::half_sommerfeld));
+    // 96 x 96 to 96 x 384 keep the cells square; they are above the cost limits, on purpose.
+    ReynoldsGridOptions options = grid(96, static_cast<int>(24 * bd), CavitationModel::half_sommerfeld);
+    options.allow_large_grid = true;
+    const double grid_force = force(width, 0.5, options);
     const double closed = long_bearing_load({kRadius, width, kClearance}, state, kViscosity).magnitude;
     const double error = (closed - grid_force) / closed;
     EXPECT_GT(error, 0.0);  // the long bearing has no end leakage
@@ -195,6 +197,49 @@ TEST(ReynoldsGrid, RefusesAOneByOneGridAndATouchingJournal) {
   EXPECT_THROW(solver.solve(joint_of_width(0.02), PartPose{}, journal_at(0.5), spinning(),
                             Lubricant{-1.0}),
                geometry::InvalidInput);
+}
+
+TEST(ReynoldsGrid, EstimatesABandsCostFromTheGridSizeAsItsStorageAndEliminationCount) {
+  // 96 x 24, periodic: 96 x 23 = 2208 unknowns, half-width 2 x 23 = 46 rows, 3 x 46 + 1 = 139
+  // doubles a column of the band; 4 x 2208 x 46^2 operations.
+  const ReynoldsGridCost cost = estimate_cost(grid(96, 24, CavitationModel::mass_conserving));
+  EXPECT_EQ(cost.unknowns, 2208.0);
+  EXPECT_EQ(cost.band_bytes, 2208.0 * 139.0 * 8.0);
+  EXPECT_EQ(cost.operations, 4.0 * 2208.0 * 46.0 * 46.0);
+}
+
+TEST(ReynoldsGrid, RefusesAGridAboveItsCostLimitsWithTheEstimateUnlessAllowed) {
+  // 8 x 210: 8 x 209 unknowns, half-width 418 rows: 4 x 1672 x 418^2 = 1.17e9 operations, just
+  // above kMaxGridOperations, in a band of 16 MB; solved with a groove (half the band) it takes
+  // a fraction of a second.
+  ReynoldsGridOptions options = grid(8, 210, CavitationModel::half_sommerfeld);
+  try {
+    validate(options);
+    ADD_FAILURE() << "8 x 210 was accepted";
+  } catch (const geometry::InvalidInput& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("options.circumferential_cells x axial_cells = 8x210: estimated 16 MiB of band "
+                           "and 1.2e+09 operations a linear solve, above the limits"),
+              std::string::npos)
+        << message;
+    EXPECT_NE(message.find("allow_large_grid"), std::string::npos) << message;
+  }
+  EXPECT_THROW(ReynoldsGridSolver{options}, geometry::InvalidInput);
+  // The largest grid of the tests and benchmarks, 192 x 48, passes.
+  EXPECT_NO_THROW(validate(grid(192, 48, CavitationModel::mass_conserving)));
+
+  options.allow_large_grid = true;
+  ReynoldsGridSolver solver(options);
+  OilSupply groove;
+  groove.kind = OilSupply::Kind::axial_groove;
+  groove.groove_direction_W = Vector3(-1, 0, 0);
+  const FilmLoad load = solver.solve(joint_of_width(0.005), PartPose{}, journal_at(0.5), spinning(),
+                                     Lubricant{kViscosity}, groove);
+  EXPECT_GT(load.force_W.norm(), 0.0);
+  // Even allowed, a band with more entries than an int counts is refused before allocating.
+  options = grid(100000, 100000, CavitationModel::mass_conserving);
+  options.allow_large_grid = true;
+  EXPECT_THROW(validate(options), geometry::InvalidInput);
 }
 
 }  // namespace

@@ -62,6 +62,9 @@ struct JointLubrication {
   /// Raimondi & Boyd at B/D = 1 (docs/lubrication.md) at about 0.3 ms a solve.
   int circumferential_cells = 48;
   int axial_cells = 12;
+  /// Solve a grid above the solver's cost limits (lubrication::kMaxGridBandBytes,
+  /// kMaxGridOperations); off, such a grid is refused when the model is read.
+  bool allow_large_grid = false;
   /// An axial oil groove fixed in the bearing (needed by the mass-conserving model, which
   /// otherwise drains): its direction from the bearing's axis in the bearing body's frame, and
   /// its gauge supply pressure. Absent: an enclosed film fed at its ends at ambient pressure.

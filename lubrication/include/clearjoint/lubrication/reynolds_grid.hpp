@@ -54,10 +54,38 @@ struct ReynoldsGridOptions {
   CavitationModel cavitation = CavitationModel::mass_conserving;
   int max_iterations = 100;  ///< active-set steps before giving up (converged = false)
   ReynoldsLinearSolver linear_solver = ReynoldsLinearSolver::band_lu;
+  /// Solve a grid whose estimated cost (estimate_cost) is above kMaxGridBandBytes or
+  /// kMaxGridOperations. Off, such a grid is refused before anything is allocated.
+  bool allow_large_grid = false;
 };
 
+/// What one linear solve of a grid costs, estimated from its size alone before anything is
+/// allocated, for the periodic film (the wider band: half-width 2 (N_z - 1) rows against N_z - 1
+/// with a groove). The active-set iteration repeats the solve a few times (5 cold at 96 x 24).
+struct ReynoldsGridCost {
+  double unknowns = 0.0;    ///< N_theta (N_z - 1)
+  double band_bytes = 0.0;  ///< the band's storage: unknowns x (3 half-width + 1) doubles
+  double operations = 0.0;  ///< the elimination's multiplications and additions: 4 unknowns half-width^2
+};
+ReynoldsGridCost estimate_cost(const ReynoldsGridOptions& options) noexcept;
+
+/// The largest band a grid may need without allow_large_grid: 64 MiB. The default 96 x 24 grid
+/// needs 2.4 MB and 192 x 48, twice as fine both ways, 20 MB; 96 x 400 needed 734 MB (378 MB
+/// with a groove, as measured) and 22.6 s.
+inline constexpr double kMaxGridBandBytes = 64.0 * 1024 * 1024;
+/// The most elimination operations a solve may need without allow_large_grid: 1e9, about half a
+/// second on one core at the measured rate (96 x 400 with a groove, about 2.4e10 operations a
+/// solve by estimate_cost's count for its narrower band, took 22.6 s for 5 solves); 96 x 24
+/// needs 1.9e7, 192 x 48 3.2e8.
+inline constexpr double kMaxGridOperations = 1e9;
+/// The band is indexed with int: a grid whose band has more entries than an int counts is
+/// refused even with allow_large_grid (it could not be stored).
+inline constexpr double kMaxGridBandEntries = 2147483647.0;
+
 /// Throw geometry::InvalidInput naming the field for a grid below the minimum (a 1 x 1 grid has no
-/// unknown) or a non-positive iteration limit.
+/// unknown), a non-positive iteration limit, or a grid whose estimated cost is above the limits
+/// (the message gives the estimate; allow_large_grid lifts kMaxGridBandBytes and
+/// kMaxGridOperations, not kMaxGridBandEntries).
 void validate(const ReynoldsGridOptions& options);
 
 /// A solver that keeps its grid, factorisation pattern and last solution between calls. Not
