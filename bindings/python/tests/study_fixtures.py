@@ -67,7 +67,7 @@ def edit_study(path, edit):
 def fake_result(reductions=None, series=None):
     """What execute_run returns, without a simulation: for tests of the store alone."""
     return {"reductions": reductions or {"x": 1.0}, "time_series": series or {},
-            "library_version": "v", "library_build": "b", "reduction_sha256": "r",
+            "library_version": "v", "library_build": "b", "package_sha256": "r",
             "host": "h", "pid": 0, "wall_seconds": 0.0, "simulate_seconds": 0.0}
 
 

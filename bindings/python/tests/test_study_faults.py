@@ -116,7 +116,7 @@ run = Run("torn", "p", 0, {}, "m")
 big = np.random.default_rng(1).normal(size=10_000_000)  # 80 MB of doubles: seconds to compress
 print("writing", flush=True)
 store.write(run, (), {"reductions": {"x": 1.0}, "time_series": {"t": {"time": big}}, "library_version": "v", "library_build": "b",
-                      "reduction_sha256": "r", "host": "h", "pid": 0, "wall_seconds": 0.0, "simulate_seconds": 0.0}, "o", "s")
+                      "package_sha256": "r", "host": "h", "pid": 0, "wall_seconds": 0.0, "simulate_seconds": 0.0}, "o", "s")
 """
 
 

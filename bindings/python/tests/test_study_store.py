@@ -310,15 +310,53 @@ def test_each_stored_run_has_a_checksum_sha256sum_verifies(tmp_path):
 
 # -- the reuse key -------------------------------------------------------------------------------
 
-def test_a_run_stored_by_other_reducing_code_is_run_again(tmp_path, models_dir, client):
-    from clearjoint.study.execute import REDUCING_SOURCES, reduction_code
-    study = load_study(write_study(tmp_path, models_dir, radial=(0.05, 0.1), members=1))
+def test_a_run_stored_by_another_package_or_library_build_is_run_again(tmp_path, models_dir, client):
+    from clearjoint.study.execute import library_build, package_code
+    study = load_study(write_study(tmp_path, models_dir, radial=(0.05, 0.1, 0.3), members=1))
     first = run_study(study, client=client, progress=False)
     store = Store(study.store_path)
     with h5py.File(store.run_path(first.computed[0]), "r") as f:
-        assert f.attrs["reduction_sha256"] == reduction_code()
-    assert set(REDUCING_SOURCES) >= {"reduce.py", "execute.py"}
-    stale = first.computed[1]
-    edit_run_file(store, stale, lambda f: f.attrs.__setitem__("reduction_sha256", "another reduce.py"))
+        assert f.attrs["package_sha256"] == package_code() and f.attrs["library_build"] == library_build()
+    other_package, other_build, same = first.computed
+    edit_run_file(store, other_package, lambda f: f.attrs.__setitem__("package_sha256", "another package"))
+    edit_run_file(store, other_build, lambda f: f.attrs.__setitem__("library_build", "another build"))
     again = run_study(study, client=client, progress=False)
-    assert again.computed == [stale] and again.reused == 1 and again.set_aside == {}
+    assert sorted(again.computed) == sorted([other_package, other_build]) and again.reused == 1
+    assert again.set_aside == {}
+
+
+REUSABLE_RUNS = """
+import sys
+import clearjoint
+from clearjoint.study import Store, expand_study, load_study
+from clearjoint.study.expand import outputs_sha256
+from clearjoint.study.runner import reuse_key
+study = load_study(sys.argv[1])
+_, runs, _ = expand_study(study)
+store = Store(study.store_path)
+print(clearjoint.__file__, sum(store.is_current(r.run_id, reuse_key(r, outputs_sha256(study))) for r in runs))
+"""
+
+
+def reusable_runs_under(package_copy, study_path):
+    """How many of the study's stored runs `study run` would reuse when it imports the package at
+    package_copy (a folder holding clearjoint/)."""
+    done = subprocess.run([sys.executable, "-c", REUSABLE_RUNS, study_path], capture_output=True, text=True,
+                          timeout=120, cwd=str(package_copy), env=dict(os.environ, PYTHONPATH=str(package_copy)))
+    assert done.returncode == 0, done.stderr
+    imported, count = done.stdout.split()
+    assert imported.startswith(str(package_copy)), imported
+    return int(count)
+
+
+def test_a_copy_of_the_package_with_one_file_changed_reuses_no_stored_run(tmp_path, models_dir, client):
+    import clearjoint
+    path = write_study(tmp_path, models_dir, radial=(0.05, 0.1), members=1)
+    assert len(run_study(load_study(path), client=client, progress=False).computed) == 2
+    copy = tmp_path / "copy"
+    shutil.copytree(os.path.dirname(clearjoint.__file__), copy / "clearjoint",
+                    ignore=shutil.ignore_patterns("__pycache__"))
+    assert reusable_runs_under(copy, path) == 2  # the same files elsewhere: the same package
+    with open(copy / "clearjoint" / "_simulate.py", "a") as f:  # not the study's own code
+        f.write("\n# a changed copy\n")
+    assert reusable_runs_under(copy, path) == 0

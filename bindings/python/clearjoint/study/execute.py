@@ -34,20 +34,26 @@ def library_build():
     return digest.hexdigest()
 
 
-# The Python source that turns a simulation into the stored values: this module (the tables) and
-# reduce.py (the reductions and kept samples). A change to either changes a stored run.
-REDUCING_SOURCES = ("execute.py", "reduce.py")
-
-
 @functools.lru_cache(maxsize=None)
-def reduction_code():
-    """SHA-256 of the reducing Python source this process runs (REDUCING_SOURCES), so that a
-    stored run is reused only when the same code reduced it."""
-    here = os.path.dirname(os.path.abspath(__file__))
+def package_code():
+    """SHA-256 of the clearjoint package this process imports: every .py file under the package's
+    folder (simulate's wrappers and result tables as much as the study's reductions) and the
+    compiled module clearjoint._core, each by its path relative to the package and its bytes, in
+    sorted order, so that a copy of the package in another folder gives the same hash and a copy
+    with one file changed another. A stored run is reused only when the same package made it."""
+    import clearjoint._core as core
+    root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+    files = {os.path.relpath(os.path.realpath(core.__file__), os.path.realpath(root)): core.__file__}
+    for folder, subfolders, names in os.walk(root):
+        subfolders[:] = [name for name in subfolders if name != "__pycache__"]
+        for name in names:
+            if name.endswith(".py"):
+                path = os.path.join(folder, name)
+                files[os.path.relpath(path, root)] = path
     digest = hashlib.sha256()
-    for name in REDUCING_SOURCES:
-        digest.update(name.encode())
-        with open(os.path.join(here, name), "rb") as f:
+    for relative in sorted(files):
+        digest.update(relative.encode())
+        with open(files[relative], "rb") as f:
             digest.update(hashlib.sha256(f.read()).digest())
     return digest.hexdigest()
 
@@ -83,6 +89,6 @@ def execute_run(payload):
             "wall_seconds": time.perf_counter() - start,
             "library_version": clearjoint.__version__,
             "library_build": library_build(),
-            "reduction_sha256": reduction_code(),
+            "package_sha256": package_code(),
             "host": socket.gethostname(),
             "pid": os.getpid()}

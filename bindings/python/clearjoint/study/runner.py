@@ -8,7 +8,7 @@ import sys
 import time
 from dataclasses import dataclass, field
 
-from .execute import execute_run, library_build, reduction_code
+from .execute import execute_run, library_build, package_code
 from .expand import expand_study, outputs_sha256, sha256_text
 from .store import Store, StoreError
 from .study_file import StudyError
@@ -39,10 +39,11 @@ def store_error(study, error):
 
 def reuse_key(run, outputs_hash):
     """What decides a stored run's values, as the run file's attributes: a stored run is reused
-    only when all of them are equal."""
+    only when all of them are equal: the model and the outputs, the library's build identity (its
+    version and the SHA-256 of its binaries) and the Python package that ran and reduced it."""
     return {"model_sha256": run.model_sha256, "outputs_sha256": outputs_hash,
             "library_version": _library_version(), "library_build": library_build(),
-            "reduction_sha256": reduction_code()}
+            "package_sha256": package_code()}
 
 
 # The memory a local cluster's worker may use before Dask pauses it (80 %) and restarts it

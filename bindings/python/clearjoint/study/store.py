@@ -26,9 +26,9 @@ is published before the run file (and an older run file removed first), so that 
 moment of a kill, a run file present always has its own checksum beside it.
 
 A run is reused when its file exists, matches its checksum, and was written under the same reuse
-key (runner.reuse_key: model, outputs, library and reducing code); otherwise it is run again and
-the file replaced. One client runs a study at a time: it holds an flock on STORE/.lock, which the
-kernel releases however it ends.
+key (runner.reuse_key: model, outputs, library build and the whole Python package); otherwise it is
+run again and the file replaced. One client runs a study at a time: it holds an flock on
+STORE/.lock, which the kernel releases however it ends.
 
 A store is a folder the study owns: one that holds the marker (a regular file the runner writes
 before anything else), or an empty or new one; a folder holding anything else is refused, however
@@ -50,7 +50,7 @@ import numpy as np
 
 from .._bounded_files import MAX_TABLE_BYTES, open_bounded, read_text_bounded
 
-FORMAT = 2  # bump when the layout or the attributes of a run file change
+FORMAT = 3  # bump when the layout or the attributes of a run file change
 MARKER = ".clearjoint-study-store"
 MARKER_TEXT = "A clearjoint study store (docs/studies.md); the study runner writes into this folder.\n"
 # Every file the store reads is opened with _bounded_files: a regular file, not through a symbolic
@@ -65,7 +65,7 @@ MAX_RUN_FILE_BYTES = MAX_TABLE_BYTES
 # writes.log grows by one line of about 80 bytes per run written, and is read line by line: the
 # table limit allows some 25 million writes.
 MAX_WRITE_LOG_BYTES = MAX_TABLE_BYTES
-REUSE_ATTRIBUTES = ("model_sha256", "outputs_sha256", "library_version", "library_build", "reduction_sha256")
+REUSE_ATTRIBUTES = ("model_sha256", "outputs_sha256", "library_version", "library_build", "package_sha256")
 
 
 class StoreError(RuntimeError):
@@ -320,7 +320,7 @@ class Store:
             a["model_sha256"] = run.model_sha256
             a["outputs_sha256"] = outputs_sha256
             a["model"] = json.dumps(run.model, sort_keys=True, allow_nan=False)
-            for key in ("library_version", "library_build", "reduction_sha256", "host", "pid", "wall_seconds",
+            for key in ("library_version", "library_build", "package_sha256", "host", "pid", "wall_seconds",
                         "simulate_seconds"):
                 a[key] = result[key]
             reductions = f.create_group("reductions")
