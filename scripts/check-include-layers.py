@@ -21,6 +21,8 @@ under ROOT (default: this checkout), follows each to the file it names, and prin
     rooms (geometry/include/clearjoint/geometry/<name>.hpp): include the room's path;
   - reaches, through files that are allowed one step at a time, a file the including file may
     not reach (the check follows includes transitively).
+It also reads the CMake files of the shipped modules and prints `file:line: why` for each line
+that names a target of support/ (test code linked into shipped code).
 Exits 1 when it printed any, 0 otherwise. ctest runs it as the test include_layers.
 """
 import os
@@ -227,9 +229,37 @@ def transitive_problem(tree, path, target):
     return None
 
 
+TARGET = re.compile(r"^\s*add_library\s*\(\s*([A-Za-z0-9_]+)", re.MULTILINE)
+
+
+def cmake_problems(tree):
+    """Lines of a shipped module's CMake files that name a library defined in support/."""
+    cmake = [f for f in tree.files if f.endswith(("CMakeLists.txt", ".cmake"))]
+    test_targets = set()
+    for path in cmake:
+        if module_of(path) == "support":
+            with open(os.path.join(tree.root, path), encoding="utf-8", errors="replace") as source:
+                test_targets.update(TARGET.findall(source.read()))
+    if not test_targets:
+        return []
+    named = re.compile(r"(?<![A-Za-z0-9_])(" + "|".join(sorted(test_targets)) + r")(?![A-Za-z0-9_])")
+    problems = []
+    for path in cmake:
+        module = module_of(path)
+        if module is None or MODULES[module] >= SHIPPED_RANK:
+            continue
+        with open(os.path.join(tree.root, path), encoding="utf-8", errors="replace") as source:
+            for number, line in enumerate(source, 1):
+                match = named.search(line.split("#", 1)[0])
+                if match:
+                    problems.append(f"{path}:{number}: links {match.group(1)}, test code of support/: "
+                                    f"shipped code may not use test code")
+    return problems
+
+
 def check(root):
     tree = Tree(root)
-    problems = []
+    problems = cmake_problems(tree)
     for path in tree.files:
         if not path.endswith(SOURCE_SUFFIXES) or module_of(path) is None and not path.startswith("geometry/"):
             continue
@@ -255,7 +285,7 @@ def main(argv):
     for problem in problems:
         print(problem)
     if problems:
-        print(f"check-include-layers: {len(problems)} include(s) cross a layer", file=sys.stderr)
+        print(f"check-include-layers: {len(problems)} line(s) cross a layer", file=sys.stderr)
         return 1
     print("check-include-layers: every include keeps to its layer")
     return 0

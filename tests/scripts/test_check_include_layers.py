@@ -56,6 +56,9 @@ CLEAN_TREE = {
     "bindings/c/src/detect.cpp": '#include "clearjoint/clearjoint.h"\n#include "clearjoint/geometry/joint/detect_contacts.hpp"\n',
     "bindings/matlab/cj_detect.c": '#include "clearjoint/clearjoint.h"\n',
     "third_party/glue.hpp": "",
+    "support/CMakeLists.txt": "add_library(clearjoint_test_joints INTERFACE)\n",
+    "dynamics/CMakeLists.txt": "# not clearjoint_test_joints\nadd_library(clearjoint_dynamics src/model_file.cpp)\n",
+    "tests/CMakeLists.txt": "target_link_libraries(test_detect PRIVATE clearjoint_test_joints)\n",
 }
 
 
@@ -135,6 +138,11 @@ class CheckIncludeLayers(unittest.TestCase):
     def test_reports_a_module_using_another_modules_sources(self):
         self.assert_reported({"dynamics/src/model_file.cpp": '#include "queries/rounded.hpp"\n'},
                              "dynamics/src/model_file.cpp:1", "dynamics/ may not use the sources of geometry/")
+
+    def test_reports_a_shipped_library_that_links_test_code(self):
+        self.assert_reported({"dynamics/CMakeLists.txt": "add_library(clearjoint_dynamics src/model_file.cpp)\n"
+                                                         "target_link_libraries(clearjoint_dynamics PRIVATE clearjoint_test_joints)\n"},
+                             "dynamics/CMakeLists.txt:2", "links clearjoint_test_joints")
 
     def test_reports_one_application_using_another(self):
         self.assert_reported({"bindings/c/src/detect.cpp": '#include "json_lines.hpp"\n'},
