@@ -370,7 +370,7 @@ ModelDescription parse_model(std::string_view json_text, std::string_view source
   } catch (const ValidationError& e) {
     // The reader's, the description's and the joint's checks alike: named with the file, the
     // field's path kept (ValidationError::field_path()).
-    throw ModelError(std::string(source) + ": " + e.what());
+    throw ModelError(e, source);
   }
 }
 
