@@ -168,6 +168,11 @@ def _model_text(model: Model) -> Tuple[str, str]:
     raise TypeError(f"model = {type(model).__name__}: must be a path or a dict in the model-file format")
 
 
+# output.decimation's range, as the model reader and the C++ run check it (dynamics::kMaxDecimation):
+# checked here so that a Python integer beyond a C++ long is named, not refused by pybind11.
+_MAX_DECIMATION = 10**9
+
+
 def _check_options(allow_large: Any, report_step: Any, decimation: Any, out: Any, format: Any,
                    force: Any) -> None:
     for name, value in (("allow_large", allow_large), ("force", force)):
@@ -177,6 +182,13 @@ def _check_options(allow_large: Any, report_step: Any, decimation: Any, out: Any
         raise TypeError(f"report_step = {report_step!r}: must be a number of seconds or None")
     if decimation is not None and (isinstance(decimation, bool) or not isinstance(decimation, (int, np.integer))):
         raise TypeError(f"decimation = {decimation!r}: must be a whole number or None")
+    if decimation is not None and not 1 <= decimation <= _MAX_DECIMATION:
+        raise ValueError(f"decimation = {decimation!r}: must be in [1, 1e9]")
+    if report_step is not None:
+        try:
+            float(report_step)
+        except OverflowError:
+            raise ValueError(f"report_step = {report_step!r}: too large for a double") from None
     if format not in ("csv", "hdf5"):
         raise ValueError(f"format = {format!r}: must be 'csv' or 'hdf5'")
     if out is None and (format != "csv" or force):

@@ -11,6 +11,40 @@ import numpy as np
 from . import _core
 from ._simulate import Model, _model_text
 
+# The kinds of NumPy dtype read as real numbers: signed and unsigned integers and floats. Booleans
+# ('b'), complex numbers ('c'), text ('U', 'S') and objects ('O') are refused, not converted:
+# np.asarray(..., dtype=float64) would turn "0.5" into 0.5 and True into 1.0, and drop the
+# imaginary part of a complex number with only a warning.
+_REAL_KINDS = "iuf"
+
+
+def _real_number(value: Any, name: str) -> float:
+    """`value` as a float if it is a real number (int, float, NumPy integer or floating; not bool,
+    str or complex): TypeError naming `name` otherwise."""
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, float, np.integer, np.floating)):
+        raise TypeError(f"{name} = {value!r}: must be a real number")
+    try:
+        return float(value)
+    except OverflowError:
+        raise ValueError(f"{name} = {value!r}: too large for a double") from None
+
+
+def _real_array(value: Any, name: str) -> np.ndarray:
+    """`value` as a float64 array if every entry is a real number: TypeError naming `name` for
+    booleans, text, complex numbers or objects."""
+    try:
+        array = np.asarray(value)
+    except (ValueError, TypeError) as error:  # ragged nesting
+        raise TypeError(f"{name}: must be an array of real numbers ({error})") from None
+    if array.dtype.kind not in _REAL_KINDS:
+        raise TypeError(f"{name}: must be an array of real numbers, not of {array.dtype} "
+                        f"({np.array2string(array.ravel()[:4], threshold=4)}...)")
+    with np.errstate(over="raise"):
+        try:
+            return np.ascontiguousarray(array, dtype=np.float64)
+        except (OverflowError, FloatingPointError):
+            raise ValueError(f"{name}: holds integers too large for a double") from None
+
 
 class Simulator:
     """A model built once (consistent initial conditions) and integrated step by step.
@@ -53,13 +87,15 @@ class Simulator:
         return self._core.state
 
     def set_state(self, state: Any) -> None:
-        self._core.set_state(np.asarray(state, dtype=np.float64))
+        """Continue from `state` (as wide as ``state``: real numbers, each body's Euler parameters
+        of norm 1 within 1e-6). A refused state changes nothing."""
+        self._core.set_state(_real_array(state, "state"))
 
     def body_state(self, body: str) -> Dict[str, np.ndarray]:
         return self._core.body_state(body)
 
     def apply_load(self, body: str, force: Any = (0.0, 0.0, 0.0), moment: Any = (0.0, 0.0, 0.0)) -> None:
-        self._core.apply_load(body, np.asarray(force, dtype=np.float64), np.asarray(moment, dtype=np.float64))
+        self._core.apply_load(body, _real_array(force, "force"), _real_array(moment, "moment"))
 
     def clear_loads(self) -> None:
         self._core.clear_loads()
@@ -68,7 +104,7 @@ class Simulator:
         self._core.step()
 
     def advance_to(self, t: float) -> None:
-        self._core.advance_to(float(t))
+        self._core.advance_to(_real_number(t, "t"))
 
     def take_impacts(self) -> List[Dict[str, Any]]:
         return self._core.take_impacts()

@@ -93,6 +93,39 @@ def test_a_state_set_between_steps_is_continued_from():
         sim.set_state([0.0, 0.0, 0.0])
 
 
+@pytest.mark.parametrize("t", ["0.01", True, 0.01 + 0j, None, [0.01]])
+def test_advance_to_refuses_anything_but_a_real_number_naming_t(t):
+    sim = clearjoint.Simulator(falling_ball())
+    with pytest.raises(TypeError, match="t = .*: must be a real number"):
+        sim.advance_to(t)
+    assert sim.time == 0.0
+
+
+@pytest.mark.parametrize("entry", ["0.5", True, 0.5 + 0j, object()])
+def test_set_state_refuses_text_booleans_complex_numbers_and_objects(entry):
+    sim = clearjoint.Simulator(falling_ball())
+    before = sim.state
+    y = [entry] * len(before)
+    with pytest.raises(TypeError, match="state: must be an array of real numbers"):
+        sim.set_state(y)
+    assert np.array_equal(sim.state, before)
+
+
+@pytest.mark.parametrize("scale", [0.0, 0.5])
+def test_a_zero_or_non_unit_quaternion_is_refused_leaving_the_simulator_usable(clearance_model, scale):
+    # A zero quaternion once broke the simulator ("Jacobian lost rank") until it was rebuilt.
+    sim = clearjoint.Simulator(clearance_model)
+    sim.advance_to(1e-3)
+    before = sim.state
+    y = before.copy()
+    y[3:7] *= scale
+    with pytest.raises(ValueError, match=r"state\[3:7\] = .*must have norm 1 \(within 1e-06\)"):
+        sim.set_state(y)
+    assert np.array_equal(sim.state, before)
+    sim.advance_to(2e-3)
+    assert sim.time == pytest.approx(2e-3, abs=1e-15)
+
+
 def test_ctrl_c_stops_a_long_advance_promptly(models_dir):
     sim = clearjoint.Simulator(models_dir / "slider_crank_spatial_clearance.json")
     timer = threading.Timer(0.3, os.kill, args=(os.getpid(), signal.SIGINT))
