@@ -76,6 +76,7 @@ BearingCharacteristicsQuery query_from_names(double eccentricity_ratio, double w
   query.method = named(names.method, "method", kBearingMethods);
   query.cavitation = names.cavitation ? named(*names.cavitation, "cavitation", kCavitationModels)
                                       : default_cavitation(query.method);
+  query.grid.allow_large_grid = names.allow_large_grid;
   if (names.grid) {
     query.grid.circumferential_cells = names.grid->first;
     query.grid.axial_cells = names.grid->second;
@@ -93,8 +94,11 @@ BearingCharacteristics bearing_characteristics(const BearingCharacteristicsQuery
   const double eps = query.eccentricity_ratio;
   require(eps >= 0.0 && eps < 1.0, "eccentricity_ratio", eps,
           "must be in [0, 1) (at 1 the journal touches the wall)");
-  require(std::isfinite(query.width_ratio) && query.width_ratio > 0.0, "width_ratio",
-          query.width_ratio, "must be positive and finite");
+  require(eps == 0.0 || eps >= kSmallestEccentricityRatio, "eccentricity_ratio", eps,
+          "must be 0 or at least 1e-100 (below, the outputs, proportional to it, underflow)");
+  require(query.width_ratio >= kSmallestWidthRatio && query.width_ratio <= kLargestWidthRatio,
+          "width_ratio", query.width_ratio,
+          "must be in [1e-50, 1e50] (beyond, the outputs over- or underflow)");
   if (query.method != BearingMethod::grid &&
       query.cavitation != CavitationModel::half_sommerfeld) {
     throw geometry::InvalidInput(

@@ -2,7 +2,11 @@
 #include "clearjoint/lubrication/short_bearing.hpp"
 
 #include <algorithm>
+#include <array>
+#include <boost/math/tools/minima.hpp>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <numbers>
 
 #include "sommerfeld_integrals.hpp"
@@ -11,43 +15,71 @@ namespace clearjoint::lubrication {
 
 namespace {
 
-/// Samples of the mid-plane pressure over its positive half period before Newton refines the
-/// largest: the pressure has one maximum there, which 16 samples bracket for any eps < 1.
-constexpr int kMaxPressureSamples = 16;
-constexpr int kMaxPressureNewtonSteps = 8;
+/// Samples of the mid-plane pressure over its positive half period, evenly spaced in the
+/// Sommerfeld angle gamma (sommerfeld_integrals.hpp), before Brent's method refines the largest
+/// between its two neighbours. Even in gamma, the samples crowd where the film is thin: near
+/// eps -> 1 the peak is O(sqrt(1 - eps)) wide in psi but O(1) in gamma, so 32 samples bracket it
+/// for any eps < 1 (the tests compare with a dense multiprecision maximisation).
+constexpr int kMaxPressureSamples = 32;
+/// Brent's method to half the mantissa's bits (Boost's advice): the argument to 2^-25 of the
+/// bracket, hence the peak value, at a maximum, to about (2^-25)^2 = 1e-15 relatively.
+constexpr int kMaxPressureBits = std::numeric_limits<double>::digits / 2;
+constexpr std::uintmax_t kMaxPressureIterations = 200;
+
+/// 1 - eps cos psi = (1 - eps) + 2 eps sin^2(psi / 2): both terms positive, no cancellation
+/// near psi = 0 where the film is thinnest and the pressure peaks.
+double film_factor(double eps, double psi) {
+  const double half = std::sin(0.5 * psi);
+  return (1.0 - eps) + 2.0 * eps * half * half;
+}
 
 /// -sin(psi + delta) / (1 - eps cos psi)^3: the mid-plane pressure over 3 eta B^2 M / (4 c^2).
 double pressure_shape(double eps, double delta, double psi) {
-  const double d = 1.0 - eps * std::cos(psi);
+  const double d = film_factor(eps, psi);
   return -std::sin(psi + delta) / (d * d * d);
 }
 
-/// Where pressure_shape peaks in (low, low + pi): the best sample, then Newton on the zero of the
-/// derivative's numerator g = cos(psi + delta) d - 3 eps sin(psi + delta) sin psi, kept inside the
-/// bracket of its neighbouring samples.
+/// psi(gamma), the inverse of the Sommerfeld substitution, continuous in gamma:
+/// cos psi = (cos g + eps) / (1 + eps cos g), sin psi = s sin g / (1 + eps cos g).
+double psi_of_gamma(double eps, double s, double gamma) {
+  const double principal = std::atan2(s * std::sin(gamma), std::cos(gamma) + eps);
+  return gamma + std::remainder(principal - gamma, 2.0 * std::numbers::pi);
+}
+
+/// The largest pressure_shape on the positive half period psi in (low, low + pi). The period is
+/// first shifted so that the multiple of 2 pi nearest its middle is 0: the peak, O(sqrt(1 - eps))
+/// wide near psi = 0 as eps -> 1, is then located with the relative precision of psi near 0.
 double peak_shape(double eps, double delta, double low) {
-  const double step = std::numbers::pi / kMaxPressureSamples;
-  int best = 0;
+  const double pi = std::numbers::pi;
+  const double start = low - 2.0 * pi * std::round((low + 0.5 * pi) / (2.0 * pi));
+  const double end = start + pi;
+  const double s = std::sqrt((1.0 - eps) * (1.0 + eps));
+  const double g_start = detail::sommerfeld_angle(eps, start);
+  const double g_step = (detail::sommerfeld_angle(eps, end) - g_start) / kMaxPressureSamples;
+  std::array<double, kMaxPressureSamples + 2> psi{};  // the samples between the two ends
+  psi.front() = start;
+  psi.back() = end;
+  int best = 1;
   double best_value = -1.0;
-  for (int k = 0; k < kMaxPressureSamples; ++k) {
-    const double value = pressure_shape(eps, delta, low + (k + 0.5) * step);
+  for (int k = 1; k <= kMaxPressureSamples; ++k) {
+    psi[k] = std::clamp(psi_of_gamma(eps, s, g_start + (k - 0.5) * g_step), start, end);
+    const double value = pressure_shape(eps, delta, psi[k]);
     if (value > best_value) {
       best_value = value;
       best = k;
     }
   }
-  const double left = low + best * step, right = left + step;
-  double psi = left + 0.5 * step;
-  for (int iteration = 0; iteration < kMaxPressureNewtonSteps; ++iteration) {
-    const double sp = std::sin(psi + delta), cp = std::cos(psi + delta);
-    const double d = 1.0 - eps * std::cos(psi);
-    const double g = cp * d - 3.0 * eps * sp * std::sin(psi);
-    const double dg = -sp * d + cp * eps * std::sin(psi) -
-                      3.0 * eps * (cp * std::sin(psi) + sp * std::cos(psi));
-    if (dg == 0.0) break;
-    psi = std::clamp(psi - g / dg, left, right);
-  }
-  return std::max(best_value, pressure_shape(eps, delta, psi));
+  // The peak lies between the best sample's neighbours (or an end, where the pressure is 0).
+  // Brent's method runs in u = (psi - centre) / half-width in [-1, 1]: its tolerance, 2^-25 |u|
+  // + 2^-27, is then relative to the bracket, which is about as wide as the peak (in psi itself
+  // the absolute 2^-27 = 7.5e-9 rad exceeds a peak 1e-8 wide at eps = 1 - 2^-53).
+  const double centre = 0.5 * (psi[best - 1] + psi[best + 1]);
+  const double half_width = 0.5 * (psi[best + 1] - psi[best - 1]);
+  std::uintmax_t iterations = kMaxPressureIterations;
+  const auto refined = boost::math::tools::brent_find_minima(
+      [&](double u) { return -pressure_shape(eps, delta, centre + u * half_width); }, -1.0, 1.0,
+      kMaxPressureBits, iterations);
+  return std::max(best_value, -refined.second);
 }
 
 }  // namespace

@@ -8,8 +8,10 @@ namespace clearjoint::lubrication::detail {
 
 double sommerfeld_angle(double eps, double psi) {
   const double s = std::sqrt((1.0 - eps) * (1.0 + eps));  // 1 - eps^2 without cancellation
-  const double d = 1.0 - eps * std::cos(psi);
-  const double principal = std::atan2(s * std::sin(psi) / d, (std::cos(psi) - eps) / d);
+  // cos psi - eps = (1 - eps) - 2 sin^2(psi / 2): exact near psi = 0, where cos psi and eps
+  // both near 1 would cancel. The common factor 1 / (1 - eps cos psi) > 0 leaves atan2 unchanged.
+  const double half = std::sin(0.5 * psi);
+  const double principal = std::atan2(s * std::sin(psi), (1.0 - eps) - 2.0 * half * half);
   // gamma - psi lies in (-pi, pi): bring the principal value next to psi.
   const double two_pi = 2.0 * std::numbers::pi;
   return psi + std::remainder(principal - psi, two_pi);

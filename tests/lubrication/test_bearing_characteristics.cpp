@@ -14,10 +14,13 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <boost/multiprecision/cpp_bin_float.hpp>
 #include <cmath>
 #include <numbers>
+#include <sstream>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "clearjoint/geometry/model/primitives.hpp"
 
@@ -174,6 +177,136 @@ TEST(BearingCharacteristics, RefuseBadInputNamingIt) {
   query.grid = {};
   query.method = BearingMethod::short_bearing;  // closed forms know no mass conservation
   EXPECT_THROW(bearing_characteristics(query), geometry::InvalidInput);
+}
+
+// The closed forms' outputs against the textbook formulas evaluated with 50 digits
+// (Boost.Multiprecision's cpp_bin_float_50), at eps = 1 - 2^-k for every k to the last double
+// below 1 and at a few others, for pure rotation and pure squeeze. The input eps is the double
+// given; 1 - eps^2 is formed from it exactly in 50 digits.
+using Real = boost::multiprecision::cpp_bin_float_50;
+
+struct Expected {
+  Real sommerfeld, attitude, side_flow, pressure_ratio;
+};
+
+/// Sommerfeld (long bearing, half-Sommerfeld), Pinkus & Sternlicht ch. 3 / Hamrock,
+/// Fundamentals of Fluid Film Lubrication ch. 10: rotation So = 3 eps sqrt(pi^2 (1 - eps^2) +
+/// 4 eps^2) / ((2 + eps^2)(1 - eps^2)), tan beta = pi sqrt(1 - eps^2) / (2 eps), and the pressure
+/// 6 eta omega R^2 / c^2 eps sin t (2 + eps cos t) / ((2 + eps^2)(1 + eps cos t)^2) peaking at
+/// cos t = -3 eps / (2 + eps^2); squeeze W = 12 pi eta R^3 B eps' / (c^2 (1 - eps^2)^3/2), so
+/// So = 6 pi / (1 - eps^2)^3/2, beta = 0, and the peak 4 k eps' / (1 - eps^2)^2 at the thinnest
+/// film (the pressure's integral from psi = pi to 0 of -2 k eps' sin psi / (1 - eps cos psi)^3).
+Expected long_bearing(double eps_in, bool rotation) {
+  const Real pi = boost::math::constants::pi<Real>();
+  const Real eps = eps_in, s2 = (1 - eps) * (1 + eps), s = sqrt(s2);
+  if (!rotation) return {6 * pi / (s2 * s), 0, 0, 4 / (pi * s)};
+  const Real so = 3 * eps * sqrt(pi * pi * s2 + 4 * eps * eps) / ((2 + eps * eps) * s2);
+  const Real cos_t = -3 * eps / (2 + eps * eps), sin_t = sqrt((1 - cos_t) * (1 + cos_t));
+  const Real peak = eps * sin_t * (2 + eps * cos_t) / ((2 + eps * eps) * pow(1 + eps * cos_t, 2));
+  // F / (B D) = So eta omega / psi^2 and p = k omega (...) with k psi^2 / eta = 6: p / (F / (B D))
+  // = 6 peak / So.
+  return {so, atan2(pi * s, 2 * eps), 0, 6 * peak / so};
+}
+
+/// Ocvirk (short bearing, half-Sommerfeld), same references: rotation So = (B/D)^2 eps
+/// sqrt(pi^2 (1 - eps^2) + 16 eps^2) / (2 (1 - eps^2)^2), tan beta = pi sqrt(1 - eps^2) / (4 eps),
+/// side flow 2 pi Q_s / (R c omega B) = 2 pi eps, mid-plane pressure 3 eta omega B^2 eps sin t /
+/// (4 c^2 (1 + eps cos t)^3) peaking at cos t = (1 - sqrt(1 + 24 eps^2)) / (4 eps); squeeze: the
+/// load 2 (B/D)^2 J with J the integral of cos^2 / (1 - eps cos)^3 over (-pi/2, pi/2), beta = 0,
+/// side flow 4 pi, peak 3 eta B^2 eps' / (2 c^2 (1 - eps)^3) at psi = 0. J by t = tan(psi / 2)
+/// (not the library's Sommerfeld substitution): with a = 1 - eps, b = 1 + eps, w = a + b t^2,
+/// 1 - eps cos psi = w / (1 + t^2) and (1 - t^2)^2 = (2 - w)^2 / b^2 (a + b = 2), so
+/// J = (2 / b^2) (4 K3 - 4 K2 + K1), Kn the integral of w^-n over t in (-1, 1):
+/// K1 = 2 atan(sqrt(b / a)) / sqrt(a b), K(n+1) = [t / (2 n a w^n)] + (2n - 1) / (2 n a) Kn,
+/// i.e. K2 = 1 / (2 a) + K1 / (2 a), K3 = 1 / (8 a) + 3 K2 / (4 a).
+Expected short_bearing(double eps_in, double bd, bool rotation) {
+  const Real pi = boost::math::constants::pi<Real>();
+  const Real eps = eps_in, s2 = (1 - eps) * (1 + eps), s = sqrt(s2), b = bd;
+  if (rotation) {
+    const Real so = b * b * eps * sqrt(pi * pi * s2 + 16 * eps * eps) / (2 * s2 * s2);
+    const Real cos_t = (1 - sqrt(1 + 24 * eps * eps)) / (4 * eps);
+    const Real sin_t = sqrt((1 - cos_t) * (1 + cos_t));
+    // p / (F / (B D)) = p psi^2 / (So eta omega) = 3 (B/D)^2 eps sin t / ((1 + eps cos t)^3 So).
+    return {so, atan2(pi * s, 4 * eps), 2 * pi * eps, 3 * b * b * eps * sin_t / (pow(1 + eps * cos_t, 3) * so)};
+  }
+  const Real a = 1 - eps, bb = 1 + eps;
+  const Real k1 = 2 * atan(sqrt(bb / a)) / sqrt(a * bb);
+  const Real k2 = 1 / (2 * a) + k1 / (2 * a);
+  const Real k3 = 1 / (8 * a) + 3 * k2 / (4 * a);
+  const Real j = 2 / (bb * bb) * (4 * k3 - 4 * k2 + k1);
+  const Real so = 2 * b * b * j;
+  return {so, 0, 4 * pi, 6 * b * b / (pow(1 - eps, 3) * so)};
+}
+
+double relative_error(double value, const Real& expected) {
+  if (expected == 0) return std::abs(value);
+  return static_cast<double>(abs((Real(value) - expected) / expected));
+}
+
+TEST(BearingCharacteristics, OfTheClosedFormsAreExactToTheirStatedErrorUpToTheLastDoubleBelowOne) {
+  std::vector<double> eccentricities = {1e-100, 1e-8, 0.1, 0.3, 0.5, 0.7, 0.9, 0.99};
+  for (int k = 1; k <= 53; ++k) eccentricities.push_back(1.0 - std::ldexp(1.0, -k));
+  double worst = 0.0;
+  int checked = 0;
+  for (const double eps : eccentricities) {
+    for (const BearingMethod method : {BearingMethod::short_bearing, BearingMethod::long_bearing}) {
+      for (const BearingMotion motion : {BearingMotion::rotation, BearingMotion::squeeze}) {
+        for (const double bd : {1.0, 0.25}) {
+          BearingCharacteristicsQuery query;
+          query.eccentricity_ratio = eps;
+          query.width_ratio = bd;
+          query.method = method;
+          query.motion = motion;
+          query.cavitation = CavitationModel::half_sommerfeld;
+          const BearingCharacteristics r = bearing_characteristics(query);
+          const bool rotation = motion == BearingMotion::rotation;
+          const Expected e = method == BearingMethod::long_bearing ? long_bearing(eps, rotation)
+                                                                   : short_bearing(eps, bd, rotation);
+          const double errors[] = {relative_error(r.sommerfeld_number, e.sommerfeld),
+                                   relative_error(r.attitude_angle, e.attitude),
+                                   relative_error(r.side_flow_variable, e.side_flow),
+                                   relative_error(r.max_pressure_ratio, e.pressure_ratio)};
+          const char* names[] = {"sommerfeld_number", "attitude_angle", "side_flow_variable",
+                                 "max_pressure_ratio"};
+          for (int q = 0; q < 4; ++q) {
+            EXPECT_LE(errors[q], kClosedFormRelativeError)
+                << names[q] << " at eps = 1 - " << 1.0 - eps << ", " << to_string(method) << ", "
+                << to_string(motion) << ", B/D " << bd;
+            worst = std::max(worst, errors[q]);
+            ++checked;
+          }
+        }
+      }
+    }
+  }
+  EXPECT_EQ(checked, 61 * 2 * 2 * 2 * 4);
+  std::ostringstream text;
+  text << worst;
+  RecordProperty("worst_relative_error", text.str());
+}
+
+TEST(BearingCharacteristics, RefuseAWidthRatioOrEccentricityWhoseOutputsWouldOverOrUnderflow) {
+  const auto error = [](double eps, double bd) {
+    BearingCharacteristicsQuery query;
+    query.eccentricity_ratio = eps;
+    query.width_ratio = bd;
+    query.method = BearingMethod::short_bearing;
+    query.cavitation = CavitationModel::half_sommerfeld;
+    try {
+      bearing_characteristics(query);
+    } catch (const geometry::InvalidInput& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_EQ(error(0.5, 1e149), "width_ratio = 1e+149: must be in [1e-50, 1e50] "
+                               "(beyond, the outputs over- or underflow)");
+  EXPECT_EQ(error(0.5, 1e-150).rfind("width_ratio = ", 0), 0u);
+  EXPECT_EQ(error(0.5, 1e300).rfind("width_ratio = ", 0), 0u);
+  EXPECT_EQ(error(1e-200, 1.0).rfind("eccentricity_ratio = ", 0), 0u);
+  EXPECT_EQ(error(0.5, kLargestWidthRatio), "no error");
+  EXPECT_EQ(error(kSmallestEccentricityRatio, kSmallestWidthRatio), "no error");
+  EXPECT_EQ(error(0.0, 1.0), "no error");
 }
 
 std::string error_of(const BearingCharacteristicsNames& names) {

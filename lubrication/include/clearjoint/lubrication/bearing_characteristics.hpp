@@ -67,8 +67,10 @@ struct BearingCharacteristics {
   bool converged = true;            ///< grid only: see FilmLoad::converged
 };
 
-/// Throws geometry::InvalidInput naming the field for eps outside [0, 1), a non-positive or
-/// non-finite width ratio, a closed form asked for the mass-conserving model, or a bad grid.
+/// Throws geometry::InvalidInput naming the field for eps outside {0} U [kSmallestEccentricityRatio,
+/// 1), a width ratio outside [kSmallestWidthRatio, kLargestWidthRatio], a closed form asked for
+/// the mass-conserving model, or a bad grid (too fine a one: validate(ReynoldsGridOptions)).
+/// The closed forms' outputs are exact to kClosedFormRelativeError for every accepted input.
 BearingCharacteristics bearing_characteristics(const BearingCharacteristicsQuery& query);
 
 /// A query's choices as a front end receives them: names (to_string's), and the grid's size.
@@ -78,6 +80,8 @@ struct BearingCharacteristicsNames {
   std::optional<std::string> cavitation;  ///< nullopt: default_cavitation(method)
   /// (N_theta, N_z); nullopt: ReynoldsGridOptions' defaults.
   std::optional<std::pair<int, int>> grid;
+  /// Solve a grid above the solver's cost limits (ReynoldsGridOptions::allow_large_grid).
+  bool allow_large_grid = false;
 };
 
 /// The query for eps, B / D and the named choices: what the command line and Python both call.
@@ -87,6 +91,25 @@ struct BearingCharacteristicsNames {
 /// checked by bearing_characteristics.
 BearingCharacteristicsQuery query_from_names(double eccentricity_ratio, double width_ratio,
                                              const BearingCharacteristicsNames& names);
+
+/// The relative error of every output of the closed forms (short, long; rotation or squeeze)
+/// for every accepted eps, 1 - 2^-53 included: 1e-14. Their forms keep 1 - eps^2 (formed as
+/// (1 - eps)(1 + eps), 1 - eps exact) out of every difference (long_bearing.cpp,
+/// short_bearing.cpp), so each output is a few dozen roundings of 2^-53 (1.1e-16) each plus the
+/// peak search's 1e-15 (short_bearing.cpp): at most about 5e-15; measured 8e-16 at worst against
+/// a 50-digit evaluation (test_bearing_characteristics.cpp), a margin of 12.
+inline constexpr double kClosedFormRelativeError = 1e-14;
+/// The width ratios B / D accepted: [1e-50, 1e50]. So grows as (B/D)^2 and (1 - eps^2)^-2 <=
+/// 2^104 = 2e31, the short bearing's force as (B/D)^3 / c^2 (c = 1e-4 R) times 1 / s^5 <= 1e39:
+/// at 1e50 the largest intermediate is 1e197; at 1e-50 the smallest, eps B^3 / c^2 with
+/// eps >= 1e-100, is 5e-243; both far inside the doubles' normal range (2.2e-308 to 1.8e308), so
+/// nothing over- or underflows. Real bearings lie within [0.01, 100].
+inline constexpr double kSmallestWidthRatio = 1e-50;
+inline constexpr double kLargestWidthRatio = 1e50;
+/// The smallest non-zero eps accepted: 1e-100. Forces and flows are proportional to eps as
+/// eps -> 0; below it, with the narrowest width, the side flow R B c eps would leave the normal
+/// range (1e-100 x 1e-50 x 1e-4 = 1e-154 times scales near 1 stays inside). eps = 0 is exact.
+inline constexpr double kSmallestEccentricityRatio = 1e-100;
 
 /// The relative clearance c / R of the grid's bearing. The characteristics are independent of it
 /// to first order; the film thickness' exact geometry differs from h = c (1 - eps cos psi) by
