@@ -15,28 +15,44 @@ module clearjoint
   ! cj_status
   integer(c_int), parameter, public :: CJ_OK = 0, CJ_INVALID_INPUT = 1, CJ_OUT_OF_MEMORY = 2, &
                                        CJ_INTERNAL_ERROR = 3
-  ! cj_scenario (Fig. 2 of the paper)
+  ! The C enums' constants: the library's enum tables, written by scripts/projections
+  ! (cmake --build build --target projections): edit the tables.
+  ! BEGIN GENERATED enums
+  ! cj_scenario (C++: ContactScenario)
   integer(c_int32_t), parameter, public :: CJ_SCENARIO_NONE = 0, CJ_SCENARIO_SINGLE_RADIAL = 1, &
     CJ_SCENARIO_SINGLE_AXIAL = 2, CJ_SCENARIO_RADIAL_AT_BOTH_BASES = 3, &
     CJ_SCENARIO_AXIAL_AT_BOTH_BASES = 4, CJ_SCENARIO_RADIAL_AND_AXIAL_SAME_BASE = 5, &
     CJ_SCENARIO_RADIAL_AND_AXIAL_OPPOSITE_BASES = 6, CJ_SCENARIO_TWO_RADIAL_ONE_AXIAL = 7, &
     CJ_SCENARIO_ONE_RADIAL_TWO_AXIAL = 8, CJ_SCENARIO_ALL_FOUR = 9, CJ_SCENARIO_LINE = 10, &
     CJ_SCENARIO_FACE = 11, CJ_SCENARIO_LINE_AND_FACE = 12, CJ_SCENARIO_BEYOND_MODEL = 13
-  ! cj_certainty, cj_reason, cj_contact_type, cj_base
+  ! cj_certainty (C++: Certainty)
   integer(c_int32_t), parameter, public :: CJ_CERTAINTY_EXACT = 0, CJ_CERTAINTY_CERTIFIED = 1, &
-                                           CJ_CERTAINTY_UNCERTAIN = 2
+    CJ_CERTAINTY_UNCERTAIN = 2
+  ! cj_reason (C++: CertificateReason)
   integer(c_int32_t), parameter, public :: CJ_REASON_NONE = 0, CJ_REASON_NOT_DECIDED = 1, &
     CJ_REASON_CERTIFICATE_SWITCHED_OFF = 2, CJ_REASON_PLANE_FILTER_UNDECIDED = 3, &
     CJ_REASON_PLANE_FILTER_UNDECIDED_EXACT_FALLBACK_OFF = 4, &
     CJ_REASON_PLANE_RESULTS_NOT_REPRESENTABLE = 5, CJ_REASON_SUBDIVISION_BUDGET_EXHAUSTED = 6, &
     CJ_REASON_MORE_THAN_FOUR_ROOTS = 7, CJ_REASON_INTERVAL_PROOF_FAILED_NEAR_MULTIPLE_ROOT = 8, &
     CJ_REASON_COEFFICIENT_OVERFLOW = 9, CJ_REASON_CYLINDER_POINTS_NOT_REPRESENTABLE = 10, &
-    CJ_REASON_EXACT_ROOT_ISOLATION_BUDGET_EXHAUSTED = 11, CJ_REASON_EXACT_COEFFICIENTS_TOO_LARGE = 12, &
+    CJ_REASON_EXACT_ROOT_ISOLATION_BUDGET_EXHAUSTED = 11, &
+    CJ_REASON_EXACT_COEFFICIENTS_TOO_LARGE = 12, &
     CJ_REASON_EXACT_INTERMEDIATE_BEYOND_DOUBLE_RANGE = 13, &
-    CJ_REASON_CONTACT_NOT_REPRESENTABLE_IN_WORLD = 14, CJ_REASON_AXES_PARALLEL_WITHIN_TOLERANCE = 15, &
-    CJ_REASON_BEYOND_MODEL_UNDECIDED = 16
+    CJ_REASON_CONTACT_NOT_REPRESENTABLE_IN_WORLD = 14, &
+    CJ_REASON_AXES_PARALLEL_WITHIN_TOLERANCE = 15, CJ_REASON_BEYOND_MODEL_UNDECIDED = 16
+  ! cj_contact_type (C++: ContactType)
   integer(c_int32_t), parameter, public :: CJ_CONTACT_RADIAL = 0, CJ_CONTACT_AXIAL = 1
+  ! cj_base (C++: ContactBase)
   integer(c_int32_t), parameter, public :: CJ_BASE_A = 0, CJ_BASE_B = 1, CJ_BASE_MID = 2
+  ! cj_circle_plane_topology (C++: CirclePlaneTopology)
+  integer(c_int32_t), parameter, public :: CJ_CIRCLE_PLANE_DISJOINT = 0, &
+    CJ_CIRCLE_PLANE_TANGENT = 1, CJ_CIRCLE_PLANE_TWO_CROSSINGS = 2, &
+    CJ_CIRCLE_PLANE_CIRCLE_IN_PLANE = 3
+  ! cj_circle_cylinder_topology (C++: CircleCylinderTopology)
+  integer(c_int32_t), parameter, public :: CJ_CIRCLE_CYLINDER_INSIDE = 0, &
+    CJ_CIRCLE_CYLINDER_OUTSIDE = 1, CJ_CIRCLE_CYLINDER_CROSSING = 2, &
+    CJ_CIRCLE_CYLINDER_ON_SURFACE = 3
+  ! END GENERATED enums
   integer, parameter, public :: CJ_MAX_CONTACTS = 6
 
   type, bind(c), public :: cj_dimensions

@@ -19,6 +19,9 @@ _Scalars = Union[float, Sequence[float], npt.NDArray[np.float64]]  # shape () or
 
 class SolverError(RuntimeError): ...
 
+# The enums: the library's enum tables, written by scripts/projections (cmake --build build
+# --target projections): edit the tables.
+# BEGIN GENERATED enums
 class Certainty(enum.IntEnum):
     exact = 0
     certified = 1
@@ -42,8 +45,6 @@ class CertificateReason(enum.IntEnum):
     contact_not_representable_in_world = 14
     axes_parallel_within_tolerance = 15
     beyond_model_undecided = 16
-
-def certificate_reason_text(reason: Union[CertificateReason, int]) -> str: ...
 
 class ContactScenario(enum.IntEnum):
     none = 0
@@ -81,7 +82,9 @@ class CircleCylinderTopology(enum.IntEnum):
     outside = 1
     crossing = 2
     on_surface = 3
+# END GENERATED enums
 
+def certificate_reason_text(reason: Union[CertificateReason, int]) -> str: ...
 def scenario_label(scenario: Union[ContactScenario, int]) -> str: ...
 
 class JointDimensions:
@@ -100,6 +103,9 @@ class JointDimensions:
     @property
     def axial_clearance(self) -> float: ...
 
+# The result classes: the library's result field lists, written by scripts/projections, with the
+# attributes that are not fields (its PY_EXTRAS): edit the field lists.
+# BEGIN GENERATED results
 class Certificate:
     @property
     def level(self) -> Certainty: ...
@@ -147,9 +153,9 @@ class Contact:
     @property
     def point_journal(self) -> npt.NDArray[np.float64]: ...
     @property
-    def point_journal_error(self) -> float: ...
-    @property
     def point_bearing(self) -> npt.NDArray[np.float64]: ...
+    @property
+    def point_journal_error(self) -> float: ...
     @property
     def point_bearing_error(self) -> float: ...
     @property
@@ -166,11 +172,11 @@ class JointContacts:
     @property
     def aligned(self) -> bool: ...
     @property
+    def certificate(self) -> Certificate: ...
+    @property
     def contacts(self) -> List[Contact]: ...
     @property
     def contact_count(self) -> int: ...
-    @property
-    def certificate(self) -> Certificate: ...
     def as_dict(self) -> Dict[str, Any]: ...
 
 class CirclePlaneIntersection:
@@ -198,10 +204,11 @@ class CircleCylinderIntersection:
     @property
     def penetration_arcs(self) -> List[RimArc]: ...
     @property
-    def root_count(self) -> int: ...
-    @property
     def certificate(self) -> Certificate: ...
+    @property
+    def root_count(self) -> int: ...
     def as_dict(self) -> Dict[str, Any]: ...
+# END GENERATED results
 
 class ArrayResult:
     def fields(self) -> Tuple[str, ...]: ...

@@ -87,79 +87,106 @@ CJ_API const char* cj_status_string(int status);
 
 /* ---- Enums ------------------------------------------------------------------------------------ */
 
-/** The contact scenarios of the paper's Fig. 2, plus free flight and "beyond the model"
- * (C++: ContactScenario). */
+/* The enums below are the library's enum tables (clearjoint/geometry/model/enum_table.hpp),
+ * written by scripts/projections (cmake --build build --target projections): edit the tables. */
+/* BEGIN GENERATED enums */
+/** The contact scenarios of the paper's Fig. 2, plus free flight and "beyond the model" (C++:
+ * ContactScenario). */
 typedef enum cj_scenario {
-  CJ_SCENARIO_NONE = 0,                            /**< free flight: no contact */
-  CJ_SCENARIO_SINGLE_RADIAL = 1,                   /**< (a) */
-  CJ_SCENARIO_SINGLE_AXIAL = 2,                    /**< (b) */
-  CJ_SCENARIO_RADIAL_AT_BOTH_BASES = 3,            /**< (c) */
-  CJ_SCENARIO_AXIAL_AT_BOTH_BASES = 4,             /**< (d) */
-  CJ_SCENARIO_RADIAL_AND_AXIAL_SAME_BASE = 5,      /**< (e) */
-  CJ_SCENARIO_RADIAL_AND_AXIAL_OPPOSITE_BASES = 6, /**< (f) */
-  CJ_SCENARIO_TWO_RADIAL_ONE_AXIAL = 7,            /**< (g) */
-  CJ_SCENARIO_ONE_RADIAL_TWO_AXIAL = 8,            /**< (h) */
-  CJ_SCENARIO_ALL_FOUR = 9,                        /**< (i) */
-  CJ_SCENARIO_LINE = 10,                           /**< (j) parallel axes, along the wall */
-  CJ_SCENARIO_FACE = 11,                           /**< (k) parallel axes, flat on a base */
-  CJ_SCENARIO_LINE_AND_FACE = 12,                  /**< (l) */
-  CJ_SCENARIO_BEYOND_MODEL = 13 /**< outside the paper's model (contact_scenario.hpp) */
+  CJ_SCENARIO_NONE = 0, /**< none */
+  CJ_SCENARIO_SINGLE_RADIAL = 1, /**< (a) single radial */
+  CJ_SCENARIO_SINGLE_AXIAL = 2, /**< (b) single axial */
+  CJ_SCENARIO_RADIAL_AT_BOTH_BASES = 3, /**< (c) radial at both bases */
+  CJ_SCENARIO_AXIAL_AT_BOTH_BASES = 4, /**< (d) axial at both bases */
+  CJ_SCENARIO_RADIAL_AND_AXIAL_SAME_BASE = 5, /**< (e) radial and axial at the same base */
+  CJ_SCENARIO_RADIAL_AND_AXIAL_OPPOSITE_BASES = 6, /**< (f) radial and axial at opposite bases */
+  CJ_SCENARIO_TWO_RADIAL_ONE_AXIAL = 7, /**< (g) two radial, one axial */
+  CJ_SCENARIO_ONE_RADIAL_TWO_AXIAL = 8, /**< (h) one radial, two axial */
+  CJ_SCENARIO_ALL_FOUR = 9, /**< (i) all four */
+  CJ_SCENARIO_LINE = 10, /**< (j) line */
+  CJ_SCENARIO_FACE = 11, /**< (k) face */
+  CJ_SCENARIO_LINE_AND_FACE = 12, /**< (l) line and face */
+  CJ_SCENARIO_BEYOND_MODEL = 13 /**< beyond model */
 } cj_scenario;
 
 /** Trust in an answer, strongest first (C++: Certainty). */
 typedef enum cj_certainty {
-  CJ_CERTAINTY_EXACT = 0,     /**< decided in exact rational arithmetic */
+  CJ_CERTAINTY_EXACT = 0, /**< decided with exact rational arithmetic */
   CJ_CERTAINTY_CERTIFIED = 1, /**< proved in floating point with rigorous error bounds */
-  CJ_CERTAINTY_UNCERTAIN = 2  /**< not proved; the reason says why */
+  CJ_CERTAINTY_UNCERTAIN = 2 /**< not proved; the certificate's reason says why */
 } cj_certainty;
 
 /** Why an answer is `uncertain`, or for an `exact` one why the floating-point tiers did not
- * decide it; CJ_REASON_NONE for certified answers (C++: CertificateReason, whose comments say
- * more). `reason_text` and cj_reason_string() give the sentence. */
+ * decide it; CJ_REASON_NONE for certified answers (C++: CertificateReason). `reason_text` and
+ * cj_reason_string() give the sentence. */
 typedef enum cj_reason {
   CJ_REASON_NONE = 0,
-  CJ_REASON_NOT_DECIDED = 1,
-  CJ_REASON_CERTIFICATE_SWITCHED_OFF = 2,
+  CJ_REASON_NOT_DECIDED = 1, /**< not decided (a default-constructed certificate) */
+  CJ_REASON_CERTIFICATE_SWITCHED_OFF = 2, /**< certificate switched off */
+  /** floating-point filter could not decide (tangent or parallel) */
   CJ_REASON_PLANE_FILTER_UNDECIDED = 3,
+  /** floating-point filter could not decide and the exact fallback is off */
   CJ_REASON_PLANE_FILTER_UNDECIDED_EXACT_FALLBACK_OFF = 4,
+  /** crossing points, depth or their error bounds not representable in double (intermediate
+   * under- or overflow: input magnitudes too far apart); the topology is still decided */
   CJ_REASON_PLANE_RESULTS_NOT_REPRESENTABLE = 5,
+  /** subdivision budget exhausted (roots too close: near tangency) */
   CJ_REASON_SUBDIVISION_BUDGET_EXHAUSTED = 6,
+  /** more than four roots found (cannot happen for a proper rim) */
   CJ_REASON_MORE_THAN_FOUR_ROOTS = 7,
+  /** interval proof failed near a multiple root (tangency) */
   CJ_REASON_INTERVAL_PROOF_FAILED_NEAR_MULTIPLE_ROOT = 8,
-  CJ_REASON_COEFFICIENT_OVERFLOW = 9,
+  CJ_REASON_COEFFICIENT_OVERFLOW = 9, /**< coefficient overflow in double precision */
+  /** crossing points or their error bounds not representable in double (intermediate under- or
+   * overflow: input magnitudes too far apart); the root count is still decided */
   CJ_REASON_CYLINDER_POINTS_NOT_REPRESENTABLE = 10,
+  /** exact tier gave up: root isolation exceeded its budget (input magnitudes too far apart) */
   CJ_REASON_EXACT_ROOT_ISOLATION_BUDGET_EXHAUSTED = 11,
+  /** exact tier gave up: polynomial coefficients too large (input magnitudes too far apart) */
   CJ_REASON_EXACT_COEFFICIENTS_TOO_LARGE = 12,
+  /** exact tier gave up: an intermediate value left the double range (input magnitudes too far
+   * apart) */
   CJ_REASON_EXACT_INTERMEDIATE_BEYOND_DOUBLE_RANGE = 13,
+  /** a contact point, depth or error bound not representable in double (coordinates too large for
+   * the joint's size); the contact's existence is still decided */
   CJ_REASON_CONTACT_NOT_REPRESENTABLE_IN_WORLD = 14,
+  /** axes treated as parallel within DetectionOptions::parallel_angle_tolerance (eq. 5 relaxed;
+   * decided in double precision) */
   CJ_REASON_AXES_PARALLEL_WITHIN_TOLERANCE = 15,
+  /** a contact's depth lies within its error bound of the clearance: whether the joint is beyond
+   * the model (scenario beyond_model) is not proved; the contacts themselves are */
   CJ_REASON_BEYOND_MODEL_UNDECIDED = 16
 } cj_reason;
 
+/** What a contact is against (C++: ContactType). */
 typedef enum cj_contact_type {
-  CJ_CONTACT_RADIAL = 0, /**< against the lateral wall (a point, or a line when aligned) */
-  CJ_CONTACT_AXIAL = 1   /**< against a base (a point, or a face when aligned) */
+  CJ_CONTACT_RADIAL = 0, /**< against the lateral wall (eqs. 16-21; line: eqs. 6-8) */
+  CJ_CONTACT_AXIAL = 1 /**< against a base (eqs. 11-15; face: eqs. 9-10) */
 } cj_contact_type;
 
+/** Where a contact is (C++: ContactBase). */
 typedef enum cj_base {
-  CJ_BASE_A = 0,  /**< bearing base A (eq. 3) and the journal rim facing it */
-  CJ_BASE_B = 1,  /**< bearing base B (eq. 4) and the journal rim facing it */
-  CJ_BASE_MID = 2 /**< the journal's mid-length (aligned line contact, eqs. 6-8) */
+  CJ_BASE_A = 0, /**< at bearing base A (eq. 3) and the journal rim facing it */
+  CJ_BASE_B = 1, /**< at bearing base B (eq. 4) and the journal rim facing it */
+  CJ_BASE_MID = 2 /**< at the journal's mid-length (line contact, eqs. 6-8) */
 } cj_base;
 
+/** How a circle meets a plane (C++: CirclePlaneTopology). */
 typedef enum cj_circle_plane_topology {
-  CJ_CIRCLE_PLANE_DISJOINT = 0,
-  CJ_CIRCLE_PLANE_TANGENT = 1,
-  CJ_CIRCLE_PLANE_TWO_CROSSINGS = 2,
-  CJ_CIRCLE_PLANE_CIRCLE_IN_PLANE = 3
+  CJ_CIRCLE_PLANE_DISJOINT = 0, /**< no common point; side says where the circle is */
+  CJ_CIRCLE_PLANE_TANGENT = 1, /**< one common point of multiplicity 2 */
+  CJ_CIRCLE_PLANE_TWO_CROSSINGS = 2, /**< the circle passes through the plane */
+  CJ_CIRCLE_PLANE_CIRCLE_IN_PLANE = 3 /**< every rim point lies in the plane */
 } cj_circle_plane_topology;
 
+/** How a circle meets a cylinder's lateral surface (C++: CircleCylinderTopology). */
 typedef enum cj_circle_cylinder_topology {
-  CJ_CIRCLE_CYLINDER_INSIDE = 0,
-  CJ_CIRCLE_CYLINDER_OUTSIDE = 1,
-  CJ_CIRCLE_CYLINDER_CROSSING = 2,
-  CJ_CIRCLE_CYLINDER_ON_SURFACE = 3
+  CJ_CIRCLE_CYLINDER_INSIDE = 0, /**< every rim point strictly inside the wall */
+  CJ_CIRCLE_CYLINDER_OUTSIDE = 1, /**< every rim point strictly beyond the wall */
+  CJ_CIRCLE_CYLINDER_CROSSING = 2, /**< 1 to 4 distinct common points */
+  CJ_CIRCLE_CYLINDER_ON_SURFACE = 3 /**< coaxial with equal radii */
 } cj_circle_cylinder_topology;
+/* END GENERATED enums */
 
 /** Static strings; "unknown" for a value this version does not know. Each is the value's key in
  * the C++ library's enum table (clearjoint/geometry/model/enum_table.hpp), the one spelling that

@@ -41,12 +41,13 @@ struct OptionalField {
 
 namespace fields {
 
-// One entry of a field list: a key and the member(s) it reads. `members` is how many members of
-// the struct the entry covers.
+// One entry of a field list: a key, the member(s) it reads and a phrase for people (the
+// docstring of Python's attribute). `members` is how many members of the struct the entry covers.
 template <class S, class M>
 struct Plain {
   std::string_view key;
   M S::*member;
+  std::string_view doc;
   static constexpr int members = 1;
   template <class R>
   constexpr auto view(R& r) const -> decltype((r.*member)) { return r.*member; }
@@ -56,6 +57,7 @@ template <class S>
 struct Bound {
   std::string_view key;
   double S::*member;
+  std::string_view doc;
   static constexpr int members = 1;
   template <class R>
   constexpr auto view(R& r) const {
@@ -68,6 +70,7 @@ struct List {
   std::string_view key;
   A S::*items;
   int S::*count;
+  std::string_view doc;
   static constexpr int members = 2;
   template <class R>
   constexpr auto view(R& r) const {
@@ -81,6 +84,7 @@ struct Optional {
   std::string_view key;
   V S::*value;
   bool S::*present;
+  std::string_view doc;
   static constexpr int members = 2;
   template <class R>
   constexpr auto view(R& r) const {
@@ -90,19 +94,27 @@ struct Optional {
 };
 
 template <class S, class M>
-constexpr Plain<S, M> plain(std::string_view key, M S::*member) { return {key, member}; }
+constexpr Plain<S, M> plain(std::string_view key, M S::*member, std::string_view doc = {}) {
+  return {key, member, doc};
+}
 template <class S>
-constexpr Bound<S> bound(std::string_view key, double S::*member) { return {key, member}; }
+constexpr Bound<S> bound(std::string_view key, double S::*member, std::string_view doc = {}) {
+  return {key, member, doc};
+}
 template <class S, class A>
-constexpr List<S, A> list(std::string_view key, A S::*items, int S::*count) { return {key, items, count}; }
+constexpr List<S, A> list(std::string_view key, A S::*items, int S::*count, std::string_view doc = {}) {
+  return {key, items, count, doc};
+}
 template <class S, class V>
-constexpr Optional<S, V> optional(std::string_view key, V S::*value, bool S::*present) {
-  return {key, value, present};
+constexpr Optional<S, V> optional(std::string_view key, V S::*value, bool S::*present, std::string_view doc = {}) {
+  return {key, value, present, doc};
 }
 
 }  // namespace fields
 
-/// Specialised for each public result below: `static constexpr std::tuple fields`.
+/// Specialised for each public result (joint/result_fields.hpp): `static constexpr std::string_view
+/// type_name` (the class name of the front-ends: Python, the stubs) and `static constexpr std::tuple
+/// fields`.
 template <class Result>
 struct ResultFields;
 

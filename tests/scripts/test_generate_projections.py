@@ -1,0 +1,140 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: BSD-3-Clause
+"""Tests of scripts/projections/generate_projections.py on a small tree and a description written
+by hand: it writes every projection from the description, passes --check on what it wrote, and
+fails --check, naming the file, when a value is added to an enum or a field to a result."""
+import json
+import os
+import stat
+import subprocess
+import sys
+import tempfile
+import unittest
+
+GENERATOR = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scripts", "projections",
+                         "generate_projections.py")
+
+C_TYPES = ["ContactScenario", "Certainty", "CertificateReason", "ContactType", "ContactBase",
+           "CirclePlaneTopology", "CircleCylinderTopology"]
+
+
+def description():
+    enums = [{"type": name, "module": "geometry",
+              "entries": [{"code": 0, "name": "first", "key": "first", "label": "the first"},
+                          {"code": 1, "name": "second", "key": "2nd", "label": ""}]}
+             for name in C_TYPES]
+    enums.append({"type": "JointType", "module": "dynamics",
+                  "entries": [{"code": 0, "name": "spherical", "key": "spherical", "label": ""}]})
+    results = [{"type": "Contact", "fields": [
+        {"key": "depth", "doc": "", "kind": "plain", "value": "float"},
+        {"key": "type", "doc": "", "kind": "plain", "value": "ContactType"},
+        {"key": "crossings", "doc": "", "kind": "list", "value": "RimCrossing", "capacity": 2}]}]
+    return {"enums": enums, "results": results}
+
+
+def enum_node():
+    return {"enum": []}
+
+
+SCHEMAS = {
+    "docs/schema/detect-answer.schema.json": {"$defs": {
+        "certainty": enum_node(),
+        "contact": {"properties": {"type": enum_node(), "base": enum_node()}},
+        "answer": {"properties": {"scenario": enum_node()}}}},
+    "docs/schema/intersect-answer.schema.json": {"$defs": {
+        "certainty": enum_node(),
+        "plane_answer": {"properties": {"topology": enum_node()}},
+        "cylinder_answer": {"properties": {"topology": enum_node()}}}},
+    "docs/schema/model.schema.json": {"$defs": {
+        "joint": {"properties": {"type": enum_node()}},
+        "force": {"oneOf": [{}, {}, {"properties": {"normal_force": {"properties": {"model": enum_node()}}}}]}}},
+}
+
+MARKED = {
+    "bindings/c/include/clearjoint/clearjoint.h": "/* BEGIN GENERATED enums */\n/* END GENERATED enums */\n",
+    "bindings/fortran/clearjoint.f90": "! BEGIN GENERATED enums\n! END GENERATED enums\n",
+    "bindings/python/clearjoint/__init__.pyi":
+        "# BEGIN GENERATED enums\n# END GENERATED enums\n# BEGIN GENERATED results\n# END GENERATED results\n",
+}
+
+
+class GenerateProjections(unittest.TestCase):
+    def setUp(self):
+        self.folder = tempfile.TemporaryDirectory()
+        self.root = self.folder.name
+        for path, text in MARKED.items():
+            self.write(path, text)
+        for path, schema in SCHEMAS.items():
+            self.write(path, json.dumps(schema, indent=2) + "\n")
+        self.describe = os.path.join(self.root, "describe")
+        self.set_description(description())
+
+    def tearDown(self):
+        self.folder.cleanup()
+
+    def write(self, path, text):
+        full = os.path.join(self.root, path)
+        os.makedirs(os.path.dirname(full), exist_ok=True)
+        with open(full, "w") as f:
+            f.write(text)
+
+    def read(self, path):
+        with open(os.path.join(self.root, path)) as f:
+            return f.read()
+
+    def set_description(self, value):
+        with open(self.describe, "w") as f:
+            f.write(f"#!{sys.executable}\nimport json\nprint(json.dumps({value!r}))\n")
+        os.chmod(self.describe, os.stat(self.describe).st_mode | stat.S_IXUSR)
+
+    def run_generator(self, mode):
+        return subprocess.run([sys.executable, GENERATOR, "--describe", self.describe, "--root", self.root, mode],
+                              capture_output=True, text=True)
+
+    def test_writes_every_projection_and_then_passes_the_check(self):
+        self.assertEqual(self.run_generator("--write").returncode, 0)
+        header = self.read("bindings/c/include/clearjoint/clearjoint.h")
+        self.assertIn("CJ_SCENARIO_SECOND = 1", header)
+        self.assertIn("CJ_CONTACT_FIRST = 0, /**< the first */", header)
+        self.assertIn("CJ_BASE_SECOND = 1", self.read("bindings/fortran/clearjoint.f90"))
+        stub = self.read("bindings/python/clearjoint/__init__.pyi")
+        self.assertIn("class ContactType(enum.IntEnum):\n    first = 0\n    second = 1", stub)
+        self.assertNotIn("JointType", stub)  # not one of the enums the package shows
+        self.assertIn("def crossings(self) -> List[RimCrossing]: ...", stub)
+        answer = json.loads(self.read("docs/schema/detect-answer.schema.json"))
+        self.assertEqual(answer["$defs"]["answer"]["properties"]["scenario"]["enum"], ["first", "2nd"])
+        model = json.loads(self.read("docs/schema/model.schema.json"))
+        self.assertEqual(model["$defs"]["joint"]["properties"]["type"]["enum"], ["spherical"])
+        check = self.run_generator("--check")
+        self.assertEqual(check.returncode, 0, check.stdout + check.stderr)
+
+    def test_a_value_added_to_an_enum_makes_the_check_fail_naming_the_stale_files(self):
+        self.run_generator("--write")
+        grown = description()
+        grown["enums"][0]["entries"].append({"code": 2, "name": "third", "key": "third", "label": ""})
+        self.set_description(grown)
+        check = self.run_generator("--check")
+        self.assertEqual(check.returncode, 1)
+        self.assertIn("+  CJ_SCENARIO_THIRD = 2", check.stdout)
+        self.assertIn("stale: bindings/c/include/clearjoint/clearjoint.h", check.stdout)
+        self.assertIn("docs/schema/detect-answer.schema.json", check.stdout)
+
+    def test_a_field_added_to_a_result_makes_the_check_fail_on_the_stub(self):
+        self.run_generator("--write")
+        grown = description()
+        grown["results"][0]["fields"].append({"key": "trial", "doc": "", "kind": "bound", "value": "float"})
+        self.set_description(grown)
+        check = self.run_generator("--check")
+        self.assertEqual(check.returncode, 1)
+        self.assertIn("+    def trial(self) -> float: ...", check.stdout)
+        self.assertIn("bindings/python/clearjoint/__init__.pyi", check.stdout.split("stale:")[1])
+
+    def test_a_file_without_its_markers_is_an_error_naming_it(self):
+        self.write("bindings/fortran/clearjoint.f90", "module clearjoint\nend module\n")
+        run = self.run_generator("--check")
+        self.assertNotEqual(run.returncode, 0)
+        self.assertIn("bindings/fortran/clearjoint.f90: needs one 'BEGIN GENERATED enums' line", run.stderr)
+
+
+if __name__ == "__main__":
+    unittest.main()
