@@ -148,47 +148,50 @@ py::object circle_plane(const py::handle& circle_center, const py::handle& circl
     return py::cast(result);
   }
 
-  const auto rows = static_cast<py::ssize_t>(shape.rows);
-  auto topology = array_of<std::int8_t>({rows}), side = array_of<std::int8_t>({rows}),
-       certificate = array_of<std::int8_t>({rows}), reason = array_of<std::int8_t>({rows});
-  auto has_penetration = array_of<bool>({rows}), penetration_full = array_of<bool>({rows});
-  auto penetration_begin = array_of<double>({rows}), penetration_end = array_of<double>({rows}),
-       distance = array_of<double>({rows}), distance_error = array_of<double>({rows});
-  CrossingColumns crossings(rows, 2);
-  const CrossingColumns::Out crossing_out = crossings.out();
-  std::int8_t *t = topology.mutable_data(), *s = side.mutable_data(), *c = certificate.mutable_data(),
-              *cr = reason.mutable_data();
-  bool *hp = has_penetration.mutable_data(), *pf = penetration_full.mutable_data();
-  double *pb = penetration_begin.mutable_data(), *pe = penetration_end.mutable_data(),
-         *d = distance.mutable_data(), *de = distance_error.mutable_data();
-  const auto error = run_rows(shape.rows, thread_limit, [&](std::size_t n) {
-    const geo::CirclePlaneIntersection r = geo::intersect_circle_plane(circle(n), plane(n), options);
-    t[n] = static_cast<std::int8_t>(r.topology);
-    s[n] = static_cast<std::int8_t>(r.side);
-    c[n] = static_cast<std::int8_t>(r.certificate.level);
-    cr[n] = static_cast<std::int8_t>(r.certificate.reason);
-    hp[n] = r.has_penetration;
-    pb[n] = r.has_penetration ? r.penetration.begin : kNaN;
-    pe[n] = r.has_penetration ? r.penetration.end : kNaN;
-    pf[n] = r.has_penetration && r.penetration.full;
-    d[n] = r.max_signed_distance;
-    de[n] = r.max_signed_distance_error;
-    crossing_out.write(n, r.crossings.data(), r.crossing_count);
+  // Out of memory for the result columns: a MemoryError naming the batch, not "std::bad_alloc".
+  return within_memory("intersect_circle_plane", shape.rows, "circles", [&]() -> py::object {
+    const auto rows = static_cast<py::ssize_t>(shape.rows);
+    auto topology = array_of<std::int8_t>({rows}), side = array_of<std::int8_t>({rows}),
+         certificate = array_of<std::int8_t>({rows}), reason = array_of<std::int8_t>({rows});
+    auto has_penetration = array_of<bool>({rows}), penetration_full = array_of<bool>({rows});
+    auto penetration_begin = array_of<double>({rows}), penetration_end = array_of<double>({rows}),
+         distance = array_of<double>({rows}), distance_error = array_of<double>({rows});
+    CrossingColumns crossings(rows, 2);
+    const CrossingColumns::Out crossing_out = crossings.out();
+    std::int8_t *t = topology.mutable_data(), *s = side.mutable_data(), *c = certificate.mutable_data(),
+                *cr = reason.mutable_data();
+    bool *hp = has_penetration.mutable_data(), *pf = penetration_full.mutable_data();
+    double *pb = penetration_begin.mutable_data(), *pe = penetration_end.mutable_data(),
+           *d = distance.mutable_data(), *de = distance_error.mutable_data();
+    const auto error = run_rows(shape.rows, thread_limit, [&](std::size_t n) {
+      const geo::CirclePlaneIntersection r = geo::intersect_circle_plane(circle(n), plane(n), options);
+      t[n] = static_cast<std::int8_t>(r.topology);
+      s[n] = static_cast<std::int8_t>(r.side);
+      c[n] = static_cast<std::int8_t>(r.certificate.level);
+      cr[n] = static_cast<std::int8_t>(r.certificate.reason);
+      hp[n] = r.has_penetration;
+      pb[n] = r.has_penetration ? r.penetration.begin : kNaN;
+      pe[n] = r.has_penetration ? r.penetration.end : kNaN;
+      pf[n] = r.has_penetration && r.penetration.full;
+      d[n] = r.max_signed_distance;
+      de[n] = r.max_signed_distance_error;
+      crossing_out.write(n, r.crossings.data(), r.crossing_count);
+    });
+    if (error) raise(*error, fields);
+    py::dict out;
+    out["topology"] = topology;
+    out["side"] = side;
+    crossings.put(out);
+    out["has_penetration"] = has_penetration;
+    out["penetration_begin"] = penetration_begin;
+    out["penetration_end"] = penetration_end;
+    out["penetration_full"] = penetration_full;
+    out["max_signed_distance"] = distance;
+    out["max_signed_distance_error"] = distance_error;
+    out["certificate"] = certificate;
+    out["certificate_reason"] = reason;
+    return out;
   });
-  if (error) raise(*error, fields);
-  py::dict out;
-  out["topology"] = topology;
-  out["side"] = side;
-  crossings.put(out);
-  out["has_penetration"] = has_penetration;
-  out["penetration_begin"] = penetration_begin;
-  out["penetration_end"] = penetration_end;
-  out["penetration_full"] = penetration_full;
-  out["max_signed_distance"] = distance;
-  out["max_signed_distance_error"] = distance_error;
-  out["certificate"] = certificate;
-  out["certificate_reason"] = reason;
-  return out;
 }
 
 py::object circle_cylinder(const py::handle& circle_center, const py::handle& circle_normal,
@@ -226,42 +229,45 @@ py::object circle_cylinder(const py::handle& circle_center, const py::handle& ci
     return py::cast(result);
   }
 
-  const auto rows = static_cast<py::ssize_t>(shape.rows);
-  auto topology = array_of<std::int8_t>({rows}), certificate = array_of<std::int8_t>({rows}),
-       reason = array_of<std::int8_t>({rows}), arc_count = array_of<std::int8_t>({rows});
-  auto arc_begin = array_of<double>({rows, 2}), arc_end = array_of<double>({rows, 2});
-  auto arc_full = array_of<bool>({rows, 2});
-  CrossingColumns crossings(rows, 4);
-  const CrossingColumns::Out crossing_out = crossings.out();
-  std::int8_t *t = topology.mutable_data(), *c = certificate.mutable_data(), *cr = reason.mutable_data(),
-              *ac = arc_count.mutable_data();
-  double *ab = arc_begin.mutable_data(), *ae = arc_end.mutable_data();
-  bool* af = arc_full.mutable_data();
-  const auto error = run_rows(shape.rows, thread_limit, [&](std::size_t n) {
-    const geo::CircleCylinderIntersection r = geo::intersect_circle_cylinder(circle(n), cylinder(n), options);
-    t[n] = static_cast<std::int8_t>(r.topology);
-    c[n] = static_cast<std::int8_t>(r.certificate.level);
-    cr[n] = static_cast<std::int8_t>(r.certificate.reason);
-    ac[n] = static_cast<std::int8_t>(r.arc_count);
-    for (int k = 0; k < 2; ++k) {
-      const bool used = k < r.arc_count;
-      ab[2 * n + k] = used ? r.penetration_arcs[k].begin : kNaN;
-      ae[2 * n + k] = used ? r.penetration_arcs[k].end : kNaN;
-      af[2 * n + k] = used && r.penetration_arcs[k].full;
-    }
-    crossing_out.write(n, r.crossings.data(), r.crossing_count);
+  // Out of memory for the result columns: a MemoryError naming the batch, not "std::bad_alloc".
+  return within_memory("intersect_circle_cylinder", shape.rows, "circles", [&]() -> py::object {
+    const auto rows = static_cast<py::ssize_t>(shape.rows);
+    auto topology = array_of<std::int8_t>({rows}), certificate = array_of<std::int8_t>({rows}),
+         reason = array_of<std::int8_t>({rows}), arc_count = array_of<std::int8_t>({rows});
+    auto arc_begin = array_of<double>({rows, 2}), arc_end = array_of<double>({rows, 2});
+    auto arc_full = array_of<bool>({rows, 2});
+    CrossingColumns crossings(rows, 4);
+    const CrossingColumns::Out crossing_out = crossings.out();
+    std::int8_t *t = topology.mutable_data(), *c = certificate.mutable_data(), *cr = reason.mutable_data(),
+                *ac = arc_count.mutable_data();
+    double *ab = arc_begin.mutable_data(), *ae = arc_end.mutable_data();
+    bool* af = arc_full.mutable_data();
+    const auto error = run_rows(shape.rows, thread_limit, [&](std::size_t n) {
+      const geo::CircleCylinderIntersection r = geo::intersect_circle_cylinder(circle(n), cylinder(n), options);
+      t[n] = static_cast<std::int8_t>(r.topology);
+      c[n] = static_cast<std::int8_t>(r.certificate.level);
+      cr[n] = static_cast<std::int8_t>(r.certificate.reason);
+      ac[n] = static_cast<std::int8_t>(r.arc_count);
+      for (int k = 0; k < 2; ++k) {
+        const bool used = k < r.arc_count;
+        ab[2 * n + k] = used ? r.penetration_arcs[k].begin : kNaN;
+        ae[2 * n + k] = used ? r.penetration_arcs[k].end : kNaN;
+        af[2 * n + k] = used && r.penetration_arcs[k].full;
+      }
+      crossing_out.write(n, r.crossings.data(), r.crossing_count);
+    });
+    if (error) raise(*error, fields);
+    py::dict out;
+    out["topology"] = topology;
+    crossings.put(out);
+    out["arc_count"] = arc_count;
+    out["arc_begin"] = arc_begin;
+    out["arc_end"] = arc_end;
+    out["arc_full"] = arc_full;
+    out["certificate"] = certificate;
+    out["certificate_reason"] = reason;
+    return out;
   });
-  if (error) raise(*error, fields);
-  py::dict out;
-  out["topology"] = topology;
-  crossings.put(out);
-  out["arc_count"] = arc_count;
-  out["arc_begin"] = arc_begin;
-  out["arc_end"] = arc_end;
-  out["arc_full"] = arc_full;
-  out["certificate"] = certificate;
-  out["certificate_reason"] = reason;
-  return out;
 }
 
 void bind_kernel_types(py::module_& m) {

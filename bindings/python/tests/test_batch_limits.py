@@ -113,3 +113,32 @@ except MemoryError as error:
         assert out == "finished" or out == (
             "MemoryError: detect: a batch of 2000000 poses does not fit in the memory available for its "
             "results; pass fewer at a time"), outcomes
+
+
+@pytest.mark.parametrize("query", ["intersect_circle_plane", "intersect_circle_cylinder"])
+def test_a_kernel_batch_out_of_memory_raises_memory_error_naming_the_batch(query):
+    # Four million circles: the cylinder query's result columns take about 230 bytes a row (four
+    # crossings of angle, error, point, multiplicity), the plane query's about 140, so either needs
+    # over 500 MB, under a limit 400 MB above what the interpreter holds with the inputs made.
+    run = child(f"""
+import resource
+centres = np.tile([100.0, 0, 9900], (4000000, 1))
+def address_space():
+    with open("/proc/self/status") as status:
+        return next(int(line.split()[1]) * 1024 for line in status if line.startswith("VmSize:"))
+limit = address_space() + 400 * 2**20
+resource.setrlimit(resource.RLIMIT_AS, (limit, limit))
+try:
+    if "{query}" == "intersect_circle_plane":
+        clearjoint.intersect_circle_plane(centres, [0, 0, 1], 9900, [0, 0, 0], [0, 0, 1], threads=1)
+    else:
+        clearjoint.intersect_circle_cylinder(centres, [0, 0, 1], 9900, [0, 0, 0], [0, 0, 1], 10000,
+                                             threads=1)
+    print("finished")
+except MemoryError as error:
+    print("MemoryError:", error)
+""")
+    out, err = run.communicate(timeout=300)
+    assert run.returncode == 0, err
+    assert out.strip() == (f"MemoryError: {query}: a batch of 4000000 circles does not fit in the "
+                           "memory available for its results; pass fewer at a time"), (out, err)
