@@ -55,7 +55,7 @@ void validate(const ReynoldsGridOptions& options) {
       message << "more band entries than an int counts (" << kMaxGridBandEntries << "): too large to store";
     } else {
       message << "above the limits (" << kMaxGridBandBytes / kMebibyte << " MiB, " << kMaxGridOperations
-              << " operations, about half a second a solve); allow_large_grid (--allow-large-grid) "
+              << " operations, about half a second a solve); allow_large_grid "
                  "solves it anyway";
     }
     throw geometry::InvalidInput(message.str());
