@@ -5,16 +5,20 @@ Section 6.1"): the planar slider-crank of Marques et al. (2017) with its rod-sli
 joint dry (models/slider_crank_planar_clearance_aligned.json) and lubricated
 (models/slider_crank_planar_clearance_lubricated.json), and the ideal mechanism as reference.
 
-One command runs the three models in process (clearjoint.simulate) up to --end-time and draws,
-with clearjoint.plot's panels, over the window --window:
+One command runs the three models in process (clearjoint.simulate, in the engine --engine) up to
+--end-time and draws, with clearjoint.plot's panels, over the window --window:
+  comparison.png           dry, lubricated and ideal overlaid by clearjoint.plot.compare (what
+                           `clearjoint plot DRY LUBRICATED --ideal IDEAL --out comparison.png` draws);
   orbit.png                the journal's centre in units of the radial clearance, dry and lubricated;
   joint_force.png          the magnitude of the joint's force (contact, or film plus contact),
                            from the start and over the window;
   slider_acceleration.png  the slider's acceleration, dry and lubricated, the ideal one dashed;
   film.png                 the lubricated film's minimum thickness and eccentricity ratio;
-into --out (default docs/figures/lubrication), and prints the numbers the page quotes.
+into --out (default: a folder "figures" beside the runs, in a new temporary folder; the page's
+figures are regenerated with --out docs/figures/lubrication), and prints the numbers the page
+quotes.
 
-    PYTHONPATH=build/bindings/python python3 scripts/lubricated_section6.py
+    PYTHONPATH=build/bindings/python /usr/bin/python3 scripts/lubricated_section6.py --engine simbody
 """
 import argparse
 import json
@@ -42,12 +46,10 @@ WINDOW = (0.1, 0.2)
 CURVES = {"dry": dict(color="tab:red", linewidth=0.7), "lubricated": dict(color="tab:blue", linewidth=0.9)}
 
 
-def run(name, end_time, folder):
-    with open(os.path.join(ROOT, "models", MODELS[name])) as f:
-        model = json.load(f)
-    model["solver"]["end_time"] = end_time
+def run(name, end_time, folder, engine):
     start = time.perf_counter()
-    clearjoint.simulate(model, out=folder, force=True)
+    clearjoint.simulate(os.path.join(ROOT, "models", MODELS[name]), out=folder, force=True, engine=engine,
+                        overrides={"solver.end_time": end_time})
     return runplot.read_run(folder), time.perf_counter() - start
 
 
@@ -62,16 +64,23 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--end-time", type=float, default=WINDOW[1], help="simulated time [s]")
     parser.add_argument("--window", type=float, nargs=2, default=WINDOW, help="drawn window [s]")
-    parser.add_argument("--out", default=os.path.join(ROOT, "docs", "figures", "lubrication"))
+    parser.add_argument("--engine", default="clearjoint", choices=clearjoint._core.engines(),
+                        help="the integrating engine (clearjoint simulate --engine)")
+    parser.add_argument("--out", default=None,
+                        help="where the figures go (default: RUNS/figures; the page's: docs/figures/lubrication)")
     parser.add_argument("--runs", default=None,
                         help="where the run folders go (default: a new temporary folder)")
     a = parser.parse_args()
     a.runs = a.runs or tempfile.mkdtemp(prefix="lubricated-section6-")
+    a.out = a.out or os.path.join(a.runs, "figures")
     os.makedirs(a.out, exist_ok=True)
     window = tuple(a.window)
     runs, seconds = {}, {}
     for name in MODELS:
-        runs[name], seconds[name] = run(name, a.end_time, os.path.join(a.runs, name))
+        runs[name], seconds[name] = run(name, a.end_time, os.path.join(a.runs, name), a.engine)
+    comparison = runplot.compare([runs["dry"], runs["lubricated"]], labels=[f"dry ({a.engine})", f"lubricated ({a.engine})"],
+                                 window=tuple(a.window), ideal=runs["ideal"])
+    save(comparison.figure, a.out, "comparison.png")
     table = runs["dry"].clearance_tables()[0]
     series = {k: runplot.joint_series(runs[k], table, window) for k in ("dry", "lubricated")}
 
@@ -117,7 +126,7 @@ def main():
     keep = (columns["time"] >= window[0]) & (columns["time"] <= window[1])
     fig, (top, bottom) = plt.subplots(2, 1, figsize=(8, 4.6), sharex=True)
     top.plot(columns["time"][keep], 1e6 * columns["film.min_thickness"][keep], **CURVES["lubricated"])
-    top.set_ylabel("h_min [um]")
+    top.set_ylabel("h_min [µm]")
     bottom.plot(columns["time"][keep], columns["film.eccentricity_ratio"][keep], **CURVES["lubricated"])
     bottom.set_ylabel("eps [-]")
     bottom.set_xlabel("time [s]")
@@ -128,7 +137,7 @@ def main():
 
     regimes = {int(r): int(n) for r, n in zip(*np.unique(columns["film.regime"], return_counts=True))}
     print(json.dumps({
-        "end_time": a.end_time, "window": window, "wall_seconds": seconds,
+        "engine": a.engine, "out": a.out, "end_time": a.end_time, "window": window, "wall_seconds": seconds,
         "peak_joint_force": peak, "largest_slider_acceleration_departure_from_ideal": spread,
         "lubricated": {"min_film_thickness": float(np.min(columns["film.min_thickness"])),
                        "max_eccentricity_ratio": float(np.max(columns["film.eccentricity_ratio"])),

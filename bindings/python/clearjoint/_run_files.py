@@ -17,7 +17,7 @@ from __future__ import annotations
 import hashlib
 import os
 import re
-from typing import Dict, List, Tuple
+from typing import Any, Dict, List, Tuple
 
 import numpy as np
 
@@ -150,3 +150,57 @@ def _tables_of(handle) -> Dict[str, Dict[str, np.ndarray]]:
             values = np.asarray(dataset[:], dtype=np.float64)
             tables[name] = {column: np.ascontiguousarray(values[:, k]) for k, column in enumerate(names)}
     return tables
+
+
+Tables = Dict[str, Dict[str, np.ndarray]]
+
+
+def read_folder_tables(folder: str) -> Tables:
+    """Every table of a run folder, table -> column -> float64 array: ``run.h5`` when the folder
+    has one (checked against its checksum), else its ``*.csv`` files. Any folder of
+    ``clearjoint simulate`` (either engine, either format) or of ``clearjoint-mujoco`` (force
+    tables only) reads; a folder holding neither is a RunFileError naming it."""
+    if os.path.lexists(os.path.join(folder, HDF5_FILE)):
+        return read_hdf5_tables(folder)
+    tables: Tables = {}
+    for entry in sorted(os.listdir(folder)):
+        if entry.endswith(".csv"):
+            header, values = read_csv_table(os.path.join(folder, entry))
+            tables[entry[:-len(".csv")]] = {column: np.ascontiguousarray(values[:, k])
+                                            for k, column in enumerate(header)}
+    if not tables:
+        raise RunFileError(f"{folder}: not a run folder: no run tables (no {HDF5_FILE} and no .csv "
+                           "files; clearjoint simulate --out and clearjoint-mujoco --out write them)")
+    return tables
+
+
+#: Columns that hold codes, with the dtype detection batches give the same codes
+#: (clearjoint/_detect.py, DetectionBatch): ContactScenario, Certainty and counts as int8, the
+#: parallel-axes flag as bool; a lubricated joint's film regime (0 dry, 1 film, 2 blend) as int8.
+CODE_COLUMNS = {"scenario": np.int8, "certainty": np.int8, "contact_count": np.int8,
+                "aligned": np.bool_, "film.regime": np.int8}
+
+
+def typed_column(name: str, values: np.ndarray) -> np.ndarray:
+    """A table's column with the dtype of CODE_COLUMNS when it is one and every value is a whole
+    number in range (a code column of another writer holding NaN stays float64)."""
+    dtype = CODE_COLUMNS.get(name)
+    if dtype is None or not np.all(np.isfinite(values)) or not np.all(values == np.round(values)):
+        return values
+    if dtype is np.bool_:
+        return values != 0.0 if np.all((values == 0.0) | (values == 1.0)) else values
+    limits = np.iinfo(dtype)
+    if values.size and (values.min() < limits.min or values.max() > limits.max):
+        return values
+    return values.astype(dtype)
+
+
+def typed_table(columns: Dict[str, np.ndarray]) -> Any:
+    """A run table as ``clearjoint.read_run`` returns it: a pandas DataFrame when pandas can be
+    imported (as DetectionBatch.poses()), else the dict of arrays; code columns typed."""
+    typed = {name: typed_column(name, values) for name, values in columns.items()}
+    try:
+        import pandas
+    except ImportError:
+        return typed
+    return pandas.DataFrame(typed, copy=False)

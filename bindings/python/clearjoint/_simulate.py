@@ -13,7 +13,7 @@ from typing import Any, Callable, Dict, List, Mapping, Optional, Tuple, Union
 import numpy as np
 
 from . import _core
-from ._run_files import HDF5_FILE, RunFileError, read_csv_table, read_hdf5_tables, read_json_bounded
+from ._run_files import RunFileError, read_folder_tables, read_json_bounded, typed_table
 
 Model = Union[str, "os.PathLike[str]", Mapping[str, Any]]
 Progress = Union[bool, None, Callable[[float], None]]
@@ -37,6 +37,9 @@ class SimulationResult:
     - ``"force_<element>"``: time and the columns a force element records (a clearance joint's
       scenario, depths, forces ...); NaN where the CSV file says ``nan``.
 
+    ``read_run`` gives the same tables as pandas DataFrames (when pandas is installed) with the
+    code columns typed as detection batches type them (``scenario`` int8, ...).
+
     ``summary`` has the run's statistics: steps, derivative_calls, smallest_step, largest_step,
     restarts, failed_attempts, initial_condition_iterations, initial_position_residual,
     initial_velocity_residual, initial_energy, max_energy_change, max_position_violation,
@@ -54,7 +57,8 @@ class SimulationResult:
         return self.tables[table]
 
     def __repr__(self) -> str:
-        shapes = ", ".join(f"{name}: {len(columns)} columns x {len(next(iter(columns.values())))} rows"
+        # Column names and one column's length: the same for a dict of arrays and a DataFrame.
+        shapes = ", ".join(f"{name}: {len(list(columns))} columns x {len(columns[next(iter(columns))])} rows"
                            for name, columns in self.tables.items())
         return f"SimulationResult({shapes})"
 
@@ -332,8 +336,16 @@ def simulate(model: Model, *, progress: Progress = False, allow_large: bool = Fa
 
 
 def read_run(folder: Union[str, "os.PathLike[str]"]) -> SimulationResult:
-    """A run folder of ``clearjoint simulate`` (CSV files or run.h5) read back as the
-    SimulationResult that ``simulate`` returns in memory, bit for bit, with its summary.
+    """A run folder read back: the tables and summary of ``clearjoint simulate`` (either engine,
+    CSV files or run.h5) or of ``clearjoint-mujoco`` (its force tables, no summary).
+
+    ``tables[name]`` is a pandas DataFrame when pandas can be imported, else a dict of NumPy
+    arrays, as ``DetectionBatch.poses()`` gives its tables. Columns are those of the files, in
+    file order; the numbers are float64, bit for bit what ``simulate`` returns in memory, except
+    the code columns, which have the dtypes of detection batches: ``scenario``, ``certainty``,
+    ``contact_count`` and ``film.regime`` int8, ``aligned`` bool (a code column holding a NaN
+    stays float64). ``clearjoint.plot.read_run`` reads folders with this same reader and adds the
+    model (docs/viewing-runs.md).
 
     Files are read with the limits of docs/command-line.md ("Reading a run back"): regular files
     only, no symbolic links, tables of at most 2 GiB; run.h5 only when its bytes match the
@@ -348,14 +360,5 @@ def read_run(folder: Union[str, "os.PathLike[str]"]) -> SimulationResult:
         if not isinstance(loaded, dict):
             raise RunFileError(f"summary {summary_path!r}: not a JSON object")
         summary = loaded
-    if os.path.lexists(os.path.join(folder, HDF5_FILE)):
-        return SimulationResult(tables=read_hdf5_tables(folder), summary=summary, folder=folder)
-    tables: Dict[str, Dict[str, np.ndarray]] = {}
-    for entry in sorted(os.listdir(folder)):
-        if not entry.endswith(".csv"):
-            continue
-        header, values = read_csv_table(os.path.join(folder, entry))
-        tables[entry[:-4]] = {column: np.ascontiguousarray(values[:, k]) for k, column in enumerate(header)}
-    if not tables:
-        raise ValueError(f"{folder}: no run tables (CSV files or run.h5) in it")
+    tables = {name: typed_table(columns) for name, columns in read_folder_tables(folder).items()}
     return SimulationResult(tables=tables, summary=summary, folder=folder)

@@ -118,12 +118,13 @@ def test_the_time_window_keeps_only_its_report_times(runs):
     plt.close(figure)
 
 
-def test_without_the_model_lengths_are_drawn_in_millimetres(runs, tmp_path):
+def test_without_the_model_lengths_are_drawn_in_metres(runs, tmp_path):
     bare = tmp_path / "bare"
     shutil.copytree(runs["clearance"], bare)
     (bare / "model.json").unlink()
-    figure = plot.joint_figure(bare, panels=["orbit"])
-    assert orbit_axes(figure)[0].get_xlabel() == "u [mm]"
+    figure = plot.joint_figure(bare, panels=["orbit", "axial"])
+    assert orbit_axes(figure)[0].get_xlabel() == "u [m]"
+    assert figure.axes[-1].get_ylabel() == "axial position [m]"
     plt.close(figure)
 
 

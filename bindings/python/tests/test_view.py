@@ -191,3 +191,21 @@ def test_a_table_linked_to_another_file_is_refused(run_folder, tmp_path):
     (linked / "energy.csv").unlink()
     (linked / "energy.csv").symlink_to(tmp_path / "elsewhere.csv")
     one_sentence_error(run_view(linked), "energy.csv", "symbolic link")
+
+
+def test_an_hdf5_run_of_a_lubricated_joint_is_served_with_the_film_force_on_a_sensible_axis(tmp_path, models_dir, cli):
+    folder = tmp_path / "lubricated-hdf5"
+    subprocess.run([str(cli), "simulate", str(models_dir / "slider_crank_planar_clearance_lubricated.json"),
+                    "--end-time", "0.01", "--format", "hdf5", "--out", str(folder)],
+                   check=True, stdout=subprocess.DEVNULL)
+    with view.serve(folder) as server:
+        manifest = json.loads(urllib.request.urlopen(server.url + "run/manifest.json").read())
+        frames = np.frombuffer(urllib.request.urlopen(server.url + "run/frames.f32").read(), dtype="<f4")
+    (joint,) = manifest["joints"]
+    assert joint["lubricated"] and joint["peak_force"] == 0.0, "the film holds: no dry contact"
+    assert joint["peak_total_force"] > 1.0, "the film carries the rod's load"
+    head = frames.reshape(manifest["frame_count"], manifest["stride"])[:, joint["offset"]:]
+    # From the first report time on (at t = 0 the journal is centred, its film unloaded).
+    assert np.all(head[1:, 10] > 1.0)
+    film_thickness = head[:, 12].astype(float)
+    assert np.all((film_thickness > 0.0) & (film_thickness <= 1.0001e-4)), "h_min within the clearance c = 0.1 mm"

@@ -15,7 +15,7 @@ from .result_manifest import register_written
 from .run_folder import Run, RunError, read_run
 
 #: Panels in the order they are drawn; ``panels=`` picks among them.
-PANELS = ("orbit", "force", "axial", "tilt", "slider")
+PANELS = ("orbit", "force", "film", "axial", "tilt", "slider")
 Window = Optional[Tuple[Optional[float], Optional[float]]]
 
 
@@ -103,8 +103,9 @@ def joint_figure(run: Any, joint: Optional[str] = None, *, model: Any = None, id
         A run of the same mechanism with an ideal joint (folder or result): its slider
         acceleration is drawn beside this one's.
     panels:
-        Some of ``PANELS`` ("orbit", "force", "axial", "tilt", "slider"); default: all that apply
-        (axial and tilt for a spatial joint, slider when the run has a body called slider).
+        Some of ``PANELS`` ("orbit", "force", "film", "axial", "tilt", "slider"); default: all
+        that apply (film for a lubricated joint, axial and tilt for a spatial joint, slider when
+        the run has a body called slider).
     window:
         (start, end) in seconds, either None for an open end.
     x:
@@ -119,10 +120,12 @@ def joint_figure(run: Any, joint: Optional[str] = None, *, model: Any = None, id
     spatial = is_spatial(series)
     slider = slider or default_slider(run)
     wanted = list(panels) if panels is not None else [
-        p for p in PANELS if p not in ("axial", "tilt") or spatial]
+        p for p in PANELS if (p not in ("axial", "tilt") or spatial) and (p != "film" or series.lubricated)]
     unknown = [p for p in wanted if p not in PANELS]
     if unknown:
         raise ValueError(f"panels: {', '.join(unknown)} unknown (choose among {', '.join(PANELS)})")
+    if "film" in wanted and not series.lubricated:
+        raise RunError(f"{run.source}: {table} has no film columns (a dry joint): no film panel")
     if "slider" in wanted and slider is None:
         if panels is not None:
             raise RunError(f"{run.source}: no body table body_slider.csv; name the body (slider=)")
@@ -156,6 +159,8 @@ def joint_figure(run: Any, joint: Optional[str] = None, *, model: Any = None, id
         row += 1
         if panel == "force":
             draw.plot_normal_force(ax, series, x_values, x_label)
+        elif panel == "film":
+            draw.plot_film_thickness(ax, series, x_values, x_label)
         elif panel == "axial":
             draw.plot_axial_position(ax, series, x_values, x_label)
         elif panel == "tilt":
@@ -171,7 +176,7 @@ def joint_figure(run: Any, joint: Optional[str] = None, *, model: Any = None, id
         ax.set_xlabel("")
         ax.tick_params(labelbottom=False)
     name = series.joint.name if series.joint is not None else series.name
-    where = "" if series.radial_clearance else " (model unknown: lengths in mm)"
+    where = "" if series.radial_clearance else " (model unknown: lengths in m)"
     figure.suptitle(f"clearance joint '{name}'{where}", fontsize=11)
     return figure
 

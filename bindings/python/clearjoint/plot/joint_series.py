@@ -6,7 +6,7 @@ time, where impacts began, the normal force, the axial position and the tilt.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Optional, Tuple
+from typing import Dict, Optional, Tuple
 
 import numpy as np
 
@@ -27,8 +27,25 @@ class ClearanceJointSeries:
     rim_b: np.ndarray              #   the bearing frame (u, v, axial) relative to P_i [m] (Fig. 14)
     normal_force: np.ndarray       # sum of the slots' F_N [N]
     impact_rows: np.ndarray        # rows where some slot's contact began (its depth was NaN before)
+    contact_free: np.ndarray       # rows where no slot is in dry contact (bool)
     axis_angle: np.ndarray         # angle between journal and bearing axes [rad] (Fig. 11(b))
     joint: Optional[ClearanceJointModel]  # the model's joint, when the model is known
+    total_force: Optional[np.ndarray] = None  # |(fx, fy, fz)|: contact and film force on the journal [N]
+    film: Optional[Dict[str, np.ndarray]] = None  # a lubricated joint's film.* columns, without "film."
+
+    @property
+    def lubricated(self) -> bool:
+        return self.film is not None
+
+    @property
+    def film_force(self) -> Optional[np.ndarray]:
+        """The film's force on the journal, lambda |F_film| [N], where the tables give it alone:
+        at report times without a dry contact the joint's force (fx, fy, fz) is the film's
+        (docs/dynamics.md: lambda F_film + F_dry); where a dry contact acts too the tables hold
+        only the sum, and the value is NaN (a gap in the curve). None for a dry joint."""
+        if self.film is None or self.total_force is None:
+            return None
+        return np.where(self.contact_free, self.total_force, np.nan)
 
     @property
     def axial_position(self) -> np.ndarray:
@@ -86,6 +103,11 @@ def joint_series(run: Run, table: str,
     rows = np.flatnonzero(keep)
     first = rows[0]
     impact_rows = impact_rows_all[keep[impact_rows_all]] - first
+    total_force = None
+    if all(c in columns for c in ("fx", "fy", "fz")):
+        total_force = np.sqrt(columns["fx"] ** 2 + columns["fy"] ** 2 + columns["fz"] ** 2)[keep]
+    film = {name[len("film."):]: values[keep] for name, values in columns.items()
+            if name.startswith("film.")} or None
     return ClearanceJointSeries(
         name=table[len("force_"):],
         time=time[keep],
@@ -94,8 +116,11 @@ def joint_series(run: Run, table: str,
         rim_b=np.stack([columns["rim_b_u"], columns["rim_b_v"], columns["rim_b_axial"]], axis=1)[keep],
         normal_force=normal_force[keep],
         impact_rows=impact_rows,
+        contact_free=~in_contact.any(axis=1)[keep],
         axis_angle=columns["axis_angle"][keep],
-        joint=run.joint_model(table))
+        joint=run.joint_model(table),
+        total_force=total_force,
+        film=film)
 
 
 def rotation_angle(run: Run, body: str, axis_B: np.ndarray,

@@ -17,6 +17,8 @@ from .scenario_colours import scenario_colour, scenario_name
 IMPACT_MARK = dict(marker="o", facecolors="none", edgecolors="black", linewidths=0.5, s=9, alpha=0.7,
                    zorder=4)
 RASTERIZE_ABOVE_STEPS = 20_000
+#: A film's thickness is drawn in micrometres: the paper's clearance is 100 µm.
+MICROMETRES_PER_METRE = 1e6
 # On time axes an impact is a tick along the bottom edge: a mark at the force of its first report
 # time (nearly zero) would hide the curve's foot.
 IMPACT_TICK = dict(marker="|", color="black", markersize=5, markeredgewidth=0.6, linestyle="none",
@@ -25,6 +27,8 @@ IMPACT_TICK = dict(marker="|", color="black", markersize=5, markeredgewidth=0.6,
 # styles are scripts/section6_figures.py's.
 IDEAL_CURVE = dict(color="0.3", linestyle="--", linewidth=1.0, zorder=3)
 CLEARANCE_CURVE = dict(color="tab:blue", linewidth=0.8)
+# A lubricated joint's whole force, drawn under the scenario-coloured contact force.
+TOTAL_FORCE_CURVE = dict(color="tab:blue", linewidth=1.0, alpha=0.8, zorder=1)
 
 
 def _scenario_stretches(points: np.ndarray, scenario: np.ndarray):
@@ -71,10 +75,10 @@ def scenario_legend_handles(scenarios: Sequence[int], with_impacts: bool = True)
 def plot_orbit(ax, series: ClearanceJointSeries, rim: str = "a", title: Optional[str] = None) -> None:
     """The centre of the journal's rim facing bearing base ``rim`` ("a" or "b") in the bearing
     frame, in units of the radial clearance (the clearance circle is the unit circle, Fig. 14), or
-    in millimetres when the model (hence cr) is not known."""
+    in metres when the model (hence cr) is not known."""
     centre = series.rim_a if rim == "a" else series.rim_b
     cr = series.radial_clearance
-    scale = 1.0 / cr if cr else 1e3
+    scale = 1.0 / cr if cr else 1.0
     u, v = centre[:, 0] * scale, centre[:, 1] * scale
     if cr:
         angle = np.linspace(0.0, 2.0 * np.pi, 361)
@@ -84,8 +88,8 @@ def plot_orbit(ax, series: ClearanceJointSeries, rim: str = "a", title: Optional
         ax.set_xlim(-1.15, 1.15)
         ax.set_ylim(-1.15, 1.15)
     else:
-        ax.set_xlabel("u [mm]")
-        ax.set_ylabel("v [mm]")
+        ax.set_xlabel("u [m]")
+        ax.set_ylabel("v [m]")
     _scenario_segments(ax, u, v, series.scenario, linewidth=0.7)
     if len(series.impact_rows):
         ax.scatter(u[series.impact_rows], v[series.impact_rows], **IMPACT_MARK)
@@ -99,24 +103,47 @@ def plot_orbit(ax, series: ClearanceJointSeries, rim: str = "a", title: Optional
 
 
 def plot_normal_force(ax, series: ClearanceJointSeries, x: np.ndarray, x_label: str) -> None:
-    """Total normal contact force F_N (eqs. 27-29, summed over the contacts) against x."""
+    """Total normal contact force F_N (eqs. 27-29, summed over the contacts) against x; for a
+    lubricated joint also the joint's whole force |F| (film and contact, the table's fx, fy, fz),
+    which carries the load while the film holds and F_N is 0."""
+    if series.lubricated and series.total_force is not None:
+        ax.plot(x, series.total_force, label="|F|, film + contact", **TOTAL_FORCE_CURVE)
     _scenario_segments(ax, x, series.normal_force, series.scenario, linewidth=0.8)
     if len(series.impact_rows):
         ax.plot(x[series.impact_rows], np.zeros(len(series.impact_rows)),
                 transform=ax.get_xaxis_transform(), clip_on=False, **IMPACT_TICK)
-    ax.set_ylabel("normal force [N]")
+    if series.lubricated:
+        from matplotlib.lines import Line2D
+        ax.legend(handles=[Line2D([], [], label="|F|, film + contact", **TOTAL_FORCE_CURVE),
+                           Line2D([], [], color="0.5", linewidth=0.8, label="contact F_N (by scenario)")],
+                  loc="upper right", fontsize=7)
+        ax.set_ylabel("joint force [N]")
+    else:
+        ax.set_ylabel("normal force [N]")
+    ax.set_xlabel(x_label)
+    ax.grid(True, linewidth=0.3, alpha=0.5)
+
+
+def plot_film_thickness(ax, series: ClearanceJointSeries, x: np.ndarray, x_label: str) -> None:
+    """A lubricated joint's minimum film thickness h_min [µm] (docs/dynamics.md,
+    film.min_thickness), coloured by contact scenario; 0 is where the surfaces would touch."""
+    _scenario_segments(ax, x, series.film["min_thickness"] * MICROMETRES_PER_METRE, series.scenario,
+                       linewidth=0.8)
+    ax.axhline(0.0, color="0.4", linestyle="--", linewidth=0.8)
+    ax.set_ylabel("h_min [µm]")
     ax.set_xlabel(x_label)
     ax.grid(True, linewidth=0.3, alpha=0.5)
 
 
 def plot_axial_position(ax, series: ClearanceJointSeries, x: np.ndarray, x_label: str) -> None:
-    """The journal centre along the bearing axis, with the axial clearance +-c_a (eq. 2) dashed."""
-    ax.set_ylabel("axial position [mm]")
-    _scenario_segments(ax, x, series.axial_position * 1e3, series.scenario, linewidth=0.8)
+    """The journal centre along the bearing axis in units of the axial clearance c_a (eq. 2),
+    whose bounds +-1 are dashed; in metres when the model (hence c_a) is not known."""
     ca = series.axial_clearance
+    ax.set_ylabel("axial position / c_a [-]" if ca else "axial position [m]")
+    _scenario_segments(ax, x, series.axial_position / (ca if ca else 1.0), series.scenario, linewidth=0.8)
     if ca:
         for side in (-1.0, 1.0):
-            ax.axhline(side * ca * 1e3, color="0.4", linestyle="--", linewidth=0.8)
+            ax.axhline(side, color="0.4", linestyle="--", linewidth=0.8)
     ax.set_xlabel(x_label)
     ax.grid(True, linewidth=0.3, alpha=0.5)
 
@@ -176,22 +203,22 @@ def plot_slider_acceleration(ax, x: np.ndarray, acceleration: np.ndarray, x_labe
 
 def plot_orbit_3d(ax, series: ClearanceJointSeries) -> None:
     """Both journal base centres in the bearing frame on a 3-D Axes (``projection="3d"``), the
-    isometric view of Fig. 14: u and v in units of the radial clearance (millimetres when the
-    model is not known), each base centre's axial position in millimetres, so that the two
+    isometric view of Fig. 14: u and v in units of the radial clearance (metres when the
+    model is not known), each base centre's axial position in metres, so that the two
     orbits lie at the two ends of the bearing, each with its clearance circle; coloured by
     scenario."""
     from mpl_toolkits.mplot3d.art3d import Line3DCollection
     cr = series.radial_clearance
-    scale = 1.0 / cr if cr else 1e3
+    scale = 1.0 / cr if cr else 1.0
     angle = np.linspace(0.0, 2.0 * np.pi, 361)
     for centre in (series.rim_a, series.rim_b):
-        points = np.column_stack([centre[:, 0] * scale, centre[:, 1] * scale, centre[:, 2] * 1e3])
+        points = np.column_stack([centre[:, 0] * scale, centre[:, 1] * scale, centre[:, 2]])
         if cr:
             ax.plot(np.cos(angle), np.sin(angle), np.full(angle.size, np.median(points[:, 2])), color="0.4",
                     linewidth=0.8)
         paths, colours = _scenario_stretches(points, series.scenario)
         ax.add_collection3d(Line3DCollection(paths, colors=colours, linewidths=0.6))
         ax.auto_scale_xyz(points[:, 0], points[:, 1], points[:, 2], had_data=True)
-    ax.set_xlabel("u / c_r [-]" if cr else "u [mm]")
-    ax.set_ylabel("v / c_r [-]" if cr else "v [mm]")
-    ax.set_zlabel("axial position [mm]")
+    ax.set_xlabel("u / c_r [-]" if cr else "u [m]")
+    ax.set_ylabel("v / c_r [-]" if cr else "v [m]")
+    ax.set_zlabel("axial position [m]")

@@ -1,7 +1,13 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """A run as the figures and the viewer read it: the tables of ``clearjoint simulate`` (a run
-folder of CSV files, or the :class:`clearjoint.SimulationResult` of ``clearjoint.simulate``) and
-the model file that produced them, when it is known.
+folder of CSV files or run.h5, of either engine; a folder of ``clearjoint-mujoco``, which holds
+force tables only; or the :class:`clearjoint.SimulationResult` of ``clearjoint.simulate`` or
+``clearjoint.read_run``) and the model file that produced them, when it is known.
+
+Folders are read by the reader of ``clearjoint.read_run`` (_run_files.read_folder_tables): the
+same files are accepted and refused with the same messages. The difference: ``clearjoint.read_run``
+returns DataFrames with typed code columns and the summary, this one float64 arrays (what the
+figures compute with) and the model.
 
 Bad input ends in :class:`RunError` with one sentence for people (a folder that is not a run, a
 truncated table, a model that does not match the tables), never a NumPy traceback.
@@ -15,7 +21,7 @@ from typing import Any, Dict, List, Mapping, Optional, Union
 
 import numpy as np
 
-from .._run_files import read_csv_table, read_json_bounded
+from .._run_files import read_folder_tables, read_json_bounded
 
 Tables = Dict[str, Dict[str, np.ndarray]]
 
@@ -127,14 +133,6 @@ def clearance_joints_of(model: Mapping[str, Any]) -> List[ClearanceJointModel]:
     return joints
 
 
-def _read_table(path: str) -> Dict[str, np.ndarray]:
-    try:
-        header, values = read_csv_table(path)
-    except ValueError as error:  # RunFileError, and the bounded reader's refusals
-        raise RunError(str(error)) from None
-    return {name: np.ascontiguousarray(values[:, k]) for k, name in enumerate(header)}
-
-
 def _read_model(model: Union[str, "os.PathLike[str]", Mapping[str, Any], None]) -> Optional[Dict[str, Any]]:
     if model is None or isinstance(model, Mapping):
         return dict(model) if model is not None else None
@@ -193,31 +191,40 @@ def _with_model(tables: Tables, model: Optional[Dict[str, Any]], source: str) ->
     return Run(tables=tables, model=model, source=source, clearance_joints=joints)
 
 
+def _float_tables(tables: Mapping[str, Any]) -> Tables:
+    """Tables as dicts of float64 arrays, also from the DataFrames of ``clearjoint.read_run``."""
+    return {name: {column: np.asarray(columns[column], dtype=np.float64) for column in columns}
+            for name, columns in tables.items()}
+
+
 def read_run(run: Any, model: Union[str, "os.PathLike[str]", Mapping[str, Any], None] = None) -> Run:
     """A :class:`Run` from a run folder (str or os.PathLike), a :class:`clearjoint.SimulationResult`
     (or anything with ``tables``), its ``tables`` dict, or a :class:`Run` (returned as it is unless
     ``model`` is given).
 
     ``model``: the model file (path or dict) of the run. Default: ``model.json`` in the run folder
-    when there is one; without a model the figures still draw, in millimetres instead of
-    clearance units, and the viewer refuses (it needs the shapes).
+    when there is one; without a model (a ``clearjoint-mujoco`` run) the figures still draw, in
+    metres instead of clearance units, and the viewer refuses (it needs the shapes).
     """
     if isinstance(run, Run):
         return run if model is None else _with_model(run.tables, _read_model(model), run.source)
     if hasattr(run, "tables"):
-        return _with_model(dict(run.tables), _read_model(model), "<simulation result>")
+        source = getattr(run, "folder", None) or "<simulation result>"
+        if model is None and getattr(run, "folder", None):
+            candidate = os.path.join(run.folder, MODEL_FILE_IN_RUN)
+            model = candidate if os.path.lexists(candidate) else None
+        return _with_model(_float_tables(run.tables), _read_model(model), source)
     if isinstance(run, Mapping):  # result.tables itself: table name -> column name -> array
-        return _with_model({name: dict(columns) for name, columns in run.items()}, _read_model(model),
-                           "<tables>")
+        return _with_model(_float_tables(run), _read_model(model), "<tables>")
     if not isinstance(run, (str, os.PathLike)):
         raise TypeError(f"run = {type(run).__name__}: must be a run folder, a SimulationResult or a Run")
     folder = os.fspath(run)
     if not os.path.isdir(folder):
         raise RunError(f"{folder}: no such folder (a run folder of clearjoint simulate --out)")
-    files = sorted(f for f in os.listdir(folder) if f.endswith(".csv"))
-    if "energy.csv" not in files:
-        raise RunError(f"{folder}: not a run folder of clearjoint simulate (no energy.csv)")
-    tables = {f[:-len(".csv")]: _read_table(os.path.join(folder, f)) for f in files}
+    try:
+        tables = read_folder_tables(folder)
+    except ValueError as error:  # RunFileError, and the bounded reader's refusals
+        raise RunError(str(error)) from None
     if model is None and os.path.lexists(os.path.join(folder, MODEL_FILE_IN_RUN)):
         model = os.path.join(folder, MODEL_FILE_IN_RUN)
     return _with_model(tables, _read_model(model), folder)

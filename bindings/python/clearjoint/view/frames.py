@@ -14,7 +14,9 @@ Frame layout (floats): time; per body x, y, z, e0, e1, e2, e3 (world; body frame
 eq. (5) notation for the Euler parameters); per clearance joint: scenario code, contact count,
 rim A centre (u, v, axial), rim B centre (u, v, axial) in the bearing frame [m] (the table's
 columns), total normal force at the frame [N], largest normal force since the previous frame
-[N], then MAX_CONTACTS slots of contact point C_i (u, v, axial) [m] and unit normal (u, v, axial),
+[N], the joint's whole force |(fx, fy, fz)| at the frame (contact and, for a lubricated joint,
+film) [N], its largest since the previous frame [N], the film's minimum thickness h_min [m] (NaN
+for a dry joint), then MAX_CONTACTS slots of contact point C_i (u, v, axial) [m] and unit normal (u, v, axial),
 out of the bearing, NaN in unused slots.
 """
 from __future__ import annotations
@@ -34,7 +36,7 @@ DEFAULT_MAX_FRAMES = 20_000
 #: Contact slots per joint and frame (clearjoint.MAX_CONTACTS, C++ geometry::kMaxContacts).
 MAX_CONTACTS = 6
 BODY_FLOATS = 7
-JOINT_HEAD_FLOATS = 10
+JOINT_HEAD_FLOATS = 13
 CONTACT_FLOATS = 6
 #: The displayed clearance is at most this share of the bearing's radius and half-length, so
 #: that the magnified journal keeps a visible radius and length.
@@ -147,7 +149,8 @@ def viewer_data(run: Run, max_frames: int = DEFAULT_MAX_FRAMES,
     if run.model is None:
         raise RunError(f"{run.source}: the viewer needs the run's model file for the shapes "
                        "(pass --model MODEL.json, or keep it in the run folder as model.json)")
-    time = run.column("energy", "time")
+    # Every table of a run has the same report times (run_folder checks the row counts).
+    time = run.column("energy" if "energy" in run.tables else sorted(run.tables)[0], "time")
     step = decimation_step(len(time), max_frames)
     rows = np.arange(0, len(time), step)
     bodies = [b for b in run.model.get("bodies", []) if "body_" + b["name"] in run.tables]
@@ -168,14 +171,20 @@ def viewer_data(run: Run, max_frames: int = DEFAULT_MAX_FRAMES,
         table = run.tables[joint.table]
         forces = [table[f"{s}.normal_force"] for s in CONTACT_SLOTS if f"{s}.normal_force" in table]
         normal_force = np.sum(forces, axis=0) if forces else np.zeros_like(time)
+        # The joint's whole force: a lubricated joint's film carries the load while F_N is 0.
+        total_force = np.sqrt(sum(table[c] ** 2 for c in ("fx", "fy", "fz"))) if all(
+            c in table for c in ("fx", "fy", "fz")) else normal_force
+        min_thickness = table.get("film.min_thickness", np.full_like(time, np.nan))
         # Largest force over the rows each frame stands for (rows[k] .. rows[k + 1] - 1).
         peak = np.maximum.reduceat(normal_force, rows) if len(rows) else normal_force[:0]
+        peak_total = np.maximum.reduceat(total_force, rows) if len(rows) else total_force[:0]
         contacts = _contacts_in_bearing_frame(run, joint, rows)
         rims = np.stack([run.column(joint.table, c)[rows] for c in ("rim_a_u", "rim_a_v", "rim_a_axial",
                                                                   "rim_b_u", "rim_b_v", "rim_b_axial")], axis=1)
         columns += [run.column(joint.table, "scenario")[rows][:, None],
                     run.column(joint.table, "contact_count")[rows][:, None], rims,
-                    normal_force[rows][:, None], peak[:, None],
+                    normal_force[rows][:, None], peak[:, None], total_force[rows][:, None],
+                    peak_total[:, None], min_thickness[rows][:, None],
                     contacts.reshape(len(rows), MAX_CONTACTS * CONTACT_FLOATS)]
         frame_b = bearing_frame_B(joint.bearing_axis)
         joint_entries.append({
@@ -192,6 +201,8 @@ def viewer_data(run: Run, max_frames: int = DEFAULT_MAX_FRAMES,
             "max_magnification": 0.9 * min(joint.bearing_radius / joint.radial_clearance,
                                             0.5 * joint.bearing_length / joint.axial_clearance),
             "peak_force": float(np.nanmax(normal_force, initial=0.0)),
+            "peak_total_force": float(np.nanmax(total_force, initial=0.0)),
+            "lubricated": "film.min_thickness" in table,
         })
         offset += JOINT_HEAD_FLOATS + MAX_CONTACTS * CONTACT_FLOATS
 

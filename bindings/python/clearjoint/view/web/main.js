@@ -6,7 +6,7 @@
 // window.clearjointView is the page's state for the browser test (tests/view/...): ready, the
 // load time, the frame shown, and the colours of the contacts drawn.
 
-import { loadRun } from "./run_data.js";
+import { JOINT, loadRun } from "./run_data.js";
 import { RunScene } from "./scene.js";
 import { OrbitPlot, ForcePlot } from "./plots.js";
 
@@ -83,7 +83,10 @@ async function start() {
       const jv = scene.joints[0];
       const code = run.value(frame, joint.offset);
       contactState.textContent = `scenario: ${run.scenarioLabel(code)}; contacts drawn: ${jv.shownColours.length}; ` +
-        `F_N = ${run.value(frame, joint.offset + 8).toPrecision(4)} N; clearance x ${jv.magnification}`;
+        `F_N = ${run.value(frame, joint.offset + JOINT.normalForce).toPrecision(4)} N; ` +
+        `|F| = ${run.value(frame, joint.offset + JOINT.totalForce).toPrecision(4)} N` +
+        (joint.lubricated ? ` (film + contact); h_min = ${(1e6 * run.value(frame, joint.offset + JOINT.filmThickness)).toPrecision(3)} µm` : "") +
+        `; clearance x ${jv.magnification}`;
       document.getElementById("inset-label").textContent =
         `joint '${joint.name}' in its bearing's frame, clearance x ${jv.magnification}`;
       document.getElementById("inset-label").style.bottom = `${(scene.insetSize ?? 0) + 10}px`;

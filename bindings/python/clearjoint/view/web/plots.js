@@ -6,6 +6,10 @@
 
 import { JOINT } from "./run_data.js";
 
+// The force axis of a run whose joint never carries a force (free flight only) [N].
+const MIN_FORCE_AXIS = 1;
+const TOTAL_FORCE_COLOUR = "#1f77b4";  // matplotlib's tab:blue, as the figures' |F| curve
+
 function background(canvas) {
   const off = document.createElement("canvas");
   off.width = canvas.width;
@@ -97,8 +101,10 @@ export class ForcePlot {
     this.joint = joint;
     this.base = background(canvas);
     this.margin = { left: 44, right: 6, top: 6, bottom: 18 };
-    const peak = Math.max(joint.peak_force, 1e-12);
-    this.top = peak * 1.05;
+    // The axis spans the larger of the contact and the whole force (a lubricated joint's film
+    // carries the load while F_N is 0); a run without any force gets 0 to MIN_FORCE_AXIS N.
+    const peak = Math.max(joint.peak_force, joint.peak_total_force ?? 0);
+    this.top = peak > 0 ? peak * 1.05 : MIN_FORCE_AXIS;
     const ctx = this.base.getContext("2d");
     const { left, right, top, bottom } = this.margin;
     ctx.fillStyle = "#fff";
@@ -115,6 +121,15 @@ export class ForcePlot {
     ctx.textAlign = "right";
     ctx.fillText(`${run.manifest.end_time.toPrecision(3)} s`, canvas.width - right, canvas.height - 4);
     const o = joint.offset;
+    // The whole force |F| (film + contact) in blue under the contact force coloured by scenario.
+    ctx.strokeStyle = TOTAL_FORCE_COLOUR;
+    ctx.lineWidth = 1;
+    ctx.beginPath();
+    for (let f = 0; f < run.frameCount; ++f) {
+      const [x, y] = this.pixel(run.time(f), run.value(f, o + JOINT.peakTotalForce));
+      if (f === 0) ctx.moveTo(x, y); else ctx.lineTo(x, y);
+    }
+    ctx.stroke();
     drawScenarioPath(ctx, run, (f) => this.pixel(run.time(f), run.value(f, o + JOINT.peakForce)),
                      (f) => run.value(f, o + JOINT.scenario));
   }

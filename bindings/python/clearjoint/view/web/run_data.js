@@ -17,7 +17,8 @@ export async function loadRun() {
 }
 
 // Offsets inside a joint's block of a frame (frames.py: JOINT_HEAD_FLOATS, CONTACT_FLOATS).
-export const JOINT = { scenario: 0, contactCount: 1, rimA: 2, rimB: 5, normalForce: 8, peakForce: 9, contacts: 10 };
+export const JOINT = { scenario: 0, contactCount: 1, rimA: 2, rimB: 5, normalForce: 8, peakForce: 9,
+                       totalForce: 10, peakTotalForce: 11, filmThickness: 12, contacts: 13 };
 export const CONTACT_FLOATS = 6;
 
 export class RunData {
