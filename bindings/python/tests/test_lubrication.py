@@ -66,6 +66,6 @@ def test_the_command_line_gives_the_same_numbers():
     assert answer["attitude_angle"] == r.attitude_angle
     bad = subprocess.run([cli, "bearing", "--eccentricity-ratio", "1", "--width-ratio", "1"],
                          capture_output=True, text=True)
-    assert bad.returncode == 1 and "eccentricity_ratio" in bad.stderr
+    assert bad.returncode == 1 and "--eccentricity-ratio = 1: " in bad.stderr
     usage = subprocess.run([cli, "bearing", "--width-ratio", "1"], capture_output=True, text=True)
     assert usage.returncode == 2

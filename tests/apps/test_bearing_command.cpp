@@ -1,0 +1,120 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// `clearjoint bearing` end to end: the Reynolds grid's cost guard and its switch, and bad option
+// values named as the options that carry them (docs/command-line.md, "clearjoint bearing").
+
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Outcome {
+  int exit_code = -1;
+  std::string out;
+  std::string err;
+};
+
+std::string read_text(const fs::path& file) {
+  std::ifstream in(file);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+/// Runs `clearjoint bearing --eccentricity-ratio 0.5 --width-ratio 1 <options>`, or with
+/// `options` alone when `base` is false.
+Outcome bearing(const std::string& options, bool base = true) {
+  const fs::path dir = fs::path(CLEARJOINT_TEST_WORK_DIR);
+  fs::create_directories(dir);
+  const fs::path out = dir / "stdout.txt", err = dir / "stderr.txt";
+  const std::string command = "\"" CLEARJOINT_PROGRAM "\" bearing " +
+                              std::string(base ? "--eccentricity-ratio 0.5 --width-ratio 1 " : "") + options +
+                              " > \"" + out.string() + "\" 2> \"" + err.string() + "\" < /dev/null";
+  const int status = std::system(command.c_str());
+  Outcome o;
+  o.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  o.out = read_text(out);
+  o.err = read_text(err);
+  return o;
+}
+
+bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+TEST(BearingCommand, RefusesAGridAboveTheCostLimitsWithItsEstimateAndTheSwitchThatAllowsIt) {
+  // 96 x 400 took 22.6 s and 378 MB when nothing guarded it.
+  const Outcome o = bearing("--grid 96x400");
+  EXPECT_EQ(o.exit_code, 1) << o.err;
+  EXPECT_TRUE(o.out.empty());
+  EXPECT_TRUE(contains(o.err, "clearjoint bearing: --grid = 96x400: ")) << o.err;
+  EXPECT_TRUE(contains(o.err, "estimated 7e+02 MiB of band")) << o.err;
+  EXPECT_TRUE(contains(o.err, "--allow-large-grid solves it anyway")) << o.err;
+}
+
+TEST(BearingCommand, SolvesAModestGridAboveTheLimitsWithAllowLargeGrid) {
+  // 16 x 160: 1.03e9 operations a solve by estimate_cost, just above kMaxGridOperations, and
+  // tens of milliseconds in fact.
+  EXPECT_EQ(bearing("--grid 16x160").exit_code, 1);
+  const Outcome o = bearing("--grid 16x160 --allow-large-grid");
+  ASSERT_EQ(o.exit_code, 0) << o.err;
+  const nlohmann::json answer = nlohmann::json::parse(o.out);
+  EXPECT_EQ(answer["grid"], nlohmann::json::array({16, 160}));
+  EXPECT_TRUE(answer["converged"].get<bool>());
+  EXPECT_GT(answer["sommerfeld_number"].get<double>(), 0.0);
+}
+
+TEST(BearingCommand, RefusesAGridCountBeyondAnIntQuotingTheTextAsTyped) {
+  const Outcome o = bearing("--grid 99999999999999999999x2");
+  EXPECT_EQ(o.exit_code, 2) << o.err;
+  EXPECT_TRUE(contains(o.err, "--grid = '99999999999999999999x2': must be NTHETAxNZ, two whole numbers up to "
+                              "2147483647"))
+      << o.err;
+  EXPECT_EQ(bearing("--grid 96x24.5").exit_code, 2);
+  EXPECT_EQ(bearing("--grid 96x24x3").exit_code, 2);
+}
+
+TEST(BearingCommand, RefusesAGridTooLargeToStoreEvenWhenLargeGridsAreAllowed) {
+  for (const char* options : {"--grid 100000x100000", "--grid 100000x100000 --allow-large-grid"}) {
+    const Outcome o = bearing(options);
+    EXPECT_EQ(o.exit_code, 1) << options << ": " << o.err;
+    EXPECT_TRUE(contains(o.err, "--grid = 100000x100000: ")) << o.err;
+    EXPECT_TRUE(contains(o.err, "too large to store")) << o.err;
+    EXPECT_FALSE(contains(o.err, "bad_alloc")) << o.err;
+  }
+}
+
+TEST(BearingCommand, NamesTheOptionWhoseValueIsOutOfRange) {
+  const Outcome wide = bearing("--eccentricity-ratio 0.5 --width-ratio 1e300", false);
+  EXPECT_EQ(wide.exit_code, 1) << wide.err;
+  EXPECT_TRUE(contains(wide.err, "clearjoint bearing: --width-ratio = 1.0000000000000001e+300: must be in "
+                                 "[1e-50, 1e50]"))
+      << wide.err;
+  EXPECT_FALSE(contains(wide.err, "dimensions")) << wide.err;
+  const Outcome eps = bearing("--eccentricity-ratio 1 --width-ratio 1", false);
+  EXPECT_EQ(eps.exit_code, 1) << eps.err;
+  EXPECT_TRUE(contains(eps.err, "clearjoint bearing: --eccentricity-ratio = 1: ")) << eps.err;
+  const Outcome method = bearing("--method finite");
+  EXPECT_EQ(method.exit_code, 1) << method.err;
+  EXPECT_TRUE(contains(method.err, "clearjoint bearing: --method = 'finite': unknown (known: grid, short, long)"))
+      << method.err;
+}
+
+TEST(BearingCommand, RefusesAnOptionGivenTwiceNamingBothValues) {
+  const Outcome o = bearing("--method long --method short");
+  EXPECT_EQ(o.exit_code, 2) << o.out;
+  EXPECT_TRUE(o.out.empty()) << o.out;
+  EXPECT_TRUE(contains(o.err, "clearjoint bearing: --method is given twice ('long', then 'short'): give it once"))
+      << o.err;
+  EXPECT_EQ(bearing("--allow-large-grid --allow-large-grid").exit_code, 2);
+}
+
+}  // namespace
