@@ -8,7 +8,7 @@ Reads every `#include "..."` and `#include <clearjoint/...>` in the C and C++ so
 under ROOT (default: this checkout), follows each to the file it names, and prints
 `file:line: why` for each one that
   - goes up the module order (MODULES, bottom first): geometry < json_input < lubrication <
-    dynamics < engines < apps and bindings < support (test-only helpers) < bench, fuzz and
+    dynamics < nonsmooth and engines < apps and bindings < support (test-only helpers) < bench, fuzz and
     examples < tests and the paper's reproduction; modules of one rank may not include each
     other (but any binding may include the C API's public header, bindings/c/include);
   - inside the kernel, goes up its rooms (ROOMS, bottom first), in geometry/src/<room> and in
@@ -37,6 +37,7 @@ MODULES = {
     "json_input": 1,
     "lubrication": 2,
     "dynamics": 3,
+    "nonsmooth": 4,
     "engines/common": 4,
     "engines/mujoco": 5,
     "engines/simbody": 5,
@@ -74,10 +75,10 @@ OTHER_PUBLIC_HEADER_ROOMS = {
 }
 
 # Installed public headers: each may include only other installed headers.
-INSTALLED = re.compile(r"^(geometry|lubrication|dynamics|engines/[^/]+|bindings/c)/include/")
+INSTALLED = re.compile(r"^(geometry|lubrication|dynamics|nonsmooth|engines/[^/]+|bindings/c)/include/")
 # A module's sources: other shipped modules use it through its public headers only (test code may
 # test its pieces).
-PRIVATE = re.compile(r"^(geometry|json_input|lubrication|dynamics|engines/[^/]+|bindings/[^/]+)/src/")
+PRIVATE = re.compile(r"^(geometry|json_input|lubrication|dynamics|nonsmooth|engines/[^/]+|bindings/[^/]+)/src/")
 
 SOURCE_SUFFIXES = (".hpp", ".cpp", ".h", ".c", ".cc", ".hpp.in", ".h.in")
 SKIPPED_FOLDERS = {"build", "corpus", "node_modules"}

@@ -25,6 +25,8 @@ packages=(
   python3-distributed python3-h5py python3-jsonschema python3-scipy python3-tqdm  # clearjoint.study
   chromium chromium-driver python3-selenium  # the viewer's browser test (docs/viewing-runs.md)
   libsimbody-dev libmujoco-dev          # the engine adapters (docs/engines.md)
+  libsiconos-numerics-dev libfclib-dev  # the non-smooth integrator's contact solver (docs/nonsmooth.md)
+  python3-siconos                       # tests: the non-smooth integrator against Siconos's kernel
 )
 
 missing=()

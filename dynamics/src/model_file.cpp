@@ -299,10 +299,36 @@ void parse_initial_conditions(const Node& n, ModelDescription& model) {
   }
 }
 
+/// The Moreau-Jean scheme's keys of "solver" (solver_method.hpp); a compliant model may not set
+/// them, since nothing would read them.
+void parse_moreau_jean_settings(const Node& n, ModelDescription& model) {
+  MoreauJeanSettings& m = model.moreau_jean;
+  for (std::string_view key : {"step", "theta", "contact_tolerance", "contact_max_iterations",
+                               "stop_on_unconverged"}) {
+    if (n.has(key) && model.solver_method != SolverMethod::moreau_jean) {
+      throw ModelError(n.field(key) + ": only read with \"method\": \"moreau_jean\"");
+    }
+  }
+  m.step = n.number("step", m.step);
+  m.theta = n.number("theta", m.theta);
+  m.contact_tolerance = n.number("contact_tolerance", m.contact_tolerance);
+  const double iterations = n.number("contact_max_iterations", m.contact_max_iterations);
+  if (!(iterations >= 1.0 && iterations <= 1e9 && iterations == std::floor(iterations))) {
+    throw ModelError(n.field("contact_max_iterations") + " = " + format_number(iterations) +
+                     ": must be a whole number in [1, 1e9]");
+  }
+  m.contact_max_iterations = static_cast<int>(iterations);
+  if (n.has("stop_on_unconverged")) m.stop_on_unconverged = n.member("stop_on_unconverged").boolean();
+  validate(m, n.path());
+}
+
 void parse_solver(const Node& n, ModelDescription& model) {
   n.require_object({"start_time", "end_time", "report_step", "relative_tolerance",
                     "absolute_tolerance", "initial_step", "minimum_step", "max_steps",
-                    "baumgarte_alpha", "baumgarte_beta"});
+                    "baumgarte_alpha", "baumgarte_beta", "method", "step", "theta",
+                    "contact_tolerance", "contact_max_iterations", "stop_on_unconverged"});
+  if (n.has("method")) model.solver_method = solver_method_from_string(n.text("method"), n.field("method"));
+  parse_moreau_jean_settings(n, model);
   IntegratorSettings& s = model.solver;
   s.start_time = n.number("start_time", s.start_time);
   s.end_time = n.number("end_time", s.end_time);

@@ -69,6 +69,11 @@ void refuse_start_beyond_model(MultibodySystem& system, double time, std::span<c
 
 Simulator::Simulator(const ModelDescription& model)
     : model_(model), built_(build_model(model_)), impacts_seen_(built_.system->force_elements().size(), 0) {
+  // The compliant engine never runs a model meant for the non-smooth one (docs/nonsmooth.md).
+  if (model_.solver_method != SolverMethod::dormand_prince) {
+    throw ModelError("solver.method = \"" + std::string(to_string(model_.solver_method)) +
+                     "\": run by clearjoint::nonsmooth (docs/nonsmooth.md), not by the compliant integrator");
+  }
   refuse_start_beyond_model(*built_.system, model_.solver.start_time, built_.initial_state);
 }
 

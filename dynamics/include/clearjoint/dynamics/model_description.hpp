@@ -16,6 +16,7 @@
 #include "clearjoint/dynamics/clearance_joint_parameters.hpp"
 #include "clearjoint/dynamics/integrator_settings.hpp"
 #include "clearjoint/dynamics/joint_description.hpp"
+#include "clearjoint/dynamics/solver_method.hpp"
 #include "clearjoint/dynamics/spring_damper_parameters.hpp"
 
 namespace clearjoint::dynamics {
@@ -84,6 +85,9 @@ struct ModelDescription {
   std::vector<HeldVelocityDescription> held_velocities;
   BaumgarteParameters baumgarte;
   IntegratorSettings solver;
+  /// solver.method: the compliant integrator (solver above) or Moreau-Jean (moreau_jean below).
+  SolverMethod solver_method = SolverMethod::dormand_prince;
+  MoreauJeanSettings moreau_jean;  ///< solver.step, theta, contact_* (read for moreau_jean only)
   std::vector<std::string> output_bodies;  ///< bodies whose time series are written
   /// Force elements whose outputs (force_<name>.csv) are written; all of them by default.
   std::vector<std::string> output_force_elements;
