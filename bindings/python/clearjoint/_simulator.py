@@ -4,6 +4,7 @@ own event logic (dynamics/include/clearjoint/dynamics/simulator.hpp)."""
 from __future__ import annotations
 
 import os
+import threading
 from typing import Any, Dict, List, Mapping, Union
 
 import numpy as np
@@ -64,15 +65,23 @@ class Simulator:
     t in [time, end_time]); ``take_impacts()`` (the impacts recorded since the last call: time,
     joint, slot, impact_speed); ``statistics()``. Integration runs without the GIL; Ctrl-C stops
     ``advance_to`` within about 0.1 s with KeyboardInterrupt, leaving the simulator at a step.
+    ``joint_state(name)`` gives a clearance joint's contacts, forces and film at the current state.
+    A simulator shared by threads runs one of these calls at a time.
     """
 
     def __init__(self, model: Model) -> None:
         text, source = _model_text(model)
         self._core = _core.Simulator(text, source)
+        # One operation at a time: step() and advance_to() run without the GIL, so two threads
+        # sharing a simulator would otherwise integrate the same state at once and leave it
+        # depending on their interleaving. Lock.acquire releases the GIL while it waits, so a
+        # waiting thread cannot block advance_to's signal checks.
+        self._lock = threading.Lock()
 
     @property
     def time(self) -> float:
-        return self._core.time
+        with self._lock:
+            return self._core.time
 
     @property
     def end_time(self) -> float:
@@ -80,37 +89,66 @@ class Simulator:
 
     @property
     def finished(self) -> bool:
-        return self._core.finished
+        with self._lock:
+            return self._core.finished
 
     @property
     def state(self) -> np.ndarray:
-        return self._core.state
+        with self._lock:
+            return self._core.state
 
     def set_state(self, state: Any) -> None:
         """Continue from `state` (as wide as ``state``: real numbers, each body's Euler parameters
         of norm 1 within 1e-6). A refused state changes nothing."""
-        self._core.set_state(_real_array(state, "state"))
+        values = _real_array(state, "state")
+        with self._lock:
+            self._core.set_state(values)
 
     def body_state(self, body: str) -> Dict[str, np.ndarray]:
-        return self._core.body_state(body)
+        with self._lock:
+            return self._core.body_state(body)
+
+    def joint_state(self, name: str) -> Dict[str, Any]:
+        """The clearance joint `name` at the current state, as its joint table has it: ``contacts``
+        (a JointContacts, as detect gives), ``force_on_journal`` and ``moment_on_journal`` (world
+        frame, N and N m about the journal's point: contacts plus film), each contact's
+        ``contact_force_on_journal`` (rows in the order of ``contacts``), ``slots`` (per contact
+        slot: active, depth, approach_speed, impact_speed, normal_force, friction_force; eqs.
+        23-24), ``film`` (None for a dry joint; else regime (0 dry, 1 film, 2 blend, as the force
+        table's film.regime), weight, min_thickness, eccentricity_ratio, attitude_angle,
+        max_pressure, force_on_journal, moment_on_journal, power), ``axis_angle`` and the rim
+        centres ``rim_a_in_bearing``/``rim_b_in_bearing`` (bearing frame u, v, a). The bearing
+        body gets the opposite force."""
+        if not isinstance(name, str):
+            raise TypeError(f"name = {name!r}: must be a joint's name (a str)")
+        with self._lock:
+            return self._core.joint_state(name)
 
     def apply_load(self, body: str, force: Any = (0.0, 0.0, 0.0), moment: Any = (0.0, 0.0, 0.0)) -> None:
-        self._core.apply_load(body, _real_array(force, "force"), _real_array(moment, "moment"))
+        force_values, moment_values = _real_array(force, "force"), _real_array(moment, "moment")
+        with self._lock:
+            self._core.apply_load(body, force_values, moment_values)
 
     def clear_loads(self) -> None:
-        self._core.clear_loads()
+        with self._lock:
+            self._core.clear_loads()
 
     def step(self) -> None:
-        self._core.step()
+        with self._lock:
+            self._core.step()
 
     def advance_to(self, t: float) -> None:
-        self._core.advance_to(_real_number(t, "t"))
+        target = _real_number(t, "t")
+        with self._lock:
+            self._core.advance_to(target)
 
     def take_impacts(self) -> List[Dict[str, Any]]:
-        return self._core.take_impacts()
+        with self._lock:
+            return self._core.take_impacts()
 
     def statistics(self) -> Dict[str, int]:
-        return self._core.statistics()
+        with self._lock:
+            return self._core.statistics()
 
     def __repr__(self) -> str:
         return f"Simulator(time={self.time!r}, end_time={self.end_time!r}, finished={self.finished!r})"

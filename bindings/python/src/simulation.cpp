@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "bindings.hpp"
+#include "clearjoint/dynamics/clearance_revolute_joint.hpp"
 #include "clearjoint/dynamics/model_file.hpp"
 #include "clearjoint/dynamics/model_overrides.hpp"
 #include "clearjoint/dynamics/run_size.hpp"
@@ -204,6 +205,59 @@ py::dict body_state_dict(const dynamics::BodyState& s) {
   return d;
 }
 
+py::array_t<double> vector_array(const dynamics::Vector3& v) {
+  return state_array(std::span<const double>(v.data(), 3));
+}
+
+/// A clearance joint's state as a dict: the contacts (a JointContacts, as detect gives), the
+/// force and moment on the journal in the world frame (contacts plus film), each contact's force,
+/// each slot's law variables (eqs. 23-24), the film where the joint is lubricated, the axis angle
+/// and the rim centres in the bearing frame: the quantities of the run's joint table.
+py::dict joint_state_dict(const dynamics::ClearanceJointState& s) {
+  py::dict d;
+  d["contacts"] = py::cast(s.contacts);
+  d["force_on_journal"] = vector_array(s.force_on_journal_W);
+  d["moment_on_journal"] = vector_array(s.moment_on_journal_W);
+  py::array_t<double> contact_forces({static_cast<py::ssize_t>(s.contacts.contact_count), py::ssize_t{3}});
+  for (int k = 0; k < s.contacts.contact_count; ++k) {
+    for (int i = 0; i < 3; ++i) contact_forces.mutable_at(k, i) = s.contact_force_on_journal_W[k][i];
+  }
+  d["contact_force_on_journal"] = contact_forces;
+  py::dict slots;
+  for (int k = 0; k < dynamics::kContactSlotCount; ++k) {
+    const dynamics::SlotState& slot = s.slots[k];
+    py::dict entry;
+    entry["active"] = slot.active;
+    entry["depth"] = slot.depth;
+    entry["approach_speed"] = slot.approach_speed;
+    entry["impact_speed"] = slot.impact_speed;
+    entry["normal_force"] = slot.normal_force;
+    entry["friction_force"] = slot.friction_force;
+    slots[py::str(std::string(dynamics::to_string(static_cast<dynamics::ContactSlot>(k))))] = entry;
+  }
+  d["slots"] = slots;
+  if (s.film) {
+    const dynamics::JointFilmState& f = *s.film;
+    py::dict film;
+    film["regime"] = static_cast<int>(f.regime);  // the force table's film.regime code
+    film["weight"] = f.weight;
+    film["min_thickness"] = f.min_thickness;
+    film["eccentricity_ratio"] = f.eccentricity_ratio;
+    film["attitude_angle"] = f.attitude_angle;
+    film["max_pressure"] = f.max_pressure;
+    film["force_on_journal"] = vector_array(f.force_on_journal_W);
+    film["moment_on_journal"] = vector_array(f.moment_on_journal_W);
+    film["power"] = f.power;
+    d["film"] = film;
+  } else {
+    d["film"] = py::none();
+  }
+  d["axis_angle"] = s.axis_angle;
+  d["rim_a_in_bearing"] = vector_array(s.rim_a_in_bearing);
+  d["rim_b_in_bearing"] = vector_array(s.rim_b_in_bearing);
+  return d;
+}
+
 }  // namespace
 
 void bind_simulation(py::module_& module) {
@@ -307,6 +361,9 @@ void bind_simulation(py::module_& module) {
              }
              return out;
            })
+      .def("joint_state",
+           [](dynamics::Simulator& s, const std::string& name) { return joint_state_dict(s.joint_state(name)); },
+           py::arg("name"))
       .def("statistics", [](const dynamics::Simulator& s) {
         const dynamics::IntegrationStatistics& i = s.statistics();
         py::dict d;
