@@ -23,9 +23,9 @@ using dynamics::Vector4;
 
 /// Fraction of the smaller of the radial and axial clearances taken as the activation margin:
 /// the inflated journal must still fit its bearing (below 1), and the margin must exceed the
-/// travel of a step, h |u_N| (at h = 1e-5 s and 1 m/s: 1e-5 m, a tenth of the paper's 0.1 mm
-/// clearances); a quarter satisfies both for the paper's mechanisms up to h = 2.5e-5 s at 1 m/s
-/// (a step longer than that is refused when a contact is missed, MoreauJean::step).
+/// half step's travel, h |u_N| / 2, of the activation test (at h = 1e-5 s and 1 m/s: 5e-6 m, a
+/// twentieth of the paper's 0.1 mm clearances); a quarter satisfies both for approach speeds up
+/// to 2 m / h (5 m/s at h = 1e-5 s). A faster approach is not detected (docs/nonsmooth.md).
 inline constexpr double kActivationMarginFraction = 0.25;
 
 /// One clearance joint, resolved to body indices.
