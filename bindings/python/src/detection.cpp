@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The library's value types as Python classes: enums, JointDimensions, and the single-query
 // results (Certificate, RimCrossing, RimArc, Contact, JointContacts), read-only with readable
-// reprs. Array results of batches are in detection_batch.cpp and kernel.cpp.
+// reprs, their attributes bound from the results' field lists. Array results of batches are in
+// detection_batch.cpp and kernel.cpp.
 
 #include <pybind11/eigen.h>
 #include <pybind11/pybind11.h>
@@ -18,6 +19,7 @@
 #include "clearjoint/geometry/model/joint_geometry.hpp"
 #include "clearjoint/geometry/model/rim_arc.hpp"
 #include "numpy_views.hpp"
+#include "result_attributes.hpp"
 #include "result_dicts.hpp"
 #include "result_types.hpp"
 
@@ -141,27 +143,22 @@ void bind_dimensions(py::module_& m) {
           }));
 }
 
+// The attributes of each result are its field list's (result_attributes.hpp); bound here are the
+// class docs, the attributes that are not fields, and the reprs.
 void bind_results(py::module_& m) {
-  add_as_dict_and_pickle(py::class_<geo::Certificate>(m, "Certificate", "A trust level and, unless certified, why.")
-      .def_property_readonly("level", [](const geo::Certificate& c) { return c.level; })
-      .def_property_readonly("reason", [](const geo::Certificate& c) { return c.reason; },
-                             "A CertificateReason to branch on; none for certified answers.")
+  py::class_<geo::Certificate> certificate(m, "Certificate", "A trust level and, unless certified, why.");
+  add_as_dict_and_pickle(def_field_attributes(certificate)
       .def_property_readonly("reason_text", [](const geo::Certificate& c) { return std::string(c.reason_text()); },
                              "The reason as a sentence for humans; empty for certified answers.")
       .def("__repr__", [](const geo::Certificate& c) { return "Certificate(" + repr_certificate(c) + ")"; }),
       "{'level': Certainty, 'reason': CertificateReason}");
 
-  add_as_dict_and_pickle(py::class_<geo::RimCrossing>(
+  py::class_<geo::RimCrossing> crossing(
       m, "RimCrossing",
       "A point where a rim meets a surface. When certified or exact, the true angle lies within "
       "angle_error of angle (radians) and the true point within point_error (length unit, "
-      "Euclidean) of point; uncertain answers carry inf.")
-      .def_readonly("angle", &geo::RimCrossing::angle, "rim angle in [0, 2 pi), radians")
-      .def_readonly("angle_error", &geo::RimCrossing::angle_error)
-      .def_readonly("point", &geo::RimCrossing::point, "world frame, shape (3,)")
-      .def_readonly("point_error", &geo::RimCrossing::point_error)
-      .def_readonly("multiplicity", &geo::RimCrossing::multiplicity,
-                    "1 crossing, 2 tangency, 3-4 higher-order contact")
+      "Euclidean) of point; uncertain answers carry inf.");
+  add_as_dict_and_pickle(def_field_attributes(crossing)
       .def("__repr__", [](const geo::RimCrossing& c) {
         return "RimCrossing(angle=" + repr_number(c.angle) + " +- " + repr_number(c.angle_error) +
                ", point=" + repr_vector(c.point) + " +- " + repr_number(c.point_error) +
@@ -169,12 +166,10 @@ void bind_results(py::module_& m) {
       }),
       "The attributes as a dict, point a list of three floats.");
 
-  add_as_dict_and_pickle(py::class_<geo::RimArc>(m, "RimArc",
-                          "Rim angles swept counter-clockwise from begin to end (radians in "
-                          "[0, 2 pi); end < begin when the arc passes angle 0); full: the whole rim.")
-      .def_readonly("begin", &geo::RimArc::begin)
-      .def_readonly("end", &geo::RimArc::end)
-      .def_readonly("full", &geo::RimArc::full)
+  py::class_<geo::RimArc> arc(m, "RimArc",
+                              "Rim angles swept counter-clockwise from begin to end (radians in "
+                              "[0, 2 pi); end < begin when the arc passes angle 0); full: the whole rim.");
+  add_as_dict_and_pickle(def_field_attributes(arc)
       .def_property_readonly("middle", &geo::RimArc::middle, "the arc's middle angle (eqs. 13, 18)")
       .def_property_readonly("sweep", &geo::RimArc::sweep, "angular length in [0, 2 pi]")
       .def("__repr__", [](const geo::RimArc& a) {
@@ -183,25 +178,12 @@ void bind_results(py::module_& m) {
       }),
       "{'begin', 'end', 'full'}");
 
-  add_as_dict_and_pickle(py::class_<geo::Contact>(
+  py::class_<geo::Contact> contact(
       m, "Contact",
       "One contact (eqs. 22-23): normal points out of the bearing, in the direction the journal "
       "penetrates; point_journal - point_bearing = depth * normal (up to rounding); the force on "
-      "the journal acts along -normal. World frame, the input's length unit.")
-      .def_property_readonly("type", [](const geo::Contact& c) { return c.type; })
-      .def_property_readonly("base", [](const geo::Contact& c) { return c.base; })
-      .def_readonly("depth", &geo::Contact::depth, "penetration depth >= 0")
-      .def_readonly("point_journal", &geo::Contact::p_WCj, "C_j on the journal (eqs. 8, 10, 14, 19)")
-      .def_readonly("point_bearing", &geo::Contact::p_WCi, "C_i on the bearing (eqs. 7, 9, 15, 21)")
-      .def_readonly("normal", &geo::Contact::normal_W, "unit normal, out of the bearing")
-      .def_readonly("depth_error", &geo::Contact::depth_error,
-                    "bound on the depth's error; certified unless uncertain (then inf)")
-      .def_readonly("point_journal_error", &geo::Contact::p_WCj_error, "bound on point_journal's error (Euclidean)")
-      .def_readonly("point_bearing_error", &geo::Contact::p_WCi_error, "bound on point_bearing's error (Euclidean)")
-      .def_property_readonly(
-          "crossings", [](const geo::Contact& c) { return first_crossings(c.crossings.data(), c.crossing_count); },
-          "the rim crossings bounding the penetration arc (none for line and face contacts)")
-      .def_readonly("certificate", &geo::Contact::certificate)
+      "the journal acts along -normal. World frame, the input's length unit.");
+  add_as_dict_and_pickle(def_field_attributes(contact)
       .def("__repr__", [](const geo::Contact& c) {
         return "Contact(" + std::string(geo::to_string(c.type)) + " at " + std::string(geo::to_string(c.base)) +
                ", depth=" + repr_number(c.depth) + ", point_journal=" + repr_vector(c.p_WCj) +
@@ -213,19 +195,8 @@ void bind_results(py::module_& m) {
 
   py::class_<geo::JointContacts> joint_contacts(m, "JointContacts",
                                                 "Every contact between a journal and its bearing in one pose.");
-  joint_contacts
-      .def_readonly("scenario", &geo::JointContacts::scenario)
-      .def_readonly("aligned", &geo::JointContacts::aligned,
-                    "axes parallel (exactly, eq. 5, or within parallel_angle_tolerance)")
-      .def_property_readonly(
-          "contacts",
-          [](const geo::JointContacts& r) {
-            return std::vector<geo::Contact>(r.contacts.begin(), r.contacts.begin() + r.contact_count);
-          },
-          "radial before axial, base A before B")
+  def_field_attributes(joint_contacts)
       .def_readonly("contact_count", &geo::JointContacts::contact_count)
-      .def_readonly("certificate", &geo::JointContacts::certificate,
-                    "the weakest over every decision taken, including 'no contact'")
       .def("__repr__", [](const geo::JointContacts& r) {
         std::string text = "JointContacts(" + std::string(geo::label(r.scenario)) +
                            (r.aligned ? ", aligned" : "") + ", " + repr_certificate(r.certificate);

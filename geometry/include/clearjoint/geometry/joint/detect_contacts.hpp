@@ -29,11 +29,13 @@
 
 #include <array>
 #include <string_view>
+#include <tuple>
 
 #include "clearjoint/geometry/model/certificate.hpp"
 #include "clearjoint/geometry/model/contact_scenario.hpp"
 #include "clearjoint/geometry/model/detection_options.hpp"
 #include "clearjoint/geometry/model/enum_table.hpp"
+#include "clearjoint/geometry/model/field_lists.hpp"
 #include "clearjoint/geometry/model/joint_geometry.hpp"
 #include "clearjoint/geometry/model/rim_arc.hpp"
 #include "clearjoint/geometry/arithmetic/vector3.hpp"
@@ -121,6 +123,28 @@ struct Contact {
   Certificate certificate{};
 };
 
+/// Its field list (model/field_lists.hpp): a member added above needs its line here.
+/// The keys of the command line and of Python: "point_journal" is p_WCj, "normal" normal_W.
+template <>
+struct ResultFields<Contact> {
+  using C = Contact;
+  static constexpr std::string_view type_name = "Contact";
+  static constexpr std::tuple fields{
+      fields::plain("type", &C::type),
+      fields::plain("base", &C::base),
+      fields::plain("depth", &C::depth, "penetration depth >= 0"),
+      fields::bound("depth_error", &C::depth_error, "bound on the depth's error; certified unless uncertain (then inf)"),
+      fields::plain("point_journal", &C::p_WCj, "C_j on the journal (eqs. 8, 10, 14, 19)"),
+      fields::plain("point_bearing", &C::p_WCi, "C_i on the bearing (eqs. 7, 9, 15, 21)"),
+      fields::bound("point_journal_error", &C::p_WCj_error, "bound on point_journal's error (Euclidean)"),
+      fields::bound("point_bearing_error", &C::p_WCi_error, "bound on point_bearing's error (Euclidean)"),
+      fields::plain("normal", &C::normal_W, "unit normal, out of the bearing"),
+      fields::list("crossings", &C::crossings, &C::crossing_count,
+                   "the rim crossings bounding the penetration arc (none for line and face contacts)"),
+      fields::plain("certificate", &C::certificate)};
+};
+static_assert(detail::lists_every_member<Contact>(), "a member of Contact is missing from its field list");
+
 /// Up to two radial contacts per rim (beyond the model a rim may have two penetration arcs)
 /// plus two axial ones.
 inline constexpr int kMaxContacts = 6;
@@ -136,6 +160,19 @@ struct JointContacts {
   /// The weakest certificate over every decision taken, including the "no contact" answers.
   Certificate certificate{};
 };
+
+/// Its field list (model/field_lists.hpp): a member added above needs its line here.
+template <>
+struct ResultFields<JointContacts> {
+  using J = JointContacts;
+  static constexpr std::string_view type_name = "JointContacts";
+  static constexpr std::tuple fields{
+      fields::plain("scenario", &J::scenario),
+      fields::plain("aligned", &J::aligned, "axes parallel (exactly, eq. 5, or within parallel_angle_tolerance)"),
+      fields::plain("certificate", &J::certificate, "the weakest over every decision taken, including 'no contact'"),
+      fields::list("contacts", &J::contacts, &J::contact_count, "radial before axial, base A before B")};
+};
+static_assert(detail::lists_every_member<JointContacts>(), "a member of JointContacts is missing from its field list");
 
 /// Detect every contact between a journal (pose `journal`) and its bearing (pose `bearing`).
 /// Validates its inputs (InvalidInput names the field). Fixed-size results; no heap allocation

@@ -6,8 +6,10 @@
 #include <array>
 #include <cstdint>
 #include <string_view>
+#include <tuple>
 
 #include "clearjoint/geometry/model/enum_table.hpp"
+#include "clearjoint/geometry/model/field_lists.hpp"
 
 namespace clearjoint::geometry {
 
@@ -119,6 +121,17 @@ struct Certificate {
   /// to_string(reason).
   std::string_view reason_text() const noexcept;
 };
+
+/// Its field list (model/field_lists.hpp): a member added above needs its line here.
+template <>
+struct ResultFields<Certificate> {
+  using C = Certificate;
+  static constexpr std::string_view type_name = "Certificate";
+  static constexpr std::tuple fields{
+      fields::plain("level", &C::level),
+      fields::plain("reason", &C::reason, "A CertificateReason to branch on; none for certified answers.")};
+};
+static_assert(detail::lists_every_member<Certificate>(), "a member of Certificate is missing from its field list");
 
 /// The level's key: "exact", "certified", "uncertain".
 std::string_view to_string(Certainty level) noexcept;

@@ -4,8 +4,10 @@
 /// Points and arcs on a rim, in the angle of its CircleFrame.
 
 #include <limits>
+#include <tuple>
 
 #include "clearjoint/geometry/arithmetic/vector3.hpp"
+#include "clearjoint/geometry/model/field_lists.hpp"
 
 namespace clearjoint::geometry {
 
@@ -26,6 +28,20 @@ struct RimCrossing {
   int multiplicity = 1;
 };
 
+/// Its field list (model/field_lists.hpp): a member added above needs its line here.
+template <>
+struct ResultFields<RimCrossing> {
+  using X = RimCrossing;
+  static constexpr std::string_view type_name = "RimCrossing";
+  static constexpr std::tuple fields{
+      fields::plain("angle", &X::angle, "rim angle in [0, 2 pi), radians"),
+      fields::bound("angle_error", &X::angle_error),
+      fields::plain("point", &X::point, "world frame, shape (3,)"),
+      fields::bound("point_error", &X::point_error),
+      fields::plain("multiplicity", &X::multiplicity, "1 crossing, 2 tangency, 3-4 higher-order contact")};
+};
+static_assert(detail::lists_every_member<RimCrossing>(), "a member of RimCrossing is missing from its field list");
+
 /// The rim points with angle in the counter-clockwise sweep from `begin` to `end` (radians in
 /// [0, 2 pi); end < begin when the arc passes through angle 0). `full` marks the whole rim
 /// except, at most, one touching point: begin == end is that point's angle (a rim touching the
@@ -41,5 +57,14 @@ struct RimArc {
   /// Angular length in [0, 2 pi].
   double sweep() const noexcept;
 };
+
+/// Its field list (model/field_lists.hpp): a member added above needs its line here.
+template <>
+struct ResultFields<RimArc> {
+  static constexpr std::string_view type_name = "RimArc";
+  static constexpr std::tuple fields{fields::plain("begin", &RimArc::begin), fields::plain("end", &RimArc::end),
+                                     fields::plain("full", &RimArc::full)};
+};
+static_assert(detail::lists_every_member<RimArc>(), "a member of RimArc is missing from its field list");
 
 }  // namespace clearjoint::geometry

@@ -10,12 +10,14 @@
 
 #include <array>
 #include <string_view>
+#include <tuple>
 
 #include "clearjoint/geometry/model/certificate.hpp"
 #include "clearjoint/geometry/model/enum_table.hpp"
 #include "clearjoint/geometry/model/intersection_options.hpp"
 #include "clearjoint/geometry/model/primitives.hpp"
 #include "clearjoint/geometry/model/rim_arc.hpp"
+#include "clearjoint/geometry/model/field_lists.hpp"
 
 namespace clearjoint::geometry {
 
@@ -56,6 +58,20 @@ struct CircleCylinderIntersection {
   /// Sum of multiplicities: the number of roots of the rim's distance function, counted properly.
   int root_count() const noexcept;
 };
+
+/// Its field list (model/field_lists.hpp): a member added above needs its line here.
+template <>
+struct ResultFields<CircleCylinderIntersection> {
+  using Y = CircleCylinderIntersection;
+  static constexpr std::string_view type_name = "CircleCylinderIntersection";
+  static constexpr std::tuple fields{
+      fields::plain("topology", &Y::topology),
+      fields::list("crossings", &Y::crossings, &Y::crossing_count, "sorted by angle; multiplicities add up to 0, 2 or 4"),
+      fields::list("penetration_arcs", &Y::penetration_arcs, &Y::arc_count,
+                   "maximal arcs strictly beyond the wall; two arcs are beyond the paper's model"),
+      fields::plain("certificate", &Y::certificate)};
+};
+static_assert(detail::lists_every_member<CircleCylinderIntersection>(), "a member of CircleCylinderIntersection is missing from its field list");
 
 /// Intersect a circle with a cylinder's lateral surface. Throws InvalidInput on bad primitives.
 CircleCylinderIntersection intersect_circle_cylinder(const Circle3& circle,
