@@ -60,16 +60,7 @@ double angle_between(const Vector3& a, const Vector3& b) {
 
 }  // namespace
 
-std::string_view to_string(ContactSlot slot) noexcept {
-  switch (slot) {
-    case ContactSlot::radial_a: return "radial_a";
-    case ContactSlot::radial_b: return "radial_b";
-    case ContactSlot::line: return "line";
-    case ContactSlot::axial_a: return "axial_a";
-    case ContactSlot::axial_b: return "axial_b";
-  }
-  return "unknown";
-}
+std::string_view to_string(ContactSlot slot) noexcept { return geometry::key_of(slot); }
 
 ContactSlot slot_of(const Contact& contact) noexcept {
   if (contact.type == ContactType::axial) {

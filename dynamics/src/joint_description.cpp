@@ -1,8 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "clearjoint/dynamics/joint_description.hpp"
 
-#include <array>
-#include <utility>
+#include <string>
 
 #include "clearjoint/dynamics/errors.hpp"
 
@@ -10,37 +9,18 @@ namespace clearjoint::dynamics {
 
 namespace {
 
-constexpr std::array<std::pair<JointType, std::string_view>, 7> kNames{{
-    {JointType::spherical, "spherical"},
-    {JointType::revolute, "revolute"},
-    {JointType::universal, "universal"},
-    {JointType::cylindrical, "cylindrical"},
-    {JointType::translational, "translational"},
-    {JointType::fixed, "fixed"},
-    {JointType::angle_driver, "angle_driver"},
-}};
-
 bool uses_axes(JointType type) {
   return type != JointType::spherical && type != JointType::fixed;
 }
 
 }  // namespace
 
-std::string_view to_string(JointType type) {
-  for (const auto& [t, name] : kNames) {
-    if (t == type) return name;
-  }
-  return "unknown";
-}
+std::string_view to_string(JointType type) { return geometry::key_of(type); }
 
 JointType joint_type_from_string(std::string_view name, std::string_view field) {
-  for (const auto& [t, n] : kNames) {
-    if (n == name) return t;
-  }
-  std::string known;
-  for (const auto& [t, n] : kNames) known += (known.empty() ? "" : ", ") + std::string(n);
-  throw ModelError(std::string(field) + " = \"" + std::string(name) +
-                   "\": unknown joint type (known: " + known + ")");
+  if (const auto type = geometry::from_string<JointType>(name)) return *type;
+  throw ModelError(std::string(field) + " = \"" + std::string(name) + "\": unknown joint type (known: " +
+                   geometry::known_keys<JointType>() + ")");
 }
 
 int equation_count(JointType type) {

@@ -19,24 +19,12 @@ double power_of_depth(double depth, double exponent) noexcept {
 
 }  // namespace
 
-std::string_view to_string(NormalForceModel model) noexcept {
-  switch (model) {
-    case NormalForceModel::hertz: return "hertz";
-    case NormalForceModel::lankarani_nikravesh: return "lankarani_nikravesh";
-    case NormalForceModel::hunt_crossley: return "hunt_crossley";
-    case NormalForceModel::flores: return "flores";
-  }
-  return "unknown";
-}
+std::string_view to_string(NormalForceModel model) noexcept { return geometry::key_of(model); }
 
 NormalForceModel normal_force_model_from_string(std::string_view name, std::string_view field) {
-  for (NormalForceModel m : {NormalForceModel::hertz, NormalForceModel::lankarani_nikravesh,
-                             NormalForceModel::hunt_crossley, NormalForceModel::flores}) {
-    if (to_string(m) == name) return m;
-  }
-  throw ModelError(std::string(field) + " = \"" + std::string(name) +
-                   "\": unknown normal force model (known: hertz, lankarani_nikravesh, "
-                   "hunt_crossley, flores)");
+  if (const auto model = geometry::from_string<NormalForceModel>(name)) return *model;
+  throw ModelError(std::string(field) + " = \"" + std::string(name) + "\": unknown normal force model (known: " +
+                   geometry::known_keys<NormalForceModel>() + ")");
 }
 
 void validate(const NormalForceParameters& p, std::string_view field) {

@@ -32,3 +32,5 @@ ContactType = _CLASSES["ContactType"]
 ContactBase = _CLASSES["ContactBase"]
 CirclePlaneTopology = _CLASSES["CirclePlaneTopology"]
 CircleCylinderTopology = _CLASSES["CircleCylinderTopology"]
+# Not a result's enum: the clearance joint's output columns, which clearjoint.plot names.
+ContactSlot = _CLASSES["ContactSlot"]

@@ -5,6 +5,7 @@
 #include "enum_codes.hpp"
 
 #include "bindings.hpp"
+#include "clearjoint/dynamics/clearance_revolute_joint.hpp"
 
 #include <stdexcept>
 #include <string>
@@ -53,6 +54,9 @@ py::list enum_tables() {
   tables.add<geo::CirclePlaneTopology>("How a circle meets a plane. Array results hold these codes as int8.");
   tables.add<geo::CircleCylinderTopology>(
       "How a circle meets a cylinder's lateral surface. Array results hold these codes as int8.");
+  tables.add<dynamics::ContactSlot>(
+      "The clearance joint's contact slots: their keys prefix its output columns (radial_a.depth), "
+      "their labels name them in plots.");
   return tables.list();
 }
 

@@ -76,8 +76,28 @@ struct ClearanceJointPart {
 
 /// Where a contact's impact velocity is remembered, and its columns in the outputs.
 enum class ContactSlot { radial_a, radial_b, line, axial_a, axial_b };
-inline constexpr int kContactSlotCount = 5;
-/// "radial_a", "radial_b", "line", "axial_a", "axial_b".
+
+}  // namespace clearjoint::dynamics
+
+/// The slots' keys prefix their output columns ("radial_a.depth"); the labels name them in plots.
+template <>
+struct clearjoint::geometry::EnumTable<clearjoint::dynamics::ContactSlot> {
+  using S = clearjoint::dynamics::ContactSlot;
+  static constexpr std::string_view type_name = "ContactSlot";
+  static constexpr auto entries = std::to_array({
+      named_entry(S::radial_a, "radial_a", "radial A"),
+      named_entry(S::radial_b, "radial_b", "radial B"),
+      named_entry(S::line, "line", "line"),
+      named_entry(S::axial_a, "axial_a", "axial A"),
+      named_entry(S::axial_b, "axial_b", "axial B"),
+  });
+};
+static_assert(clearjoint::geometry::entries_in_code_order<clearjoint::dynamics::ContactSlot>());
+
+namespace clearjoint::dynamics {
+
+inline constexpr int kContactSlotCount = geometry::enum_count<ContactSlot>();
+/// The key of the slot's entry in its table: "radial_a", "radial_b", "line", "axial_a", "axial_b".
 std::string_view to_string(ContactSlot slot) noexcept;
 /// The slot of a detected contact (radial at base mid is the line contact).
 ContactSlot slot_of(const geometry::Contact& contact) noexcept;

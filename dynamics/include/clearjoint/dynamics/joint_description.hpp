@@ -4,11 +4,13 @@
 /// An ideal joint as a user or a model file describes it: which bodies, which points and axes in
 /// each body frame. joint_equations.hpp turns it into constraint equations.
 
+#include <array>
 #include <string>
 #include <string_view>
 
 #include "clearjoint/dynamics/angle_law.hpp"
 #include "clearjoint/dynamics/euler_parameters.hpp"  // Vector3
+#include "clearjoint/geometry/model/enum_table.hpp"
 
 namespace clearjoint::dynamics {
 
@@ -22,6 +24,28 @@ enum class JointType {
   angle_driver,   ///< 1: relative rotation about an axis prescribed in time (drives a crank)
 };
 
+}  // namespace clearjoint::dynamics
+
+/// The model-file spellings of the joint types.
+template <>
+struct clearjoint::geometry::EnumTable<clearjoint::dynamics::JointType> {
+  using J = clearjoint::dynamics::JointType;
+  static constexpr std::string_view type_name = "JointType";
+  static constexpr auto entries = std::to_array({
+      named_entry(J::spherical, "spherical", "3 equations: the two points coincide"),
+      named_entry(J::revolute, "revolute", "5 equations: points coincide, axes stay parallel"),
+      named_entry(J::universal, "universal", "4 equations: points coincide, the cross axes stay perpendicular"),
+      named_entry(J::cylindrical, "cylindrical", "4 equations: axes stay parallel and on one line"),
+      named_entry(J::translational, "translational", "5 equations: cylindrical, rotation about the axis locked"),
+      named_entry(J::fixed, "fixed", "6 equations: points coincide, relative orientation locked"),
+      named_entry(J::angle_driver, "angle_driver", "1 equation: rotation about an axis prescribed in time"),
+  });
+};
+static_assert(clearjoint::geometry::entries_in_code_order<clearjoint::dynamics::JointType>());
+
+namespace clearjoint::dynamics {
+
+/// The key of the type's entry in its table (the model-file spelling).
 std::string_view to_string(JointType type);
 /// Throws ModelError naming `field` for an unknown name.
 JointType joint_type_from_string(std::string_view name, std::string_view field);

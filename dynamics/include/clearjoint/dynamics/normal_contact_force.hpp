@@ -10,7 +10,10 @@
 /// penetration grows (compression), < 0 while it shrinks (restitution), as in
 /// geometry::ContactKinematics. The force is the magnitude pushing the bodies apart.
 
+#include <array>
 #include <string_view>
+
+#include "clearjoint/geometry/model/enum_table.hpp"
 
 namespace clearjoint::dynamics {
 
@@ -21,7 +24,25 @@ enum class NormalForceModel {
   flores,               ///< chi = 8 K (1 - ce) / (5 ce delta_dot(-)) (Flores et al. 2011)
 };
 
-/// "hertz", "lankarani_nikravesh", "hunt_crossley", "flores" (the model-file spellings).
+}  // namespace clearjoint::dynamics
+
+/// The model-file spellings: "hertz", "lankarani_nikravesh", "hunt_crossley", "flores".
+template <>
+struct clearjoint::geometry::EnumTable<clearjoint::dynamics::NormalForceModel> {
+  using M = clearjoint::dynamics::NormalForceModel;
+  static constexpr std::string_view type_name = "NormalForceModel";
+  static constexpr auto entries = std::to_array({
+      named_entry(M::hertz, "hertz", "Hertz: elastic, no energy loss"),
+      named_entry(M::lankarani_nikravesh, "lankarani_nikravesh", "Lankarani-Nikravesh, eqs. (28)-(29)"),
+      named_entry(M::hunt_crossley, "hunt_crossley", "Hunt-Crossley (1975)"),
+      named_entry(M::flores, "flores", "Flores et al. (2011)"),
+  });
+};
+static_assert(clearjoint::geometry::entries_in_code_order<clearjoint::dynamics::NormalForceModel>());
+
+namespace clearjoint::dynamics {
+
+/// The key of the model's entry in its table (the model-file spelling).
 std::string_view to_string(NormalForceModel model) noexcept;
 /// The inverse of to_string; throws ModelError `<field> = "<name>": unknown ...` listing the names.
 NormalForceModel normal_force_model_from_string(std::string_view name, std::string_view field);

@@ -5,7 +5,8 @@
 /// Every front-end (the command line's JSON, the C API's strings and codes, Python's IntEnum
 /// classes, the docs) takes its spellings from these tables, so that a value is written down once.
 ///
-/// A table is a specialisation of EnumTable<E>, written right after its enum:
+/// A table is a specialisation of EnumTable<E> in this namespace (for an enum of another module
+/// too), written right after its enum:
 ///   template <> struct EnumTable<ContactType> {
 ///     static constexpr std::string_view type_name = "ContactType";
 ///     static constexpr auto entries = std::to_array({named_entry(ContactType::radial, ...), ...});
@@ -16,6 +17,7 @@
 
 #include <cstddef>
 #include <optional>
+#include <string>
 #include <string_view>
 
 namespace clearjoint::geometry {
@@ -103,6 +105,17 @@ constexpr std::optional<E> from_string(std::string_view key) noexcept {
     if (entry.key == key) return entry.value;
   }
   return std::nullopt;
+}
+
+/// Every key of E in code order, joined by ", ": what an error message lists as the known values.
+template <TabledEnum E>
+std::string known_keys() {
+  std::string text;
+  for (const EnumEntry<E>& entry : EnumTable<E>::entries) {
+    if (!text.empty()) text += ", ";
+    text += entry.key;
+  }
+  return text;
 }
 
 }  // namespace clearjoint::geometry
