@@ -12,6 +12,7 @@
 #include <fstream>
 #include <memory>
 #include <string>
+#include <type_traits>
 
 #include <unistd.h>
 
@@ -122,8 +123,8 @@ TEST(MujocoClearanceJoints, OnlyAfterStepChangesTheImpactMemoryNeverAnIntegrator
 }
 
 /// The example with `from` replaced by `to`, written to a temporary file; the error its
-/// ClearanceJoints throws.
-std::string error_for_edited_example(const std::string& from, const std::string& to) {
+/// ClearanceJoints throws, or "no error"; `field_path` receives the error's field_path().
+std::string error_for_edited_example(const std::string& from, const std::string& to, std::string* field_path = nullptr) {
   std::ifstream in(kExample);
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   const size_t at = text.find(from);
@@ -138,6 +139,7 @@ std::string error_for_edited_example(const std::string& from, const std::string&
   try {
     ClearanceJoints clearance(model.get());
   } catch (const ModelError& e) {
+    if (field_path != nullptr) *field_path = e.field_path();
     return e.what();
   }
   return "no error";
@@ -154,6 +156,27 @@ TEST(MujocoClearanceJoints, NamesDimensionsThatFailTheJointsChecks) {
   const std::string error = error_for_edited_example("data=\"0.01 0.02 0.0099 0.0198\"",
                                                      "data=\"0.01 0.02 0.0101 0.0198\"");
   EXPECT_NE(error.find("rod_slider.journal.radius"), std::string::npos) << error;
+}
+
+TEST(MujocoClearanceJoints, KeepsTheFieldPathOfTheJointsChecksBesideTheDeclaration) {
+  // The declaration was pasted into the message, and the field's path was lost.
+  std::string path;
+  const std::string error = error_for_edited_example("data=\"0.01 0.02 0.0099 0.0198\"",
+                                                     "data=\"0.01 0.02 0.0101 0.0198\"", &path);
+  EXPECT_EQ(path, "rod_slider.journal.radius") << error;
+  EXPECT_TRUE(error.starts_with("<text name=\"clearance:rod_slider\">: rod_slider.journal.radius = "))
+      << error;
+}
+
+TEST(MujocoClearanceJoints, RefusesABadDeclarationAsTheProjectsBadInputError) {
+  // One catch of clearjoint::ValidationError handles every engine's bad model.
+  static_assert(std::is_base_of_v<ValidationError, ModelError>);
+  static_assert(std::is_base_of_v<dynamics::ModelError, ModelError>);
+  std::string path = "unset";
+  const std::string error = error_for_edited_example("clearance:rod_slider:friction", "clearance:rod_slider:frictoin",
+                                                     &path);
+  EXPECT_NE(error.find("unknown field"), std::string::npos) << error;
+  EXPECT_EQ(path, "") << "an element of the adapter's own is named in the message, not as a model field";
 }
 
 TEST(MujocoClearanceJoints, NamesAMissingDimensionsElement) {

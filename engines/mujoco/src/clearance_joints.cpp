@@ -208,9 +208,12 @@ ClearanceJoints::ClearanceJoints(const mjModel* model) : model_(model) {
           bearing_body, journal_body,
           engines::TwoBodyClearanceJoint(name, part_at(model, bearing), part_at(model, journal), parameters),
           {}}));
+    } catch (const ModelError&) {
+      throw;  // the adapter's own, already naming the element
     } catch (const dynamics::ModelError& e) {
-      // The joint's own checks name "<name>.<field>"; say where the joint was declared.
-      throw ModelError(declaration + ": " + e.what());
+      // The joint's own checks name "<name>.<field>"; say where the joint was declared, keeping
+      // the field's path for a program that matches it.
+      throw ModelError(e, declaration);
     }
   }
 }

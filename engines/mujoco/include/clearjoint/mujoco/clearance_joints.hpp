@@ -36,14 +36,18 @@
 #include <mujoco/mujoco.h>
 
 #include "clearjoint/dynamics/clearance_revolute_joint.hpp"
+#include "clearjoint/dynamics/errors.hpp"
 
 namespace clearjoint::mujoco {
 
 /// A clearance joint's declaration that the model does not satisfy (a missing site, a malformed
-/// <custom> value, dimensions that fail the joint's checks); what() names it.
-class ModelError : public std::runtime_error {
+/// <custom> value, dimensions that fail the joint's checks); what() names it. One of the
+/// project's bad-input errors (dynamics::ModelError, a ValidationError): an error of the joint's
+/// own checks keeps its field_path() ("rod_slider.journal.radius") with the declaration as its
+/// source; the adapter's own errors about an element have an empty path.
+class ModelError : public dynamics::ModelError {
  public:
-  using std::runtime_error::runtime_error;
+  using dynamics::ModelError::ModelError;
 };
 
 class ClearanceJoints {
