@@ -104,7 +104,14 @@ double number_argument(const py::handle& value, const std::string& name) {
                           std::string(py::str(py::type::of(value).attr("__name__"))));
   };
   // Python ints beyond int64 are numbers too; NumPy would make them objects.
-  if (PyLong_Check(value.ptr()) && !PyBool_Check(value.ptr())) return value.cast<double>();
+  if (PyLong_Check(value.ptr()) && !PyBool_Check(value.ptr())) {
+    const double number = PyLong_AsDouble(value.ptr());
+    if (number == -1.0 && PyErr_Occurred()) {  // OverflowError: beyond the doubles' 1.8e308
+      PyErr_Clear();
+      throw py::value_error(name + ": an int too large for a double (magnitude at most 1.8e308)");
+    }
+    return number;
+  }
   const py::array array = py::array::ensure(value);
   if (!array || array.ndim() != 0) throw refuse();
   const char kind = array.dtype().kind();

@@ -157,7 +157,8 @@ auto within_memory(const char* call, std::size_t rows, const char* row_name, Bat
 }
 
 /// A number given as a scalar: a Python int or float or a NumPy integer or floating scalar;
-/// TypeError naming `name` for anything else (bools, None, strings, complex).
+/// TypeError naming `name` for anything else (bools, None, strings, complex), ValueError naming it
+/// for an int beyond the doubles' range.
 double number_argument(const pybind11::handle& value, const std::string& name);
 
 /// A switch: True or False (numpy.bool_ too); TypeError naming `name` for anything else (None, 2).

@@ -2,7 +2,7 @@
 """clearjoint.lubrication: lubricated journal bearings (docs/lubrication.md).
 
 - ``bearing_characteristics(eccentricity_ratio, width_ratio, *, motion="rotation",
-  cavitation=None, method="grid", grid=None)``: what bearing handbooks tabulate for a plain
+  cavitation=None, method="grid", grid=None, allow_large_grid=False)``: what bearing handbooks tabulate for a plain
   360-degree journal bearing: the Sommerfeld number, the attitude angle, the side flow and the
   peak pressure, from the film solutions of the C++ library ``clearjoint::lubrication``.
 
@@ -41,30 +41,25 @@ class BearingCharacteristics:
 
 def bearing_characteristics(eccentricity_ratio: float, width_ratio: float, *,
                             motion: str = "rotation", cavitation: Optional[str] = None,
-                            method: str = "grid",
-                            grid: Optional[Tuple[int, int]] = None) -> BearingCharacteristics:
+                            method: str = "grid", grid: Optional[Tuple[int, int]] = None,
+                            allow_large_grid: bool = False) -> BearingCharacteristics:
     """The characteristics of a plain journal bearing at eccentricity ratio eps = e / c.
 
-    eccentricity_ratio: eps in [0, 1). width_ratio: B / D > 0.
+    eccentricity_ratio: eps, 0 or in [1e-100, 1). width_ratio: B / D in [1e-50, 1e50]. Both real
+    numbers (int, float or a NumPy integer or floating scalar; not bool, str, complex or None).
     motion: ``"rotation"`` (steady spin) or ``"squeeze"`` (pure approach along the line of
     centres). method: ``"grid"`` (finite width, ReynoldsGridSolver), ``"short"`` (Ocvirk) or
     ``"long"`` (Sommerfeld). cavitation: ``"half_sommerfeld"`` or ``"mass_conserving"``; None
     takes mass_conserving for the grid (fed at ambient pressure along the thickest film, as
     Raimondi & Boyd's tables) and half_sommerfeld, the only one they have, for the closed forms.
-    grid: (cells around, cells across), at least (8, 2); None: 96 x 24, which keeps So within
-    about 1 % of Raimondi & Boyd.
+    grid: (cells around, cells across), integers (NumPy's too), at least (8, 2); None: 96 x 24,
+    which keeps So within about 1 % of Raimondi & Boyd. A grid whose estimated cost is above the
+    solver's limits (64 MiB of band or 1e9 operations a linear solve, about half a second) is
+    refused with the estimate unless allow_large_grid is True.
 
-    Raises ValueError naming the argument for a value out of range or an unknown name.
+    Raises TypeError naming the argument for a value of the wrong type, ValueError naming it for
+    a value out of range, an unknown name or a grid refused.
     """
-    if grid is not None:
-        try:
-            around, across = grid
-        except (TypeError, ValueError):
-            raise ValueError("grid = %r: must be a pair (cells around, cells across)" % (grid,)) from None
-        for name, value in (("grid[0]", around), ("grid[1]", across)):
-            if isinstance(value, bool) or not isinstance(value, int):
-                raise ValueError("%s = %r: must be a whole number of cells" % (name, value))
-        grid = (around, across)
-    d = _core.bearing_characteristics(float(eccentricity_ratio), float(width_ratio), motion,
-                                      cavitation, method, grid)
+    d = _core.bearing_characteristics(eccentricity_ratio, width_ratio, motion, cavitation, method, grid,
+                                      allow_large_grid)
     return BearingCharacteristics(**d)
