@@ -10,10 +10,12 @@ from typing import Dict, Optional, Tuple
 
 import numpy as np
 
+from .._enums import ContactSlot
 from .run_folder import ClearanceJointModel, Run, RunError
 
-#: The contact slots of a clearance joint's table (ContactSlot, clearance_revolute_joint.hpp).
-CONTACT_SLOTS = ("radial_a", "radial_b", "line", "axial_a", "axial_b")
+#: The contact slots of a clearance joint's table, in the order of the library's table
+#: (ContactSlot, clearance_revolute_joint.hpp).
+CONTACT_SLOTS = tuple(slot.name for slot in ContactSlot)
 
 
 @dataclass(frozen=True)
