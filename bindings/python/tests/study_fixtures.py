@@ -92,7 +92,8 @@ def run_without_faults(study):
     from clearjoint.study import expand_study
     from clearjoint.study.execute import execute_run
     _, runs, _ = expand_study(study)
-    return {r.run_id: execute_run({"run_id": r.run_id, "model": r.model, "outputs": study.spec["outputs"]})
+    return {r.run_id: execute_run({"run_id": r.run_id, "model": r.model, "outputs": study.spec["outputs"],
+                                   "engine": r.engine})
             for r in runs}
 
 

@@ -102,6 +102,10 @@ def test_zip_pairs_values_element_by_element(tmp_path, models_dir):
     (lambda s: s.update(model="no_such_model.json"), "model = 'no_such_model.json': cannot read"),
     (lambda s: s.update(plots=[{"file": "a.png", "designs": ["radial"], "statistics": ["peek"]}]),
      "plots[0].statistics: no reduction called 'peek'"),
+    (lambda s: s["outputs"]["reductions"][1].update(after="100%"),
+     "outputs.reductions[1] ('p99'): after = '100%': a share of the run must be below 100%"),
+    (lambda s: s["outputs"]["reductions"][1].update(after="half"),
+     "outputs.reductions[1].after: 'half' is neither a time in seconds nor a share of the run such as \"50%\""),
 ])
 def test_a_bad_study_file_is_an_error_naming_the_field(tmp_path, models_dir, edit, message):
     with pytest.raises(StudyError, match=None) as error:
@@ -159,6 +163,18 @@ def test_a_study_that_cannot_run_is_one_line_naming_the_field_and_status_2_befor
     err = capsys.readouterr().err
     assert message in err and err.count("\n") == 1 and "Traceback" not in err, err
     assert not os.path.exists(tmp_path / "store_small")
+
+
+def test_a_share_of_the_run_as_after_follows_an_end_time_that_a_time_in_seconds_would_pass(tmp_path, models_dir):
+    # p99's after is 0.005 s: a study shortened to 4 ms cannot run; as "33%" of a 15-ms run it
+    # is the same window, and a 4-ms run keeps its last 67 %.
+    def shortened(share):
+        return lambda s: (s["set"].update({"/solver/end_time": 0.004}),
+                          s["outputs"]["reductions"][1].update(after=share) if share else None)
+    with pytest.raises(StudyError, match="after = 0.005 s is not before the end of the run"):
+        expand_study(load_study(edited(tmp_path, models_dir, shortened(None))))
+    _, runs, _ = expand_study(load_study(edited(tmp_path, models_dir, shortened("33%"))))
+    assert runs and all(r.model["solver"]["end_time"] == 0.004 for r in runs)
 
 
 def test_a_model_file_with_nan_is_an_error_naming_the_file_and_field(tmp_path, models_dir):

@@ -43,6 +43,28 @@ def test_a_window_of_nan_only_is_an_error_naming_the_column(spec):
         reduce_one(contact_table(), spec)
 
 
+def speed_table(end_time):
+    """A body's table of 11 samples from 0 to end_time, the value growing with the sample."""
+    return {"body": {"time": np.linspace(0.0, end_time, 11), "v": np.arange(11.0)}}
+
+
+@pytest.mark.parametrize("end_time", [1.0, 0.2])
+def test_an_after_given_as_a_share_of_the_run_keeps_the_same_samples_whatever_the_end_time(end_time):
+    spec = {"name": "r", "quantity": "rms", "table": "body", "column": "v", "after": "50%"}
+    # Samples 6..10 are after half the run, at any end time.
+    assert reduce_one(speed_table(end_time), spec) == pytest.approx(math.sqrt(np.mean(np.arange(6.0, 11.0) ** 2)))
+    in_seconds = dict(spec, after=0.5)
+    assert reduce_one(speed_table(1.0), in_seconds) == reduce_one(speed_table(1.0), spec)
+
+
+def test_an_after_given_as_a_share_counts_from_the_start_time():
+    tables = {"body": {"time": np.linspace(1.0, 2.0, 11), "v": np.arange(11.0)}}
+    spec = {"name": "r", "quantity": "peak_abs", "table": "body", "column": "v", "after": "85%"}
+    assert reduce_one(tables, dict(spec, quantity="rms")) == pytest.approx(math.sqrt((81.0 + 100.0) / 2))
+    with pytest.raises(ReductionError, match=r"reduction 'r': no sample after t = 2 s \(100% of the run\)"):
+        reduce_one(tables, dict(spec, after="100%"))
+
+
 def test_a_reduction_that_is_not_finite_is_an_error_naming_it():
     tables = contact_table()
     tables["energy"]["total"][-1] = NAN  # the energy at the last sample is missing

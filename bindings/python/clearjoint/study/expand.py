@@ -5,8 +5,14 @@ draws), each point with its ensemble members, each member a complete model.
 A point is a set of parameter values on a base model; its id spells them out
 ("axial_clearance_mm=0.1,radial_clearance_mm=0.05"), so that the same point named by two designs is
 one point. Member k (k = -(n-1)/2 .. n/2, rounded down; k = 0 for a single member) scales the
-ensemble's values by 1 + k relative_step. A run is identified by the SHA-256 of the model it runs
-and of the outputs kept: two (point, member) pairs with the same model are one run.
+ensemble's values by 1 + k relative_step. A run is identified by the SHA-256 of the model it runs,
+of the outputs kept and of the engine when it is not the default: two (point, member) pairs with
+the same model in the same engine are one run.
+
+The engine (the study's or a design's `engine`, "clearjoint" by default) is part of the point:
+a point run in Simbody has "engine=simbody" in its id, so two designs that differ only in their
+engine are two sets of points, drawn as two lines. The default engine adds nothing to the ids,
+so that stores made before studies named engines keep their runs.
 """
 import copy
 import hashlib
@@ -18,7 +24,7 @@ import numpy as np
 
 from . import json_pointer
 from .preflight import check_runs
-from .study_file import StudyError
+from .study_file import DEFAULT_ENGINE, StudyError
 
 
 @dataclass(frozen=True)
@@ -28,6 +34,7 @@ class Point:
     values: tuple      # ((parameter, value), ...) in the study's parameter order
     designs: tuple     # the designs that contain it, in file order
     members: int
+    engine: str = DEFAULT_ENGINE  # the engine that integrates it (clearjoint.simulate's engine)
 
     def value(self, name):
         return dict(self.values)[name]
@@ -40,6 +47,7 @@ class Run:
     member: int
     model: dict
     model_sha256: str
+    engine: str = DEFAULT_ENGINE
 
 
 def canonical_json(value):
@@ -61,11 +69,20 @@ def _format_value(value):
     return repr(float(value))
 
 
-def point_id(base, values):
+def point_id(base, values, engine=DEFAULT_ENGINE):
     parts = ["%s=%s" % (name, _format_value(v)) for name, v in sorted(values)]
+    if engine != DEFAULT_ENGINE:
+        parts.insert(0, "engine=%s" % engine)
     if base:
         parts.insert(0, "model=%s" % base)
     return ",".join(parts) or "base"
+
+
+def run_key(model_hash, outputs_hash, engine=DEFAULT_ENGINE):
+    """A run's id: the first 20 hex digits of the SHA-256 of its model's hash, the outputs' hash
+    and, for an engine other than the default, the engine's name."""
+    text = model_hash + outputs_hash + ("" if engine == DEFAULT_ENGINE else "\nengine=%s" % engine)
+    return sha256_text(text)[:20]
 
 
 def _draw(rng, distribution, count):
@@ -110,15 +127,16 @@ def expand_points(study):
     for design in study.spec["designs"]:
         base = design["name"] if "model" in design else ""
         members = design.get("members", 1)
+        engine = study.engine_of(design)
         for row in design_assignments(design):
             values = tuple(sorted(((n, float(v)) for n, v in row), key=lambda item: order.index(item[0])))
-            pid = point_id(base, values)
+            pid = point_id(base, values, engine)
             if pid in points:
                 old = points[pid]
                 designs = old.designs + ((design["name"],) if design["name"] not in old.designs else ())
-                points[pid] = Point(pid, base, values, designs, max(old.members, members))
+                points[pid] = Point(pid, base, values, designs, max(old.members, members), engine)
             else:
-                points[pid] = Point(pid, base, values, (design["name"],), members)
+                points[pid] = Point(pid, base, values, (design["name"],), members, engine)
     return list(points.values())
 
 
@@ -158,9 +176,9 @@ def expand_study(study):
         for member in member_offsets(point.members):
             model = build_model(study, point, member)
             model_hash = sha256_text(canonical_json(model))
-            run_id = sha256_text(model_hash + outputs_hash)[:20]
+            run_id = run_key(model_hash, outputs_hash, point.engine)
             membership[(point.point_id, member)] = run_id
             if run_id not in runs:
-                runs[run_id] = Run(run_id, point.point_id, member, model, model_hash)
+                runs[run_id] = Run(run_id, point.point_id, member, model, model_hash, point.engine)
     check_runs(study, runs.values())
     return points, list(runs.values()), membership

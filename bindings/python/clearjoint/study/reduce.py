@@ -34,15 +34,39 @@ def column(tables, table_name, column_name, purpose):
     return np.asarray(t[column_name], dtype=float)
 
 
+def parse_share(after):
+    """A reduction's `after` given as a share of the run ("50%"): the share as a fraction in
+    [0, 1), else None (`after` in seconds). The form is checked by the study schema and by
+    study_file."""
+    if isinstance(after, str) and after.endswith("%"):
+        return float(after[:-1]) / 100.0
+    return None
+
+
+def after_seconds(after, time):
+    """The time [s] a reduction's window starts at: `after` itself when given in seconds, else
+    the share of the simulated time from the run's first report (solver.start_time) to its last
+    (solver.end_time), so that a shorter or longer run keeps the same part of its motion."""
+    share = parse_share(after)
+    if share is None:
+        return float(after)
+    return float(time[0] + share * (time[-1] - time[0]))
+
+
+def _after_text(after, seconds):
+    return "t = %g s" % seconds if parse_share(after) is None else "t = %g s (%s of the run)" % (seconds, after)
+
+
 def _after(tables, spec, values):
     """The samples with time > spec['after'] (all samples when it is absent)."""
     if "after" not in spec:
         return values
     time = column(tables, spec["table"], "time", "reduction %r" % spec["name"])
-    kept = values[time > spec["after"]]
+    after = after_seconds(spec["after"], time)
+    kept = values[time > after]
     if kept.size == 0:
-        raise ReductionError("reduction %r: no sample after t = %g s (the run ends at %g s)" % (
-            spec["name"], spec["after"], time[-1]))
+        raise ReductionError("reduction %r: no sample after %s (the run ends at %g s)" % (
+            spec["name"], _after_text(spec["after"], after), time[-1]))
     return kept
 
 
@@ -56,7 +80,8 @@ def _contact_depths(tables, spec):
                              "table has them)" % (spec["name"], spec["table"]))
     depths = np.column_stack([np.asarray(t[c], dtype=float) for c in names])
     if "after" in spec:
-        depths = depths[np.asarray(t["time"]) > spec["after"]]
+        time = np.asarray(t["time"], dtype=float)
+        depths = depths[time > after_seconds(spec["after"], time)]
     return depths
 
 
@@ -82,7 +107,9 @@ def reduce_one(tables, spec):
         raise ReductionError("%s: column %r of table %r is NaN at every sample%s (no value there: a contact "
                              "slot without contact, say); max_depth and impacts count a joint's contacts" % (
                                  purpose, spec["column"], spec["table"],
-                                 " after t = %g s" % spec["after"] if "after" in spec else ""))
+                                 " after %s" % _after_text(spec["after"], after_seconds(
+                                     spec["after"], column(tables, spec["table"], "time", purpose)))
+                                 if "after" in spec else ""))
     if quantity == "peak_abs":
         return float(np.abs(values).max())
     if quantity == "percentile_abs":

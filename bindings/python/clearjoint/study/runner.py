@@ -187,7 +187,8 @@ def _submit_and_store(client, study, store, todo, values, outputs_hash, report, 
     report.workers = len(client.scheduler_info().get("workers", {}))
     print("%s, %d workers; %s" % (client.scheduler.address, report.workers, dashboard_text(client)), file=stream)
     # One map call: the tasks go to the scheduler as one graph, not one message each.
-    payloads = [{"run_id": run.run_id, "model": run.model, "outputs": study.spec["outputs"]} for run in todo]
+    payloads = [{"run_id": run.run_id, "model": run.model, "outputs": study.spec["outputs"], "engine": run.engine}
+                for run in todo]
     futures = client.map(execute_run, payloads, key=["clearjoint-run-%s" % run.run_id for run in todo])
     by_key = {future.key: run for future, run in zip(futures, todo)}
     bar = tqdm(total=len(todo), unit="run", file=stream, disable=not progress, dynamic_ncols=True)

@@ -320,6 +320,7 @@ class Store:
             a["model_sha256"] = run.model_sha256
             a["outputs_sha256"] = outputs_sha256
             a["model"] = json.dumps(run.model, sort_keys=True, allow_nan=False)
+            a["engine"] = run.engine
             for key in ("library_version", "library_build", "package_sha256", "host", "pid", "wall_seconds",
                         "simulate_seconds"):
                 a[key] = result[key]

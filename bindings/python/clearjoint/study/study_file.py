@@ -17,6 +17,9 @@ SCHEMA_FILE = "study-v1.schema.json"
 # each run is a file in one folder and a task on the scheduler, and a typo such as members = 1e9
 # should be an error, not the client running out of memory. Section 6's largest study has 153.
 MAX_RUNS = 100_000
+# The engine a run is integrated in when neither the study nor its design names one: that of
+# clearjoint.simulate and `clearjoint simulate`.
+DEFAULT_ENGINE = "clearjoint"
 
 
 class StudyError(ValueError):
@@ -117,6 +120,11 @@ class Study:
     def reductions(self):
         return self.spec["outputs"].get("reductions", [])
 
+    def engine_of(self, design):
+        """The engine a design's runs are integrated in: the design's, else the study's, else
+        DEFAULT_ENGINE."""
+        return design.get("engine", self.spec.get("engine", DEFAULT_ENGINE))
+
     def design(self, name):
         for d in self.spec["designs"]:
             if d["name"] == name:
@@ -193,6 +201,9 @@ def _check_references(path, spec):
     for i, r in enumerate(reductions):
         if rnames.count(r["name"]) > 1:
             raise StudyError("%s: outputs.reductions[%d]: the name %r is used twice" % (path, i, r["name"]))
+        if isinstance(r.get("after"), str) and not float(r["after"][:-1]) < 100:
+            raise StudyError("%s: outputs.reductions[%d] (%r): after = %r: a share of the run must be below 100%% "
+                             "(no sample would be left)" % (path, i, r["name"], r["after"]))
         for needed in REDUCTION_NEEDS[r["quantity"]]:
             if needed not in r:
                 raise StudyError("%s: outputs.reductions[%d] (%r): quantity %r needs %r" % (
@@ -261,7 +272,10 @@ def load_study(path):
     errors = sorted(validator.iter_errors(spec), key=lambda e: list(e.absolute_path))
     if errors:
         e = jsonschema.exceptions.best_match(errors)
-        raise StudyError("%s: %s: %s" % (path, _field_name(e.absolute_path), e.message))
+        message = e.message
+        if e.validator == "pattern" and list(e.absolute_path)[-1:] == ["after"]:
+            message = "%r is neither a time in seconds nor a share of the run such as \"50%%\"" % e.instance
+        raise StudyError("%s: %s: %s" % (path, _field_name(e.absolute_path), message))
     _integers(spec)
     _check_references(path, spec)
     _check_size(path, spec)

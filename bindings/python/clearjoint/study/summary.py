@@ -1,8 +1,8 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """The summary tables of a study, derived from the store (never edited by hand):
 
-    summary/runs.csv     one row per (point, member): parameters, run id, reductions, wall time
-    summary/points.csv   one row per point and reduction: members stored, median, quartiles, range
+    summary/runs.csv     one row per (point, member): engine, parameters, run id, reductions, wall time
+    summary/points.csv   one row per point and reduction: engine, members stored, median, quartiles, range
     summary/trends.csv   per design with an x parameter, neighbouring points along x and first
                          against last: P(upper > lower) and the one-sided Mann-Whitney p-value
     summary/summary.json all of it, as strict JSON (no NaN or Infinity)
@@ -46,7 +46,8 @@ def collect(study, store, points, membership):
         members[point.point_id] = {}
         for k in member_offsets(point.members):
             run_id = membership[(point.point_id, k)]
-            row = {"point_id": point.point_id, "designs": " ".join(point.designs), "member": k, "run_id": run_id}
+            row = {"point_id": point.point_id, "designs": " ".join(point.designs), "member": k, "run_id": run_id,
+                   "engine": point.engine}
             row.update(dict(point.values))
             if run_id in stored and run_id not in unreadable:
                 try:
@@ -107,15 +108,15 @@ def summarise(study, store, points, membership):
             entry["complete"] = len(values) == point.members
             statistics[point.point_id][name] = entry
             row = {"point_id": point.point_id, "designs": " ".join(point.designs), "statistic": name,
-                   "members": point.members}
+                   "members": point.members, "engine": point.engine}
             row.update(dict(point.values))
             row.update({k: v for k, v in entry.items() if k != "values"})
             point_rows.append(row)
     trend_rows = trends(study, points, statistics)
     parameters = list(study.parameters)
-    store.write_summary_file("runs.csv", _csv(rows, ["point_id", "designs", "member", "run_id"] + parameters
+    store.write_summary_file("runs.csv", _csv(rows, ["point_id", "designs", "member", "run_id", "engine"] + parameters
                                               + names + ["wall_seconds", "host", "library_version"]))
-    store.write_summary_file("points.csv", _csv(point_rows, ["point_id", "designs"] + parameters + [
+    store.write_summary_file("points.csv", _csv(point_rows, ["point_id", "designs", "engine"] + parameters + [
         "statistic", "members", "n", "complete", "median", "q1", "q3", "min", "max"]))
     store.write_summary_file("trends.csv", _csv(trend_rows, [
         "design", "statistic", "x", "lower", "upper", "probability_greater", "p_value_greater"]))
