@@ -98,7 +98,7 @@ def main():
     summary = section6_figures.draw_all(load, args.figures, STUDY_MM)
     from clearjoint.study.summary import summarise
     ensembles = summarise(clearance.study, clearance.store, clearance.points, clearance.membership)
-    draw_all(clearance.study, ensembles)
+    draw_all(clearance.study, ensembles, args.figures)  # the study alone draws into its store
     summary["ensembles"] = {"points": {pid: {s: {k: v for k, v in e.items()} for s, e in stats.items()}
                                        for pid, stats in ensembles["points"].items()},
                             "trends": ensembles["trends"]}

@@ -149,3 +149,14 @@ def test_plot_titles_and_labels_come_from_the_study(tmp_path, models_dir):
     plot["title"] = "{points} points x {members} runs over {end_time} s {not a field}"
     assert plot_title(plot, fields) == "2 points x 3 runs over %g s {not a field}" % TEST_END_TIME
     assert fill("peak |a| over {end_time} s", fields) == "peak |a| over %g s" % TEST_END_TIME
+
+
+def test_the_shipped_studies_draw_their_figures_beside_their_store_not_into_the_repository(models_dir):
+    from clearjoint.study.plot import figure_directory, plots_of
+    root = models_dir.parent
+    for path in sorted((root / "studies").glob("*.json")):
+        study = load_study(str(path))
+        for plot in plots_of(study):
+            directory = figure_directory(study, plot)
+            assert directory == os.path.join(study.store_path, "figures"), (path.name, plot["file"], directory)
+            assert figure_directory(study, plot, "elsewhere") == "elsewhere"  # `study plot --out`

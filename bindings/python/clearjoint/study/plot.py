@@ -1,7 +1,8 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """The standard figure of a study: each statistic against the design's x parameter, one line per
 design, the median of the members with bars from their minimum to their maximum and every member
-as a dot (docs/figures/section6/ensemble_vs_clearance.png is one).
+as a dot (docs/figures/section6/ensemble_vs_clearance.png is one, drawn there by
+scripts/reproduce_section6.py; `study plot` draws into STORE/figures).
 
 Titles and labels come from the study: a plot's title, x_label and the reductions' labels may name
 {study}, {points}, {members} and {end_time}, filled in from the study's expansion, so that a title
@@ -140,11 +141,18 @@ def draw(study, summary, plot, directory):
     return path
 
 
+def figure_directory(study, plot, directory=None):
+    """Where a plot is drawn: `directory` when given (`study plot --out`), else the plot's own
+    `directory` (relative to the study file), else STORE/figures: beside the store, which the
+    study owns, never into a folder of the repository or of the user unless the study says so."""
+    if directory:
+        return directory
+    if "directory" in plot:
+        return study.resolve(plot["directory"])
+    return os.path.join(study.store_path, "figures")
+
+
 def draw_all(study, summary, directory=None):
-    """Every plot the study file lists (or the default one); returns the paths written."""
-    paths = []
-    for plot in plots_of(study):
-        target = directory or (study.resolve(plot["directory"]) if "directory" in plot
-                               else os.path.join(study.store_path, "figures"))
-        paths.append(draw(study, summary, plot, target))
-    return paths
+    """Every plot the study file lists (or the default one), each into figure_directory; returns
+    the paths written."""
+    return [draw(study, summary, plot, figure_directory(study, plot, directory)) for plot in plots_of(study)]
