@@ -234,20 +234,15 @@ int run_simulate(Arguments args) {
   // Every check that can fail before the run, before the output folder exists: the model is
   // built once, its tables planned (name collisions) and the size guard applied to that plan.
   // Another engine refuses the features it does not support, naming them, before the folder exists.
-  dynamics::SimulationRun run(model, dynamics::RunOptions{.allow_large = a.allow_large});
-  check_model_for_engine(a.engine, model);
+  // solver.method "moreau_jean" plans the non-smooth run (docs/nonsmooth.md).
+  const PlannedRun run = plan_run(a.engine, model, dynamics::RunOptions{.allow_large = a.allow_large});
   const dynamics::RunFolderOptions options{dynamics::run_format(a.format), a.force, a.overrides};
   ProgressReport bar;
   dynamics::SimulationSummary summary;
   try {
     const auto progress = [&bar](double f) { bar.update(f); };
-    if (a.engine == kDefaultEngine) {
-      summary = dynamics::write_run_folder(run, model_text, a.out_dir, options, progress);
-    } else {
-      summary = dynamics::write_run_folder(
-          [&](dynamics::SimulationOutput& output) { return simulate_with_engine(a.engine, run, output, progress); },
-          model_text, a.out_dir, options);
-    }
+    summary = dynamics::write_run_folder([&](dynamics::SimulationOutput& output) { return run(output, progress); },
+                                         model_text, a.out_dir, options);
   } catch (...) {
     bar.finish();
     throw;

@@ -5,6 +5,7 @@
 // (dynamics::SimulationRun) to one sink (dynamics::SimulationOutput), so that the format, the
 // decimation and the columns are the same whichever engine runs.
 
+#include <functional>
 #include <string>
 #include <string_view>
 
@@ -35,5 +36,18 @@ void check_model_for_engine(std::string_view engine, const dynamics::ModelDescri
 dynamics::SimulationSummary simulate_with_engine(std::string_view engine, dynamics::SimulationRun& run,
                                                  dynamics::SimulationOutput& output,
                                                  const dynamics::ProgressCallback& progress);
+
+/// A run planned before any output exists, ready to write its tables to a sink.
+using PlannedRun =
+    std::function<dynamics::SimulationSummary(dynamics::SimulationOutput&, const dynamics::ProgressCallback&)>;
+
+/// Plan `model`'s run with `engine`: a compliant model (solver.method "dormand_prince") as
+/// dynamics::SimulationRun (the default engine or Simbody, check_model_for_engine), a
+/// "moreau_jean" one as clearjoint::nonsmooth::MoreauJeanRun (the default engine only; the same
+/// tables, docs/nonsmooth.md). Throws what planning throws (ModelError, SolverError,
+/// std::invalid_argument for an engine that cannot run the model, a ModelError naming
+/// solver.method when this program was built without Siconos).
+PlannedRun plan_run(std::string_view engine, const dynamics::ModelDescription& model,
+                    const dynamics::RunOptions& options);
 
 }  // namespace clearjoint::app

@@ -4,6 +4,10 @@
 namespace clearjoint::dynamics {
 
 JointReaction joint_reaction(const MultibodySystem& system, int joint) {
+  return joint_reaction(system, joint, system.multipliers());
+}
+
+JointReaction joint_reaction(const MultibodySystem& system, int joint, const Eigen::VectorXd& multipliers) {
   const ConstraintSet& constraints = system.constraints();
   const JointEquations& equations = constraints.joints()[joint];
   const bool on_j = equations.body_j() != kGround;
@@ -16,7 +20,7 @@ JointReaction joint_reaction(const MultibodySystem& system, int joint) {
   // eq. (37), restricted to this joint's rows and this body's six columns.
   const Eigen::Matrix<double, 6, 1> generalised =
       -constraints.jacobian().block(row, 6 * reaction.body, count, 6).transpose() *
-      system.multipliers().segment(row, count);
+      multipliers.segment(row, count);
   const BodyKinematics& k = system.kinematics().body(reaction.body);
   reaction.force_W = generalised.head<3>();
   const Vector3 moment_about_centre_W = k.rotation * generalised.tail<3>();

@@ -45,6 +45,7 @@ struct MoreauJean::Impl {
   std::vector<double> rate_scratch;
   std::vector<UnilateralContact> found;
   std::vector<ContactPercussion> percussions;
+  Eigen::VectorXd bilateral;  ///< mu of the last step (bilateral_percussions)
   MoreauJeanStatistics statistics;
 
   explicit Impl(const dynamics::ModelDescription& model)
@@ -160,7 +161,10 @@ struct MoreauJean::Impl {
         throw dynamics::SolverError("moreau_jean at t = " + dynamics::format_number(time) +
                                     " s: the ideal joints' constraint Jacobian lost rank");
       }
-      v_free -= minv_jt * schur.solve(J * v_free + phi_t);
+      bilateral = -schur.solve(J * v_free + phi_t);
+      v_free += minv_jt * bilateral;
+    } else {
+      bilateral.resize(0);
     }
 
     // Unilateral contacts: found with the activation margin, kept where the gap closes within
@@ -214,6 +218,9 @@ struct MoreauJean::Impl {
         }
       }
       v_next = v_free + Y * r;
+      // Y r = M^-1 H^T r - M^-1 J^T S^-1 J M^-1 H^T r: the second part is the ideal joints'
+      // share of the contacts' impulse.
+      if (m > 0) bilateral -= schur.solve(J * (inverse_mass.asDiagonal() * (H.transpose() * r)));
       const Eigen::VectorXd u_end = H * v_next;
       for (int k = 0; k < c; ++k) {
         ContactPercussion p;
@@ -224,6 +231,9 @@ struct MoreauJean::Impl {
         p.normal_W = active[k].frame.col(0);
         p.journal_point_W = active[k].journal_point_W;
         p.percussion_on_journal_W = active[k].frame * r.segment<3>(3 * k);
+        const ClearanceSite& site = sites[active[k].site];
+        const Vector3 centre_W = kinematics.body(site.journal_body).point_W(site.journal_point_B);
+        p.moment_on_journal_W = (p.journal_point_W - centre_W).cross(p.percussion_on_journal_W);
         p.normal_percussion = r[3 * k];
         p.normal_velocity_before = u_start[3 * k];
         p.normal_velocity_after = u_end[3 * k];
@@ -278,6 +288,9 @@ std::span<const double> MoreauJean::state() const { return impl_->y; }
 dynamics::MultibodySystem& MoreauJean::system() { return impl_->system(); }
 std::span<const ContactPercussion> MoreauJean::contacts() const { return impl_->percussions; }
 std::span<const std::string> MoreauJean::clearance_joint_names() const { return impl_->site_names; }
+std::span<const double> MoreauJean::bilateral_percussions() const {
+  return {impl_->bilateral.data(), static_cast<size_t>(impl_->bilateral.size())};
+}
 double MoreauJean::kinetic_energy() const { return impl_->built.system->kinetic_energy(impl_->y); }
 double MoreauJean::potential_energy() { return impl_->potential_energy(); }
 const MoreauJeanStatistics& MoreauJean::statistics() const { return impl_->statistics; }

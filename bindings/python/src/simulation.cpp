@@ -17,6 +17,9 @@
 #include <utility>
 #include <vector>
 
+#include <functional>
+#include <memory>
+
 #include "bindings.hpp"
 #include "clearjoint/dynamics/clearance_revolute_joint.hpp"
 #include "clearjoint/dynamics/model_file.hpp"
@@ -29,6 +32,9 @@
 
 #ifdef CLEARJOINT_WITH_SIMBODY
 #include "clearjoint/simbody/simulate_in_simbody.hpp"
+#endif
+#ifdef CLEARJOINT_WITH_NONSMOOTH
+#include "clearjoint/nonsmooth/moreau_jean_run.hpp"
 #endif
 
 namespace py = pybind11;
@@ -130,6 +136,37 @@ dynamics::ModelDescription with_overrides(dynamics::ModelDescription model, cons
   return model;
 }
 
+/// The run of `model`, planned before any output exists: a compliant model as
+/// dynamics::SimulationRun run with the request's engine, a solver.method "moreau_jean" one as
+/// nonsmooth::MoreauJeanRun (the same tables, docs/nonsmooth.md), as the program's
+/// simulate (apps/clearjoint/simulate_engine.cpp, plan_run).
+using PlannedRun =
+    std::function<dynamics::SimulationSummary(dynamics::SimulationOutput&, const dynamics::ProgressCallback&)>;
+PlannedRun plan_run(const dynamics::ModelDescription& model, const RunRequest& request) {
+  const dynamics::ModelDescription m = with_overrides(model, request);
+  const dynamics::RunOptions options{.allow_large = request.allow_large};
+  if (m.solver_method == dynamics::SolverMethod::moreau_jean) {
+    if (request.engine != "clearjoint") {
+      throw py::value_error("engine = '" + request.engine + "': solver.method = \"moreau_jean\" runs in "
+                            "clearjoint's own engine only (docs/nonsmooth.md)");
+    }
+#ifdef CLEARJOINT_WITH_NONSMOOTH
+    auto run = std::make_shared<nonsmooth::MoreauJeanRun>(m, options);
+    return [run](dynamics::SimulationOutput& output, const dynamics::ProgressCallback& progress) {
+      return run->run(output, progress);
+    };
+#else
+    throw dynamics::ModelError("solver.method = \"moreau_jean\": this clearjoint Python package was built "
+                               "without Siconos Numerics (CLEARJOINT_WITH_SICONOS; Debian: "
+                               "libsiconos-numerics-dev, docs/nonsmooth.md)");
+#endif
+  }
+  auto run = std::make_shared<dynamics::SimulationRun>(m, options);
+  return [run, request](dynamics::SimulationOutput& output, const dynamics::ProgressCallback& progress) {
+    return run_with_engine(*run, output, request, progress);
+  };
+}
+
 /// The callback run under the GIL-free integration: takes the GIL back to let Python handle
 /// signals (Ctrl-C raises KeyboardInterrupt here, which unwinds the run: nothing is committed)
 /// and to call `progress(fraction)` unless it is None. Called at every report time and, between
@@ -145,12 +182,12 @@ dynamics::ProgressCallback python_progress(const py::object& progress) {
 /// Run in memory without the GIL: (tables, summary). The model is built once (SimulationRun),
 /// with the command line's size guard unless `allow_large`.
 py::tuple run_in_memory(const dynamics::ModelDescription& model, const py::object& progress, const RunRequest& request) {
-  dynamics::SimulationRun run(with_overrides(model, request), dynamics::RunOptions{.allow_large = request.allow_large});
+  const PlannedRun run = plan_run(model, request);
   dynamics::TablesInMemory tables;
   dynamics::SimulationSummary summary;
   {
     py::gil_scoped_release release;
-    summary = run_with_engine(run, tables, request, python_progress(progress));
+    summary = run(tables, python_progress(progress));
   }
   summary.overrides = request.overrides;
   return py::make_tuple(tables_to_python(tables), summary_to_python(summary));
@@ -160,14 +197,14 @@ py::tuple run_in_memory(const dynamics::ModelDescription& model, const py::objec
 py::object run_into_folder(const dynamics::ModelDescription& model, const std::string& model_json,
                            const py::object& progress, const RunRequest& request, const std::string& out,
                            const std::string& format, bool force) {
-  dynamics::SimulationRun run(with_overrides(model, request), dynamics::RunOptions{.allow_large = request.allow_large});
+  const PlannedRun run = plan_run(model, request);
   const dynamics::RunFolderOptions options{dynamics::run_format(format), force, request.overrides};
   dynamics::SimulationSummary summary;
   {
     py::gil_scoped_release release;
     const dynamics::ProgressCallback callback = python_progress(progress);
     summary = dynamics::write_run_folder(
-        [&](dynamics::SimulationOutput& output) { return run_with_engine(run, output, request, callback); },
+        [&](dynamics::SimulationOutput& output) { return run(output, callback); },
         model_json, out, options);
   }
   return summary_to_python(summary);

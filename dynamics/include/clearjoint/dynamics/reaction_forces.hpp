@@ -21,4 +21,9 @@ struct JointReaction {
 /// carried to the joint point P: n_P = n_c - (P - r) x f.
 JointReaction joint_reaction(const MultibodySystem& system, int joint);
 
+/// The same from given multipliers (one per constraint row of system.constraints(), whose
+/// Jacobian is the last evaluated): a scheme that computes its own, such as Moreau-Jean's mean
+/// -impulse / h over a step (clearjoint::nonsmooth).
+JointReaction joint_reaction(const MultibodySystem& system, int joint, const Eigen::VectorXd& multipliers);
+
 }  // namespace clearjoint::dynamics

@@ -31,6 +31,8 @@ struct ContactPercussion {
   Vector3 normal_W = Vector3::UnitX();       ///< the journal's separating direction
   Vector3 journal_point_W = Vector3::Zero();
   Vector3 percussion_on_journal_W = Vector3::Zero();  ///< impulse of the step [N s]
+  /// Its moment about the journal's axis centre P_j [N m s], as the compliant joint's mx..mz.
+  Vector3 moment_on_journal_W = Vector3::Zero();
   double normal_percussion = 0.0;            ///< its normal part, >= 0 [N s]
   double normal_velocity_before = 0.0;       ///< u_N at the step's start [m/s], > 0 separating
   double normal_velocity_after = 0.0;        ///< u_N at its end [m/s]
@@ -68,6 +70,10 @@ class MoreauJean {
   /// The contacts of the last step, with their percussions.
   std::span<const ContactPercussion> contacts() const;
   std::span<const std::string> clearance_joint_names() const;
+  /// The ideal joints' impulses of the last step, one per constraint row of
+  /// system().constraints() [N s or N m s]: v(k+1) = v_free + M^-1 Phi_q^T mu + (contacts);
+  /// mu / h is the mean of -lambda (eq. 37) over the step.
+  std::span<const double> bilateral_percussions() const;
   /// Kinetic energy and the potential energy of every force element but the clearance joints
   /// (whose rigid contacts store none) at time().
   double kinetic_energy() const;

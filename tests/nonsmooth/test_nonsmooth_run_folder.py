@@ -1,0 +1,97 @@
+# SPDX-License-Identifier: BSD-3-Clause
+"""A solver.method "moreau_jean" model run from the front-ends (docs/nonsmooth.md, "Run folder"):
+the program's simulate and Python's simulate write the compliant run's tables and columns, the
+clearance joint's with its percussion columns after them, and plot reads the folder."""
+import csv
+import json
+import os
+import subprocess
+
+import clearjoint
+import pytest
+
+CLI = os.environ.get("CLEARJOINT_CLI")
+STEP = 1e-5
+
+# A journal (0.5 kg) moving sideways and down in a bearing on the ground (0.1 mm clearance):
+# its first impact comes after about 0.2 ms.
+MODEL = {
+    "name": "journal in bearing", "gravity": [0, -9.81, 0],
+    "bodies": [{"name": "journal", "mass": 0.5, "inertia": [1e-4, 1e-4, 2e-5],
+                "position": [0, 0, 0], "velocity": [0.3, -0.5, 0]}],
+    "forces": [{"type": "clearance_revolute", "name": "joint",
+                "bearing": {"body": "ground", "point": [0, 0, 0], "axis": [0, 0, 1], "radius": 0.01, "length": 0.02},
+                "journal": {"body": "journal", "point": [0, 0, 0], "axis": [0, 0, 1], "radius": 0.0099,
+                            "length": 0.0198},
+                "normal_force": {"model": "hertz", "stiffness": 1e11, "exponent": 1.5, "restitution": 0.9},
+                "friction": {"coefficient": 0.1}}],
+    "solver": {"end_time": 2e-3, "report_step": STEP},
+}
+
+
+def model_file(tmp_path, method):
+    model = json.loads(json.dumps(MODEL))
+    if method == "moreau_jean":
+        model["solver"].update({"method": "moreau_jean", "step": STEP})
+    path = tmp_path / f"{method}.json"
+    path.write_text(json.dumps(model))
+    return path
+
+
+def header(path):
+    with open(path, newline="") as f:
+        return next(csv.reader(f))
+
+
+def rows(path):
+    with open(path, newline="") as f:
+        reader = csv.DictReader(f)
+        return [{k: float(v) for k, v in row.items()} for row in reader]
+
+
+@pytest.mark.skipif(not CLI, reason="needs the clearjoint program (CLEARJOINT_CLI)")
+def test_simulate_writes_a_moreau_jean_run_with_the_compliant_runs_tables_and_plot_reads_it(tmp_path):
+    for method in ("dormand_prince", "moreau_jean"):
+        subprocess.run([CLI, "simulate", str(model_file(tmp_path, method)), "--out", str(tmp_path / method)],
+                       check=True, capture_output=True, text=True)
+    compliant, rigid = tmp_path / "dormand_prince", tmp_path / "moreau_jean"
+    tables = sorted(p.name for p in compliant.glob("*.csv"))
+    assert tables == sorted(p.name for p in rigid.glob("*.csv"))
+    for name in tables:
+        if name != "force_joint.csv":
+            assert header(rigid / name) == header(compliant / name), name
+    extra = [f"{slot}.{q}" for slot in ("radial_a", "radial_b", "line", "axial_a", "axial_b")
+             for q in ("normal_percussion", "friction_percussion", "rebound_speed")]
+    assert header(rigid / "force_joint.csv") == header(compliant / "force_joint.csv") + extra
+
+    # The force columns are the step's mean contact force: percussion / h.
+    impacts = [r for r in rows(rigid / "force_joint.csv") if r["line.normal_percussion"] > 0]
+    assert impacts, "no impact in 2 ms"
+    for r in impacts:
+        assert r["line.normal_force"] == pytest.approx(r["line.normal_percussion"] / STEP, rel=1e-12)
+        assert r["contact_count"] >= 1
+        assert (r["fx"] ** 2 + r["fy"] ** 2) ** 0.5 >= r["line.normal_force"] * (1 - 1e-12)
+    summary = json.loads((rigid / "summary.json").read_text())
+    assert summary["element_statistics"][0].startswith("moreau_jean: 200 steps")
+
+    figures = tmp_path / "figures"
+    done = subprocess.run([CLI, "plot", str(rigid), "--out", str(figures)], capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
+    assert list(figures.glob("*.png"))
+
+
+def test_python_simulate_runs_a_moreau_jean_model_in_memory(tmp_path):
+    result = clearjoint.simulate(str(model_file(tmp_path, "moreau_jean")))
+    assert "force_joint" in result.tables and "energy" in result.tables
+    assert result.summary["element_statistics"][0].startswith("moreau_jean: 200 steps")
+    folder = clearjoint.simulate(str(model_file(tmp_path, "moreau_jean")), out=tmp_path / "run")
+    assert clearjoint.read_run(tmp_path / "run") is not None
+    assert folder is not None
+
+
+def test_another_engine_refuses_a_moreau_jean_model_naming_solver_method(tmp_path):
+    from clearjoint import _core
+    if "simbody" not in _core.engines():
+        pytest.skip("this build has no second engine")
+    with pytest.raises(ValueError, match="solver.method"):
+        clearjoint.simulate(str(model_file(tmp_path, "moreau_jean")), engine="simbody")
