@@ -140,7 +140,7 @@ def settling(summary):
     lines.append(_table(("planar aligned clearance joint", "energy lost in 1 s [J]",
                          "report times in free flight", "flights", "last free flight",
                          "(1 - ce) x last free flight",
-                         "line-contact depth after 0.05 s [um]"), rows))
+                         "line-contact depth after 0.05 s [µm]"), rows))
     return "\n".join(lines)
 
 

@@ -484,7 +484,7 @@ const std::vector<FamilySpec>& family_specs() {
        "one candidate contact at a signed margin of 10^-k clearances from touching, k = 3..15"},
       {"near_parallel", 20170503, "journal tilts of 10^-k rad, k = 4..16, and exactly parallel axes"},
       {"extreme", 20170504,
-       "largest tilt (i), reversed journal, coincident axes, cr/Ri 1e-6..0.2, m / um / km"},
+       "largest tilt (i), reversed journal, coincident axes, cr/Ri 1e-6..0.2, m / µm / km"},
       {"trajectories", 20170505, "consecutive poses of a scripted journal bouncing in the bearing"},
   };
   return specs;

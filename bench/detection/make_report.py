@@ -524,7 +524,7 @@ ill-conditioned for a rim nearly parallel to the base; scored apart). To score a
 
     build/bench/detection/detection_suite export --out-dir robustness        # or --quick
     your_code < robustness/near_tangent.jsonl > answers.jsonl               # one answer line per input line
-    python3 bench/detection/score_detect_answers.py robustness/near_tangent.reference.jsonl answers.jsonl
+    /usr/bin/python3 bench/detection/score_detect_answers.py robustness/near_tangent.reference.jsonl answers.jsonl
 
 `score_detect_answers.py` (standard library only) applies the definitions above and prints the
 counts of wrong scenarios, missed and spurious contacts, the error summaries and the first failing
