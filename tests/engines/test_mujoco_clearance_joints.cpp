@@ -204,6 +204,19 @@ TEST(MujocoClearanceJoints, NamesAFieldOfAJointThatIsNotDeclared) {
   EXPECT_NE(error.find("the declared ones: \"rod_slider\""), std::string::npos) << error;
 }
 
+TEST(MujocoClearanceJoints, RefusesAnOilFilmNamingItsElementAndWhereFilmsRun) {
+  // A viscosity was refused as an unknown field, as if misspelt, without saying that no film runs
+  // here.
+  for (const std::string element : {"<numeric name=\"clearance:rod_slider:viscosity\" data=\"0.04\"/>",
+                                    "<text name=\"clearance:rod_slider:cavitation\" data=\"half_sommerfeld\"/>"}) {
+    const std::string error = error_for_edited_example("  <custom>\n", "  <custom>\n" + element);
+    const std::string name = element.substr(1, element.find("\" data") - 1);
+    EXPECT_NE(error.find(name + "\">: lubricated clearance joints are not supported by the MuJoCo adapter"),
+              std::string::npos) << error;
+    EXPECT_NE(error.find("--engine simbody"), std::string::npos) << error;
+  }
+}
+
 TEST(MujocoClearanceJoints, NamesAFieldGivenAsTheWrongElement) {
   const std::string error =
       error_for_edited_example("<text name=\"clearance:rod_slider:normal_force_model\" data=\"lankarani_nikravesh\"",

@@ -158,8 +158,8 @@ Tables = Dict[str, Dict[str, np.ndarray]]
 def read_folder_tables(folder: str) -> Tables:
     """Every table of a run folder, table -> column -> float64 array: ``run.h5`` when the folder
     has one (checked against its checksum), else its ``*.csv`` files. Any folder of
-    ``clearjoint simulate`` (either engine, either format) or of ``clearjoint-mujoco`` (force
-    tables only) reads; a folder holding neither is a RunFileError naming it."""
+    ``clearjoint simulate`` (either engine, either format) or of ``clearjoint-mujoco`` (the same
+    body, energy and force tables) reads; a folder holding neither is a RunFileError naming it."""
     if os.path.lexists(os.path.join(folder, HDF5_FILE)):
         return read_hdf5_tables(folder)
     tables: Tables = {}

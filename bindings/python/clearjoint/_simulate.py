@@ -337,7 +337,8 @@ def simulate(model: Model, *, progress: Progress = False, allow_large: bool = Fa
 
 def read_run(folder: Union[str, "os.PathLike[str]"]) -> SimulationResult:
     """A run folder read back: the tables and summary of ``clearjoint simulate`` (either engine,
-    CSV files or run.h5) or of ``clearjoint-mujoco`` (its force tables, no summary).
+    CSV files or run.h5) or of ``clearjoint-mujoco`` (the same body, energy and force tables, a
+    shorter summary).
 
     ``tables[name]`` is a pandas DataFrame when pandas can be imported, else a dict of NumPy
     arrays, as ``DetectionBatch.poses()`` gives its tables. Columns are those of the files, in

@@ -54,6 +54,11 @@ std::vector<double> numeric(const mjModel* m, const std::string& name, int count
 constexpr std::array<std::string_view, 4> kNumericFields = {"dimensions", "normal_force", "friction",
                                                             "parallel_angle_tolerance"};
 constexpr std::array<std::string_view, 1> kTextFields = {"normal_force_model"};
+/// The oil film's fields in a model file (dynamics/src/model_file.cpp, parse_lubrication), and
+/// the object's own name: a declaration of a film, which the adapter does not run.
+constexpr std::array<std::string_view, 10> kFilmFields = {
+    "lubrication",      "viscosity",      "cavitation", "method", "grid", "allow_large_grid", "groove_direction",
+    "supply_pressure", "film_thickness_limit", "transition_width"};
 
 template <size_t N>
 std::string joined(const std::array<std::string_view, N>& names) {
@@ -95,6 +100,10 @@ void refuse_unknown_keys(const mjModel* m) {
     if (std::find(joints.begin(), joints.end(), joint) == joints.end()) {
       throw ModelError(element + ": no clearance joint \"" + joint + "\" is declared (<text name=\"clearance:" +
                        joint + "\">); the declared ones: " + (joint_list.empty() ? "none" : joint_list));
+    }
+    if (is_one_of(field, kFilmFields)) {
+      throw ModelError(element + ": lubricated clearance joints are not supported by the MuJoCo adapter; use "
+                       "clearjoint simulate (--engine clearjoint or --engine simbody) with a model file");
     }
     const bool known = type == mjOBJ_TEXT ? is_one_of(field, kTextFields) : is_one_of(field, kNumericFields);
     const bool other_type = type == mjOBJ_TEXT ? is_one_of(field, kNumericFields) : is_one_of(field, kTextFields);
@@ -272,6 +281,15 @@ std::span<const double> ClearanceJoints::impact_memory(int k) const { return joi
 void ClearanceJoints::record_outputs(int k, const mjData* data, std::span<double> values) const {
   joints_[k]->load(model_, data);
   joints_[k]->joint.record_outputs(joints_[k]->memory, values);
+}
+
+double ClearanceJoints::potential_energy(const mjData* data) const {
+  double energy = 0.0;
+  for (const auto& j : joints_) {
+    j->load(model_, data);
+    energy += j->joint.potential_energy();
+  }
+  return energy;
 }
 
 }  // namespace clearjoint::mujoco

@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // clearjoint-mujoco MODEL.xml --out DIR [--duration T] [--report-step DT] [--force] [--allow-large]:
 // run an MJCF model with clearance joints (clearjoint/mujoco/clearance_joints.hpp) in MuJoCo and
-// write, for each clearance joint, force_<name>.csv with the columns of `clearjoint simulate`'s
-// force tables, into an output folder published as one unit (dynamics/output_folder.hpp).
+// write a run folder as `clearjoint simulate` writes one (the body, energy and force tables of
+// run_tables.hpp, summary.json, and the model as model.xml), published as one unit
+// (dynamics/output_folder.hpp); progress on standard error; the stall rule of a fixed-step
+// engine (clearjoint/mujoco/wall_time_guard.hpp).
 
 #include <algorithm>
 #include <charconv>
@@ -11,6 +13,8 @@
 #include <cstdlib>
 #include <cstring>
 #include <exception>
+#include <filesystem>
+#include <fstream>
 #include <memory>
 #include <span>
 #include <stdexcept>
@@ -19,11 +23,17 @@
 #include <vector>
 
 #include "clearjoint/dynamics/csv_directory.hpp"
+#include <nlohmann/json.hpp>
+
 #include "clearjoint/dynamics/errors.hpp"
+#include "clearjoint/dynamics/integrator_settings.hpp"
 #include "clearjoint/dynamics/output_folder.hpp"
 #include "clearjoint/dynamics/run_size.hpp"
 #include "clearjoint/dynamics/simulation.hpp"
 #include "clearjoint/mujoco/clearance_joints.hpp"
+#include "clearjoint/mujoco/wall_time_guard.hpp"
+#include "progress_report.hpp"
+#include "run_tables.hpp"
 
 namespace {
 
@@ -31,14 +41,26 @@ constexpr const char* kUsage =
     "usage: clearjoint-mujoco MODEL.xml --out DIR [--duration T] [--report-step DT] [--force]\n"
     "                         [--allow-large]\n"
     "  Runs the MJCF model in MuJoCo (its own timestep and integrator) from its first keyframe\n"
-    "  (or qpos0 at rest) for T seconds (default 1) and writes force_<name>.csv for each\n"
-    "  clearance joint into DIR, one row every DT seconds (default 1e-5, rounded to whole steps).\n"
+    "  (or qpos0 at rest) for T seconds (default 1) and writes a run folder DIR: body_<name>.csv\n"
+    "  for each body, energy.csv, force_<name>.csv for each clearance joint (one row every DT\n"
+    "  seconds, default 1e-5, rounded to whole steps), summary.json and the model as model.xml.\n"
     "  DIR appears as one unit when the run succeeds, as with `clearjoint simulate`\n"
     "  (docs/command-line.md, \"Output folder\").\n"
     "  --force        replace DIR if it is an earlier result (otherwise an error)\n"
     "  --allow-large  run beyond the size guard (1000 s simulated, 1e7 report times, 4 GB of\n"
-    "                 CSV files)\n"
+    "                 CSV files) and the stall rule (a run projected to need more than an hour)\n"
+    "  Progress goes to standard error: a bar on a terminal, else a line every 10 s. A run whose\n"
+    "  rest is projected, after 30 s, to need more than an hour of wall time is stopped.\n"
     "  Clearance joints are declared in the model's <custom> section: docs/engines.md.\n";
+
+/// The environment variable that shortens the stall wall time (dynamics::kStallWallTime, a
+/// minute), as the dynamics tests shorten IntegratorSettings::stall_wall_time: for the program's
+/// tests, which cannot wait a minute. The progress lines and the stall rule scale with it.
+constexpr const char* kStallWallTimeVariable = "CLEARJOINT_STALL_WALL_TIME";
+/// Progress lines per stall wall time when standard error is not a terminal: one every 10 s at
+/// the default minute, as `clearjoint simulate` prints them, and two before the stall rule first
+/// judges the run (after half the stall wall time).
+constexpr double kProgressLinesPerStallWallTime = 6.0;
 
 /// Most MuJoCo steps a run counts (a step index is a long): the integrator's own bound on report
 /// times (dynamics/src/integrator.cpp, kMaxReportCount), which --allow-large does not lift.
@@ -94,6 +116,19 @@ double read_seconds(const char* option, const char* text) {
   const double value = std::strtod(text, &end);
   if (end == text || *end != '\0' || !std::isfinite(value) || !(value > 0.0)) {
     throw UsageError(std::string(option) + " = '" + std::string(text).substr(0, kQuotedCharacters) +
+                     "': must be a finite number of seconds above 0");
+  }
+  return value;
+}
+
+/// The stall wall time: kStallWallTimeVariable's value when set, else a minute.
+double stall_wall_time() {
+  const char* text = std::getenv(kStallWallTimeVariable);
+  if (text == nullptr) return clearjoint::dynamics::kStallWallTime;
+  char* end = nullptr;
+  const double value = std::strtod(text, &end);
+  if (end == text || *end != '\0' || !std::isfinite(value) || !(value > 0.0)) {
+    throw std::runtime_error(std::string(kStallWallTimeVariable) + " = '" + std::string(text).substr(0, kQuotedCharacters) +
                      "': must be a finite number of seconds above 0");
   }
   return value;
@@ -212,6 +247,7 @@ int run(int argc, char** argv) {
     }
   }
   const Arguments a = parse(argc, argv);
+  const double stall_time = stall_wall_time();
   mju_user_warning = report_mujoco_warning;
   mju_user_error = throw_mujoco_error;
 
@@ -228,13 +264,8 @@ int run(int argc, char** argv) {
                  a.model_path);
     return 1;
   }
-  std::vector<clearjoint::dynamics::TablePlan> tables;
-  for (int k = 0; k < clearance.count(); ++k) {
-    std::vector<std::string> header = clearance.joint(k).output_columns();
-    header.insert(header.begin(), "time");
-    tables.push_back({clearjoint::dynamics::table_name("force_", clearance.joint(k).name()), header});
-  }
-  const Schedule plan = schedule(a, model->opt.timestep, tables);
+  clearjoint::mujoco_tool::RunTables tables(model.get(), clearance);
+  const Schedule plan = schedule(a, model->opt.timestep, tables.tables());
   std::unique_ptr<mjData, MjDataDeleter> data(mj_makeData(model.get()));
   if (model->nkey > 0) mj_resetDataKeyframe(model.get(), data.get(), 0);
   clearance.install();
@@ -250,26 +281,42 @@ int run(int argc, char** argv) {
   clearjoint::dynamics::OutputFolder folder(a.out_dir, a.force);
 
   clearjoint::dynamics::CsvDirectory files(folder.staging());
-  std::vector<std::size_t> table_index;
-  for (const clearjoint::dynamics::TablePlan& table : tables) table_index.push_back(files.add_table(table.name, table.header));
-  std::vector<double> row;
-  auto report = [&] {
-    for (int k = 0; k < clearance.count(); ++k) {
-      row.assign(tables[k].header.size(), 0.0);
-      row[0] = data->time;
-      clearance.record_outputs(k, data.get(), std::span<double>(row).subspan(1));
-      files.write_row(table_index[k], row);
-    }
-  };
+  tables.declare(files);
+  const double start_time = data->time;
+  const double end_time = start_time + static_cast<double>(plan.steps) * model->opt.timestep;
+  std::unique_ptr<clearjoint::mujoco::WallTimeGuard> guard;
+  if (!a.allow_large) {
+    guard = std::make_unique<clearjoint::mujoco::WallTimeGuard>(start_time, end_time, stall_time);
+  }
+  clearjoint::mujoco_tool::ProgressReport progress(stall_time / kProgressLinesPerStallWallTime);
 
-  report();
+  tables.write(data.get(), files);
   for (long s = 1; s <= plan.steps; ++s) {
     mj_step(model.get(), data.get());
     refuse_reset_state(data.get());
     clearance.after_step(data.get());
-    if (s % plan.steps_per_report == 0 || s == plan.steps) report();
+    if (s % plan.steps_per_report == 0 || s == plan.steps) tables.write(data.get(), files);
+    progress.update(static_cast<double>(s) / static_cast<double>(plan.steps));
+    if (guard) guard->check(data->time);
   }
+  progress.finish();
   files.commit();
+
+  nlohmann::ordered_json summary;
+  summary["engine"] = "mujoco";
+  summary["steps"] = plan.steps;
+  summary["smallest_step"] = model->opt.timestep;
+  summary["largest_step"] = model->opt.timestep;
+  summary["initial_energy"] = tables.initial_energy();
+  summary["max_energy_change"] = tables.max_energy_change();
+  summary["element_statistics"] = nlohmann::ordered_json::array();
+  for (int k = 0; k < clearance.count(); ++k) summary["element_statistics"].push_back(clearance.joint(k).statistics_text());
+  {
+    std::ofstream out(folder.staging() / "summary.json");
+    out << summary.dump(2) << "\n";
+    if (!out.flush()) throw std::runtime_error("cannot write summary.json into " + folder.staging().string());
+  }
+  std::filesystem::copy_file(a.model_path, folder.staging() / "model.xml");
   folder.publish();
   for (int k = 0; k < clearance.count(); ++k) {
     std::printf("%s\n", clearance.joint(k).statistics_text().c_str());

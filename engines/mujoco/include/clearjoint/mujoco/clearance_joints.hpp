@@ -77,6 +77,10 @@ class ClearanceJoints {
   /// dynamics::ClearanceRevoluteJoint::output_columns() values of joint k at `data`'s state: a
   /// row of clearjoint's force_<name>.csv without its time.
   void record_outputs(int k, const mjData* data, std::span<double> values) const;
+  /// The elastic energy stored in every joint's contacts at `data`'s state [J]
+  /// (dynamics::ClearanceRevoluteJoint::potential_energy): a potential MuJoCo's own energy
+  /// (mjData::energy) does not hold, since the joints' forces enter as passive forces.
+  double potential_energy(const mjData* data) const;
 
  private:
   struct Joint;
