@@ -14,9 +14,14 @@ Debian's NumPy (docs/python.md):
 
 The extension is linked against static, position-independent copies of the clearjoint libraries
 (cmake/ClearjointPositionIndependent.cmake), so the installed package does not depend on a
-`cmake --install` of the C++ libraries. The CMake build folder is build/setuptools/temp.*/cmake,
-kept between runs: a second `pip install .` or `pip wheel .` recompiles only what changed.
-CMAKE_BUILD_PARALLEL_LEVEL sets the number of compile jobs (default: every core).
+`cmake --install` of the C++ libraries. The CMake build folder is build-pip/temp.*/cmake, beside
+the README's CMake build folder build/, not inside it (where removing either would remove both,
+and the two builds' options would be hard to tell apart), kept between runs: a second `pip install .` or `pip wheel .` recompiles only
+what changed. CMAKE_BUILD_PARALLEL_LEVEL sets the number of compile jobs (default: every core).
+
+The package's `clearjoint` command (pyproject.toml's [project.scripts], clearjoint/__main__.py)
+runs plot, view and study, and hands the other subcommands to the C++ program `clearjoint` when
+one is installed: the program is not built here.
 """
 import os
 import pathlib
@@ -30,6 +35,9 @@ from setuptools.command.build_ext import build_ext
 from setuptools.command.build_py import build_py
 
 ROOT = pathlib.Path(__file__).resolve().parent
+# setuptools' build folder (relative to the sources), which holds the CMake build: beside the
+# README's build/, not inside it.
+PIP_BUILD_FOLDER = "build-pip"
 
 
 def project_version() -> str:
@@ -99,5 +107,5 @@ setup(
     ext_modules=[CMakeExtension()],
     cmdclass={"build_ext": CMakeBuild, "build_py": BuildPy},
     # Beside, not inside, the CMake build tree the README uses (build/).
-    options={"build": {"build_base": "build/setuptools"}},
+    options={"build": {"build_base": PIP_BUILD_FOLDER}},
 )

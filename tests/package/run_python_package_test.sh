@@ -19,8 +19,9 @@
 #                                    API that every static and object library the module links
 #                                    compiles with -fPIC (the link itself takes a full build)
 #
-# SCRATCH/source/build is kept between runs: the copy keeps the sources' times, so a rerun
-# recompiles only what changed. CMAKE_BUILD_PARALLEL_LEVEL (set by the test) is setup.py's job count.
+# SCRATCH/source/build-pip (setup.py's build folder) is kept between runs: the copy keeps the
+# sources' times, so a rerun recompiles only what changed. After a build, SCRATCH/source/build (the
+# README's CMake build folder) must not exist: setup.py builds beside it, not inside. CMAKE_BUILD_PARALLEL_LEVEL (set by the test) is setup.py's job count.
 set -euo pipefail
 step=$1 scratch=$2
 shift 2
@@ -42,11 +43,16 @@ smoke() {  # smoke VENV VERSION MODELS
   (cd "$run" && env -u PYTHONPATH "$1/bin/python" "$here/python_smoke.py" "$1" "$2" "$3")
 }
 
+build_beside() {  # build_beside SOURCE: setup.py built in SOURCE/build-pip, not in the README's build/
+  [[ -d $1/build-pip ]] || fail "setup.py left no build folder $1/build-pip"
+  [[ ! -e $1/build ]] || fail "setup.py built inside the README's build folder: $1/build exists"
+}
+
 case $step in
 pip-wheel)
   source_dir=$1 python=$2
   mkdir -p "$scratch/source"
-  find "$scratch/source" -mindepth 1 -maxdepth 1 ! -name build -exec rm -rf {} +
+  find "$scratch/source" -mindepth 1 -maxdepth 1 ! -name build-pip -exec rm -rf {} +
   if git -C "$source_dir" rev-parse --is-inside-work-tree > /dev/null 2>&1; then
     (cd "$source_dir" && git ls-files -z --cached --others --exclude-standard |
        while IFS= read -r -d '' f; do [[ -e $f ]] && printf '%s\0' "$f"; done |
@@ -61,6 +67,7 @@ pip-wheel)
      "$scratch/venv-build/bin/pip" wheel "${pip_offline[@]}" --no-build-isolation --no-deps \
        -w "$scratch/wheels" .) > "$scratch/pip-wheel.log" 2>&1 ||
     { tail -60 "$scratch/pip-wheel.log"; fail "pip wheel . failed (log: $scratch/pip-wheel.log)"; }
+  build_beside "$scratch/source"
   wheels=("$scratch"/wheels/clearjoint-*.whl)
   [[ -f ${wheels[0]} ]] || fail "pip wheel . wrote no clearjoint wheel"
   echo "pip wheel . (CMAKE_BUILD_PARALLEL_LEVEL=${CMAKE_BUILD_PARALLEL_LEVEL:-all cores}): $((SECONDS - start)) s, ${wheels[0]##*/}"
@@ -80,6 +87,7 @@ source-smoke)
   (cd "$scratch/source" && "$venv/bin/pip" install "${pip_offline[@]}" --no-build-isolation .) \
     > "$scratch/pip-install.log" 2>&1 ||
     { tail -60 "$scratch/pip-install.log"; fail "pip install . failed (log: $scratch/pip-install.log)"; }
+  build_beside "$scratch/source"
   smoke "$venv" "$version" "$models"
   ;;
 module-pic)
