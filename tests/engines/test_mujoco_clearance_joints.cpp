@@ -124,7 +124,8 @@ TEST(MujocoClearanceJoints, OnlyAfterStepChangesTheImpactMemoryNeverAnIntegrator
 
 /// The example with `from` replaced by `to`, written to a temporary file; the error its
 /// ClearanceJoints throws, or "no error"; `field_path` receives the error's field_path().
-std::string error_for_edited_example(const std::string& from, const std::string& to, std::string* field_path = nullptr) {
+std::string error_for_edited_example(const std::string& from, const std::string& to,
+                                     std::string* field_path = nullptr) {
   std::ifstream in(kExample);
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   const size_t at = text.find(from);

@@ -28,7 +28,8 @@ std::string three_digits(double x) {
 std::string wall_time_text(double seconds) {
   if (seconds < 3600.0) return three_digits(seconds) + " s";
   const double hours = seconds / 3600.0;
-  return three_digits(seconds) + " s (" + (hours < 48.0 ? three_digits(hours) + " h" : three_digits(hours / 24.0) + " days") + ")";
+  const std::string readable = hours < 48.0 ? three_digits(hours) + " h" : three_digits(hours / 24.0) + " days";
+  return three_digits(seconds) + " s (" + readable + ")";
 }
 
 }  // namespace
@@ -55,8 +56,8 @@ void WallTimeGuard::check(double time) {
   throw dynamics::SolverError(
       "MuJoCo run stopped at t = " + dynamics::format_shortest(time) + " s: it advanced " + three_digits(advanced) +
       " s of simulated time in the last " + three_digits(wall) + " s of wall time, so the remaining " +
-      three_digits(end_time_ - time) + " s would take about " + wall_time_text(projected) + " of wall time, more than " +
-      wall_time_text(limit) +
+      three_digits(end_time_ - time) + " s would take about " + wall_time_text(projected) +
+      " of wall time, more than " + wall_time_text(limit) +
       " (the stall rule for a fixed-step engine, docs/engines.md). Check the model's <option timestep> and "
       "--duration; pass --allow-large to run it anyway");
 }

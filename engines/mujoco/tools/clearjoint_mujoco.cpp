@@ -128,8 +128,9 @@ double stall_wall_time() {
   char* end = nullptr;
   const double value = std::strtod(text, &end);
   if (end == text || *end != '\0' || !std::isfinite(value) || !(value > 0.0)) {
-    throw std::runtime_error(std::string(kStallWallTimeVariable) + " = '" + std::string(text).substr(0, kQuotedCharacters) +
-                     "': must be a finite number of seconds above 0");
+    throw std::runtime_error(std::string(kStallWallTimeVariable) + " = '" +
+                             std::string(text).substr(0, kQuotedCharacters) +
+                             "': must be a finite number of seconds above 0");
   }
   return value;
 }
@@ -310,7 +311,9 @@ int run(int argc, char** argv) {
   summary["initial_energy"] = tables.initial_energy();
   summary["max_energy_change"] = tables.max_energy_change();
   summary["element_statistics"] = nlohmann::ordered_json::array();
-  for (int k = 0; k < clearance.count(); ++k) summary["element_statistics"].push_back(clearance.joint(k).statistics_text());
+  for (int k = 0; k < clearance.count(); ++k) {
+    summary["element_statistics"].push_back(clearance.joint(k).statistics_text());
+  }
   {
     std::ofstream out(folder.staging() / "summary.json");
     out << summary.dump(2) << "\n";
