@@ -27,6 +27,7 @@ packages=(
   libsimbody-dev libmujoco-dev          # the engine adapters (docs/engines.md)
   libsiconos-numerics-dev libfclib-dev  # the non-smooth integrator's contact solver (docs/nonsmooth.md)
   python3-siconos                       # tests: the non-smooth integrator against Siconos's kernel
+  libsiconos-kernel-dev                 # tests: the same, in C++ (tests/nonsmooth/test_siconos_comparison.cpp)
 )
 
 missing=()
