@@ -65,10 +65,12 @@ TEST(ModelOverrides, ReplaceAWholeArray) {
 }
 
 TEST(ModelOverrides, LeaveAMisspeltKeyToTheReaderWhichListsTheKnownOnes) {
-  EXPECT_EQ(error_of({{"solver.end_tme", "1", "--set solver.end_tme=1"}}),
-            "m.json: solver.end_tme: unknown field (expected start_time, end_time, report_step, "
-            "relative_tolerance, absolute_tolerance, initial_step, minimum_step, max_steps, "
-            "baumgarte_alpha, baumgarte_beta)");
+  // The reader's list of the solver's fields grows with its methods; the message's start and the
+  // field the user meant are what this checks.
+  const std::string error = error_of({{"solver.end_tme", "1", "--set solver.end_tme=1"}});
+  EXPECT_EQ(error.rfind("m.json: solver.end_tme: unknown field (expected start_time, end_time, ", 0), 0u)
+      << error;
+  EXPECT_EQ(error.back(), ')') << error;
 }
 
 TEST(ModelOverrides, NameAValueOfTheWrongTypeByItsField) {
