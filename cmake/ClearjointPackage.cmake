@@ -11,6 +11,12 @@ if(clearjoint_geometry_type STREQUAL "STATIC_LIBRARY")
 else()
   set(CLEARJOINT_STATIC_LIBRARIES FALSE)
 endif()
+# A static clearjoint::nonsmooth carries Siconos Numerics to its consumers' link.
+if(TARGET clearjoint_nonsmooth AND CLEARJOINT_STATIC_LIBRARIES)
+  set(CLEARJOINT_STATIC_NONSMOOTH TRUE)
+else()
+  set(CLEARJOINT_STATIC_NONSMOOTH FALSE)
+endif()
 configure_package_config_file(cmake/clearjointConfig.cmake.in
   ${PROJECT_BINARY_DIR}/clearjointConfig.cmake
   INSTALL_DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/clearjoint)
