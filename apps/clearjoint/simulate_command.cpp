@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <memory>
 #include <optional>
 #include <nlohmann/json.hpp>
 #include <cstring>
@@ -21,6 +22,9 @@
 #include "run_folder.hpp"
 #include "simulate_engine.hpp"
 #include "commands.hpp"
+#ifdef CLEARJOINT_WITH_NONSMOOTH
+#include "clearjoint/nonsmooth/moreau_jean_run.hpp"
+#endif
 
 namespace clearjoint::app {
 
@@ -29,7 +33,7 @@ namespace {
 constexpr const char* kUsage =
     "usage: clearjoint simulate MODEL.json --out DIR [--format csv|hdf5] [--report-step S]\n"
     "                           [--decimation K] [--end-time T] [--set PATH=VALUE ...] [--engine NAME]\n"
-    "                           [--force] [--allow-large] [--plot]\n"
+    "                           [--force] [--allow-large] [--plot] [--write-fclib DIR [--fclib-count N]]\n"
     "  Integrates the model and writes into DIR its tables (csv: body_<name>.csv, energy.csv,\n"
     "  reactions.csv and, for force elements with outputs (clearance joints), force_<name>.csv;\n"
     "  hdf5: run.h5 with one dataset per table), model.json (the model run) and summary.json.\n"
@@ -46,6 +50,10 @@ constexpr const char* kUsage =
     "                 one field once; model.json records the model run, summary.json the values set\n"
     "  --engine       the integrating engine: clearjoint (default) or simbody; the same tables,\n"
     "                 columns, formats and decimation (docs/engines.md)\n"
+    "  --write-fclib  DIR: with solver.method \"moreau_jean\", also write the contact problems of\n"
+    "                 the first N steps with an active contact, with the solution found, as FCLIB\n"
+    "                 HDF5 files DIR/step_<k>.hdf5 (docs/nonsmooth.md); DIR is created if absent\n"
+    "  --fclib-count  N, the number of problems --write-fclib writes (default 100)\n"
     "  --force        replace DIR if it is an earlier result (otherwise an error)\n"
     "  --plot         draw the run's figures into DIR/figures afterwards (clearjoint plot)\n"
     "  --allow-large  run beyond the size guard (1000 s simulated, 1e7 report times, 4 GB of\n"
@@ -104,6 +112,15 @@ int (*plot_published_run)(const char* run_dir) = nullptr;
 
 namespace {
 
+/// The largest --fclib-count (nonsmooth::kMaxFclibProblems when the non-smooth integrator is built).
+long nonsmooth_fclib_max() {
+#ifdef CLEARJOINT_WITH_NONSMOOTH
+  return nonsmooth::kMaxFclibProblems;
+#else
+  return 1;
+#endif
+}
+
 /// The options of one `clearjoint simulate` call.
 struct SimulateArguments {
   const char* model_path = nullptr;
@@ -113,6 +130,8 @@ struct SimulateArguments {
   bool plot = false;
   std::string format = "csv";
   std::string engine = std::string(kDefaultEngine);
+  const char* fclib_dir = nullptr;  ///< --write-fclib
+  std::optional<long> fclib_count;  ///< --fclib-count
   /// --report-step, --decimation, --end-time and --set, in the order given: written into the
   /// model's JSON before it is read (model_overrides.hpp), so that they are validated as the
   /// file's values are.
@@ -195,6 +214,18 @@ int parse(Arguments args, SimulateArguments& a) {
         std::fprintf(stderr, "clearjoint simulate: %s\n", why.c_str());
         return 2;
       }
+    } else if (std::strcmp(arg, "--write-fclib") == 0) {
+      if ((a.fclib_dir = value("a directory")) == nullptr) return 2;
+    } else if (std::strcmp(arg, "--fclib-count") == 0) {
+      const char* text = value("a whole number");
+      double count = 0.0;
+      if (text == nullptr || !read_number_option("--fclib-count", text, count)) return 2;
+      if (!(count >= 1.0 && count <= static_cast<double>(nonsmooth_fclib_max()) && count == std::floor(count))) {
+        std::fprintf(stderr, "clearjoint simulate: --fclib-count = '%s': must be a whole number in [1, %ld]\n", text,
+                     nonsmooth_fclib_max());
+        return 2;
+      }
+      a.fclib_count = static_cast<long>(count);
     } else if (std::strcmp(arg, "--force") == 0) {
       a.force = true;
     } else if (std::strcmp(arg, "--allow-large") == 0) {
@@ -212,12 +243,37 @@ int parse(Arguments args, SimulateArguments& a) {
     std::fputs(kUsage, stderr);
     return 2;
   }
+  if (a.fclib_count && a.fclib_dir == nullptr) {
+    std::fprintf(stderr, "clearjoint simulate: --fclib-count needs --write-fclib DIR\n%s", kUsage);
+    return 2;
+  }
   if (a.plot && plot_published_run == nullptr) {
     std::fputs("clearjoint simulate: --plot needs the clearjoint Python package (clearjoint plot), which this "
                "program was built without\n", stderr);
     return 2;
   }
   return -1;
+}
+
+/// A Moreau-Jean run that also writes its contact problems (--write-fclib): planned as plan_run
+/// plans one, the FCLIB folder checked before the run folder exists.
+PlannedRun plan_fclib_run(const SimulateArguments& a, const dynamics::ModelDescription& model,
+                          const dynamics::RunOptions& options) {
+  if (model.solver_method != dynamics::SolverMethod::moreau_jean) {
+    throw dynamics::ModelError("--write-fclib " + std::string(a.fclib_dir) +
+                               ": needs solver.method = \"moreau_jean\" (a compliant run has no contact "
+                               "problems; docs/nonsmooth.md)");
+  }
+#ifdef CLEARJOINT_WITH_NONSMOOTH
+  if (a.engine != kDefaultEngine) return plan_run(a.engine, model, options);  // refuses, naming --engine
+  auto run = std::make_shared<nonsmooth::MoreauJeanRun>(model, options);
+  run->write_fclib({a.fclib_dir, a.fclib_count.value_or(nonsmooth::kDefaultFclibProblems)});
+  return [run](dynamics::SimulationOutput& output, const dynamics::ProgressCallback& progress) {
+    return run->run(output, progress);
+  };
+#else
+  return plan_run(a.engine, model, options);  // refuses: built without the non-smooth integrator
+#endif
 }
 
 }  // namespace
@@ -235,7 +291,9 @@ int run_simulate(Arguments args) {
   // built once, its tables planned (name collisions) and the size guard applied to that plan.
   // Another engine refuses the features it does not support, naming them, before the folder exists.
   // solver.method "moreau_jean" plans the non-smooth run (docs/nonsmooth.md).
-  const PlannedRun run = plan_run(a.engine, model, dynamics::RunOptions{.allow_large = a.allow_large});
+  const dynamics::RunOptions run_options{.allow_large = a.allow_large};
+  const PlannedRun run = a.fclib_dir != nullptr ? plan_fclib_run(a, model, run_options)
+                                                : plan_run(a.engine, model, run_options);
   const dynamics::RunFolderOptions options{dynamics::run_format(a.format), a.force, a.overrides};
   ProgressReport bar;
   dynamics::SimulationSummary summary;

@@ -12,6 +12,7 @@
 #include "clearjoint/dynamics/generalised_forces.hpp"
 #include "clearjoint/dynamics/model_builder.hpp"
 #include "contact_problem.hpp"
+#include "fclib_problem.hpp"
 
 namespace clearjoint::nonsmooth {
 
@@ -47,6 +48,7 @@ struct MoreauJean::Impl {
   std::vector<ContactPercussion> percussions;
   Eigen::VectorXd bilateral;  ///< mu of the last step (bilateral_percussions)
   MoreauJeanStatistics statistics;
+  FclibExport fclib;  ///< folder empty: no problem written
 
   explicit Impl(const dynamics::ModelDescription& model)
       : built(dynamics::build_model(model)),
@@ -205,6 +207,9 @@ struct MoreauJean::Impl {
       const ContactSolve solve =
           solve_contact_problem(W, q, mu, settings.contact_tolerance, settings.contact_max_iterations, r, u);
       ++statistics.contact_problems;
+      if (!fclib.folder.empty() && statistics.fclib_problems_written < fclib.max_problems) {
+        write_fclib_step(W, q, mu, r, u, solve);
+      }
       statistics.solver_iterations += solve.iterations;
       statistics.largest_solver_error = std::max(statistics.largest_solver_error, solve.error);
       if (!solve.converged) {
@@ -248,6 +253,25 @@ struct MoreauJean::Impl {
     time += h;
     project_positions();
     ++statistics.steps;
+  }
+
+  /// The step's problem and solution as an FCLIB file (fclib_export.hpp), its info naming the
+  /// solver, tolerance and outcome so that a reader can reproduce the solve.
+  void write_fclib_step(const Eigen::MatrixXd& W, const Eigen::VectorXd& q, const Eigen::VectorXd& mu,
+                        const Eigen::VectorXd& r, const Eigen::VectorXd& u, const ContactSolve& solve) {
+    const long number = statistics.steps + 1;
+    const std::string title = "clearjoint Moreau-Jean step " + std::to_string(number) + " (t = " +
+                              dynamics::format_number(time) + " s to " +
+                              dynamics::format_number(time + settings.step) + " s), " +
+                              std::to_string(q.size() / 3) + " contacts";
+    const std::string description =
+        "Local frictional contact problem of a clearance joint's contacts (clearjoint docs/nonsmooth.md); "
+        "solution by Siconos Numerics fc3d NSGS, tolerance " + dynamics::format_number(settings.contact_tolerance) +
+        ", at most " + std::to_string(settings.contact_max_iterations) + " sweeps, from r = 0: " +
+        (solve.converged ? "converged" : "NOT converged") + ", error " + dynamics::format_number(solve.error) +
+        " after " + std::to_string(solve.iterations) + " sweeps";
+    write_fclib_problem(fclib_problem_path(fclib, number), W, q, mu, r, u, title, description);
+    ++statistics.fclib_problems_written;
   }
 
   /// Newton iterations on Phi(q, t) = 0 with the mass-weighted least-norm correction
@@ -294,5 +318,9 @@ std::span<const double> MoreauJean::bilateral_percussions() const {
 double MoreauJean::kinetic_energy() const { return impl_->built.system->kinetic_energy(impl_->y); }
 double MoreauJean::potential_energy() { return impl_->potential_energy(); }
 const MoreauJeanStatistics& MoreauJean::statistics() const { return impl_->statistics; }
+void MoreauJean::write_fclib(const FclibExport& fclib) {
+  prepare_fclib_folder(fclib, "--write-fclib");
+  impl_->fclib = fclib;
+}
 
 }  // namespace clearjoint::nonsmooth

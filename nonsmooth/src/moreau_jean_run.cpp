@@ -280,6 +280,10 @@ struct MoreauJeanRun::Impl {
                        " unconverged steps";
     if (s.unconverged_steps > 0) line += " (the first at t = " + dynamics::format_shortest(s.first_unconverged_time) + " s)";
     summary.element_statistics.push_back(std::move(line));
+    if (s.fclib_problems_written > 0) {
+      summary.element_statistics.push_back("moreau_jean: " + std::to_string(s.fclib_problems_written) +
+                                           " contact problems written as FCLIB files (--write-fclib)");
+    }
     return summary;
   }
 };
@@ -289,6 +293,7 @@ MoreauJeanRun::MoreauJeanRun(const dynamics::ModelDescription& model, const dyna
 MoreauJeanRun::~MoreauJeanRun() = default;
 const std::vector<dynamics::TablePlan>& MoreauJeanRun::tables() const { return impl_->tables; }
 const dynamics::ModelDescription& MoreauJeanRun::model() const { return impl_->model; }
+void MoreauJeanRun::write_fclib(const FclibExport& fclib) { impl_->scheme.write_fclib(fclib); }
 dynamics::SimulationSummary MoreauJeanRun::run(dynamics::SimulationOutput& output,
                                                const dynamics::ProgressCallback& progress) {
   return impl_->run(output, progress);

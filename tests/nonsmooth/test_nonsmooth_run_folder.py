@@ -95,3 +95,39 @@ def test_another_engine_refuses_a_moreau_jean_model_naming_solver_method(tmp_pat
         pytest.skip("this build has no second engine")
     with pytest.raises(ValueError, match="solver.method"):
         clearjoint.simulate(str(model_file(tmp_path, "moreau_jean")), engine="simbody")
+
+
+@pytest.mark.skipif(not CLI, reason="needs the clearjoint program (CLEARJOINT_CLI)")
+def test_simulate_write_fclib_writes_the_first_contact_problems_as_fclib_files(tmp_path):
+    h5py = pytest.importorskip("h5py")
+    done = subprocess.run([CLI, "simulate", str(model_file(tmp_path, "moreau_jean")), "--out", str(tmp_path / "run"),
+                           "--write-fclib", str(tmp_path / "fclib"), "--fclib-count", "2"],
+                          check=True, capture_output=True, text=True)
+    assert "2 contact problems written as FCLIB files" in done.stdout
+    files = sorted((tmp_path / "fclib").glob("step_*.hdf5"))
+    assert len(files) == 2
+    for path in files:
+        with h5py.File(path, "r") as f:
+            assert int(f["fclib_local/spacedim"][()]) == 3
+            n = len(f["fclib_local/vectors/q"][()])
+            assert n % 3 == 0 and len(f["solution/r"][()]) == n
+
+
+@pytest.mark.skipif(not CLI, reason="needs the clearjoint program (CLEARJOINT_CLI)")
+def test_simulate_refuses_a_write_fclib_path_that_is_a_file_naming_the_option(tmp_path):
+    (tmp_path / "file").write_text("not a folder")
+    done = subprocess.run([CLI, "simulate", str(model_file(tmp_path, "moreau_jean")), "--out", str(tmp_path / "run"),
+                           "--write-fclib", str(tmp_path / "file")], capture_output=True, text=True)
+    assert done.returncode != 0
+    assert f"--write-fclib = '{tmp_path / 'file'}': not a folder" in done.stderr
+    assert "Traceback" not in done.stderr and not (tmp_path / "run").exists()
+
+
+@pytest.mark.skipif(not CLI, reason="needs the clearjoint program (CLEARJOINT_CLI)")
+def test_simulate_refuses_write_fclib_for_a_compliant_model(tmp_path):
+    done = subprocess.run([CLI, "simulate", str(model_file(tmp_path, "dormand_prince")), "--out",
+                           str(tmp_path / "run"), "--write-fclib", str(tmp_path / "fclib")],
+                          capture_output=True, text=True)
+    assert done.returncode != 0
+    assert "--write-fclib" in done.stderr and "moreau_jean" in done.stderr
+    assert not (tmp_path / "fclib").exists()

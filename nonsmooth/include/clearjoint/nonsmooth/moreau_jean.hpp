@@ -15,6 +15,7 @@
 #include "clearjoint/dynamics/model_description.hpp"
 #include "clearjoint/dynamics/multibody_system.hpp"
 #include "clearjoint/geometry/joint/detect_contacts.hpp"
+#include "clearjoint/nonsmooth/fclib_export.hpp"
 
 namespace clearjoint::nonsmooth {
 
@@ -46,6 +47,7 @@ struct MoreauJeanStatistics {
   double first_unconverged_time = std::numeric_limits<double>::quiet_NaN();  ///< [s]
   double largest_solver_error = 0.0;       ///< largest fc3d residual of any step
   double largest_projection_residual = 0.0;  ///< max |Phi| left after a projection
+  long fclib_problems_written = 0;  ///< FCLIB files written (MoreauJean::write_fclib)
 };
 
 class MoreauJean {
@@ -79,6 +81,9 @@ class MoreauJean {
   double kinetic_energy() const;
   double potential_energy();
   const MoreauJeanStatistics& statistics() const;
+  /// From the next step on, write the contact problems fclib_export.hpp selects. Checks the
+  /// folder first (prepare_fclib_folder, the error naming --write-fclib).
+  void write_fclib(const FclibExport& fclib);
 
  private:
   struct Impl;

@@ -18,6 +18,7 @@
 #include "clearjoint/dynamics/run_size.hpp"
 #include "clearjoint/dynamics/simulation.hpp"
 #include "clearjoint/dynamics/simulation_output.hpp"
+#include "clearjoint/nonsmooth/fclib_export.hpp"
 
 namespace clearjoint::nonsmooth {
 
@@ -40,6 +41,9 @@ class MoreauJeanRun {
 
   const std::vector<dynamics::TablePlan>& tables() const;
   const dynamics::ModelDescription& model() const;
+  /// Write the run's contact problems as FCLIB files (fclib_export.hpp says which); before run().
+  /// Throws dynamics::ModelError naming --write-fclib for a folder that cannot be written.
+  void write_fclib(const FclibExport& fclib);
 
   /// Integrate and write; once. The summary's integration.steps counts the steps (smallest and
   /// largest step h), element_statistics holds a "moreau_jean: ..." line with the contact
