@@ -52,12 +52,10 @@ constexpr const char* kUsage =
     "Exit status: 0 all lines answered, 1 some line failed, 2 usage error, unreadable FILE\n"
     "or unwritable standard output.\n";
 
-/// A number that must be positive, e.g. a radius.
-double read_positive(const Json& object, const std::string& path, const char* key) {
-  const Json& value = member(object, path, key);
-  const double x = read_number(value, field(path, key));
-  if (!(x > 0.0)) throw LineError(field(path, key), " = " + quote(value) + ": must be positive");
-  return read_geometric_number(value, field(path, key));
+/// A size (radius or length): a number within the accepted magnitudes; the kernel's validate()
+/// checks the rest.
+double read_size(const Json& object, const std::string& path, const char* key) {
+  return read_geometric_number(member(object, path, key), field(path, key));
 }
 
 /// A centre or axis: 3 numbers, each 0 or within the accepted magnitudes (json_lines.hpp).
@@ -65,20 +63,12 @@ geo::Vector3 read_pose_vector(const Json& object, const std::string& path, const
   return read_geometric_vector(member(object, path, key), field(path, key));
 }
 
-/// Throws unless the journal's `key` ("radius" or "length") is smaller than the bearing's:
-/// the clearances of eqs. (1)-(2) must be positive.
-void require_smaller(const Json& journal, const Json& bearing, const char* key) {
-  if (journal[key].get<double>() < bearing[key].get<double>()) return;
-  throw LineError(std::string("journal.") + key, " = " + quote(journal[key]) +
-                  ": must be smaller than bearing." + key + " = " + quote(bearing[key]));
-}
-
 /// One part: its dimensions go to `radius` and `length`, its pose is returned.
 geo::PartPose read_part(const Json& object, const std::string& path, double& radius,
                         double& length) {
   check_object(object, path, {"radius", "length", "center", "axis"});
-  radius = read_positive(object, path, "radius");
-  length = read_positive(object, path, "length");
+  radius = read_size(object, path, "radius");
+  length = read_size(object, path, "length");
   geo::PartPose pose;
   pose.p_WP = read_pose_vector(object, path, "center");
   pose.axis_W = read_pose_vector(object, path, "axis");
@@ -117,8 +107,8 @@ void answer_query(const Json& query, Json& answer) {
       read_part(bearing_json, "bearing", dimensions.bearing_radius, dimensions.bearing_length);
   const geo::PartPose journal =
       read_part(journal_json, "journal", dimensions.journal_radius, dimensions.journal_length);
-  require_smaller(journal_json, bearing_json, "radius");
-  require_smaller(journal_json, bearing_json, "length");
+  // The kernel's one check, with the fields named as in the line ("journal.radius").
+  geo::validate(dimensions, "", geo::kPartDimensionNames);
 
   // Velocities need both bodies' motions: one alone is most likely a mistake, not "at rest".
   const bool has_bearing_motion = query.contains("bearing_motion");

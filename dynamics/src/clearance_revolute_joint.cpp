@@ -10,6 +10,7 @@
 #include <numbers>
 
 #include "clearjoint/dynamics/errors.hpp"
+#include "clearjoint/geometry/model/joint_geometry.hpp"
 #include "joint_film.hpp"
 
 namespace clearjoint::dynamics {
@@ -35,20 +36,13 @@ void validate_part(const ClearanceJointPart& part, const std::string& field) {
   require_nonzero(field + ".axis", part.axis_B);
 }
 
+/// The kernel's one check of the dimensions, with the fields named as in a model file
+/// ("<joint>.journal.radius") and its InvalidInput reported as the dynamics' ModelError.
 void validate_dimensions(const geometry::JointDimensions& d, const std::string& name) {
-  require_positive(name + ".bearing.radius", d.bearing_radius);
-  require_positive(name + ".bearing.length", d.bearing_length);
-  require_positive(name + ".journal.radius", d.journal_radius);
-  require_positive(name + ".journal.length", d.journal_length);
-  if (!(d.journal_radius < d.bearing_radius)) {
-    throw ModelError(name + ".journal.radius", " = " + format_number(d.journal_radius) +
-                     ": must be smaller than bearing.radius = " + format_number(d.bearing_radius) +
-                     " (the radial clearance Ri - Rj, eq. 1, must be positive)");
-  }
-  if (!(d.journal_length < d.bearing_length)) {
-    throw ModelError(name + ".journal.length", " = " + format_number(d.journal_length) +
-                     ": must be smaller than bearing.length = " + format_number(d.bearing_length) +
-                     " (the axial clearance (Li - Lj)/2, eq. 2, must be positive)");
+  try {
+    geometry::validate(d, name, geometry::kPartDimensionNames);
+  } catch (const geometry::InvalidInput& e) {
+    throw ModelError(e.field_path(), e.detail());
   }
 }
 

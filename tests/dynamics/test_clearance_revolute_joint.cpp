@@ -398,6 +398,12 @@ TEST(ClearanceRevoluteJoint, RejectsBadInputNamingTheField) {
   p.dimensions.journal_length = std::numeric_limits<double>::infinity();
   EXPECT_EQ(construction_error(p), "j.journal.length = inf: must be finite");
   p = {};
+  // The kernel's accepted range (joint_geometry.hpp), checked when the joint is made, not at the
+  // first contact detection of a run.
+  p.dimensions.journal_length = 1e-200;
+  EXPECT_EQ(construction_error(p).rfind("j.journal.length = 1e-200: a magnitude outside "
+                                        "[1e-150, 1e150]", 0), 0u) << construction_error(p);
+  p = {};
   EXPECT_EQ(construction_error(p, kJournal, Vector3::Zero()), "j.journal.axis = [0, 0, 0]: must not be zero");
   EXPECT_EQ(construction_error(p, kBearing),
             "j.journal.body: the journal and the bearing must be on different bodies");

@@ -1,29 +1,29 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "model/input_checks.hpp"
 
+#include <charconv>
 #include <cmath>
-#include <sstream>
 
 namespace clearjoint::geometry::detail {
 
 std::string format(double x) {
-  std::ostringstream out;
-  out.precision(17);
-  out << x;
-  return out.str();
+  // Shortest round trip (std::to_chars without a precision): "0.1", not "0.10000000000000001",
+  // so that a message quotes the value as the caller wrote it.
+  char buffer[32];
+  char* end = std::to_chars(buffer, buffer + sizeof buffer, x).ptr;
+  return std::string(buffer, end);
 }
 
 std::string format(const Vector3& v) {
-  std::ostringstream out;
-  out.precision(17);
-  out << '[' << v.x() << ", " << v.y() << ", " << v.z() << ']';
-  return out.str();
+  return '[' + format(v.x()) + ", " + format(v.y()) + ", " + format(v.z()) + ']';
 }
 
 void reject(std::string_view name, std::string_view field, const std::string& value,
             std::string_view why) {
+  // An empty name: the caller's description has the fields at its top level.
   std::string path(name);
-  path.append(".").append(field);
+  if (!path.empty()) path.append(".");
+  path.append(field);
   throw InvalidInput(path, " = " + value + ": " + std::string(why));
 }
 

@@ -14,7 +14,7 @@
 
 namespace clearjoint::geometry::detail {
 
-/// Shortest text that reads back to the same double (17 significant digits).
+/// Shortest text that reads back to the same double ("0.1", "1e-160", "nan", "inf").
 std::string format(double x);
 std::string format(const Vector3& v);
 

@@ -18,24 +18,26 @@ using detail::require_positive;
 
 }  // namespace
 
-void validate(const JointDimensions& dimensions, std::string_view name) {
+void validate(const JointDimensions& dimensions, std::string_view name, const JointDimensionNames& names) {
   // In this order, so that the first bad field is the one named.
-  const std::pair<double, std::string_view> sizes[] = {{dimensions.bearing_radius, "bearing_radius"},
-                                                       {dimensions.bearing_length, "bearing_length"},
-                                                       {dimensions.journal_radius, "journal_radius"},
-                                                       {dimensions.journal_length, "journal_length"}};
+  const std::pair<double, std::string_view> sizes[] = {{dimensions.bearing_radius, names.bearing_radius},
+                                                       {dimensions.bearing_length, names.bearing_length},
+                                                       {dimensions.journal_radius, names.journal_radius},
+                                                       {dimensions.journal_length, names.journal_length}};
   for (const auto& [value, field] : sizes) {
     require_positive(value, name, field);
     if (!detail::length_in_range(value)) detail::reject_out_of_range(format(value), name, field);
   }
   // eqs. (1)-(2): the clearances must be positive.
   if (!(dimensions.journal_radius < dimensions.bearing_radius)) {
-    reject(name, "journal_radius", format(dimensions.journal_radius),
-           "must be smaller than bearing_radius = " + format(dimensions.bearing_radius));
+    reject(name, names.journal_radius, format(dimensions.journal_radius),
+           "must be smaller than " + std::string(names.bearing_radius) + " = " +
+               format(dimensions.bearing_radius) + " (the radial clearance Ri - Rj, eq. 1, must be positive)");
   }
   if (!(dimensions.journal_length < dimensions.bearing_length)) {
-    reject(name, "journal_length", format(dimensions.journal_length),
-           "must be smaller than bearing_length = " + format(dimensions.bearing_length));
+    reject(name, names.journal_length, format(dimensions.journal_length),
+           "must be smaller than " + std::string(names.bearing_length) + " = " +
+               format(dimensions.bearing_length) + " (the axial clearance (Li - Lj)/2, eq. 2, must be positive)");
   }
 }
 

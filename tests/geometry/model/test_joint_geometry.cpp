@@ -64,10 +64,35 @@ TEST(JointDimensions, EachBadFieldIsNamedWithItsValue) {
 TEST(JointDimensions, JournalNotSmallerThanBearingIsRejected) {
   JointDimensions d = kTable2;
   d.journal_radius = 10.0;
-  EXPECT_EQ(message_of(d), "dimensions.journal_radius = 10: must be smaller than bearing_radius = 10");
+  EXPECT_EQ(message_of(d), "dimensions.journal_radius = 10: must be smaller than bearing_radius = 10 "
+                           "(the radial clearance Ri - Rj, eq. 1, must be positive)");
   d = kTable2;
   d.journal_length = 25.0;
-  EXPECT_EQ(message_of(d), "dimensions.journal_length = 25: must be smaller than bearing_length = 20");
+  EXPECT_EQ(message_of(d), "dimensions.journal_length = 25: must be smaller than bearing_length = 20 "
+                           "(the axial clearance (Li - Lj)/2, eq. 2, must be positive)");
+}
+
+TEST(JointDimensions, FieldsAreNamedInTheCallersTerms) {
+  JointDimensions d = kTable2;
+  d.journal_radius = 10.0;
+  try {
+    validate(d, "forces[2]", kPartDimensionNames);
+    ADD_FAILURE() << "no error";
+  } catch (const InvalidInput& e) {
+    EXPECT_EQ(e.field_path(), "forces[2].journal.radius");
+    EXPECT_STREQ(e.what(), "forces[2].journal.radius = 10: must be smaller than bearing.radius = 10 "
+                           "(the radial clearance Ri - Rj, eq. 1, must be positive)");
+  }
+  d = kTable2;
+  d.bearing_length = -0.0099;
+  try {
+    validate(d, "", kPartDimensionNames);  // a description with the parts at its top level
+    ADD_FAILURE() << "no error";
+  } catch (const InvalidInput& e) {
+    EXPECT_EQ(e.field_path(), "bearing.length");
+    // The value as written, not its 17 significant digits (-0.0099000000000000008).
+    EXPECT_STREQ(e.what(), "bearing.length = -0.0099: must be positive");
+  }
 }
 
 TEST(PartPose, NonFiniteOrZeroFieldsAreNamed) {

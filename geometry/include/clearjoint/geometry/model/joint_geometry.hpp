@@ -55,10 +55,25 @@ struct PartPose {
   Vector3 axis_W = Vector3::UnitZ();
 };
 
-/// Throw InvalidInput naming the field and its value ("dimensions.journal_radius = 10: must be
-/// smaller than bearing_radius = 10") for non-finite values, non-positive sizes, sizes outside
-/// the accepted range, or a journal not smaller than its bearing.
-void validate(const JointDimensions& dimensions, std::string_view name = "dimensions");
+/// The names validate() gives the four sizes in its messages, after the caller's path: the
+/// members of JointDimensions by default; kPartDimensionNames for a description that groups them
+/// by part, as the command line's JSON and the dynamics' model files do.
+struct JointDimensionNames {
+  std::string_view bearing_radius = "bearing_radius";
+  std::string_view bearing_length = "bearing_length";
+  std::string_view journal_radius = "journal_radius";
+  std::string_view journal_length = "journal_length";
+};
+inline constexpr JointDimensionNames kPartDimensionNames{"bearing.radius", "bearing.length", "journal.radius",
+                                                         "journal.length"};
+
+/// The one check of a joint's dimensions, for every front-end: throw InvalidInput naming the
+/// field and its value ("dimensions.journal_radius = 10: must be smaller than bearing_radius = 10
+/// (the radial clearance Ri - Rj, eq. 1, must be positive)") for non-finite values, non-positive
+/// sizes, sizes outside the accepted range, or a journal not smaller than its bearing. `name` is
+/// the caller's path to the dimensions ("forces[0]"); empty, the field names stand alone.
+void validate(const JointDimensions& dimensions, std::string_view name = "dimensions",
+              const JointDimensionNames& names = {});
 /// Throw InvalidInput for a non-finite centre or axis, a zero axis, or a centre coordinate
 /// outside the accepted range.
 void validate(const PartPose& pose, std::string_view name = "pose");
