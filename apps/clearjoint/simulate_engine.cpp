@@ -2,10 +2,10 @@
 #include "simulate_engine.hpp"
 
 #include <memory>
-#include <stdexcept>
 #include <string>
 
 #include "clearjoint/dynamics/errors.hpp"
+#include "clearjoint/validation_error.hpp"
 #ifdef CLEARJOINT_WITH_NONSMOOTH
 #include "clearjoint/nonsmooth/moreau_jean_run.hpp"
 #endif
@@ -17,21 +17,39 @@
 
 namespace clearjoint::app {
 
-std::string engine_unavailable(std::string_view engine) {
+namespace {
+
+/// What follows "--engine" in the refusal of `engine` (" = 'bogus': unknown engine; ..."), or
+/// nothing when it can run here.
+std::string unavailable_detail(std::string_view engine) {
   if (engine == kDefaultEngine) return {};
+  const std::string value = " = '" + std::string(engine) + "': ";
   if (engine == "simbody") {
 #ifdef CLEARJOINT_WITH_SIMBODY
     return {};
 #else
-    return "--engine simbody: this clearjoint was built without Simbody (CLEARJOINT_WITH_SIMBODY; "
-           "Debian: libsimbody-dev, docs/engines.md)";
+    return value + "this clearjoint was built without Simbody (CLEARJOINT_WITH_SIMBODY; Debian: "
+                   "libsimbody-dev, docs/engines.md)";
 #endif
   }
-  return "--engine " + std::string(engine) + ": unknown engine; the engines are " + kEngineNames;
+  return value + "unknown engine; the engines are " + kEngineNames;
+}
+
+}  // namespace
+
+std::string engine_unavailable(std::string_view engine) {
+  const std::string detail = unavailable_detail(engine);
+  return detail.empty() ? detail : std::string(kEngineOption) + detail;
+}
+
+void require_engine(std::string_view engine) {
+  if (const std::string detail = unavailable_detail(engine); !detail.empty()) {
+    throw ValidationError(kEngineOption, detail);
+  }
 }
 
 void check_model_for_engine(std::string_view engine, const dynamics::ModelDescription& model) {
-  if (const std::string why = engine_unavailable(engine); !why.empty()) throw std::invalid_argument(why);
+  require_engine(engine);
 #ifdef CLEARJOINT_WITH_SIMBODY
   if (engine == "simbody") simbody::SimbodyModel check(model);
 #else
@@ -42,7 +60,7 @@ void check_model_for_engine(std::string_view engine, const dynamics::ModelDescri
 dynamics::SimulationSummary simulate_with_engine(std::string_view engine, dynamics::SimulationRun& run,
                                                  dynamics::SimulationOutput& output,
                                                  const dynamics::ProgressCallback& progress) {
-  if (const std::string why = engine_unavailable(engine); !why.empty()) throw std::invalid_argument(why);
+  require_engine(engine);
 #ifdef CLEARJOINT_WITH_SIMBODY
   if (engine == "simbody") return simbody::simulate_in_simbody(run, output, progress);
 #endif
@@ -51,12 +69,12 @@ dynamics::SimulationSummary simulate_with_engine(std::string_view engine, dynami
 
 PlannedRun plan_run(std::string_view engine, const dynamics::ModelDescription& model,
                     const dynamics::RunOptions& options) {
-  if (const std::string why = engine_unavailable(engine); !why.empty()) throw std::invalid_argument(why);
+  require_engine(engine);
   if (model.solver_method == dynamics::SolverMethod::moreau_jean) {
     if (engine != kDefaultEngine) {
-      throw std::invalid_argument("--engine " + std::string(engine) +
-                                  ": solver.method = \"moreau_jean\" runs in clearjoint's own engine only "
-                                  "(docs/nonsmooth.md)");
+      throw ValidationError(kEngineOption, " = '" + std::string(engine) +
+                                               "': solver.method = \"moreau_jean\" runs in clearjoint's own "
+                                               "engine only (docs/nonsmooth.md)");
     }
 #ifdef CLEARJOINT_WITH_NONSMOOTH
     auto run = std::make_shared<nonsmooth::MoreauJeanRun>(model, options);
@@ -64,9 +82,9 @@ PlannedRun plan_run(std::string_view engine, const dynamics::ModelDescription& m
       return run->run(output, progress);
     };
 #else
-    throw dynamics::ModelError("solver.method = \"moreau_jean\": this clearjoint was built without Siconos "
-                               "Numerics (CLEARJOINT_WITH_SICONOS; Debian: libsiconos-numerics-dev, "
-                               "docs/nonsmooth.md)");
+    throw dynamics::ModelError("solver.method", " = \"moreau_jean\": this clearjoint was built without Siconos "
+                                                "Numerics (CLEARJOINT_WITH_SICONOS; Debian: libsiconos-numerics-dev, "
+                                                "docs/nonsmooth.md)");
 #endif
   }
   auto run = std::make_shared<dynamics::SimulationRun>(model, options);

@@ -17,9 +17,14 @@ namespace clearjoint::app {
 inline constexpr std::string_view kDefaultEngine = "clearjoint";
 inline constexpr const char* kEngineNames = "clearjoint (default), simbody";
 
-/// Empty when `engine` can run here; else why not ("unknown engine ...", "built without
-/// Simbody ...").
+/// The option that names the engine: the field path of an engine's refusal.
+inline constexpr const char* kEngineOption = "--engine";
+
+/// Empty when `engine` can run here; else why not, as require_engine's message
+/// ("--engine = 'bogus': unknown engine; ...", "... built without Simbody ...").
 std::string engine_unavailable(std::string_view engine);
+/// Throw ValidationError, field path "--engine", unless `engine` can run here.
+void require_engine(std::string_view engine);
 
 /// Throw what running `model` with `engine` would throw for a model feature the engine does not
 /// support (clearjoint::simbody::UnsupportedFeature, naming it), before any output folder exists.
@@ -30,7 +35,7 @@ void check_model_for_engine(std::string_view engine, const dynamics::ModelDescri
 /// files, an HDF5 file, memory), with the rows of every output.decimation-th report time and of
 /// the last, and commit it: run.run() for the default engine (once per run), Simbody's
 /// integration of the same model otherwise (`run` is then not run). Throws
-/// std::invalid_argument for an engine that engine_unavailable() refuses, and what the engine
+/// require_engine's ValidationError for an engine that cannot run here, and what the engine
 /// throws (a model feature the Simbody route does not support:
 /// clearjoint::simbody::UnsupportedFeature, a ModelError, a SolverError).
 dynamics::SimulationSummary simulate_with_engine(std::string_view engine, dynamics::SimulationRun& run,
@@ -45,7 +50,7 @@ using PlannedRun =
 /// dynamics::SimulationRun (the default engine or Simbody, check_model_for_engine), a
 /// "moreau_jean" one as clearjoint::nonsmooth::MoreauJeanRun (the default engine only; the same
 /// tables, docs/nonsmooth.md). Throws what planning throws (ModelError, SolverError,
-/// std::invalid_argument for an engine that cannot run the model, a ModelError naming
+/// a ValidationError naming --engine for an engine that cannot run the model, a ModelError naming
 /// solver.method when this program was built without Siconos).
 PlannedRun plan_run(std::string_view engine, const dynamics::ModelDescription& model,
                     const dynamics::RunOptions& options);
