@@ -131,3 +131,24 @@ def test_simulate_refuses_write_fclib_for_a_compliant_model(tmp_path):
     assert done.returncode != 0
     assert "--write-fclib" in done.stderr and "moreau_jean" in done.stderr
     assert not (tmp_path / "fclib").exists()
+
+
+def test_impacts_by_scenario_counts_each_slots_onsets_and_the_energy_lost(tmp_path):
+    """nonsmooth/scripts/impacts_by_scenario.py, which produces docs/nonsmooth.md's spatial table."""
+    import sys
+    slots = ("radial_a", "radial_b", "line", "axial_a", "axial_b")
+    (tmp_path / "energy.csv").write_text("time,total\n0,1.0\n1,0.75\n")
+    header = ["time", "scenario"] + [f"{s}.{c}" for s in slots for c in ("normal_force", "approach_speed")]
+    # radial_a: pressed at rows 1-2 (one onset, scenario 1 = (a), 0.5 m/s), again at row 4 (0.001 m/s);
+    # axial_b at row 4 (scenario 5 = (e), 0.2 m/s).
+    table = [[0, 0] + [0, 0] * 5, [1, 1, 5, 0.5] + [0, 0] * 4, [2, 1, 5, 0.4] + [0, 0] * 4,
+             [3, 0] + [0, 0] * 5, [4, 5, 5, 0.001] + [0, 0] * 3 + [5, 0.2]]
+    (tmp_path / "force_joint.csv").write_text(
+        ",".join(header) + "\n" + "\n".join(",".join(str(v) for v in row) for row in table) + "\n")
+    script = os.path.join(os.path.dirname(__file__), "..", "..", "nonsmooth", "scripts", "impacts_by_scenario.py")
+    every = subprocess.run([sys.executable, script, str(tmp_path)], check=True, capture_output=True, text=True)
+    assert "lost 0.25 J (25.0 %), 3 onsets; by scenario: (e) 2, (a) 1;" in every.stdout
+    assert "radial_a 2, radial_b 0, line 0, axial_a 0, axial_b 1" in every.stdout
+    fast = subprocess.run([sys.executable, script, "--min-speed", "0.01", str(tmp_path)], check=True,
+                          capture_output=True, text=True)
+    assert "2 onsets; by scenario: (a) 1, (e) 1;" in fast.stdout
