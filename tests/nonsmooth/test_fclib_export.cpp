@@ -23,7 +23,6 @@ extern "C" {
 namespace clearjoint::nonsmooth {
 namespace {
 
-constexpr double kStep = 1e-5;           // [s]
 constexpr double kTolerance = 1e-10;     // fc3d's relative residual, as the model file sets it
 constexpr int kMaxIterations = 1000;     // NSGS sweeps, as the model file sets it
 constexpr long kProblems = 3;
