@@ -72,9 +72,7 @@ geo::PartPose read_part(const Json& object, const std::string& path, double& rad
   geo::PartPose pose;
   pose.p_WP = read_pose_vector(object, path, "center");
   pose.axis_W = read_pose_vector(object, path, "axis");
-  if (pose.axis_W.x() == 0.0 && pose.axis_W.y() == 0.0 && pose.axis_W.z() == 0.0) {
-    throw LineError(path + ".axis", " = " + quote(object["axis"]) + ": must not be the zero vector");
-  }
+  geo::validate(pose, path, geo::kPartPoseNames);  // the kernel's one check, named as in the line
   return pose;
 }
 

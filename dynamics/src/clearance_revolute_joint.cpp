@@ -36,11 +36,12 @@ void validate_part(const ClearanceJointPart& part, const std::string& field) {
   require_nonzero(field + ".axis", part.axis_B);
 }
 
-/// The kernel's one check of the dimensions, with the fields named as in a model file
-/// ("<joint>.journal.radius") and its InvalidInput reported as the dynamics' ModelError.
-void validate_dimensions(const geometry::JointDimensions& d, const std::string& name) {
+/// One of the kernel's validate()s (the one check of that description), its InvalidInput
+/// reported as the dynamics' ModelError with the same field path and message.
+template <class Description, class... Names>
+void validate_in_kernel(const Description& description, const std::string& path, const Names&... names) {
   try {
-    geometry::validate(d, name, geometry::kPartDimensionNames);
+    geometry::validate(description, path, names...);
   } catch (const geometry::InvalidInput& e) {
     throw ModelError(e.field_path(), e.detail());
   }
@@ -123,15 +124,11 @@ ClearanceRevoluteJoint::ClearanceRevoluteJoint(std::string name, const Clearance
   if (bearing_.body == journal_.body) {
     throw ModelError(name_ + ".journal.body", ": the journal and the bearing must be on different bodies");
   }
-  validate_dimensions(parameters_.dimensions, name_);
+  // Named as in a model file: "<joint>.journal.radius".
+  validate_in_kernel(parameters_.dimensions, name_, geometry::kPartDimensionNames);
   validate(parameters_.normal, name_ + ".normal_force");
   validate(parameters_.friction, name_ + ".friction");
-  const double tolerance = parameters_.detection.parallel_angle_tolerance;
-  require_finite(name_ + ".detection.parallel_angle_tolerance", tolerance);
-  if (!(tolerance >= 0.0 && tolerance < 0.5 * std::numbers::pi)) {
-    throw ModelError(name_ + ".detection.parallel_angle_tolerance",
-                     " = " + format_number(tolerance) + ": must lie in [0, pi/2) radians");
-  }
+  validate_in_kernel(parameters_.detection, name_ + ".detection");
   // Output frame (u, v, a) of the bearing: u is the body axis least aligned with a (first on
   // ties), made perpendicular to a; v = a x u. For a bearing along z that is (x, y, z).
   bearing_axis_hat_B_ = bearing_.axis_B.normalized();

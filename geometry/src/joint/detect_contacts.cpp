@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
-#include <sstream>
 
 #include "arithmetic/a_priori_bounds.hpp"
 #include "arithmetic/angles.hpp"
@@ -620,16 +619,6 @@ void withdraw_unrepresentable(JointContacts& out) {
     contact.p_WCj_error = contact.p_WCi_error = contact.depth_error = kNoErrorBound;
     for (int k = 0; k < contact.crossing_count; ++k) contact.crossings[k].point_error = kNoErrorBound;
     out.certificate = {Certainty::uncertain, kNotRepresentableInWorld};
-  }
-}
-
-void validate(const DetectionOptions& options) {
-  const double tolerance = options.parallel_angle_tolerance;
-  if (!(tolerance >= 0.0 && tolerance < 0.5 * std::numbers::pi)) {
-    std::ostringstream message;
-    message.precision(17);
-    message << " = " << tolerance << ": must lie in [0, pi/2) radians";
-    throw InvalidInput("options.parallel_angle_tolerance", message.str());
   }
 }
 

@@ -41,11 +41,11 @@ void validate(const JointDimensions& dimensions, std::string_view name, const Jo
   }
 }
 
-void validate(const PartPose& pose, std::string_view name) {
-  detail::require_finite(pose.p_WP, name, "p_WP");
-  if (!detail::coordinates_in_range(pose.p_WP)) detail::reject_out_of_range(format(pose.p_WP), name, "p_WP");
-  detail::require_finite(pose.axis_W, name, "axis_W");
-  detail::require_nonzero(pose.axis_W, name, "axis_W");
+void validate(const PartPose& pose, std::string_view name, const PartPoseNames& names) {
+  detail::require_finite(pose.p_WP, name, names.p_WP);
+  if (!detail::coordinates_in_range(pose.p_WP)) detail::reject_out_of_range(format(pose.p_WP), name, names.p_WP);
+  detail::require_finite(pose.axis_W, name, names.axis_W);
+  detail::require_nonzero(pose.axis_W, name, names.axis_W);
 }
 
 Vector3 unit_axis(const PartPose& pose) {

@@ -108,6 +108,18 @@ TEST(PartPose, NonFiniteOrZeroFieldsAreNamed) {
   EXPECT_EQ(message_of(pose), "journal.axis_W = [nan, 0, 1]: every component must be finite");
 }
 
+TEST(PartPose, FieldsAreNamedInTheCallersTerms) {
+  PartPose pose;
+  pose.axis_W = Vector3::Zero();
+  try {
+    validate(pose, "bearing", kPartPoseNames);
+    ADD_FAILURE() << "no error";
+  } catch (const InvalidInput& e) {
+    EXPECT_EQ(e.field_path(), "bearing.axis");
+    EXPECT_STREQ(e.what(), "bearing.axis = [0, 0, 0]: must not be the zero vector");
+  }
+}
+
 TEST(BaseCenters, AreHalfALengthAlongTheUnitAxis) {
   // eqs. (3)-(4) with a non-unit axis: only its direction counts. (3, 4, 0)/5 is the unit axis.
   const PartPose pose{Vector3(1.0, 2.0, 3.0), Vector3(3.0, 4.0, 0.0)};

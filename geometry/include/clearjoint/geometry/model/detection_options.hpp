@@ -4,6 +4,8 @@
 /// The options of the joint's contact detection (detect_contacts.hpp), apart from the detection,
 /// so that a parameter struct can hold them without depending on the kernel's queries.
 
+#include <string_view>
+
 #include "clearjoint/geometry/model/intersection_options.hpp"
 
 namespace clearjoint::geometry {
@@ -17,5 +19,10 @@ struct DetectionOptions {
   /// contacts found under it are `uncertain` ("axes treated as parallel within the tolerance").
   double parallel_angle_tolerance = 0.0;
 };
+
+/// The one check of the options, for every front-end: throw InvalidInput naming the field and
+/// its value ("options.parallel_angle_tolerance = 2: must lie in [0, pi/2) radians"). `name` is
+/// the caller's path to the options ("forces[0].detection").
+void validate(const DetectionOptions& options, std::string_view name = "options");
 
 }  // namespace clearjoint::geometry

@@ -74,9 +74,18 @@ inline constexpr JointDimensionNames kPartDimensionNames{"bearing.radius", "bear
 /// the caller's path to the dimensions ("forces[0]"); empty, the field names stand alone.
 void validate(const JointDimensions& dimensions, std::string_view name = "dimensions",
               const JointDimensionNames& names = {});
-/// Throw InvalidInput for a non-finite centre or axis, a zero axis, or a centre coordinate
-/// outside the accepted range.
-void validate(const PartPose& pose, std::string_view name = "pose");
+/// The names validate() gives a pose's two fields: the members of PartPose by default;
+/// kPartPoseNames for the command line's JSON ("center", "axis").
+struct PartPoseNames {
+  std::string_view p_WP = "p_WP";
+  std::string_view axis_W = "axis_W";
+};
+inline constexpr PartPoseNames kPartPoseNames{"center", "axis"};
+
+/// The one check of a part's pose, for every front-end: throw InvalidInput naming the field and
+/// its value for a non-finite centre or axis, a zero axis, or a centre coordinate outside the
+/// accepted range. `name` is the caller's path to the pose ("journal").
+void validate(const PartPose& pose, std::string_view name = "pose", const PartPoseNames& names = {});
 
 /// a / |a| rounded to double (rescaled first when |a|^2 would under- or overflow).
 Vector3 unit_axis(const PartPose& pose);
