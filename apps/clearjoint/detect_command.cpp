@@ -52,10 +52,9 @@ constexpr const char* kUsage =
     "Exit status: 0 all lines answered, 1 some line failed, 2 usage error, unreadable FILE\n"
     "or unwritable standard output.\n";
 
-/// A size (radius or length): a number within the accepted magnitudes; the kernel's validate()
-/// checks the rest.
+/// A size (radius or length): a number; the kernel's validate() checks its sign and magnitude.
 double read_size(const Json& object, const std::string& path, const char* key) {
-  return read_geometric_number(member(object, path, key), field(path, key));
+  return read_number(member(object, path, key), field(path, key));
 }
 
 /// A centre or axis: 3 numbers, each 0 or within the accepted magnitudes (json_lines.hpp).
