@@ -14,38 +14,21 @@
 
 #include <nlohmann/json.hpp>
 
+#include "program_run.hpp"
+
 namespace {
 
 namespace fs = std::filesystem;
 
-struct Outcome {
-  int exit_code = -1;
-  std::string out;
-  std::string err;
-};
-
-std::string read_text(const fs::path& file) {
-  std::ifstream in(file);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+using clearjoint::test::Outcome;
 
 /// Runs `clearjoint bearing --eccentricity-ratio 0.5 --width-ratio 1 <options>`, or with
 /// `options` alone when `base` is false.
 Outcome bearing(const std::string& options, bool base = true) {
   const fs::path dir = fs::path(CLEARJOINT_TEST_WORK_DIR);
   fs::create_directories(dir);
-  const fs::path out = dir / "stdout.txt", err = dir / "stderr.txt";
-  const std::string command = "\"" CLEARJOINT_PROGRAM "\" bearing " +
-                              std::string(base ? "--eccentricity-ratio 0.5 --width-ratio 1 " : "") + options +
-                              " > \"" + out.string() + "\" 2> \"" + err.string() + "\" < /dev/null";
-  const int status = std::system(command.c_str());
-  Outcome o;
-  o.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  o.out = read_text(out);
-  o.err = read_text(err);
-  return o;
+  const std::string fixed = base ? "--eccentricity-ratio 0.5 --width-ratio 1 " : "";
+  return clearjoint::test::run("bearing " + fixed + options, dir);
 }
 
 bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }

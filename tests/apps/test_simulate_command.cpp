@@ -18,22 +18,15 @@
 #include <string>
 #include <vector>
 
+#include "program_run.hpp"
+
 namespace {
 
 namespace fs = std::filesystem;
 
-struct Outcome {
-  int exit_code = -1;
-  std::string out;
-  std::string err;
-};
-
-std::string read_text(const fs::path& file) {
-  std::ifstream in(file);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+using clearjoint::test::Outcome;
+using clearjoint::test::read_text;
+using clearjoint::test::run;
 
 /// A scratch folder per test, emptied first.
 fs::path scratch(const std::string& name) {
@@ -41,19 +34,6 @@ fs::path scratch(const std::string& name) {
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;
-}
-
-/// Runs `clearjoint <arguments>` (already quoted as needed) with its output in `dir`.
-Outcome run(const std::string& arguments, const fs::path& dir) {
-  const fs::path out = dir / "stdout.txt", err = dir / "stderr.txt";
-  const std::string command = "\"" CLEARJOINT_PROGRAM "\" " + arguments + " > \"" + out.string() + "\" 2> \"" +
-                              err.string() + "\" < /dev/null";
-  const int status = std::system(command.c_str());
-  Outcome o;
-  o.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  o.out = read_text(out);
-  o.err = read_text(err);
-  return o;
 }
 
 fs::path write_model(const fs::path& dir, const std::string& json) {
