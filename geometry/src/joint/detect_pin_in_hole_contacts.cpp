@@ -1,0 +1,524 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Contact detection in the pin-in-hole joint: the kernel's two queries with the roles of the
+// paper's joint turned around (docs/contact-detection.md, "The pin-in-hole joint").
+//
+// Every centre a query needs (a hole edge centre P_i +- (L/2) a_i_hat, a stop centre
+// P_j + s a_j_hat) is a RoundedPoint (rounded_point.hpp) in a frame whose origin is the other
+// query primitive's point: the edges against the pin in a frame at the pin's point P_j (the pin's
+// axis point is then exactly 0), the stops and the link faces in a frame at the hole's centre P_i.
+// So every certified or exact answer is about the joint the input numbers define, as for
+// detect_contacts. The contacts are moved back to the world frame at the end, with the rounding
+// of that translation added to their bounds.
+
+#include "clearjoint/geometry/joint/detect_pin_in_hole_contacts.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "arithmetic/error_bounded.hpp"
+#include "arithmetic/rounded_point.hpp"
+#include "exact/parallel_axes_exact.hpp"
+#include "model/input_checks.hpp"
+#include "queries/rounded_point_queries.hpp"
+
+namespace clearjoint::geometry {
+namespace {
+
+using detail::kUnitRoundoff;
+
+/// The factor on u of the a priori bounds below. Each bounded quantity is at most a dozen
+/// rounded operations deep (a dot product, a quotient, a cross product and a norm), so its
+/// relative error is at most about 12u of the magnitudes involved (Higham, Lemma 3.3), the unit
+/// axes being within 2u of a/|a|; 64 leaves a factor of five for what the count leaves out (the
+/// magnitudes of intermediates, up to twice those named). Used only by the prefilters and the
+/// pin-through-hole test, whose margins are of the order of the clearance, not of these bounds.
+constexpr double kAPrioriFactor = 64.0;
+/// A rim point evaluated by point_at: centre + r (cos u + sin v), with u, v and the sine and
+/// cosine each within a few ulps (primitives.hpp): within 16u of |centre|_1 + 2 r (a factor of
+/// two above the count of roundings).
+constexpr double kPointEvaluationFactor = 16.0;
+
+/// a*b == c*d in real arithmetic: Dekker's two-product in range, rationals otherwise.
+bool products_equal(double a, double b, double c, double d) {
+  if (detail::in_two_product_range(a) && detail::in_two_product_range(b) && detail::in_two_product_range(c) &&
+      detail::in_two_product_range(d)) {
+    return detail::exactly_equal_products(a, b, c, d);
+  }
+  return detail::exact_products_equal(a, b, c, d);
+}
+
+/// eq. (5) for the hole and the pin: a_i x a_j = 0 on the stored doubles, exactly.
+bool axes_exactly_parallel(const Vector3& a, const Vector3& b) {
+  return products_equal(a.y(), b.z(), a.z(), b.y()) && products_equal(a.z(), b.x(), a.x(), b.z()) &&
+         products_equal(a.x(), b.y(), a.y(), b.x());
+}
+
+/// What the detection knows about the joint, in the world frame but for the offsets.
+struct Setup {
+  double hole_radius = 0.0;
+  double half_length = 0.0;
+  double pin_radius = 0.0;
+  Vector3 p_WPi = Vector3::Zero();
+  Vector3 p_WPj = Vector3::Zero();
+  Vector3 hole_axis = Vector3::UnitZ();  // as given: the circles' and planes' normals
+  Vector3 pin_axis = Vector3::UnitZ();
+  Vector3 hole_hat = Vector3::UnitZ();   // unit_axis: the centres' definition
+  Vector3 pin_hat = Vector3::UnitZ();
+  /// +1 when the pin's axis points through face A (a_i . a_j > 0), -1 otherwise.
+  int toward_a = 1;
+  double cosine = 1.0;  // |a_i_hat . a_j_hat|
+};
+
+/// Index of a face: 0 for A (the one a_i points to), 1 for B.
+constexpr int kFaceA = 0;
+constexpr double face_sign(int face) { return face == kFaceA ? 1.0 : -1.0; }
+
+/// The hole's edge centre at `face` in the frame at P_j (sign 0 with face -1: the mid-length centre).
+detail::RoundedPoint edge_centre_from_pin(const Setup& s, int sign) {
+  return detail::rounded_point(s.p_WPi, s.p_WPj, 2.0 * s.half_length, sign, s.hole_hat);
+}
+/// The same in the frame at P_i.
+detail::RoundedPoint edge_centre_from_hole(const Setup& s, int sign) {
+  return detail::rounded_point(Vector3::Zero(), Vector3::Zero(), 2.0 * s.half_length, sign, s.hole_hat);
+}
+/// A stop's centre P_j + s a_j_hat in the frame at P_i.
+detail::RoundedPoint stop_centre_from_hole(const Setup& s, const AxialStop& stop) {
+  return detail::rounded_point(s.p_WPj, s.p_WPi, 2.0 * std::fabs(stop.position), stop.position > 0.0 ? 1 : -1,
+                               s.pin_hat);
+}
+
+/// Where the pin's axis meets the plane through c (frame at P_i) with normal a_i: its distance
+/// rho from the hole's axis, with a bound on the error of its evaluation. Infinite when the axis
+/// runs parallel to the plane.
+struct AxisCrossing {
+  double rho = 0.0;
+  double error = 0.0;
+};
+AxisCrossing pin_axis_crossing(const Setup& s, const Vector3& d_ji, double plane_offset) {
+  // The pin's axis x(t) = d_ji + t a_j_hat (d_ji = P_j - P_i) meets a_i_hat . x = plane_offset at
+  // t = (plane_offset - a_i_hat . d_ji) / (a_i_hat . a_j_hat); rho = |x(t) x a_i_hat|.
+  const double dot = s.hole_hat.dot(s.pin_hat);
+  if (dot == 0.0) return {std::numeric_limits<double>::infinity(), 0.0};
+  const double t = (plane_offset - s.hole_hat.dot(d_ji)) / dot;
+  const Vector3 x = d_ji + t * s.pin_hat;
+  const double rho = x.cross(s.hole_hat).norm();
+  const double scale = d_ji.cwiseAbs().sum() + std::fabs(plane_offset) + std::fabs(t) * 2.0 + rho;
+  return {rho, kAPrioriFactor * kUnitRoundoff * scale / std::fabs(dot)};
+}
+
+/// The contact's points and bounds moved from a frame at `origin` to the world frame: each
+/// coordinate of the sum rounded once, |error| <= u |sum| componentwise, so the Euclidean error
+/// grows by at most u |sum|_1 (times 1 + 4u for the rounding of the bound).
+void to_world(const Vector3& origin, Contact& contact) {
+  const auto move = [&origin](Vector3& point, double& error) {
+    point += origin;
+    error = (error + kUnitRoundoff * point.cwiseAbs().sum()) * (1 + 4 * kUnitRoundoff);
+  };
+  move(contact.p_WCj, contact.p_WCj_error);
+  move(contact.p_WCi, contact.p_WCi_error);
+  for (int k = 0; k < contact.crossing_count; ++k) move(contact.crossings[k].point, contact.crossings[k].point_error);
+  const bool representable = std::isfinite(contact.p_WCj_error) && std::isfinite(contact.p_WCi_error) &&
+                             std::isfinite(contact.depth_error) && detail::all_finite(contact.p_WCj) &&
+                             detail::all_finite(contact.p_WCi);
+  if (!representable && contact.certificate.level != Certainty::uncertain) {
+    contact.certificate = {Certainty::uncertain, CertificateReason::contact_not_representable_in_world};
+  }
+  if (contact.certificate.level == Certainty::uncertain) {
+    contact.p_WCj_error = contact.p_WCi_error = contact.depth_error = kNoErrorBound;
+    for (int k = 0; k < contact.crossing_count; ++k) {
+      contact.crossings[k].angle_error = contact.crossings[k].point_error = kNoErrorBound;
+    }
+  }
+}
+
+/// The largest angle error of a set of crossings (an arc's ends are among them).
+template <class Crossings>
+double largest_angle_error(const Crossings& crossings, int count) {
+  double error = 0.0;
+  for (int k = 0; k < count; ++k) error = std::max(error, crossings[k].angle_error);
+  return error;
+}
+
+/// A hole circle point C_i (frame at P_j, its bound `point_error`) inside the pin: the contact's
+/// pin point C_j = C_i pushed radially out from the pin's axis onto its surface, normal the
+/// radial direction, depth Rp minus the distance of C_i from the axis (the edge's counterpart of
+/// eqs. 19-23; the pin's axis passes through the origin of this frame).
+void radial_contact(const Setup& s, const Vector3& p_Ci, double point_error, Contact& contact) {
+  // w = a x (C_i x a): C_i with its component along the axis removed, without the cancellation
+  // of C_i - (C_i . a) a.
+  const Vector3 w = s.pin_hat.cross(p_Ci.cross(s.pin_hat));
+  const double distance = w.norm();
+  const Vector3 normal = distance > 0.0 ? Vector3(w / distance) : Vector3(s.hole_hat.unitOrthogonal());
+  const double evaluation = kAPrioriFactor * kUnitRoundoff * p_Ci.cwiseAbs().sum();
+  contact.p_WCi = p_Ci;
+  contact.p_WCi_error = point_error;
+  contact.normal_W = normal;
+  contact.depth = std::max(0.0, s.pin_radius - distance);
+  contact.depth_error = point_error + evaluation + kUnitRoundoff * s.pin_radius;
+  contact.p_WCj = p_Ci + contact.depth * normal;
+  // The normal turns by at most (pi/2)(bound on w's error)/|w| (a displaced vector's direction),
+  // which moves C_j, at distance Rp from the axis, by Rp times that.
+  const double turn = distance > 0.0 ? 2.0 * (point_error + evaluation) / distance : kNoErrorBound;
+  contact.p_WCj_error = point_error + contact.depth_error + s.pin_radius * turn +
+                        kPointEvaluationFactor * kUnitRoundoff * (p_Ci.cwiseAbs().sum() + s.pin_radius);
+}
+
+/// The arcs of a hole circle strictly inside the pin: the complement of the query's arcs
+/// strictly outside (its "penetration" arcs, which are the rim's when the circle is a journal
+/// rim). Returns how many (0, 1 or 2).
+int inside_arcs(const CircleCylinderIntersection& query, std::array<RimArc, 2>& arcs) {
+  if (query.topology != CircleCylinderTopology::crossing) {
+    if (query.topology == CircleCylinderTopology::inside) {
+      arcs[0] = RimArc{0.0, 2 * std::numbers::pi, true};
+      return 1;
+    }
+    return 0;
+  }
+  if (query.arc_count == 0) {
+    arcs[0] = RimArc{0.0, 2 * std::numbers::pi, true};
+    return 1;
+  }
+  if (query.arc_count == 1) {
+    const RimArc& outside = query.penetration_arcs[0];
+    if (outside.full) return 0;  // outside but for a touching point
+    arcs[0] = RimArc{outside.end, outside.begin, false};
+    return 1;
+  }
+  arcs[0] = RimArc{query.penetration_arcs[0].end, query.penetration_arcs[1].begin, false};
+  arcs[1] = RimArc{query.penetration_arcs[1].end, query.penetration_arcs[0].begin, false};
+  return 2;
+}
+
+/// What the answer accumulates besides its contacts.
+struct Tally {
+  Certificate certificate{Certainty::exact, CertificateReason::none};
+  bool beyond = false;            // proved beyond the model
+  bool beyond_undecided = false;  // a depth within its bound of its limit
+  int radial = 0;
+  int radial_at[2] = {0, 0};
+  int axial = 0;
+  bool line = false;
+  int faces = 0;
+  void add(const Certificate& c) { certificate = weakest(certificate, c); }
+  /// depth > limit proved beyond; within its error of it undecided.
+  void check_depth(const Contact& contact, double limit) {
+    if (contact.depth - contact.depth_error > limit) {
+      beyond = true;
+    } else if (contact.depth + contact.depth_error > limit) {
+      beyond_undecided = true;
+    }
+  }
+};
+
+Certificate proved(const DetectionOptions& options) {
+  return options.intersection.certify ? Certificate{Certainty::certified, CertificateReason::none}
+                                      : Certificate{Certainty::uncertain, CertificateReason::certificate_switched_off};
+}
+
+/// The hole's circle at `sign` (+1 face A, -1 face B, 0 mid-length) against the pin's lateral
+/// surface: 0, 1 or 2 radial contacts, in the frame at P_j. `base` labels them.
+void hole_circle_against_pin(const Setup& s, int sign, ContactBase base, const DetectionOptions& options,
+                             PinInHoleContacts& out, Tally& tally) {
+  const detail::RoundedPoint centre = edge_centre_from_pin(s, sign);
+  const Circle3 circle{centre.value, s.hole_axis, s.hole_radius};
+  const Cylinder3 pin{Vector3::Zero(), s.pin_axis, s.pin_radius};
+  const CircleCylinderIntersection query = detail::intersect_circle_cylinder(circle, pin, options.intersection, &centre);
+  tally.add(query.certificate);
+  std::array<RimArc, 2> arcs;
+  const int count = inside_arcs(query, arcs);
+  if (query.topology == CircleCylinderTopology::inside || count == 2) tally.beyond = true;
+  const CircleFrame frame = frame_of(circle);
+  const double angle_error = largest_angle_error(query.crossings, query.crossing_count);
+  for (int k = 0; k < count && out.contact_count < kMaxPinInHoleContacts; ++k) {
+    Contact& contact = out.contacts[out.contact_count++];
+    contact = Contact{};
+    contact.type = ContactType::radial;
+    contact.base = base;
+    contact.certificate = query.certificate;
+    const Vector3 p_Ci = point_at(circle, frame, arcs[k].middle());
+    const double point_error =
+        arcs[k].full ? 2.0 * s.hole_radius + centre.error
+                     : centre.error + s.hole_radius * angle_error +
+                           kPointEvaluationFactor * kUnitRoundoff * (centre.value.cwiseAbs().sum() + 2.0 * s.hole_radius);
+    radial_contact(s, p_Ci, point_error, contact);
+    // The crossings bounding this arc: its two ends.
+    for (int c = 0; c < query.crossing_count && contact.crossing_count < 2; ++c) {
+      const double angle = query.crossings[c].angle;
+      if (angle == arcs[k].begin || angle == arcs[k].end) contact.crossings[contact.crossing_count++] = query.crossings[c];
+    }
+    tally.check_depth(contact, s.hole_radius - s.pin_radius);
+    ++tally.radial;
+    if (base != ContactBase::mid) ++tally.radial_at[base == ContactBase::a ? 0 : 1];
+    if (base == ContactBase::mid) tally.line = true;
+  }
+}
+
+/// The face of the link a stop looks at: the stop at a positive position is on the side the pin's
+/// axis points to, which is face A when a_i . a_j > 0.
+int face_of(const Setup& s, const AxialStop& stop) { return (stop.position > 0.0) == (s.toward_a > 0) ? 0 : 1; }
+
+/// A point contact of a stop against its face, filled from a circle-plane answer that has a
+/// penetration arc: `on_pin` when the circle is the stop's (C_j the arc middle, C_i its projection
+/// on the face), otherwise the circle is the hole's edge (C_i the arc middle, C_j its projection
+/// on the stop's plane). `normal` is the unit direction the pin penetrates. Frame at P_i.
+void stop_contact(const Circle3& circle, const detail::RoundedPoint& centre, const CirclePlaneIntersection& query,
+                  bool on_pin, const Vector3& normal, ContactBase base, Contact& contact) {
+  contact = Contact{};
+  contact.type = ContactType::axial;
+  contact.base = base;
+  contact.certificate = query.certificate;
+  contact.normal_W = normal;
+  contact.depth = std::max(0.0, query.max_signed_distance);
+  contact.depth_error = query.max_signed_distance_error;
+  const CircleFrame frame = frame_of(circle);
+  double angle = query.penetration.middle();
+  double point_error = 0.0;
+  if (query.penetration.full) {
+    // The whole circle beyond: its deepest point, along the plane normal's part in the circle's
+    // plane (beyond the model; its bound is the circle's diameter, as for any of its points).
+    const Vector3 n_hat = circle.normal.normalized();
+    const Vector3 towards = (on_pin ? normal : Vector3(-normal)) - (on_pin ? normal : Vector3(-normal)).dot(n_hat) * n_hat;
+    const double along_u = towards.dot(frame.u);
+    const double along_v = towards.dot(frame.v);
+    angle = (along_u == 0.0 && along_v == 0.0) ? 0.0 : std::atan2(along_v, along_u);
+    point_error = 2.0 * circle.radius + centre.error;
+  } else {
+    point_error = centre.error + circle.radius * largest_angle_error(query.crossings, query.crossing_count) +
+                  kPointEvaluationFactor * kUnitRoundoff * (centre.value.cwiseAbs().sum() + 2.0 * circle.radius);
+  }
+  const Vector3 point = point_at(circle, frame, angle);
+  const Vector3 other = on_pin ? Vector3(point - contact.depth * normal) : Vector3(point + contact.depth * normal);
+  const double moved = point_error + contact.depth_error +
+                       kPointEvaluationFactor * kUnitRoundoff * (point.cwiseAbs().sum() + contact.depth);
+  contact.p_WCj = on_pin ? point : other;
+  contact.p_WCi = on_pin ? other : point;
+  contact.p_WCj_error = on_pin ? point_error : moved;
+  contact.p_WCi_error = on_pin ? moved : point_error;
+  for (int c = 0; c < query.crossing_count; ++c) contact.crossings[contact.crossing_count++] = query.crossings[c];
+}
+
+/// The misaligned stop at `stop` against its face: the stop's outer circle against the face plane
+/// (normal into the link); where it penetrates and is not wholly outside the hole's bore, the
+/// hole's edge circle against the stop's plane bounds the contact instead (beyond the model).
+/// Frame at P_i.
+void stop_against_face(const Setup& s, const AxialStop& stop, double axial_limit, const DetectionOptions& options,
+                       PinInHoleContacts& out, Tally& tally) {
+  const int face = face_of(s, stop);
+  const ContactBase base = face == kFaceA ? ContactBase::a : ContactBase::b;
+  const Vector3 into_link = -face_sign(face) * s.hole_axis;      // the face plane's normal
+  const Vector3 into_link_hat = -face_sign(face) * s.hole_hat;
+  const detail::RoundedPoint centre = stop_centre_from_hole(s, stop);
+  const detail::RoundedPoint face_point = edge_centre_from_hole(s, face == kFaceA ? 1 : -1);
+  const Circle3 outer{centre.value, s.pin_axis, stop.outer_radius};
+  const CirclePlaneIntersection query =
+      detail::intersect_circle_plane(outer, Plane3{face_point.value, into_link}, options.intersection, &centre, &face_point);
+  tally.add(query.certificate);
+  if (!query.has_penetration) return;
+  const Cylinder3 bore{Vector3::Zero(), s.hole_axis, s.hole_radius};
+  const CircleCylinderIntersection over_hole = detail::intersect_circle_cylinder(outer, bore, options.intersection, &centre);
+  tally.add(over_hole.certificate);
+  if (out.contact_count >= kMaxPinInHoleContacts) return;
+  Contact& contact = out.contacts[out.contact_count++];
+  if (over_hole.topology == CircleCylinderTopology::outside) {
+    stop_contact(outer, centre, query, true, into_link_hat, base, contact);
+    if (query.penetration.full) tally.beyond = true;
+  } else {
+    // The stop's outer circle reaches over the hole: the hole's edge against the stop's plane
+    // (its normal into the stop's head), whose penetration is the link's edge inside the head.
+    tally.beyond = true;
+    const double head_side = stop.position > 0.0 ? 1.0 : -1.0;
+    const Circle3 edge{face_point.value, s.hole_axis, s.hole_radius};
+    const CirclePlaneIntersection edge_query = detail::intersect_circle_plane(
+        edge, Plane3{centre.value, head_side * s.pin_axis}, options.intersection, &face_point, &centre);
+    tally.add(edge_query.certificate);
+    if (edge_query.has_penetration) {
+      stop_contact(edge, face_point, edge_query, false, -head_side * s.pin_hat, base, contact);
+      contact.certificate = weakest(weakest(query.certificate, over_hole.certificate), edge_query.certificate);
+    } else {
+      stop_contact(outer, centre, query, true, into_link_hat, base, contact);
+      contact.certificate = weakest(query.certificate, over_hole.certificate);
+    }
+  }
+  tally.check_depth(contact, axial_limit);
+  ++tally.axial;
+}
+
+/// The aligned stop: a face contact when its outer circle has points beyond the face plane (with
+/// exactly parallel axes: the whole circle, flush beyond the face). C_j is the stop's centre
+/// (as eq. 10 takes the journal base centre), C_i its projection on the face. Frame at P_i.
+void stop_flush_on_face(const Setup& s, const AxialStop& stop, double axial_limit, const DetectionOptions& options,
+                        PinInHoleContacts& out, Tally& tally) {
+  const int face = face_of(s, stop);
+  const Vector3 into_link = -face_sign(face) * s.hole_axis;
+  const Vector3 into_link_hat = -face_sign(face) * s.hole_hat;
+  const detail::RoundedPoint centre = stop_centre_from_hole(s, stop);
+  const detail::RoundedPoint face_point = edge_centre_from_hole(s, face == kFaceA ? 1 : -1);
+  const Circle3 outer{centre.value, s.pin_axis, stop.outer_radius};
+  const CirclePlaneIntersection query =
+      detail::intersect_circle_plane(outer, Plane3{face_point.value, into_link}, options.intersection, &centre, &face_point);
+  tally.add(query.certificate);
+  if (!query.has_penetration || out.contact_count >= kMaxPinInHoleContacts) return;
+  Contact& contact = out.contacts[out.contact_count++];
+  contact = Contact{};
+  contact.type = ContactType::axial;
+  contact.base = face == kFaceA ? ContactBase::a : ContactBase::b;
+  contact.certificate = query.certificate;
+  contact.normal_W = into_link_hat;
+  contact.depth = std::max(0.0, query.max_signed_distance);
+  contact.depth_error = query.max_signed_distance_error;
+  contact.p_WCj = centre.value;
+  contact.p_WCj_error = centre.error;
+  contact.p_WCi = centre.value - contact.depth * into_link_hat;
+  contact.p_WCi_error = centre.error + contact.depth_error +
+                        kPointEvaluationFactor * kUnitRoundoff * (centre.value.cwiseAbs().sum() + contact.depth);
+  tally.check_depth(contact, axial_limit);
+  ++tally.axial;
+  ++tally.faces;
+}
+
+/// The edge prefilter: every point x of the hole's circle at `sign` is at least
+/// (Rh - rho) |cos(a_i, a_j)| from the pin's axis, rho the distance from the circle's centre at
+/// which that axis crosses the circle's plane (x - X0 lies in the plane, whose normal makes the
+/// angle with the axis). When that exceeds Rp with a margin for the evaluation, the edge is
+/// proved clear of the pin.
+bool edge_proved_clear(const Setup& s, const AxisCrossing& crossing) {
+  const double reach = (s.hole_radius - crossing.rho) * s.cosine;
+  const double error = crossing.error + kAPrioriFactor * kUnitRoundoff * (s.hole_radius + crossing.rho);
+  return reach - error > s.pin_radius;
+}
+
+/// The stop prefilter: the stop's outer circle reaches at most |s_c| + Ro sin(a_i, a_j) from
+/// its centre's signed distance s_c beyond the face plane (into the link).
+bool stop_proved_clear(const Setup& s, const Vector3& d_ji, const AxialStop& stop) {
+  const int face = face_of(s, stop);
+  const Vector3 stop_centre = d_ji + stop.position * s.pin_hat;
+  const double beyond = -face_sign(face) * s.hole_hat.dot(stop_centre) + s.half_length;
+  const double sine = s.hole_hat.cross(s.pin_hat).norm();
+  const double reach = beyond + stop.outer_radius * sine;
+  const double error = kAPrioriFactor * kUnitRoundoff *
+                       (d_ji.cwiseAbs().sum() + std::fabs(stop.position) + s.half_length + stop.outer_radius);
+  return reach + error < 0.0;
+}
+
+PinInHoleScenario classify(const PinInHoleContacts& out, const Tally& tally) {
+  if (tally.beyond) return PinInHoleScenario::beyond_model;
+  if (out.aligned) {
+    if (tally.faces > 1) return PinInHoleScenario::beyond_model;
+    if (tally.line) return tally.faces == 1 ? PinInHoleScenario::line_and_face : PinInHoleScenario::line;
+    return tally.faces == 1 ? PinInHoleScenario::face : PinInHoleScenario::none;
+  }
+  if (tally.radial > 0 && tally.axial > 0) return PinInHoleScenario::edges_and_stops;
+  if (tally.axial > 0) return tally.axial == 1 ? PinInHoleScenario::one_stop : PinInHoleScenario::both_stops;
+  if (tally.radial == 1) return PinInHoleScenario::one_edge;
+  if (tally.radial == 2) {
+    // One contact at each edge (two at one edge is beyond the model): at opposite sides of the pin
+    // when their radial normals point apart.
+    return out.contacts[0].normal_W.dot(out.contacts[1].normal_W) < 0.0 ? PinInHoleScenario::both_edges_opposite
+                                                                       : PinInHoleScenario::both_edges_same_side;
+  }
+  return PinInHoleScenario::none;
+}
+
+}  // namespace
+
+PinInHoleContacts detect_pin_in_hole_contacts(const PinInHoleDimensions& dimensions, const PartPose& hole,
+                                              const PartPose& pin, const DetectionOptions& options) {
+  validate(dimensions);
+  validate(hole, "hole");
+  validate(pin, "pin");
+  validate(options);
+
+  Setup s;
+  s.hole_radius = dimensions.hole_radius;
+  s.half_length = 0.5 * dimensions.hole_length;
+  s.pin_radius = dimensions.pin_radius;
+  s.p_WPi = hole.p_WP;
+  s.p_WPj = pin.p_WP;
+  s.hole_axis = hole.axis_W;
+  s.pin_axis = pin.axis_W;
+  s.hole_hat = unit_axis(hole);
+  s.pin_hat = unit_axis(pin);
+  const double dot = s.hole_hat.dot(s.pin_hat);
+  s.toward_a = dot >= 0.0 ? 1 : -1;
+  s.cosine = std::fabs(dot);
+  // The axial limit of the model: the axial clearance with two stops, half the hole's length
+  // (the stop's face at the link's mid-plane) with one.
+  const double axial_limit = dimensions.stop_count == 2 ? dimensions.axial_clearance() : s.half_length;
+
+  PinInHoleContacts out;
+  Tally tally;
+  const Certificate clear = proved(options);
+  tally.add(clear);
+  const bool exactly_parallel = axes_exactly_parallel(hole.axis_W, pin.axis_W);
+  bool aligned = exactly_parallel;
+  if (!aligned && options.parallel_angle_tolerance > 0.0) {
+    // |a_i_hat x a_j_hat| = sin(angle between the lines), compared in double, as detect_contacts.
+    aligned = s.hole_hat.cross(s.pin_hat).norm() <= std::sin(options.parallel_angle_tolerance);
+  }
+  out.aligned = aligned;
+
+  // Does the pin's axis pass through the hole? At the hole's mid-plane it must lie within Rh of
+  // the hole's axis; the two answers are at least Rp apart from a wrong one whenever the pin's
+  // section misses the hole's circle, and the undecided band is the evaluation's bound.
+  const Vector3 d_ji = s.p_WPj - s.p_WPi;
+  const double d_ji_error = detail::difference_rounding_bound(d_ji);
+  const AxisCrossing mid = pin_axis_crossing(s, d_ji, 0.0);
+  const double mid_error = mid.error + d_ji_error / std::max(s.cosine, 1e-300);
+  if (!(mid.rho + mid_error < s.hole_radius)) {
+    if (mid.rho - mid_error >= s.hole_radius) {
+      tally.beyond = true;
+    } else {
+      tally.beyond_undecided = true;
+    }
+  }
+
+  if (aligned) {
+    // The line contact: the hole's mid-length circle against the pin. Clear when the pin's axis
+    // lies within Rh - Rp of the hole's (at the mid-plane, with the evaluation's bound).
+    if (!(mid.rho + mid_error < s.hole_radius - s.pin_radius) || !exactly_parallel) {
+      hole_circle_against_pin(s, 0, ContactBase::mid, options, out, tally);
+    }
+    for (int k = 0; k < dimensions.stop_count; ++k) {
+      const AxialStop& stop = dimensions.stops[static_cast<std::size_t>(k)];
+      if (exactly_parallel && stop_proved_clear(s, d_ji, stop)) continue;
+      stop_flush_on_face(s, stop, axial_limit, options, out, tally);
+    }
+  } else {
+    for (const int sign : {1, -1}) {
+      const AxisCrossing at_face = pin_axis_crossing(s, d_ji, sign * s.half_length);
+      const AxisCrossing bounded{at_face.rho, at_face.error + d_ji_error / std::max(s.cosine, 1e-300)};
+      if (edge_proved_clear(s, bounded)) continue;
+      hole_circle_against_pin(s, sign, sign > 0 ? ContactBase::a : ContactBase::b, options, out, tally);
+    }
+    // Stops: face A's before face B's.
+    for (const int face : {0, 1}) {
+      for (int k = 0; k < dimensions.stop_count; ++k) {
+        const AxialStop& stop = dimensions.stops[static_cast<std::size_t>(k)];
+        if (face_of(s, stop) != face) continue;
+        if (stop_proved_clear(s, d_ji, stop)) continue;
+        stop_against_face(s, stop, axial_limit, options, out, tally);
+      }
+    }
+  }
+  if (aligned && !exactly_parallel) {
+    const Certificate relaxed{Certainty::uncertain, CertificateReason::axes_parallel_within_tolerance};
+    tally.add(relaxed);
+    for (int k = 0; k < out.contact_count; ++k) out.contacts[k].certificate = relaxed;
+  }
+  if (tally.beyond_undecided && !tally.beyond) {
+    tally.add({Certainty::uncertain, CertificateReason::beyond_model_undecided});
+  }
+  out.scenario = classify(out, tally);
+  out.certificate = tally.certificate;
+  // Back to the world frame: radial contacts were found in the frame at P_j, axial ones at P_i.
+  for (int k = 0; k < out.contact_count; ++k) {
+    Contact& contact = out.contacts[k];
+    to_world(contact.type == ContactType::radial ? s.p_WPj : s.p_WPi, contact);
+    out.certificate = weakest(out.certificate, contact.certificate);
+  }
+  return out;
+}
+
+}  // namespace clearjoint::geometry
