@@ -83,7 +83,7 @@ class CMakeBuild(build_ext):
 
 class BuildPy(build_py):
     """The Python files, and the study schema, which lives in docs/schema/, beside the study
-    runner (as bindings/python/study.cmake puts it)."""
+    runner (as apps/python/study.cmake puts it)."""
 
     def run(self) -> None:
         super().run()
@@ -92,14 +92,32 @@ class BuildPy(build_py):
         shutil.copyfile(ROOT / "docs" / "schema" / "study-v1.schema.json", study / "study-v1.schema.json")
 
 
+# The package is assembled, as bindings/python/CMakeLists.txt does, from the binding
+# (bindings/python/clearjoint) and the applications built on it, each a subpackage whose sources
+# live in the applications' wing (apps/python/<name>: clearjoint.study, .plot, .view).
+APPLICATIONS = ("study", "plot", "view")
+
+
+def package_names() -> list:
+    """Every package and subpackage, namespace ones too: the viewer's web/ folders hold data only
+    (setuptools' advice)."""
+    names = find_namespace_packages(where="bindings/python", include=["clearjoint", "clearjoint.*"],
+                                    exclude=["*.__pycache__"])
+    for application in APPLICATIONS:
+        names += ["clearjoint." + name for name in
+                  find_namespace_packages(where="apps/python", include=[application, application + ".*"],
+                                          exclude=["*.__pycache__"])]
+    return names
+
+
 # Name, description and dependencies: pyproject.toml. The packages are said here, not in its
 # [tool.setuptools] table, which Debian 12's setuptools 66 still calls a beta.
 setup(
     version=project_version(),
-    # Namespace packages too: the viewer's web/ folders hold data only (setuptools' advice).
-    packages=find_namespace_packages(where="bindings/python", include=["clearjoint", "clearjoint.*"],
-                                     exclude=["*.__pycache__"]),
-    package_dir={"": "bindings/python"},
+    packages=package_names(),
+    # A subpackage's subfolders (view.web, view.web.vendor) follow their parent's entry.
+    package_dir={"": "bindings/python",
+                 **{"clearjoint." + application: "apps/python/" + application for application in APPLICATIONS}},
     package_data={"clearjoint": ["py.typed", "__init__.pyi"],
                   "clearjoint.view.web": ["*.html", "*.js", "*.css"],
                   "clearjoint.view.web.vendor": ["*.js", "*.txt"]},

@@ -2,14 +2,14 @@
 # SPDX-License-Identifier: BSD-3-Clause
 # Rebuilds the viewer's vendored 3-D library (docs/viewing-runs.md, "Why three.js is vendored"):
 # three.js and its OrbitControls from npm, bundled and minified by esbuild into one ES module,
-# bindings/python/clearjoint/view/web/vendor/three.bundle.min.js, with three.js's MIT licence
+# apps/python/view/web/vendor/three.bundle.min.js, with three.js's MIT licence
 # beside it. Needs node and npm and the npm registry; nothing else in the build does.
 #   THREE_VERSION  the three.js release (default below); commit the two files it writes.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 version=${THREE_VERSION:-0.187.0}
 esbuild_version=0.25.12
-vendor=bindings/python/clearjoint/view/web/vendor
+vendor=apps/python/view/web/vendor
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 

@@ -3,7 +3,7 @@
 // Subcommands written in Python: the clearjoint program replaces itself with the interpreter the
 // Python package was built for, running the package's module for the command, with the package
 // found next to this program (build tree or install prefix). Configured by
-// bindings/python/plot_view.cmake.
+// apps/python/plot_view.cmake.
 
 #include "commands.hpp"
 

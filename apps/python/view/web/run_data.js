@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// The run as clearjoint view serves it (clearjoint/view/frames.py documents the layout): the
+// The run as clearjoint view serves it (apps/python/view/frames.py documents the layout): the
 // manifest, and every frame as one Float32Array indexed as data[frame * stride + offset].
 
 export async function loadRun() {

@@ -1,18 +1,19 @@
 # SPDX-License-Identifier: BSD-3-Clause
 # Figures and the browser viewer of a run (clearjoint.plot, clearjoint.view; docs/viewing-runs.md):
-# their Python files and the viewer's web page with its vendored three.js go into the package in
-# the build tree and are installed with it, so the page works offline from any install; the
-# clearjoint program gets its `plot` and `view` subcommands, which hand over to this interpreter.
-# Included from bindings/python/CMakeLists.txt after the package is set up.
+# their Python files (apps/python/plot/, apps/python/view/) and the viewer's web page with its
+# vendored three.js go into the package in the build tree and are installed with it, so the page
+# works offline from any install; the clearjoint program gets its `plot` and `view` subcommands,
+# which hand over to this interpreter. Included from bindings/python/CMakeLists.txt after the
+# package is set up.
 
 foreach(subpackage plot view)
-  file(GLOB_RECURSE clearjoint_${subpackage}_files RELATIVE ${CMAKE_CURRENT_SOURCE_DIR}/clearjoint
-       CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/clearjoint/${subpackage}/*.py
-       ${CMAKE_CURRENT_SOURCE_DIR}/clearjoint/${subpackage}/web/*)
+  file(GLOB_RECURSE clearjoint_${subpackage}_files RELATIVE ${CMAKE_CURRENT_LIST_DIR}
+       CONFIGURE_DEPENDS ${CMAKE_CURRENT_LIST_DIR}/${subpackage}/*.py
+       ${CMAKE_CURRENT_LIST_DIR}/${subpackage}/web/*)
   foreach(file ${clearjoint_${subpackage}_files})
-    configure_file(clearjoint/${file} ${clearjoint_python_package}/${file} COPYONLY)
+    configure_file(${CMAKE_CURRENT_LIST_DIR}/${file} ${clearjoint_python_package}/${file} COPYONLY)
     get_filename_component(directory ${file} DIRECTORY)
-    install(FILES clearjoint/${file} DESTINATION ${clearjoint_python_destination}/${directory})
+    install(FILES ${CMAKE_CURRENT_LIST_DIR}/${file} DESTINATION ${clearjoint_python_destination}/${directory})
   endforeach()
 endforeach()
 
