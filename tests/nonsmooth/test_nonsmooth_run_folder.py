@@ -152,3 +152,72 @@ def test_impacts_by_scenario_counts_each_slots_onsets_and_the_energy_lost(tmp_pa
     fast = subprocess.run([sys.executable, script, "--min-speed", "0.01", str(tmp_path)], check=True,
                           capture_output=True, text=True)
     assert "2 onsets; by scenario: (a) 1, (e) 1;" in fast.stdout
+
+
+def fclib_files(folder):
+    return sorted(folder.glob("step_*.hdf5"))
+
+
+@pytest.mark.parametrize("into_folder", [False, True])
+def test_python_simulate_write_fclib_writes_the_first_contact_problems_as_fclib_files(tmp_path, into_folder):
+    h5py = pytest.importorskip("h5py")
+    out = tmp_path / "run" if into_folder else None
+    result = clearjoint.simulate(str(model_file(tmp_path, "moreau_jean")), out=out,
+                                 write_fclib=tmp_path / "fclib", fclib_count=2)
+    assert "moreau_jean: 2 contact problems written as FCLIB files (--write-fclib)" in \
+        result.summary["element_statistics"]
+    files = fclib_files(tmp_path / "fclib")
+    assert len(files) == 2
+    for path in files:
+        with h5py.File(path, "r") as f:
+            assert int(f["fclib_local/spacedim"][()]) == 3
+            n = len(f["fclib_local/vectors/q"][()])
+            assert n % 3 == 0 and len(f["solution/r"][()]) == n
+
+
+@pytest.mark.skipif(not CLI, reason="needs the clearjoint program (CLEARJOINT_CLI)")
+def test_python_write_fclib_writes_the_programs_files(tmp_path):
+    h5py = pytest.importorskip("h5py")
+    numpy = pytest.importorskip("numpy")
+    model = str(model_file(tmp_path, "moreau_jean"))
+    subprocess.run([CLI, "simulate", model, "--out", str(tmp_path / "run"), "--write-fclib", str(tmp_path / "cli"),
+                    "--fclib-count", "3"], check=True, capture_output=True, text=True)
+    clearjoint.simulate(model, write_fclib=tmp_path / "python", fclib_count=3)
+    names = [p.name for p in fclib_files(tmp_path / "cli")]
+    assert names == [p.name for p in fclib_files(tmp_path / "python")] and len(names) == 3
+    for name in names:
+        with h5py.File(tmp_path / "cli" / name, "r") as a, h5py.File(tmp_path / "python" / name, "r") as b:
+            for key in ("fclib_local/vectors/q", "fclib_local/vectors/mu", "solution/r", "solution/u"):
+                assert numpy.array_equal(a[key][()], b[key][()]), (name, key)
+
+
+def test_python_simulate_refuses_a_write_fclib_path_that_is_a_file_naming_the_keyword(tmp_path):
+    (tmp_path / "file").write_text("not a folder")
+    with pytest.raises(ValueError, match=f"write_fclib = '{tmp_path / 'file'}': not a folder"):
+        clearjoint.simulate(str(model_file(tmp_path, "moreau_jean")), out=tmp_path / "run",
+                            write_fclib=tmp_path / "file")
+    assert not (tmp_path / "run").exists()
+
+
+def test_python_simulate_refuses_write_fclib_for_a_compliant_model(tmp_path):
+    with pytest.raises(ValueError, match=r"write_fclib = '.*': needs solver.method = \"moreau_jean\""):
+        clearjoint.simulate(str(model_file(tmp_path, "dormand_prince")), write_fclib=tmp_path / "fclib")
+    assert not (tmp_path / "fclib").exists()
+
+
+@pytest.mark.parametrize("count, error, message", [
+    (0, ValueError, r"fclib_count = 0: must be a whole number in \[1, 1000000\]"),
+    (10**6 + 1, ValueError, r"fclib_count = 1000001: must be"),
+    (2.5, TypeError, r"fclib_count = 2.5: must be a whole number or None"),
+    (True, TypeError, r"fclib_count = True: must be a whole number or None"),
+])
+def test_python_simulate_refuses_a_bad_fclib_count_naming_it(tmp_path, count, error, message):
+    with pytest.raises(error, match=message):
+        clearjoint.simulate(str(model_file(tmp_path, "moreau_jean")), write_fclib=tmp_path / "fclib",
+                            fclib_count=count)
+    assert not (tmp_path / "fclib").exists()
+
+
+def test_python_simulate_refuses_fclib_count_without_write_fclib(tmp_path):
+    with pytest.raises(ValueError, match="fclib_count needs write_fclib=DIR"):
+        clearjoint.simulate(str(model_file(tmp_path, "moreau_jean")), fclib_count=2)

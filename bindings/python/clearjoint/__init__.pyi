@@ -318,7 +318,9 @@ def simulate(model: Union[str, os.PathLike[str], Mapping[str, Any]], *,
              format: str = ...,
              force: bool = ...,
              engine: str = ...,
-             overrides: Optional[Mapping[str, Any]] = ...) -> SimulationResult: ...
+             overrides: Optional[Mapping[str, Any]] = ...,
+             write_fclib: Union[None, str, os.PathLike[str]] = ...,
+             fclib_count: Optional[int] = ...) -> SimulationResult: ...
 
 def read_run(folder: Union[str, os.PathLike[str]]) -> SimulationResult: ...
 

@@ -233,6 +233,25 @@ def _override_items(overrides: Any) -> List[Tuple[str, str]]:
     return items
 
 
+# --fclib-count's range, as the C++ run checks it (nonsmooth::kMaxFclibProblems): checked here so
+# that a Python integer beyond a C++ long is named, not refused by pybind11.
+_MAX_FCLIB_PROBLEMS = 10**6
+
+
+def _fclib_choices(write_fclib: Any, fclib_count: Any) -> Dict[str, Any]:
+    """simulate(write_fclib=, fclib_count=) checked as the program checks --write-fclib and
+    --fclib-count; the folder itself (created if absent, writable) is checked by the C++ run."""
+    if fclib_count is not None:
+        if isinstance(fclib_count, bool) or not isinstance(fclib_count, (int, np.integer)):
+            raise TypeError(f"fclib_count = {fclib_count!r}: must be a whole number or None")
+        if not 1 <= fclib_count <= _MAX_FCLIB_PROBLEMS:
+            raise ValueError(f"fclib_count = {fclib_count!r}: must be a whole number in [1, {_MAX_FCLIB_PROBLEMS}]")
+        if write_fclib is None:
+            raise ValueError("fclib_count needs write_fclib=DIR")
+    folder = None if write_fclib is None else _check_path_text(write_fclib, "write_fclib")
+    return dict(write_fclib=folder, fclib_count=None if fclib_count is None else int(fclib_count))
+
+
 def _check_engine(engine: Any) -> str:
     """The engine's name; the C++ layer refuses one this build cannot run, naming those it can."""
     if not isinstance(engine, str):
@@ -244,7 +263,9 @@ def simulate(model: Model, *, progress: Progress = False, allow_large: bool = Fa
              report_step: Optional[float] = None, decimation: Optional[int] = None,
              out: Union[None, str, "os.PathLike[str]"] = None, format: str = "csv",
              force: bool = False, engine: str = "clearjoint",
-             overrides: Optional[Mapping[str, Any]] = None) -> SimulationResult:
+             overrides: Optional[Mapping[str, Any]] = None,
+             write_fclib: Union[None, str, "os.PathLike[str]"] = None,
+             fclib_count: Optional[int] = None) -> SimulationResult:
     """Run a multibody model in process and return its time series as NumPy arrays.
 
     Parameters
@@ -285,6 +306,13 @@ def simulate(model: Model, *, progress: Progress = False, allow_large: bool = Fa
         with them written in, as a file holding those values; a path that does not exist, a
         value of the wrong type and one field given twice are ValueErrors naming it. The run's
         model.json holds the model as run, its summary the overrides (``summary["overrides"]``).
+    write_fclib, fclib_count:
+        With ``write_fclib`` a folder, a ``solver.method = "moreau_jean"`` run also writes the
+        frictional contact problems of its first ``fclib_count`` steps with a contact (default
+        100, at most 1e6) as FCLIB files ``step_<k>.hdf5`` there, as ``clearjoint simulate
+        --write-fclib DIR --fclib-count N`` does (docs/nonsmooth.md, "FCLIB problems"). The
+        folder is created if absent; one that cannot be written, a compliant model and
+        ``fclib_count`` without ``write_fclib`` are ValueErrors naming the keyword.
 
     Returns
     -------
@@ -309,7 +337,8 @@ def simulate(model: Model, *, progress: Progress = False, allow_large: bool = Fa
     The integration runs without the GIL; other Python threads keep running.
     """
     _check_options(allow_large, report_step, decimation, out, format, force)
-    run_choices = dict(overrides=_override_items(overrides), engine=_check_engine(engine))
+    run_choices = dict(overrides=_override_items(overrides), engine=_check_engine(engine),
+                       **_fclib_choices(write_fclib, fclib_count))
     bar = _progress_bar(progress)
     try:
         options = dict(allow_large=allow_large,

@@ -22,6 +22,7 @@
 
 #include "bindings.hpp"
 #include "clearjoint/dynamics/clearance_revolute_joint.hpp"
+#include "clearjoint/dynamics/errors.hpp"
 #include "clearjoint/dynamics/model_file.hpp"
 #include "clearjoint/dynamics/model_overrides.hpp"
 #include "clearjoint/dynamics/run_size.hpp"
@@ -76,6 +77,10 @@ struct RunRequest {
   /// simulate(overrides=...): written into the model's JSON text before it is read.
   dynamics::ModelOverrides overrides;
   std::string engine = "clearjoint";
+  /// simulate(write_fclib=..., fclib_count=...): the program's --write-fclib and --fclib-count
+  /// (docs/nonsmooth.md, "FCLIB problems").
+  std::optional<std::string> fclib_folder;
+  std::optional<long> fclib_count;
 };
 
 /// The engines this module can run: clearjoint's own, and Simbody's when the module was built
@@ -145,6 +150,11 @@ using PlannedRun =
 PlannedRun plan_run(const dynamics::ModelDescription& model, const RunRequest& request) {
   const dynamics::ModelDescription m = with_overrides(model, request);
   const dynamics::RunOptions options{.allow_large = request.allow_large};
+  if (request.fclib_folder && m.solver_method != dynamics::SolverMethod::moreau_jean) {
+    throw dynamics::ModelError("write_fclib = '" + *request.fclib_folder +
+                               "': needs solver.method = \"moreau_jean\" (a compliant run has no contact "
+                               "problems; docs/nonsmooth.md)");
+  }
   if (m.solver_method == dynamics::SolverMethod::moreau_jean) {
     if (request.engine != "clearjoint") {
       throw py::value_error("engine = '" + request.engine + "': solver.method = \"moreau_jean\" runs in "
@@ -152,6 +162,14 @@ PlannedRun plan_run(const dynamics::ModelDescription& model, const RunRequest& r
     }
 #ifdef CLEARJOINT_WITH_NONSMOOTH
     auto run = std::make_shared<nonsmooth::MoreauJeanRun>(m, options);
+    if (request.fclib_folder) {
+      const nonsmooth::FclibExport fclib{*request.fclib_folder,
+                                         request.fclib_count.value_or(nonsmooth::kDefaultFclibProblems)};
+      // Checked under the keyword's name first (errors name write_fclib, not the program's
+      // --write-fclib); the run's own check of the same folder then passes.
+      nonsmooth::prepare_fclib_folder(fclib, "write_fclib");
+      run->write_fclib(fclib);
+    }
     return [run](dynamics::SimulationOutput& output, const dynamics::ProgressCallback& progress) {
       return run->run(output, progress);
     };
@@ -213,9 +231,10 @@ py::object run_into_folder(const dynamics::ModelDescription& model, const std::s
 using OverrideItems = std::vector<std::pair<std::string, std::string>>;
 
 RunRequest request_of(bool allow_large, std::optional<double> report_step, std::optional<long> decimation,
-                      const OverrideItems& overrides, const std::string& engine) {
+                      const OverrideItems& overrides, const std::string& engine,
+                      const std::optional<std::string>& fclib_folder, std::optional<long> fclib_count) {
   check_engine(engine);
-  return {allow_large, report_step, decimation, overrides_of(overrides), engine};
+  return {allow_large, report_step, decimation, overrides_of(overrides), engine, fclib_folder, fclib_count};
 }
 
 /// The state as a NumPy copy (the simulator's buffer changes at every step).
@@ -302,41 +321,49 @@ void bind_simulation(py::module_& module) {
       "simulate_text",
       [](const std::string& json_text, const std::string& source, const py::object& progress, bool allow_large,
          std::optional<double> report_step, std::optional<long> decimation, const OverrideItems& overrides,
-         const std::string& engine) {
-        const RunRequest request = request_of(allow_large, report_step, decimation, overrides, engine);
+         const std::string& engine, const std::optional<std::string>& write_fclib, std::optional<long> fclib_count) {
+        const RunRequest request =
+            request_of(allow_large, report_step, decimation, overrides, engine, write_fclib, fclib_count);
         return run_in_memory(dynamics::parse_model(text_with_overrides(json_text, source, request), source), progress,
                              request);
       },
       py::arg("json_text"), py::arg("source"), py::arg("progress") = py::none(), py::arg("allow_large") = false,
       py::arg("report_step") = py::none(), py::arg("decimation") = py::none(),
       py::arg("overrides") = OverrideItems{}, py::arg("engine") = "clearjoint",
+      py::arg("write_fclib") = py::none(), py::arg("fclib_count") = py::none(),
       "Parse a model from JSON text (`source` names it in messages), with `overrides` [(path, JSON "
       "value)] written in (model_overrides.hpp), and run it with `engine`: (tables, summary), "
       "tables = {name: (header, values[columns, rows])}.");
   module.def(
       "simulate_file",
       [](const std::string& path, const py::object& progress, bool allow_large, std::optional<double> report_step,
-         std::optional<long> decimation, const OverrideItems& overrides, const std::string& engine) {
-        const RunRequest request = request_of(allow_large, report_step, decimation, overrides, engine);
+         std::optional<long> decimation, const OverrideItems& overrides, const std::string& engine,
+         const std::optional<std::string>& write_fclib, std::optional<long> fclib_count) {
+        const RunRequest request =
+            request_of(allow_large, report_step, decimation, overrides, engine, write_fclib, fclib_count);
         const std::string text = text_with_overrides(dynamics::read_model_text(path), path, request);
         return run_in_memory(dynamics::parse_model(text, path), progress, request);
       },
       py::arg("path"), py::arg("progress") = py::none(), py::arg("allow_large") = false,
       py::arg("report_step") = py::none(), py::arg("decimation") = py::none(),
       py::arg("overrides") = OverrideItems{}, py::arg("engine") = "clearjoint",
+      py::arg("write_fclib") = py::none(), py::arg("fclib_count") = py::none(),
       "Read a model file and run it: (tables, summary) as simulate_text.");
   module.def(
       "simulate_into_folder",
       [](const std::string& json_text, const std::string& source, const std::string& out, const std::string& format,
          bool force, const py::object& progress, bool allow_large, std::optional<double> report_step,
-         std::optional<long> decimation, const OverrideItems& overrides, const std::string& engine) {
-        const RunRequest request = request_of(allow_large, report_step, decimation, overrides, engine);
+         std::optional<long> decimation, const OverrideItems& overrides, const std::string& engine,
+         const std::optional<std::string>& write_fclib, std::optional<long> fclib_count) {
+        const RunRequest request =
+            request_of(allow_large, report_step, decimation, overrides, engine, write_fclib, fclib_count);
         const std::string text = text_with_overrides(json_text, source, request);
         return run_into_folder(dynamics::parse_model(text, source), text, progress, request, out, format, force);
       },
       py::arg("json_text"), py::arg("source"), py::arg("out"), py::arg("format"), py::arg("force"),
       py::arg("progress") = py::none(), py::arg("allow_large") = false, py::arg("report_step") = py::none(),
       py::arg("decimation") = py::none(), py::arg("overrides") = OverrideItems{}, py::arg("engine") = "clearjoint",
+      py::arg("write_fclib") = py::none(), py::arg("fclib_count") = py::none(),
       "Run a model (JSON text) into the output folder `out` as `clearjoint simulate --out` does "
       "(model.json: the model as run, overrides written in); the summary.");
   module.def("engines", &available_engines, "The engines simulate() can run in this build.");
