@@ -52,7 +52,7 @@ MODULES = {
     "examples": 9,
     "tests": 10,
     "scripts": 10,
-    "studies": 10,
+    "reproduction": 10,
     "models": 10,
 }
 SUBMODULE_PARENTS = ("engines", "bindings")

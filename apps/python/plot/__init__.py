@@ -13,7 +13,7 @@
   ``plot_slider_acceleration``: the panels, on an Axes of your own, from ``joint_series``;
   ``plot_orbit_3d``, both base centres on a 3-D Axes; ``plot_compared``, any quantity of the run
   (or a phase portrait) beside an ideal run's, optionally coloured by scenario (the paper's
-  Figs. 7-18 in scripts/section6_figures.py);
+  Figs. 7-18 in reproduction/section6_figures.py);
 - ``SCENARIO_COLOURS``, ``scenario_colour``: the one table of scenario colours.
 
 ``run`` is a run folder of ``clearjoint simulate --out`` (CSV or HDF5, either engine) or of

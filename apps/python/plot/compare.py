@@ -34,7 +34,7 @@ Window = Optional[Tuple[Optional[float], Optional[float]]]
 #: the largest force of the run by an order of magnitude (the planar slider-crank of Sec. 6.1:
 #: 9.7 kN in the first 10 ms, at most 0.8 kN after): drawn with the rest, it flattens every other
 #: curve. For the shipped 1 s models the share is 0.1 s, where the Sec. 6 figures'
-#: windows begin (scripts/section6_figures.py, scripts/lubricated_section6.py).
+#: windows begin (reproduction/section6_figures.py, reproduction/lubricated_section6.py).
 TRANSIENT_SHARE = 0.1
 #: Pressures are drawn in MPa (a film's peak pressure is 1e5 to 1e8 Pa).
 PASCALS_PER_MEGAPASCAL = 1e6

@@ -24,7 +24,7 @@ MICROMETRES_PER_METRE = 1e6
 IMPACT_TICK = dict(marker="|", color="black", markersize=5, markeredgewidth=0.6, linestyle="none",
                    alpha=0.7)
 # The ideal joint's curve is drawn over the clearance joint's, which oscillates about it; the
-# styles are scripts/section6_figures.py's.
+# styles are reproduction/section6_figures.py's.
 IDEAL_CURVE = dict(color="0.3", linestyle="--", linewidth=1.0, zorder=3)
 CLEARANCE_CURVE = dict(color="tab:blue", linewidth=0.8)
 # A lubricated joint's whole force, drawn under the scenario-coloured contact force.

@@ -2,7 +2,7 @@
 """The standard figure of a study: each statistic against the design's x parameter, one line per
 design, the median of the members with bars from their minimum to their maximum and every member
 as a dot (docs/figures/section6/ensemble_vs_clearance.png is one, drawn there by
-scripts/reproduce_section6.py; `study plot` draws into STORE/figures).
+reproduction/reproduce_section6.py; `study plot` draws into STORE/figures).
 
 Titles and labels come from the study: a plot's title, x_label and the reductions' labels may name
 {study}, {points}, {members} and {end_time}, filled in from the study's expansion, so that a title

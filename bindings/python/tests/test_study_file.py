@@ -200,7 +200,9 @@ def test_the_documented_schema_validation_accepts_the_shipped_studies_and_names_
     namespace = {}
     exec(block, namespace)
     assert capsys.readouterr().out == ""
-    for study in sorted((root / "studies").glob("*.json")):
+    shipped = sorted((root / "reproduction" / "studies").glob("*.json"))
+    assert shipped, "no study files in reproduction/studies"
+    for study in shipped:
         assert list(namespace["study"].iter_errors(json.loads(study.read_text()))) == [], study
     answer = namespace["validator"]("urn:clearjoint:schema:v1:detect-answer")  # refers to error-line by urn
     assert list(answer.iter_errors({"v": 1, "id": None, "error": "line 1: not JSON"})) == []

@@ -154,7 +154,9 @@ def test_plot_titles_and_labels_come_from_the_study(tmp_path, models_dir):
 def test_the_shipped_studies_draw_their_figures_beside_their_store_not_into_the_repository(models_dir):
     from clearjoint.study.plot import figure_directory, plots_of
     root = models_dir.parent
-    for path in sorted((root / "studies").glob("*.json")):
+    shipped = sorted((root / "reproduction" / "studies").glob("*.json"))
+    assert shipped, "no study files in reproduction/studies"
+    for path in shipped:
         study = load_study(str(path))
         for plot in plots_of(study):
             directory = figure_directory(study, plot)

@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """The numbers behind the explanations of docs/reports/reproduction.md, from the store of
-studies/section6_settling.json: why the planar journal settles on the bearing wall, where the
+reproduction/studies/section6_settling.json: why the planar journal settles on the bearing wall, where the
 spatial mechanism's energy goes, and what the impact-speed floor of eq. (28) changes.
 
 Contact is read from the joint's `scenario` column (0: no contact) at the report times, so a
@@ -88,7 +88,7 @@ def _run(settling, **values):
 
 
 def summarise(settling):
-    """settling: a StoreRuns of studies/section6_settling.json."""
+    """settling: a StoreRuns of reproduction/studies/section6_settling.json."""
     store = settling.store
     out = {"planar_contact_force_N": contact_force(store, _run(settling, minimum_impact_speed=0.001)),
            "spatial_ideal": crank_motion(store, settling.run_id(design="spatial_ideal")),

@@ -18,7 +18,7 @@ into --out (default: a folder "figures" beside the runs, in a new temporary fold
 figures are regenerated with --out docs/figures/lubrication), and prints the numbers the page
 quotes.
 
-    PYTHONPATH=build/bindings/python /usr/bin/python3 scripts/lubricated_section6.py --engine simbody
+    PYTHONPATH=build/bindings/python /usr/bin/python3 reproduction/lubricated_section6.py --engine simbody
 """
 import argparse
 import json
@@ -40,7 +40,7 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 MODELS = {"dry": "slider_crank_planar_clearance_aligned.json",
           "lubricated": "slider_crank_planar_clearance_lubricated.json",
           "ideal": "slider_crank_planar_ideal.json"}
-# The window of the paper's Sec. 6.1 figures as scripts/section6_figures.py draws them: past the
+# The window of the paper's Sec. 6.1 figures as reproduction/section6_figures.py draws them: past the
 # first impacts, a steady portion.
 WINDOW = (0.1, 0.2)
 CURVES = {"dry": dict(color="tab:red", linewidth=0.7), "lubricated": dict(color="tab:blue", linewidth=0.9)}
