@@ -17,6 +17,7 @@
 #include <system_error>
 #include <utility>
 
+#include "clearjoint/geometry/model/enum_table.hpp"
 #include "clearjoint/geometry/model/primitives.hpp"
 #include "clearjoint/lubrication/bearing_characteristics.hpp"
 #include "clearjoint/lubrication/result_fields.hpp"
@@ -27,22 +28,36 @@ namespace clearjoint::app {
 
 namespace {
 
-constexpr const char* kUsage =
-    "usage: clearjoint bearing --eccentricity-ratio EPS --width-ratio B/D [--motion rotation|squeeze]\n"
-    "                          [--method grid|short|long] [--cavitation half_sommerfeld|mass_conserving]\n"
-    "                          [--grid NTHETAxNZ [--allow-large-grid]]\n"
-    "  Prints one JSON object: the Sommerfeld number So = F psi^2 / (B D eta omega) (psi = c / R;\n"
-    "  for squeeze, d eps / dt in place of omega), the attitude angle [rad] from the load to the\n"
-    "  line of centres, the side-flow variable 2 pi Q_s / (R c omega B), p_max / (F / (B D)), and\n"
-    "  what was solved. Defaults: rotation, grid 96x24; cavitation mass_conserving for the grid\n"
-    "  (fed along the thickest film, as Raimondi & Boyd's tables), half_sommerfeld for short and\n"
-    "  long. A grid whose estimated cost is above the solver's limits (about half a second a solve)\n"
-    "  is refused with the estimate unless --allow-large-grid is given. Each option once.\n"
-    "  Exit status 2 for a usage error, 1 for a value out of range (the message names it).\n"
-    "  docs/lubrication.md describes the models and their accuracy.\n";
+/// "a|b|c": E's keys, from its table, as the usage line lists choices.
+template <geometry::TabledEnum E>
+std::string choices() {
+  std::string text;
+  for (const geometry::EnumEntry<E>& entry : geometry::EnumTable<E>::entries) {
+    if (!text.empty()) text += '|';
+    text += entry.key;
+  }
+  return text;
+}
+
+std::string usage() {
+  return "usage: clearjoint bearing --eccentricity-ratio EPS --width-ratio B/D [--motion " +
+         choices<lubrication::BearingMotion>() + "]\n"
+         "                          [--method " + choices<lubrication::BearingMethod>() + "] [--cavitation " +
+         choices<lubrication::CavitationModel>() + "]\n"
+         "                          [--grid NTHETAxNZ [--allow-large-grid]]\n"
+         "  Prints one JSON object: the Sommerfeld number So = F psi^2 / (B D eta omega) (psi = c / R;\n"
+         "  for squeeze, d eps / dt in place of omega), the attitude angle [rad] from the load to the\n"
+         "  line of centres, the side-flow variable 2 pi Q_s / (R c omega B), p_max / (F / (B D)), and\n"
+         "  what was solved. Defaults: rotation, grid 96x24; cavitation mass_conserving for the grid\n"
+         "  (fed along the thickest film, as Raimondi & Boyd's tables), half_sommerfeld for short and\n"
+         "  long. A grid whose estimated cost is above the solver's limits (about half a second a solve)\n"
+         "  is refused with the estimate unless --allow-large-grid is given. Each option once.\n"
+         "  Exit status 2 for a usage error, 1 for a value out of range (the message names it).\n"
+         "  docs/lubrication.md describes the models and their accuracy.\n";
+}
 
 int usage_error(const std::string& message) {
-  std::fprintf(stderr, "clearjoint bearing: %s\n%s", message.c_str(), kUsage);
+  std::fprintf(stderr, "clearjoint bearing: %s\n%s", message.c_str(), usage().c_str());
   return 2;
 }
 
@@ -121,7 +136,7 @@ int run_bearing(Arguments args) {
   for (size_t k = 0; k < args.size(); ++k) {
     const std::string arg = args[k];
     if (arg == "--help" || arg == "-h") {
-      std::fputs(kUsage, stdout);
+      std::fputs(usage().c_str(), stdout);
       return 0;
     }
     const bool is_switch = arg == "--allow-large-grid";

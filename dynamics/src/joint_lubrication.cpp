@@ -6,23 +6,23 @@
 
 #include "clearjoint/dynamics/errors.hpp"
 #include "clearjoint/geometry/model/primitives.hpp"
-#include "clearjoint/lubrication/names.hpp"
+#include "clearjoint/geometry/model/enum_table.hpp"
 
 namespace clearjoint::dynamics {
 
 FilmMethod film_method_from_string(std::string_view name, std::string_view field) {
-  if (const auto method = lubrication::bearing_method_from_string(name)) return *method;
+  if (const auto method = geometry::from_string<FilmMethod>(name)) return *method;
   throw ModelError(std::string(field) + " = \"" + std::string(name) +
                    "\": unknown film method (known: " +
-                   lubrication::known_names(lubrication::kBearingMethods) + ")");
+                   geometry::known_keys<FilmMethod>() + ")");
 }
 
 lubrication::CavitationModel cavitation_model_from_string(std::string_view name,
                                                           std::string_view field) {
-  if (const auto model = lubrication::cavitation_model_from_string(name)) return *model;
+  if (const auto model = geometry::from_string<lubrication::CavitationModel>(name)) return *model;
   throw ModelError(std::string(field) + " = \"" + std::string(name) +
                    "\": unknown cavitation model (known: " +
-                   lubrication::known_names(lubrication::kCavitationModels) + ")");
+                   geometry::known_keys<lubrication::CavitationModel>() + ")");
 }
 
 namespace {

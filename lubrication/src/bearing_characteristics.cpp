@@ -8,7 +8,6 @@
 
 #include "clearjoint/geometry/model/primitives.hpp"
 #include "clearjoint/lubrication/long_bearing.hpp"
-#include "clearjoint/lubrication/names.hpp"
 #include "clearjoint/lubrication/short_bearing.hpp"
 
 namespace clearjoint::lubrication {
@@ -19,12 +18,12 @@ namespace {
 /// works, the film is the journal's length (film_thickness.hpp); JointDimensions needs Li > Lj.
 constexpr double kBearingLengthMargin = 1e-3;
 
-/// The value named `name`, or InvalidInput "<field> = '<name>': unknown (known: ...)".
-template <typename Value, std::size_t N>
-Value named(std::string_view name, const char* field, const std::array<Value, N>& values) {
-  if (const std::optional<Value> value = value_named(name, values)) return *value;
+/// The value whose key is `name`, or InvalidInput "<field> = '<name>': unknown (known: ...)".
+template <geometry::TabledEnum E>
+E named(std::string_view name, const char* field) {
+  if (const std::optional<E> value = geometry::from_string<E>(name)) return *value;
   throw geometry::InvalidInput(std::string(field) + " = '" + std::string(name) +
-                               "': unknown (known: " + known_names(values) + ")");
+                               "': unknown (known: " + geometry::known_keys<E>() + ")");
 }
 
 void require(bool holds, const char* field, double value, const char* rule) {
@@ -37,30 +36,9 @@ void require(bool holds, const char* field, double value, const char* rule) {
 
 }  // namespace
 
-std::string_view to_string(BearingMotion motion) noexcept {
-  switch (motion) {
-    case BearingMotion::rotation: return "rotation";
-    case BearingMotion::squeeze: return "squeeze";
-  }
-  return "unknown";
-}
+std::string_view to_string(BearingMotion motion) noexcept { return geometry::key_of(motion); }
 
-std::string_view to_string(BearingMethod method) noexcept {
-  switch (method) {
-    case BearingMethod::grid: return "grid";
-    case BearingMethod::short_bearing: return "short";
-    case BearingMethod::long_bearing: return "long";
-  }
-  return "unknown";
-}
-
-std::optional<BearingMotion> bearing_motion_from_string(std::string_view name) noexcept {
-  return value_named(name, kBearingMotions);
-}
-
-std::optional<BearingMethod> bearing_method_from_string(std::string_view name) noexcept {
-  return value_named(name, kBearingMethods);
-}
+std::string_view to_string(BearingMethod method) noexcept { return geometry::key_of(method); }
 
 CavitationModel default_cavitation(BearingMethod method) noexcept {
   return method == BearingMethod::grid ? CavitationModel::mass_conserving
@@ -72,9 +50,9 @@ BearingCharacteristicsQuery query_from_names(double eccentricity_ratio, double w
   BearingCharacteristicsQuery query;
   query.eccentricity_ratio = eccentricity_ratio;
   query.width_ratio = width_ratio;
-  query.motion = named(names.motion, "motion", kBearingMotions);
-  query.method = named(names.method, "method", kBearingMethods);
-  query.cavitation = names.cavitation ? named(*names.cavitation, "cavitation", kCavitationModels)
+  query.motion = named<BearingMotion>(names.motion, "motion");
+  query.method = named<BearingMethod>(names.method, "method");
+  query.cavitation = names.cavitation ? named<CavitationModel>(*names.cavitation, "cavitation")
                                       : default_cavitation(query.method);
   query.grid.allow_large_grid = names.allow_large_grid;
   if (names.grid) {

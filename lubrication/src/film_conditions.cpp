@@ -6,7 +6,6 @@
 #include <string>
 
 #include "clearjoint/geometry/model/primitives.hpp"
-#include "clearjoint/lubrication/names.hpp"
 
 namespace clearjoint::lubrication {
 
@@ -40,16 +39,6 @@ void validate(const OilSupply& supply, const char* name) {
   }
 }
 
-std::string_view to_string(CavitationModel model) noexcept {
-  switch (model) {
-    case CavitationModel::half_sommerfeld: return "half_sommerfeld";
-    case CavitationModel::mass_conserving: return "mass_conserving";
-  }
-  return "unknown";
-}
-
-std::optional<CavitationModel> cavitation_model_from_string(std::string_view name) noexcept {
-  return value_named(name, kCavitationModels);
-}
+std::string_view to_string(CavitationModel model) noexcept { return geometry::key_of(model); }
 
 }  // namespace clearjoint::lubrication

@@ -76,13 +76,7 @@ ReynoldsGridCost estimate_cost(const ReynoldsGridOptions& options) noexcept {
   return cost;
 }
 
-std::string_view to_string(ReynoldsLinearSolver solver) noexcept {
-  switch (solver) {
-    case ReynoldsLinearSolver::band_lu: return "band_lu";
-    case ReynoldsLinearSolver::sparse_lu: return "sparse_lu";
-  }
-  return "unknown";
-}
+std::string_view to_string(ReynoldsLinearSolver solver) noexcept { return geometry::key_of(solver); }
 
 struct ReynoldsGridSolver::State {
   ReynoldsGridOptions options;

@@ -23,6 +23,9 @@
 #include "clearjoint/dynamics/clearance_revolute_joint.hpp"
 #include "clearjoint/dynamics/joint_description.hpp"
 #include "clearjoint/dynamics/normal_contact_force.hpp"
+#include "clearjoint/lubrication/bearing_characteristics.hpp"
+#include "clearjoint/lubrication/film_conditions.hpp"
+#include "clearjoint/lubrication/reynolds_grid.hpp"
 #endif
 
 namespace {
@@ -114,6 +117,12 @@ int main() {
   enums.push_back(describe_enum<dyn::NormalForceModel>("dynamics"));
   enums.push_back(describe_enum<dyn::JointType>("dynamics"));
   enums.push_back(describe_enum<dyn::ContactSlot>("dynamics"));
+  namespace lub = clearjoint::lubrication;  // linked through dynamics
+  enums.push_back(describe_enum<lub::CavitationModel>("lubrication"));
+  enums.push_back(describe_enum<lub::OilSupply::Kind>("lubrication"));
+  enums.push_back(describe_enum<lub::ReynoldsLinearSolver>("lubrication"));
+  enums.push_back(describe_enum<lub::BearingMotion>("lubrication"));
+  enums.push_back(describe_enum<lub::BearingMethod>("lubrication"));
 #endif
   const json results = json::array({
       describe_result<geo::Certificate>(),

@@ -58,6 +58,10 @@ SCHEMA_ENUMS = [
     ("docs/schema/model.schema.json", ["$defs", "joint", "properties", "type"], "JointType"),
     ("docs/schema/model.schema.json",
      ["$defs", "force", "oneOf", 2, "properties", "normal_force", "properties", "model"], "NormalForceModel"),
+    ("docs/schema/model.schema.json",
+     ["$defs", "force", "oneOf", 2, "properties", "lubrication", "properties", "cavitation"], "CavitationModel"),
+    ("docs/schema/model.schema.json",
+     ["$defs", "force", "oneOf", 2, "properties", "lubrication", "properties", "method"], "BearingMethod"),
 ]
 
 # Attributes of Python's result classes that are not fields of the C++ result (bound by hand in

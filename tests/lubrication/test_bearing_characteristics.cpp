@@ -97,7 +97,7 @@ constexpr double kShortBearingAttitudeGap = 0.02;
 constexpr double kSqueezeAttitude = 1e-6;  // rad: zero but for rounding in the force's sum
 
 TEST(BearingCharacteristics, TendToTheShortBearingAtOneEighthWidthForRotationAndSqueeze) {
-  for (const BearingMotion motion : kBearingMotions) {
+  for (const BearingMotion motion : {BearingMotion::rotation, BearingMotion::squeeze}) {
     for (const double eps : {0.1, 0.2, 0.4, 0.6, 0.8, 0.9}) {
       double gap[2] = {0.0, 0.0};
       for (int k = 0; k < 2; ++k) {

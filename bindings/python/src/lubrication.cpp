@@ -14,7 +14,6 @@
 #include "bindings.hpp"
 #include "clearjoint/geometry/model/primitives.hpp"
 #include "clearjoint/lubrication/bearing_characteristics.hpp"
-#include "clearjoint/lubrication/names.hpp"
 #include "numpy_views.hpp"
 #include "result_dicts.hpp"
 
@@ -28,11 +27,11 @@ std::string quoted(const py::handle& value) { return std::string(py::repr(value)
 
 /// A choice's name: a str (checked against the library's table by query_from_names); TypeError
 /// naming the argument and the names for anything else.
-template <typename Value, std::size_t N>
-std::string name_argument(const py::handle& value, const char* name, const std::array<Value, N>& values) {
+template <geometry::TabledEnum E>
+std::string name_argument(const py::handle& value, const char* name) {
   if (!py::isinstance<py::str>(value)) {
     throw py::type_error(std::string(name) + " = " + quoted(value) + ": must be one of " +
-                         lubrication::known_names(values) + " (a str)");
+                         geometry::known_keys<E>() + " (a str)");
   }
   return value.cast<std::string>();
 }
@@ -88,10 +87,10 @@ py::dict characteristics(const py::handle& eccentricity_ratio, const py::handle&
   lubrication::BearingCharacteristicsNames names;
   const double eps = number_argument(eccentricity_ratio, "eccentricity_ratio");
   const double ratio = number_argument(width_ratio, "width_ratio");
-  names.motion = name_argument(motion, "motion", lubrication::kBearingMotions);
-  names.method = name_argument(method, "method", lubrication::kBearingMethods);
+  names.motion = name_argument<lubrication::BearingMotion>(motion, "motion");
+  names.method = name_argument<lubrication::BearingMethod>(method, "method");
   if (!cavitation.is_none()) {
-    names.cavitation = name_argument(cavitation, "cavitation", lubrication::kCavitationModels);
+    names.cavitation = name_argument<lubrication::CavitationModel>(cavitation, "cavitation");
   }
   names.grid = grid_argument(grid);
   names.allow_large_grid = flag_argument(allow_large_grid, "allow_large_grid");

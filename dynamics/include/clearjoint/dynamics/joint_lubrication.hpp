@@ -35,14 +35,14 @@
 namespace clearjoint::dynamics {
 
 /// How the film's pressure is solved: lubrication::BearingMethod, named "short", "long", "grid"
-/// (lubrication::to_string). short and long are the Ocvirk and Sommerfeld closed forms at the
+/// (its EnumTable's keys). short and long are the Ocvirk and Sommerfeld closed forms at the
 /// film's mid-plane (an aligned journal, half-Sommerfeld); grid is the ReynoldsGridSolver (any
 /// pose, tilt included, either cavitation model).
 using FilmMethod = lubrication::BearingMethod;
-/// lubrication::bearing_method_from_string; throws ModelError `<field> = "<name>": unknown ...`
+/// The method whose key is `name`; throws ModelError `<field> = "<name>": unknown ...`
 /// listing the names.
 FilmMethod film_method_from_string(std::string_view name, std::string_view field);
-/// lubrication::cavitation_model_from_string, throwing ModelError like the above.
+/// The cavitation model whose key is `name`, throwing ModelError like the above.
 lubrication::CavitationModel cavitation_model_from_string(std::string_view name,
                                                           std::string_view field);
 

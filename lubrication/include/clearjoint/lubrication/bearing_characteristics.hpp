@@ -24,17 +24,38 @@ enum class BearingMethod {
   long_bearing,   ///< Sommerfeld closed form (half-Sommerfeld only)
 };
 
-/// "rotation", "squeeze"; "grid", "short", "long": the names every front end uses (model files,
-/// Python, the command line).
+}  // namespace clearjoint::lubrication
+
+/// Keys "rotation", "squeeze": what every front end reads and writes.
+template <>
+struct clearjoint::geometry::EnumTable<clearjoint::lubrication::BearingMotion> {
+  using M = clearjoint::lubrication::BearingMotion;
+  static constexpr std::string_view type_name = "BearingMotion";
+  static constexpr auto entries = std::to_array({
+      named_entry(M::rotation, "rotation", "steady spin, no squeeze"),
+      named_entry(M::squeeze, "squeeze", "pure approach along the line of centres, no spin"),
+  });
+};
+static_assert(clearjoint::geometry::entries_in_code_order<clearjoint::lubrication::BearingMotion>());
+
+/// Keys "grid", "short", "long": the model files' and the command line's established spellings.
+template <>
+struct clearjoint::geometry::EnumTable<clearjoint::lubrication::BearingMethod> {
+  using M = clearjoint::lubrication::BearingMethod;
+  static constexpr std::string_view type_name = "BearingMethod";
+  static constexpr auto entries = std::to_array<EnumEntry<M>>({
+      {M::grid, "grid", "grid", "finite width, Reynolds equation on a grid"},
+      {M::short_bearing, "short_bearing", "short", "short bearing (Ocvirk)"},
+      {M::long_bearing, "long_bearing", "long", "long bearing (Sommerfeld)"},
+  });
+};
+static_assert(clearjoint::geometry::entries_in_code_order<clearjoint::lubrication::BearingMethod>());
+
+namespace clearjoint::lubrication {
+
+/// The key of the value's entry in its table.
 std::string_view to_string(BearingMotion motion) noexcept;
 std::string_view to_string(BearingMethod method) noexcept;
-/// The inverses of to_string; nullopt for any other name.
-std::optional<BearingMotion> bearing_motion_from_string(std::string_view name) noexcept;
-std::optional<BearingMethod> bearing_method_from_string(std::string_view name) noexcept;
-inline constexpr std::array<BearingMotion, 2> kBearingMotions{BearingMotion::rotation,
-                                                             BearingMotion::squeeze};
-inline constexpr std::array<BearingMethod, 3> kBearingMethods{
-    BearingMethod::grid, BearingMethod::short_bearing, BearingMethod::long_bearing};
 
 /// The cavitation model a front end takes when none is named: mass-conserving for the grid (the
 /// handbook's set-up, Raimondi & Boyd, below), half-Sommerfeld, the only one they have, for the
@@ -73,7 +94,7 @@ struct BearingCharacteristics {
 /// The closed forms' outputs are exact to kClosedFormRelativeError for every accepted input.
 BearingCharacteristics bearing_characteristics(const BearingCharacteristicsQuery& query);
 
-/// A query's choices as a front end receives them: names (to_string's), and the grid's size.
+/// A query's choices as a front end receives them: names (the tables' keys), and the grid's size.
 struct BearingCharacteristicsNames {
   std::string motion = "rotation";
   std::string method = "grid";

@@ -5,10 +5,10 @@
 /// supply. Pressures are gauge pressures (relative to the ambient pressure at the film's ends).
 
 #include <array>
-#include <optional>
 #include <string_view>
 
 #include "clearjoint/geometry/arithmetic/vector3.hpp"
+#include "clearjoint/geometry/model/enum_table.hpp"
 
 namespace clearjoint::lubrication {
 
@@ -30,13 +30,25 @@ enum class CavitationModel {
   mass_conserving,
 };
 
-/// "half_sommerfeld", "mass_conserving": the names every front end uses (model files, Python,
-/// the command line).
+}  // namespace clearjoint::lubrication
+
+/// Keys "half_sommerfeld", "mass_conserving": what every front end reads and writes (model files,
+/// Python, the command line).
+template <>
+struct clearjoint::geometry::EnumTable<clearjoint::lubrication::CavitationModel> {
+  using M = clearjoint::lubrication::CavitationModel;
+  static constexpr std::string_view type_name = "CavitationModel";
+  static constexpr auto entries = std::to_array({
+      named_entry(M::half_sommerfeld, "half_sommerfeld", "half-Sommerfeld (Guembel)"),
+      named_entry(M::mass_conserving, "mass_conserving", "mass-conserving (Elrod-Adams, JFO)"),
+  });
+};
+static_assert(clearjoint::geometry::entries_in_code_order<clearjoint::lubrication::CavitationModel>());
+
+namespace clearjoint::lubrication {
+
+/// The key of the model's entry in its table.
 std::string_view to_string(CavitationModel model) noexcept;
-/// The inverse of to_string; nullopt for any other name.
-std::optional<CavitationModel> cavitation_model_from_string(std::string_view name) noexcept;
-inline constexpr std::array<CavitationModel, 2> kCavitationModels{
-    CavitationModel::half_sommerfeld, CavitationModel::mass_conserving};
 
 /// Where the oil comes from. A mass-conserving film needs a supply: fed only by its ends, whose
 /// flow is outward wherever the film carries pressure, it would drain (docs/lubrication.md).
@@ -51,6 +63,21 @@ struct OilSupply {
   Vector3 groove_direction_W = Vector3::UnitX();
   double supply_pressure = 0.0;  ///< gauge, Pa; >= 0
 };
+
+}  // namespace clearjoint::lubrication
+
+template <>
+struct clearjoint::geometry::EnumTable<clearjoint::lubrication::OilSupply::Kind> {
+  using K = clearjoint::lubrication::OilSupply::Kind;
+  static constexpr std::string_view type_name = "OilSupplyKind";
+  static constexpr auto entries = std::to_array({
+      named_entry(K::none, "none", "enclosed film, fed at its ends"),
+      named_entry(K::axial_groove, "axial_groove", "axial line groove at the supply pressure"),
+  });
+};
+static_assert(clearjoint::geometry::entries_in_code_order<clearjoint::lubrication::OilSupply::Kind>());
+
+namespace clearjoint::lubrication {
 
 /// Throw geometry::InvalidInput naming the field for a non-finite or non-positive viscosity.
 void validate(const Lubricant& lubricant, const char* name = "lubricant");

@@ -44,7 +44,23 @@ enum class ReynoldsLinearSolver {
   sparse_lu,  ///< Eigen's SparseLU with a COLAMD ordering, set up again at every factorisation
 };
 
-/// "band_lu", "sparse_lu".
+}  // namespace clearjoint::lubrication
+
+/// Keys "band_lu", "sparse_lu".
+template <>
+struct clearjoint::geometry::EnumTable<clearjoint::lubrication::ReynoldsLinearSolver> {
+  using S = clearjoint::lubrication::ReynoldsLinearSolver;
+  static constexpr std::string_view type_name = "ReynoldsLinearSolver";
+  static constexpr auto entries = std::to_array({
+      named_entry(S::band_lu, "band_lu", "band LU with partial pivoting"),
+      named_entry(S::sparse_lu, "sparse_lu", "Eigen SparseLU, COLAMD ordering"),
+  });
+};
+static_assert(clearjoint::geometry::entries_in_code_order<clearjoint::lubrication::ReynoldsLinearSolver>());
+
+namespace clearjoint::lubrication {
+
+/// The key of the solver's entry in its table.
 std::string_view to_string(ReynoldsLinearSolver solver) noexcept;
 
 /// The grid and the cavitation model.
