@@ -6,6 +6,7 @@
 // motions are given, the contact velocities (eqs. 24-26). The format (every field, the error
 // lines, the exit status) is specified in docs/command-line.md; keep the two in step.
 
+#include <array>
 #include <optional>
 #include <string>
 
@@ -14,6 +15,8 @@
 #include "clearjoint/geometry/model/contact_scenario.hpp"
 #include "clearjoint/geometry/joint/detect_contacts.hpp"
 #include "clearjoint/geometry/model/joint_geometry.hpp"
+#include "clearjoint/json_input/json_reader.hpp"
+#include "clearjoint/json_input/read_detection_options.hpp"
 #include "commands.hpp"
 #include "json_lines.hpp"
 #include "result_json.hpp"
@@ -52,84 +55,76 @@ constexpr const char* kUsage =
     "Exit status: 0 all lines answered, 1 some line failed, 2 usage error, unreadable FILE\n"
     "or unwritable standard output.\n";
 
-/// A size (radius or length): a number; the kernel's validate() checks its sign and magnitude.
-double read_size(const Json& object, const std::string& path, const char* key) {
-  return read_number(member(object, path, key), field(path, key));
+/// One detect line as the kernel's descriptions: read once, each description checked once by
+/// the kernel's validate() with its fields named as in the line ("journal.radius").
+struct DetectQuery {
+  geo::JointDimensions dimensions;
+  geo::PartPose bearing, journal;
+  std::optional<geo::BodyMotion> bearing_motion, journal_motion;  // both or neither
+  geo::DetectionOptions options;
+};
+
+geo::Vector3 read_vector3(const json::JsonField& value) {
+  const std::array<double, 3> v = value.numbers<3>();
+  return {v[0], v[1], v[2]};
 }
 
-/// A centre or axis: 3 numbers, each 0 or within the accepted magnitudes (json_lines.hpp).
-geo::Vector3 read_pose_vector(const Json& object, const std::string& path, const char* key) {
-  return read_geometric_vector(member(object, path, key), field(path, key));
-}
-
-/// One part: its dimensions go to `radius` and `length`, its pose is returned.
-geo::PartPose read_part(const Json& object, const std::string& path, double& radius,
-                        double& length) {
-  check_object(object, path, {"radius", "length", "center", "axis"});
-  radius = read_size(object, path, "radius");
-  length = read_size(object, path, "length");
+/// One part: its dimensions go to `radius` and `length`, its pose is returned. Sizes and pose are
+/// numbers only here; their signs, ranges and the zero axis are the kernel's to check.
+geo::PartPose read_part(const json::JsonField& part, double& radius, double& length) {
+  part.require_object({"radius", "length", "center", "axis"});
+  radius = part.member("radius").number();
+  length = part.member("length").number();
   geo::PartPose pose;
-  pose.p_WP = read_pose_vector(object, path, "center");
-  pose.axis_W = read_pose_vector(object, path, "axis");
-  geo::validate(pose, path, geo::kPartPoseNames);  // the kernel's one check, named as in the line
+  pose.p_WP = read_vector3(part.member("center"));
+  pose.axis_W = read_vector3(part.member("axis"));
+  geo::validate(pose, part.path(), geo::kPartPoseNames);
   return pose;
 }
 
-geo::BodyMotion read_motion(const Json& object, const std::string& path) {
-  check_object(object, path, {"mass_center", "velocity", "angular_velocity"});
-  geo::BodyMotion motion;
-  motion.p_WM = read_vector(member(object, path, "mass_center"), path + ".mass_center");
-  motion.v_WM = read_vector(member(object, path, "velocity"), path + ".velocity");
-  motion.w_W = read_vector(member(object, path, "angular_velocity"), path + ".angular_velocity");
-  return motion;
+geo::BodyMotion read_motion(const json::JsonField& motion) {
+  motion.require_object({"mass_center", "velocity", "angular_velocity"});
+  return {read_vector3(motion.member("mass_center")), read_vector3(motion.member("velocity")),
+          read_vector3(motion.member("angular_velocity"))};
 }
 
-geo::DetectionOptions read_options(const Json& query) {
-  geo::DetectionOptions options;
-  const auto found = query.find("options");
-  if (found == query.end()) return options;
-  // Every option of the list (geometry/option_fields.hpp) by its key.
-  read_detection_options(*found, "options", options);
-  return options;
+DetectQuery read_query(const Json& line) {
+  const json::JsonField query(line, "", "the line");
+  query.require_object({"id", "bearing", "journal", "bearing_motion", "journal_motion", "options"});
+  DetectQuery q;
+  geo::JointDimensions& d = q.dimensions;
+  const json::JsonField bearing = query.member("bearing"), journal = query.member("journal");
+  q.bearing = read_part(bearing, d.bearing_radius, d.bearing_length);
+  q.journal = read_part(journal, d.journal_radius, d.journal_length);
+  geo::validate(d, "", geo::kPartDimensionNames);
+  // Velocities need both bodies' motions: one alone is most likely a mistake, not "at rest".
+  const bool has_bearing_motion = query.has("bearing_motion");
+  if (has_bearing_motion != query.has("journal_motion")) {
+    const char* missing = has_bearing_motion ? "journal_motion" : "bearing_motion";
+    const char* given = has_bearing_motion ? "bearing_motion" : "journal_motion";
+    throw LineError(missing, std::string(": missing (") + given + " is given; give both motions or neither)");
+  }
+  if (has_bearing_motion) {
+    q.bearing_motion = read_motion(query.member("bearing_motion"));
+    q.journal_motion = read_motion(query.member("journal_motion"));
+  }
+  // Every option of the list (geometry/option_fields.hpp) by its key; detect_contacts checks them.
+  if (query.has("options")) json::read_detection_options(query.member("options"), q.options);
+  return q;
 }
 
 /// The answer to one joint line (JsonLinesCommand::answer).
-void answer_query(const Json& query, Json& answer) {
-  check_object(query, "",
-               {"id", "bearing", "journal", "bearing_motion", "journal_motion", "options"});
-  geo::JointDimensions dimensions;
-  const Json& bearing_json = member(query, "", "bearing");
-  const Json& journal_json = member(query, "", "journal");
-  const geo::PartPose bearing =
-      read_part(bearing_json, "bearing", dimensions.bearing_radius, dimensions.bearing_length);
-  const geo::PartPose journal =
-      read_part(journal_json, "journal", dimensions.journal_radius, dimensions.journal_length);
-  // The kernel's one check, with the fields named as in the line ("journal.radius").
-  geo::validate(dimensions, "", geo::kPartDimensionNames);
-
-  // Velocities need both bodies' motions: one alone is most likely a mistake, not "at rest".
-  const bool has_bearing_motion = query.contains("bearing_motion");
-  const bool has_journal_motion = query.contains("journal_motion");
-  if (has_bearing_motion != has_journal_motion) {
-    throw LineError(has_bearing_motion ? "journal_motion" : "bearing_motion",
-                    std::string(": missing (") + (has_bearing_motion ? "bearing_motion" : "journal_motion") +
-                    " is given; give both motions or neither)");
-  }
-  std::optional<geo::BodyMotion> bearing_motion, journal_motion;
-  if (has_bearing_motion) {
-    bearing_motion = read_motion(query["bearing_motion"], "bearing_motion");
-    journal_motion = read_motion(query["journal_motion"], "journal_motion");
-  }
-
-  const geo::JointContacts result =
-      geo::detect_contacts(dimensions, bearing, journal, read_options(query));
+void answer_query(const Json& line, Json& answer) {
+  const DetectQuery query = read_query(line);
+  const geo::JointContacts result = geo::detect_contacts(query.dimensions, query.bearing, query.journal, query.options);
   write_result(result, ResultStyle::detect, answer);
-  if (!bearing_motion) return;
+  if (!query.bearing_motion) return;
   Json& contacts = answer["contacts"];
   for (int k = 0; k < result.contact_count; ++k) {
     const std::string where = "contacts[" + std::to_string(k) + "]";
     const geo::ContactKinematics kinematics =
-        geo::contact_kinematics(result.contacts[static_cast<std::size_t>(k)], *bearing_motion, *journal_motion);
+        geo::contact_kinematics(result.contacts[static_cast<std::size_t>(k)], *query.bearing_motion,
+                                 *query.journal_motion);
     require_finite(kinematics.approach_speed, where + ".approach_velocity");
     require_finite(kinematics.tangential_velocity_W, where + ".tangential_velocity");
     Json& entry = contacts[static_cast<std::size_t>(k)];

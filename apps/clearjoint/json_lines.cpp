@@ -246,10 +246,6 @@ int usage_error(const JsonLinesCommand& command, const std::string& message) {
 
 std::string quote(const Json& value) { return json::quote(value); }
 
-std::string field(const std::string& path, std::string_view key) {
-  return path.empty() ? std::string(key) : path + "." + std::string(key);
-}
-
 void check_object(const Json& object, const std::string& path,
                   std::initializer_list<std::string_view> allowed) {
   json::JsonField(object, path, "the line").require_object(allowed);

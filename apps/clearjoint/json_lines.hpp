@@ -15,6 +15,7 @@
 
 #include "clearjoint/geometry/model/certificate.hpp"
 #include "clearjoint/geometry/model/detection_options.hpp"
+#include "clearjoint/geometry/model/joint_geometry.hpp"
 #include "clearjoint/geometry/arithmetic/vector3.hpp"
 #include "clearjoint/validation_error.hpp"
 #include "commands.hpp"
@@ -50,9 +51,6 @@ inline constexpr std::size_t kMaxLineBytes = std::size_t{1} << 20;
 /// `value` as JSON text for an error message, shortened when long.
 std::string quote(const Json& value);
 
-/// "circle" + "radius" gives "circle.radius"; a top-level field has no prefix.
-std::string field(const std::string& path, std::string_view key);
-
 /// Throws unless `object` is a JSON object whose keys are all in `allowed`: a misspelt key
 /// ("normals", "certfy") must not be silently ignored. `path` "" is the whole line.
 void check_object(const Json& object, const std::string& path,
@@ -68,14 +66,14 @@ double read_number(const Json& value, const std::string& path);
 /// An array of exactly 3 numbers.
 geometry::Vector3 read_vector(const Json& value, const std::string& path);
 
-// The magnitudes a geometric input (a length, or a coordinate of a point or direction) may have,
-// 0 aside. Within them the commands were checked end to end on scaled and random inputs
-// (docs/command-line.md, "Limits"): every line answered, although a vector mixing magnitudes
-// ~200 orders apart can still take seconds in the exact fallback. Beyond them the library's
-// contact points can overflow into NaN or infinite values (the SIGFPE and the minutes-long exact
-// fallback first found there are fixed in geometry/). No joint in any unit needs such numbers.
-inline constexpr double kSmallestMagnitude = 1e-150;
-inline constexpr double kLargestMagnitude = 1e150;
+// The magnitudes a geometric input of `intersect` (a length, or a coordinate of a point or
+// direction) may have, 0 aside: the kernel's accepted range for a joint's lengths and centres
+// (joint_geometry.hpp), which `detect` leaves to the kernel's validate(). The kernel's primitive
+// queries check finiteness only, so `intersect` applies the range itself. Within it the commands
+// were checked end to end on scaled and random inputs (docs/command-line.md, "Limits"); beyond it
+// the library's contact points can overflow into NaN or infinite values.
+inline constexpr double kSmallestMagnitude = geometry::kSmallestAcceptedLength;
+inline constexpr double kLargestMagnitude = geometry::kLargestAcceptedLength;
 
 /// A number that is 0 or of magnitude in [kSmallestMagnitude, kLargestMagnitude].
 double read_geometric_number(const Json& value, const std::string& path);
