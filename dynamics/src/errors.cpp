@@ -4,8 +4,18 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
 namespace clearjoint::dynamics {
+
+namespace {
+
+/// The lengths a direction may have (require_nonzero): those whose square is a normal double,
+/// [sqrt(DBL_MIN), sqrt(DBL_MAX)], so that v / sqrt(v . v) is a unit vector.
+constexpr double kSmallestDirectionLength = 1.4916681462400413e-154;  // sqrt(DBL_MIN)
+constexpr double kLargestDirectionLength = 1.3407807929942596e154;    // sqrt(DBL_MAX)
+
+}  // namespace
 
 std::string format_number(double value) {
   char buffer[32];
@@ -49,10 +59,17 @@ void require_positive(std::string_view field, double value) {
 
 void require_nonzero(std::string_view field, const Eigen::Ref<const Eigen::VectorXd>& v) {
   require_finite(field, v);
-  // A direction is only used after normalisation; an exact zero has none. Tiny but non-zero
-  // vectors are accepted: their direction is still defined in floating point.
-  if (v.squaredNorm() == 0.0) {
-    throw ModelError(field, " = " + format_vector(v) + ": must not be zero");
+  // The kernel's words for the same fault (geometry's validate(PartPose)).
+  if ((v.array() == 0.0).all()) throw ModelError(field, " = " + format_vector(v) + ": must not be the zero vector");
+  // The dynamics use a direction normalised as v / sqrt(v . v): v . v must be a normal double.
+  // A non-zero vector outside that range (its square underflows to 0 or overflows to infinity)
+  // would become 0 or stay unnormalised, silently.
+  const double squared = v.squaredNorm();
+  if (!(squared >= std::numeric_limits<double>::min() && squared <= std::numeric_limits<double>::max())) {
+    throw ModelError(field, " = " + format_vector(v) + ": its length must lie in [" +
+                                format_shortest(kSmallestDirectionLength) + ", " +
+                                format_shortest(kLargestDirectionLength) +
+                                "], where it can be normalised in double (only the direction counts: rescale it)");
   }
 }
 

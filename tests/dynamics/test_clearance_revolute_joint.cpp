@@ -404,7 +404,8 @@ TEST(ClearanceRevoluteJoint, RejectsBadInputNamingTheField) {
   EXPECT_EQ(construction_error(p).rfind("j.journal.length = 1e-200: a magnitude outside "
                                         "[1e-150, 1e150]", 0), 0u) << construction_error(p);
   p = {};
-  EXPECT_EQ(construction_error(p, kJournal, Vector3::Zero()), "j.journal.axis = [0, 0, 0]: must not be zero");
+  // The kernel's words for a zero axis (geometry's validate(PartPose), clearjoint detect's).
+  EXPECT_EQ(construction_error(p, kJournal, Vector3::Zero()), "j.journal.axis = [0, 0, 0]: must not be the zero vector");
   EXPECT_EQ(construction_error(p, kBearing),
             "j.journal.body: the journal and the bearing must be on different bodies");
   p.normal.restitution = -0.5;
@@ -412,6 +413,21 @@ TEST(ClearanceRevoluteJoint, RejectsBadInputNamingTheField) {
   p = {};
   p.detection.parallel_angle_tolerance = 2.0;
   EXPECT_EQ(construction_error(p), "j.detection.parallel_angle_tolerance = 2: must lie in [0, pi/2) radians");
+}
+
+TEST(ClearanceRevoluteJoint, RefusesAnAxisThatCannotBeNormalisedInDouble) {
+  // |a|^2 overflows to infinity (a / |a| would be the zero vector) or underflows to 0 (a would
+  // stay unnormalised): both are refused by name, as every other direction of a model is.
+  const ClearanceJointParameters p;
+  for (const Vector3& axis : {Vector3(1e200, 0.0, 0.0), Vector3(0.0, 1e-200, 0.0)}) {
+    const std::string error = construction_error(p, kJournal, axis);
+    EXPECT_EQ(error.rfind("j.journal.axis = [", 0), 0u) << error;
+    EXPECT_NE(error.find("its length must lie in [1.4916681462400413e-154, 1.3407807929942596e+154]"),
+              std::string::npos) << error;
+  }
+  // Within the range, however short or long: accepted (only the direction counts).
+  EXPECT_EQ(construction_error(p, kJournal, Vector3(0.0, 0.0, 1e-150)), "no error");
+  EXPECT_EQ(construction_error(p, kJournal, Vector3(0.0, 0.0, 1e150)), "no error");
 }
 
 }  // namespace

@@ -40,7 +40,10 @@ void require_finite(std::string_view field, double value);
 void require_finite(std::string_view field, const Eigen::Ref<const Eigen::VectorXd>& v);
 /// Throw ModelError "<field> = <value>: must be positive" unless value > 0 (and finite).
 void require_positive(std::string_view field, double value);
-/// Throw ModelError unless the vector is finite and not (numerically) zero.
+/// The one check of a direction in the dynamics (a joint or clearance part's axis, a groove
+/// direction, Euler parameters before normalisation): throw ModelError unless every component is
+/// finite, the vector is not the zero vector and its length lies in [sqrt(DBL_MIN),
+/// sqrt(DBL_MAX)], where v / sqrt(v . v) is a unit vector in double.
 void require_nonzero(std::string_view field, const Eigen::Ref<const Eigen::VectorXd>& v);
 
 }  // namespace clearjoint::dynamics
