@@ -48,10 +48,6 @@ std::string repr_certificate(const geo::Certificate& c) {
   return text;
 }
 
-std::vector<geo::RimCrossing> first_crossings(const geo::RimCrossing* crossings, int count) {
-  return {crossings, crossings + count};
-}
-
 namespace {
 
 /// The functions that give an enum's text; the enum classes themselves are clearjoint/_enums.py's.

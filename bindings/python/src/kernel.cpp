@@ -23,9 +23,10 @@
 #include "clearjoint/geometry/queries/intersect_circle_plane.hpp"
 #include "numpy_views.hpp"
 #include "parallel_chunks.hpp"
-#include "signal_check.hpp"
+#include "result_attributes.hpp"
 #include "result_dicts.hpp"
 #include "result_types.hpp"
+#include "signal_check.hpp"
 
 namespace py = pybind11;
 
@@ -270,29 +271,14 @@ py::object circle_cylinder(const py::handle& circle_center, const py::handle& ci
   });
 }
 
+// The attributes of each result are its field list's (result_attributes.hpp); bound here are the
+// class docs, the attributes that are not fields, and the reprs.
 void bind_kernel_types(py::module_& m) {
-  add_as_dict_and_pickle(py::class_<geo::CirclePlaneIntersection>(m, "CirclePlaneIntersection",
-                                           "A circle against a plane (a rim against a base, eqs. 11-15).")
-      .def_readonly("topology", &geo::CirclePlaneIntersection::topology)
-      .def_property_readonly("side", [](const geo::CirclePlaneIntersection& r) { return static_cast<int>(r.side); },
-                    "PlaneSide as an int. +1: the circle lies on the side the plane normal points to, -1 the other; 0 "
-                    "for two_crossings and circle_in_plane")
-      .def_property_readonly("crossings", [](const geo::CirclePlaneIntersection& r) {
-        return first_crossings(r.crossings.data(), r.crossing_count);
-      })
-      .def_property_readonly(
-          "penetration",
-          [](const geo::CirclePlaneIntersection& r) -> py::object {
-            return r.has_penetration ? py::cast(r.penetration) : py::none();
-          },
-          "the rim points strictly on the normal's side (a RimArc), or None")
-      .def_readonly("max_signed_distance", &geo::CirclePlaneIntersection::max_signed_distance,
-                    "largest signed distance of a rim point from the plane, positive on the normal's side")
-      .def_readonly("max_signed_distance_error", &geo::CirclePlaneIntersection::max_signed_distance_error)
-      .def_readonly("certificate", &geo::CirclePlaneIntersection::certificate)
+  py::class_<geo::CirclePlaneIntersection> plane(m, "CirclePlaneIntersection",
+                                                 "A circle against a plane (a rim against a base, eqs. 11-15).");
+  add_as_dict_and_pickle(def_field_attributes(plane)
       .def("__repr__", [](const geo::CirclePlaneIntersection& r) {
-        static const char* names[] = {"disjoint", "tangent", "two_crossings", "circle_in_plane"};
-        return std::string("CirclePlaneIntersection(") + names[static_cast<int>(r.topology)] +
+        return "CirclePlaneIntersection(" + std::string(geo::to_string(r.topology)) +
                ", side=" + std::to_string(static_cast<int>(r.side)) + ", crossings=" + std::to_string(r.crossing_count) +
                ", max_signed_distance=" + repr_number(r.max_signed_distance) + ", " +
                repr_certificate(r.certificate) + ")";
@@ -300,24 +286,13 @@ void bind_kernel_types(py::module_& m) {
       "{'topology', 'side', 'crossings', 'penetration' (RimArc.as_dict() or None), "
       "'max_signed_distance', 'max_signed_distance_error', 'certificate', 'certificate_reason'}");
 
-  add_as_dict_and_pickle(py::class_<geo::CircleCylinderIntersection>(
-      m, "CircleCylinderIntersection", "A circle against a cylinder's lateral surface (a rim against the wall, eqs. 16-21).")
-      .def_readonly("topology", &geo::CircleCylinderIntersection::topology)
-      .def_property_readonly("crossings", [](const geo::CircleCylinderIntersection& r) {
-        return first_crossings(r.crossings.data(), r.crossing_count);
-      }, "sorted by angle; multiplicities add up to 0, 2 or 4")
-      .def_property_readonly(
-          "penetration_arcs",
-          [](const geo::CircleCylinderIntersection& r) {
-            return std::vector<geo::RimArc>(r.penetration_arcs.begin(), r.penetration_arcs.begin() + r.arc_count);
-          },
-          "maximal arcs strictly beyond the wall; two arcs are beyond the paper's model")
+  py::class_<geo::CircleCylinderIntersection> cylinder(
+      m, "CircleCylinderIntersection", "A circle against a cylinder's lateral surface (a rim against the wall, eqs. 16-21).");
+  add_as_dict_and_pickle(def_field_attributes(cylinder)
       .def_property_readonly("root_count", &geo::CircleCylinderIntersection::root_count,
                              "crossings counted with multiplicity")
-      .def_readonly("certificate", &geo::CircleCylinderIntersection::certificate)
       .def("__repr__", [](const geo::CircleCylinderIntersection& r) {
-        static const char* names[] = {"inside", "outside", "crossing", "on_surface"};
-        return std::string("CircleCylinderIntersection(") + names[static_cast<int>(r.topology)] +
+        return "CircleCylinderIntersection(" + std::string(geo::to_string(r.topology)) +
                ", crossings=" + std::to_string(r.crossing_count) + ", arcs=" + std::to_string(r.arc_count) +
                ", " + repr_certificate(r.certificate) + ")";
       }),

@@ -3,10 +3,8 @@
 // Text for reprs and conversions shared by the result bindings (detection.cpp, kernel.cpp).
 
 #include <string>
-#include <vector>
 
 #include "clearjoint/geometry/model/certificate.hpp"
-#include "clearjoint/geometry/model/rim_arc.hpp"
 #include "clearjoint/geometry/arithmetic/vector3.hpp"
 #include "enum_codes.hpp"  // every file that binds results converts their enums the same way
 
@@ -15,6 +13,5 @@ namespace clearjoint::python {
 std::string repr_number(double x);              ///< round-trip precision
 std::string repr_vector(const geometry::Vector3& v);
 std::string repr_certificate(const geometry::Certificate& c);  ///< "uncertain (why)"
-std::vector<geometry::RimCrossing> first_crossings(const geometry::RimCrossing* crossings, int count);
 
 }  // namespace clearjoint::python
