@@ -8,6 +8,15 @@ usage:
   validate_json.py SCHEMA_DIR run SCHEMA PROGRAM COMMAND FILE...
         runs `PROGRAM COMMAND FILE` for each FILE and validates every output line
   validate_json.py SCHEMA_DIR reject SCHEMA JSON...          every JSON text must be rejected
+  validate_json.py SCHEMA_DIR named SCHEMA FILE              FILE names every field of SCHEMA
+  validate_json.py SCHEMA_DIR named-by-help SCHEMA PROGRAM COMMAND
+        `PROGRAM COMMAND --help` names every field of SCHEMA
+
+The last two keep the hand-written lists of an answer's fields (the reference page, a command's
+help) in step with the schema, which the program's own output keeps in step with the library's
+result field lists ("run"): a field the library adds fails "run" until the schema has it, then
+these until the lists name it. A field is named in a Markdown file as `key` or `parent.key`, in
+a help text as "key".
 
 SCHEMA is a file name in SCHEMA_DIR without ".schema.json" (e.g. detect-answer). The schemas
 refer to each other by $id (urn:clearjoint:schema:v1:...); all of SCHEMA_DIR is loaded so that
@@ -57,6 +66,19 @@ def check(check_with, items):
     return count
 
 
+def answer_fields(schema):
+    """The property names of every object the schema defines in $defs."""
+    return sorted({key for definition in schema.get("$defs", {}).values() if isinstance(definition, dict)
+                   for key in definition.get("properties", {})})
+
+
+def require_named(name, fields, text, where, pattern):
+    missing = [key for key in fields if not re.search(pattern(re.escape(key)), text)]
+    if missing:
+        sys.exit(f"FAIL {where} does not name the {name} field(s) {', '.join(missing)}")
+    print(f"{where} names all {len(fields)} fields of {name}")
+
+
 def main(argv):
     schema_dir, mode = argv[1], argv[2]
     schemas = load_schemas(schema_dir)
@@ -98,6 +120,15 @@ def main(argv):
             if check_with.is_valid(json.loads(text)):
                 sys.exit(f"FAIL: {name} accepts {text}")
         print(f"{name} rejects all {len(argv) - 4} documents")
+    elif mode == "named":
+        path = argv[4]
+        require_named(name, answer_fields(schemas[name]), pathlib.Path(path).read_text(), path,
+                      lambda key: rf"`([\w.\[\]]*\.)?{key}`")
+    elif mode == "named-by-help":
+        program, command = argv[4], argv[5]
+        run = subprocess.run([program, command, "--help"], capture_output=True, text=True, check=False)
+        require_named(name, answer_fields(schemas[name]), run.stdout + run.stderr,
+                      f"{command} --help", lambda key: rf'"{key}"')
     else:
         sys.exit(f"unknown mode {mode}")
 

@@ -136,6 +136,28 @@ def test_a_batch_of_the_cylinder_examples_equals_the_single_answers_row_by_row()
             assert batch.crossing_multiplicity[n, x] == crossing.multiplicity
 
 
+# The batch columns of a result's list and optional fields: a prefix shared by their columns.
+# Every other field of as_dict() (which is written through the result's field list) is a column
+# of its own name.
+BATCH_COLUMN_PREFIXES = {"crossings": "crossing_", "penetration": "penetration_", "penetration_arcs": "arc_"}
+
+
+@pytest.mark.parametrize("kind", ["plane", "cylinder"])
+def test_every_field_of_a_single_answer_has_its_batch_column(kind):
+    # The batch columns are written by hand (bindings/python/src/kernel.cpp); a field added to the
+    # result's field list is in as_dict() and must be in the batch too.
+    rows, circle, other = stacked(EXAMPLE_LINES, kind)
+    call = clearjoint.intersect_circle_plane if kind == "plane" else clearjoint.intersect_circle_cylinder
+    arguments = ([other("point"), other("normal")] if kind == "plane"
+                 else [other("axis_point"), other("axis"), other("radius")])
+    batch = call(circle("center"), circle("normal"), circle("radius"), *arguments)
+    columns = batch.fields()
+    for key in query(rows[0]).as_dict():
+        prefix = BATCH_COLUMN_PREFIXES.get(key)
+        assert key in columns or (prefix and any(c.startswith(prefix) for c in columns)), \
+            f"{type(batch).__name__} has no column for the field {key}"
+
+
 def rims_against_a_wall(count, seed):
     """Journal rims of Table 2 (mm) in random poses near the wall of a bearing on the z axis."""
     rng = np.random.default_rng(seed)
