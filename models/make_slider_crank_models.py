@@ -5,8 +5,10 @@
 Ideal joints: slider_crank_planar_ideal.json, slider_crank_spatial_ideal.json.
 With the revolute clearance joint (Table 2): slider_crank_planar_clearance_aligned.json,
 slider_crank_planar_clearance_misaligned.json (rod turned 0.2 degrees about its own axis),
-slider_crank_spatial_clearance.json, and the clearance study of Sec. 6.2 in clearance_study/
-(radial clearance 0.05, 0.1, 0.3, 0.5 mm x axial clearance 0.05, 0.1, 0.3, 0.5 mm).
+slider_crank_spatial_clearance.json; and the base model of the clearance studies of Sec. 6.2,
+reproduction/models/slider_crank_spatial_clearance_study.json (cr = ca = 0.1 mm, the slider's
+outputs only: the studies in reproduction/studies/ set the journal's radius and length of each
+point, radial and axial clearance 0.05, 0.1, 0.3, 0.5 mm, when they run).
 
 Orientations, positions and velocities follow from the chosen geometry; computing them here keeps
 the numbers in the JSON files exact to double precision and reproducible.
@@ -302,7 +304,22 @@ def spatial_clearance(radial_clearance=1e-4, axial_clearance=1e-4, study=False):
     return model
 
 
-STUDY_CLEARANCES_MM = (0.05, 0.1, 0.3, 0.5)
+HERE = os.path.dirname(os.path.abspath(__file__))
+REPOSITORY = os.path.dirname(HERE)
+
+
+def model_files():
+    """Every model file this script writes: its path relative to the repository, and the model."""
+    files = {os.path.join("models", name): model for name, model in (
+        ("slider_crank_planar_ideal.json", planar()),
+        ("slider_crank_spatial_ideal.json", spatial()),
+        ("slider_crank_planar_clearance_aligned.json", planar_clearance(0.0)),
+        ("slider_crank_planar_clearance_misaligned.json", planar_clearance(0.2)),
+        ("slider_crank_planar_clearance_lubricated.json", planar_lubricated()),
+        ("slider_crank_spatial_clearance.json", spatial_clearance()))}
+    files[os.path.join("reproduction", "models", "slider_crank_spatial_clearance_study.json")] = \
+        spatial_clearance(study=True)
+    return files
 
 
 def write(path, model):
@@ -312,15 +329,5 @@ def write(path, model):
 
 
 if __name__ == "__main__":
-    for name, model in (("slider_crank_planar_ideal.json", planar()),
-                        ("slider_crank_spatial_ideal.json", spatial()),
-                        ("slider_crank_planar_clearance_aligned.json", planar_clearance(0.0)),
-                        ("slider_crank_planar_clearance_misaligned.json", planar_clearance(0.2)),
-                        ("slider_crank_planar_clearance_lubricated.json", planar_lubricated()),
-                        ("slider_crank_spatial_clearance.json", spatial_clearance())):
-        write(name, model)
-    os.makedirs("clearance_study", exist_ok=True)
-    for cr in STUDY_CLEARANCES_MM:
-        for ca in STUDY_CLEARANCES_MM:
-            write(os.path.join("clearance_study", "spatial_cr%g_ca%g.json" % (cr, ca)),
-                  spatial_clearance(cr * 1e-3, ca * 1e-3, study=True))
+    for relative, model in model_files().items():
+        write(os.path.join(REPOSITORY, relative), model)

@@ -37,10 +37,10 @@ MEMBERS = 4
 NOOP_TASKS = 2000
 
 
-def write_study(directory, models, end_time=END_TIME):
+def write_study(directory, model, end_time=END_TIME):
     spec = {
         "study_format": 1, "name": "throughput",
-        "model": os.path.join(models, "clearance_study", "spatial_cr0.1_ca0.1.json"),
+        "model": model,
         "set": {"/solver/end_time": end_time},
         "parameters": {
             "radial_clearance_mm": {"set": [{"path": "/forces/0/journal/radius", "offset": 0.01, "scale": -0.001}]},
@@ -120,7 +120,9 @@ def store_cost(study, runs):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("--models", default=os.path.join(os.path.dirname(__file__), "..", "..", "models"))
+    parser.add_argument("--model", default=os.path.join(os.path.dirname(__file__), "..", "..", "reproduction", "models",
+                                                         "slider_crank_spatial_clearance_study.json"),
+                        help="the model the study varies (default: the base model of the Sec. 6.2 studies)")
     parser.add_argument("--repetitions", type=int, default=3)
     parser.add_argument("--end-time", type=float, default=END_TIME, help="simulated seconds per run")
     parser.add_argument("--json", help="write the measurements here")
@@ -129,7 +131,7 @@ def main():
     from clearjoint.study.runner import connect
 
     with tempfile.TemporaryDirectory() as directory:
-        study = load_study(write_study(directory, os.path.abspath(args.models), args.end_time))
+        study = load_study(write_study(directory, os.path.abspath(args.model), args.end_time))
         runs = expand_study(study)[1]
         assert len(runs) == 64
         clients, starts = {}, {}

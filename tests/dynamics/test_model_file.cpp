@@ -324,16 +324,6 @@ TEST(ModelFile, ReadsTheShippedModels) {
     EXPECT_NEAR(joint.parameters.dimensions.radial_clearance(), 1e-4, kDecimalRounding) << file;
     EXPECT_NEAR(joint.parameters.dimensions.axial_clearance(), 1e-4, kDecimalRounding) << file;
   }
-  // The clearance study: 4 x 4 radial and axial clearances.
-  for (const char* cr : {"0.05", "0.1", "0.3", "0.5"}) {
-    for (const char* ca : {"0.05", "0.1", "0.3", "0.5"}) {
-      const std::string file = std::string(CLEARJOINT_MODELS_DIR) + "/clearance_study/spatial_cr" + cr + "_ca" + ca + ".json";
-      const ModelDescription m = read_model_file(file);
-      const auto& joint = std::get<ClearanceRevoluteDescription>(m.forces.at(0));
-      EXPECT_NEAR(joint.parameters.dimensions.radial_clearance(), 1e-3 * std::stod(cr), kDecimalRounding) << file;
-      EXPECT_NEAR(joint.parameters.dimensions.axial_clearance(), 1e-3 * std::stod(ca), kDecimalRounding) << file;
-    }
-  }
 }
 
 TEST(ModelFile, NamesTheFileAndKeepsTheFieldPathOfABadField) {
