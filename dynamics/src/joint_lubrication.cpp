@@ -37,10 +37,21 @@ void require_in(const std::string& field, double value, double low, double high,
                               format_shortest(high) + (open_high ? ")" : "]") + unit_and_why);
 }
 
+/// One of the film library's validate()s (its one check of that description) under `name`, its
+/// InvalidInput reported as the dynamics' ModelError with the same field path and message.
+template <class Description>
+void validate_in_film_library(const Description& description, const std::string& name) {
+  try {
+    lubrication::validate(description, name.c_str());
+  } catch (const geometry::InvalidInput& e) {
+    throw ModelError(e.field_path(), e.detail());
+  }
+}
+
 }  // namespace
 
 void validate(const JointLubrication& l, const std::string& name, double radial_clearance) {
-  require_positive(name + ".viscosity", l.viscosity);
+  validate_in_film_library(lubrication::Lubricant{l.viscosity}, name);
   require_in(name + ".viscosity", l.viscosity, kSmallestViscosity, kLargestViscosity, false,
              " Pa s (gases to the stiffest greases)");
   require_positive(name + ".film_thickness_limit", l.film_thickness_limit);
@@ -74,11 +85,9 @@ void validate(const JointLubrication& l, const std::string& name, double radial_
                      "its ends drains (docs/lubrication.md); give the oil groove's direction");
   }
   if (l.groove_direction_B) require_nonzero(name + ".groove_direction", *l.groove_direction_B);
-  require_finite(name + ".supply_pressure", l.supply_pressure);
-  if (l.supply_pressure < 0.0) {
-    throw ModelError(name + ".supply_pressure", " = " + format_number(l.supply_pressure) +
-                     ": must not be negative (a gauge pressure the oil is fed at)");
-  }
+  lubrication::OilSupply supply;  // its groove direction is the body frame's, checked above
+  supply.supply_pressure = l.supply_pressure;
+  validate_in_film_library(supply, name);
   require_in(name + ".supply_pressure", l.supply_pressure, 0.0, kLargestSupplyPressure, false,
              " Pa (a gauge pressure; 1 GPa is above any oil feed)");
 }

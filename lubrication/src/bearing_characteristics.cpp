@@ -9,6 +9,7 @@
 #include "clearjoint/geometry/model/primitives.hpp"
 #include "clearjoint/lubrication/long_bearing.hpp"
 #include "clearjoint/lubrication/short_bearing.hpp"
+#include "refuse.hpp"
 
 namespace clearjoint::lubrication {
 
@@ -22,17 +23,11 @@ constexpr double kBearingLengthMargin = 1e-3;
 template <geometry::TabledEnum E>
 E named(std::string_view name, const char* field) {
   if (const std::optional<E> value = geometry::from_string<E>(name)) return *value;
-  throw geometry::InvalidInput(std::string(field) + " = '" + std::string(name) +
-                               "': unknown (known: " + geometry::known_keys<E>() + ")");
+  throw geometry::InvalidInput(field, " = '" + std::string(name) + "': unknown (known: " +
+                                          geometry::known_keys<E>() + ")");
 }
 
-void require(bool holds, const char* field, double value, const char* rule) {
-  if (holds) return;
-  std::ostringstream message;
-  message.precision(17);
-  message << field << " = " << value << ": " << rule;
-  throw geometry::InvalidInput(message.str());
-}
+using detail::require;
 
 }  // namespace
 

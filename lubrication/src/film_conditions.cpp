@@ -2,27 +2,26 @@
 #include "clearjoint/lubrication/film_conditions.hpp"
 
 #include <cmath>
-#include <sstream>
 #include <string>
 
 #include "clearjoint/geometry/model/primitives.hpp"
+#include "refuse.hpp"
 
 namespace clearjoint::lubrication {
 
 namespace {
 
 [[noreturn]] void refuse(const char* name, const char* field, double value, const char* rule) {
-  std::ostringstream message;
-  message.precision(17);
-  message << name << "." << field << " = " << value << ": " << rule;
-  throw geometry::InvalidInput(message.str());
+  detail::refuse(std::string(name) + "." + field, value, rule);
 }
 
 }  // namespace
 
 void validate(const Lubricant& lubricant, const char* name) {
   if (!(std::isfinite(lubricant.viscosity) && lubricant.viscosity > 0.0)) {
-    refuse(name, "viscosity", lubricant.viscosity, "must be positive and finite");
+    // The words of every other positive quantity's check (the kernel's, the dynamics').
+    refuse(name, "viscosity", lubricant.viscosity,
+           std::isfinite(lubricant.viscosity) ? "must be positive" : "must be finite");
   }
 }
 

@@ -2,24 +2,14 @@
 #include "clearjoint/lubrication/planar_film.hpp"
 
 #include <cmath>
-#include <sstream>
 
 #include "clearjoint/geometry/model/primitives.hpp"
 #include "clearjoint/lubrication/film_conditions.hpp"
+#include "refuse.hpp"
 
 namespace clearjoint::lubrication {
 
-namespace {
-
-void require(bool holds, const char* field, double value, const char* rule) {
-  if (holds) return;
-  std::ostringstream message;
-  message.precision(17);
-  message << field << " = " << value << ": " << rule;
-  throw geometry::InvalidInput(message.str());
-}
-
-}  // namespace
+using detail::require;
 
 void validate(const PlanarBearing& bearing, const PlanarFilmState& state, double viscosity) {
   require(std::isfinite(bearing.radius) && bearing.radius > 0.0, "bearing.radius", bearing.radius,

@@ -7,6 +7,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
+#include <utility>
 
 #include "clearjoint/dynamics/errors.hpp"
 
@@ -115,6 +117,36 @@ TEST(JointLubrication, NamesTheFieldAndTheRangeOfAViscositySupplyPressureLimitOr
             std::string::npos);
   l.transition_width = kClearance;  // the largest accepted
   EXPECT_EQ(error_of(l), "no error");
+}
+
+/// The film library's refusal of `description` under `name`: what() and field_path().
+template <class Description>
+std::pair<std::string, std::string> library_error_of(const Description& description, const char* name) {
+  try {
+    lubrication::validate(description, name);
+  } catch (const ValidationError& e) {
+    return {e.what(), std::string(e.field_path())};
+  }
+  return {"no error", ""};
+}
+
+TEST(JointLubrication, RefusesABadViscosityOrSupplyPressureWithTheFilmLibrarysOwnCheck) {
+  // One check of a lubricant and of an oil supply (lubrication::validate), whichever front-end
+  // is given the value: a model's clearance joint, or the film library called directly.
+  for (const double viscosity : {-0.04, 0.0, std::nan("")}) {
+    JointLubrication l = oil();
+    l.viscosity = viscosity;
+    const auto [message, path] = library_error_of(lubrication::Lubricant{viscosity}, "joint.lubrication");
+    EXPECT_EQ(error_of(l), message);
+    EXPECT_EQ(path, "joint.lubrication.viscosity");
+  }
+  JointLubrication l = oil();
+  l.supply_pressure = -1.0;
+  lubrication::OilSupply supply;
+  supply.supply_pressure = -1.0;
+  const auto [message, path] = library_error_of(supply, "joint.lubrication");
+  EXPECT_EQ(error_of(l), message);
+  EXPECT_EQ(path, "joint.lubrication.supply_pressure");
 }
 
 TEST(JointLubrication, RefusesAMassConservingClosedFormAndAMassConservingFilmWithoutAGroove) {
