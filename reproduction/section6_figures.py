@@ -35,8 +35,6 @@ from mpl_toolkits.mplot3d import Axes3D  # noqa: E402,F401 (registers the 3d pro
 PLANAR_WINDOW = (0.1, 0.2)
 # Fig. 14: "only data on the first 0.20 s is displayed".
 TRAJECTORY_WINDOW = 0.20
-SCENARIO_NAMES = ["none", "(a)", "(b)", "(c)", "(d)", "(e)", "(f)", "(g)", "(h)", "(i)", "(j) line",
-                  "(k) face", "(l) line+face", "beyond model"]
 SLIDER = (("x", "slider position [m]"), ("vx", "slider velocity [m/s]"),
           ("ax", "slider acceleration [m/s$^2$]"))
 
@@ -326,7 +324,7 @@ def draw_all(load, figures, clearances_mm):
 
     def scenarios(run):
         codes, counts = np.unique(run["joint_scenario"].astype(int), return_counts=True)
-        return {SCENARIO_NAMES[c]: int(k) for c, k in zip(codes, counts)}
+        return {runplot.scenario_name(c): int(k) for c, k in zip(codes, counts)}
 
     late = lambda run: window(run, 0.2, 1.0)  # noqa: E731 (after the initial impacts)
     summary["clearances_mm"] = list(clearances_mm)

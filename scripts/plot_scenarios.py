@@ -12,7 +12,10 @@ by hand. Journal contact points are red dots, bearing contact points blue crosse
 (ends of the penetration arc) small black circles; arrows show the normal (out of the bearing,
 fixed display length, not the depth).
 
-    scripts/plot_scenarios.py [--clearjoint PROGRAM] [--input FILE] [--out DIR]
+    scripts/plot_scenarios.py [--clearjoint PROGRAM] [--tables PROGRAM] [--input FILE] [--out DIR]
+
+Each picture is titled with the scenario's label from the library's enum table (what
+clearjoint_describe_projections, built beside the program, prints), not in words of its own.
 
 Uses Debian's python3-matplotlib (hence /usr/bin/python3). Each PNG is written to a temporary
 file and renamed, so an interrupted run leaves no half-written picture.
@@ -33,23 +36,10 @@ import matplotlib.pyplot as plt  # noqa: E402  (after use())
 
 REPOSITORY = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
-# Titles of the scenarios, as in docs/contact-detection.md (the paper's Fig. 2 enumeration).
-TITLES = {
-    "none": "none: free flight",
-    "a": "(a) one radial contact",
-    "b": "(b) one axial contact",
-    "c": "(c) radial at A and at B",
-    "d": "(d) axial at A and at B",
-    "e": "(e) radial and axial at the same base",
-    "f": "(f) radial at one base, axial at the other",
-    "g": "(g) two radial, one axial",
-    "h": "(h) one radial, two axial",
-    "i": "(i) all four",
-    "j": "(j) aligned: line contact",
-    "k": "(k) aligned: face contact",
-    "l": "(l) aligned: line and face",
-    "beyond_model": "beyond the model",
-}
+# The program that prints the library's enum tables as JSON (scripts/projections/), whose
+# ContactScenario table gives each scenario's key (the answer's spelling) and its label.
+DESCRIBE_TABLES = os.path.join("projections", "clearjoint_describe_projections")
+
 
 MM = 1e3  # the input is in metres; the pictures are labelled in millimetres
 RIM_SAMPLES = 360
@@ -98,6 +88,32 @@ def find_program(given):
         if os.access(path, os.X_OK):
             return path
     sys.exit("plot_scenarios: clearjoint not found; build it or pass --clearjoint PROGRAM")
+
+
+def find_describe_tables(given):
+    if given:
+        return given
+    for build in ("build", "build-cli"):
+        path = os.path.join(REPOSITORY, build, DESCRIBE_TABLES)
+        if os.access(path, os.X_OK):
+            return path
+    sys.exit("plot_scenarios: clearjoint_describe_projections not found; build it or pass --tables PROGRAM")
+
+
+def read_tables(program):
+    """The library's enum tables and result field lists, as the program prints them."""
+    result = subprocess.run([program], capture_output=True, text=True)
+    if result.returncode != 0:
+        sys.exit(f"plot_scenarios: {program} failed ({result.returncode}):\n{result.stderr}")
+    return json.loads(result.stdout)
+
+
+def scenario_titles(tables):
+    """Each scenario's key (the answer's "scenario") to its label, from the ContactScenario table."""
+    for table in tables["enums"]:
+        if table["type"] == "ContactScenario":
+            return {entry["key"]: entry["label"] for entry in table["entries"]}
+    sys.exit("plot_scenarios: the enum tables hold no ContactScenario")
 
 
 def run_detect(program, input_path):
@@ -231,7 +247,7 @@ class Scene:
         return "side" if side >= end else "end"
 
 
-def draw(query, answer, path):
+def draw(query, answer, path, title):
     scene = Scene(query, answer)
     contacts = answer["contacts"]
     r, h = scene.ri * MM, scene.li / 2 * MM
@@ -243,7 +259,6 @@ def draw(query, answer, path):
                             height_ratios=[3.0, 1.25] if zooms else None)
     side = fig.add_subplot(grid[0, : max(zooms, 2)])
     end = fig.add_subplot(grid[0, max(zooms, 2):])
-    title = TITLES.get(answer["scenario"], answer["scenario"])
     fig.suptitle(f"{title}   [clearjoint detect: scenario \"{answer['scenario']}\", "
                  f"{answer['certificate']}]\n"
                  f"Ri = {r:g} mm, Rj = {scene.rj * MM:g} mm, Li = {2 * h:g} mm, "
@@ -302,6 +317,8 @@ def draw(query, answer, path):
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--clearjoint", help="the clearjoint program (default: build*/apps/...)")
+    parser.add_argument("--tables", help="the program printing the enum tables (default: build*/%s)"
+                        % DESCRIBE_TABLES)
     parser.add_argument("--input", default=os.path.join(REPOSITORY, "examples", "scenarios.jsonl"))
     parser.add_argument("--out", default=os.path.join(REPOSITORY, "docs", "figures"))
     args = parser.parse_args()
@@ -309,6 +326,7 @@ def main():
     program = find_program(args.clearjoint)
     with open(args.input) as f:
         queries = [json.loads(line) for line in f if line.strip()]
+    titles = scenario_titles(read_tables(find_describe_tables(args.tables)))
     answers = run_detect(program, args.input)
     if len(answers) != len(queries):
         sys.exit(f"plot_scenarios: {len(answers)} answers for {len(queries)} lines")
@@ -317,7 +335,9 @@ def main():
         if answer.get("id") != query.get("id") or "error" in answer:
             sys.exit(f"plot_scenarios: line {count}: {answer}")
         path = os.path.join(args.out, f"scenario-{query['id']}.png")
-        draw(query, answer, path)
+        if answer["scenario"] not in titles:
+            sys.exit(f"plot_scenarios: line {count}: scenario {answer['scenario']!r} is not in the library's table")
+        draw(query, answer, path, titles[answer["scenario"]])
         print(f"[{count}/{len(queries)}] {path}: scenario {answer['scenario']}, "
               f"{len(answer['contacts'])} contact(s)", flush=True)
 

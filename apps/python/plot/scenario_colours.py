@@ -50,6 +50,8 @@ def scenario_name(code: int) -> str:
 
 
 def scenario_table() -> List[dict]:
-    """Every scenario as ``{"code", "label", "colour"}``, in code order (the viewer's legend)."""
-    return [{"code": code, "label": scenario_name(code), "colour": colour}
-            for code, colour in SCENARIO_COLOURS.items()]
+    """Every scenario of the library's table as ``{"code", "label", "colour"}``, in code order
+    (the viewer's legend)."""
+    from .._enums import ContactScenario
+    return [{"code": int(scenario), "label": scenario_name(scenario), "colour": scenario_colour(scenario)}
+            for scenario in ContactScenario]
