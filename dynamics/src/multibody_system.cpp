@@ -28,9 +28,12 @@ MultibodySystem::MultibodySystem(std::vector<BodyProperties> bodies,
                      format_number(baumgarte_.beta) + "): alpha and beta must be >= 0");
   }
   layout_.body_count = n;
-  for (const auto& element : forces_) {
+  for (size_t e = 0; e < forces_.size(); ++e) {
     extra_offsets_.push_back(layout_.extra_count);
-    layout_.extra_count += element->extra_state_count();
+    const int count = forces_[e]->extra_state_count();
+    layout_.extra_count += count;
+    const ForceEvents* events = events_of(*forces_[e]);
+    if (events != nullptr && count > 0) events_.push_back({e, events});
   }
   inverse_mass_.resize(6 * n);
   for (int b = 0; b < n; ++b) {
@@ -242,11 +245,10 @@ bool MultibodySystem::update_extra_states(double time, std::span<double> y) {
   if (layout_.extra_count == 0) return false;
   kinematics_.update(time, y);
   bool changed = false;
-  for (size_t e = 0; e < forces_.size(); ++e) {
-    const size_t offset = static_cast<size_t>(layout_.extra_offset() + extra_offsets_[e]);
-    const size_t count = static_cast<size_t>(forces_[e]->extra_state_count());
-    if (count == 0) continue;
-    changed = forces_[e]->update_extra_state(time, kinematics_, y.subspan(offset, count)) || changed;
+  for (const ElementEvents& e : events_) {
+    const size_t offset = static_cast<size_t>(layout_.extra_offset() + extra_offsets_[e.element]);
+    const size_t count = static_cast<size_t>(forces_[e.element]->extra_state_count());
+    changed = e.events->update_extra_state(time, kinematics_, y.subspan(offset, count)) || changed;
   }
   return changed;
 }
@@ -254,9 +256,8 @@ bool MultibodySystem::update_extra_states(double time, std::span<double> y) {
 bool MultibodySystem::begins_event(double time, std::span<const double> y) {
   if (layout_.extra_count == 0) return false;
   kinematics_.update(time, y);
-  for (size_t e = 0; e < forces_.size(); ++e) {
-    if (forces_[e]->extra_state_count() == 0) continue;
-    if (forces_[e]->begins_event(kinematics_, extra_state(y, e))) return true;
+  for (const ElementEvents& e : events_) {
+    if (e.events->begins_event(kinematics_, extra_state(y, e.element))) return true;
   }
   return false;
 }

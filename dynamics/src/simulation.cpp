@@ -10,6 +10,7 @@
 #include "clearjoint/dynamics/csv_writer.hpp"
 #include "clearjoint/dynamics/csv_directory.hpp"
 #include "clearjoint/dynamics/errors.hpp"
+#include "clearjoint/dynamics/force_recorder.hpp"
 #include "clearjoint/dynamics/reaction_forces.hpp"
 #include "clearjoint/dynamics/simulation_output.hpp"
 
@@ -59,13 +60,6 @@ class TableNames {
   std::vector<std::pair<std::string, std::string>> names_;  // folded name, what it is for
 };
 
-/// A force element that records outputs, and its table.
-struct ElementOutput {
-  size_t element = 0;
-  size_t width = 0;
-  size_t table = 0;
-};
-
 /// Wall-clock time between two progress calls made between report times.
 constexpr std::chrono::milliseconds kProgressInterval{100};
 
@@ -84,8 +78,23 @@ std::string table_name(std::string_view prefix, std::string_view name) {
 /// Where each table's rows come from: a body, a force element, or the system-wide tables.
 struct SimulationRun::Sources {
   std::vector<BodyIndex> output_bodies;  ///< body_<name> tables, in plan order after the two fixed
-  std::vector<std::pair<std::size_t, std::size_t>> elements;  ///< (force element, output width)
+  /// force_<name> tables: the element's index, its recorder, the recorder's column count.
+  struct Element {
+    std::size_t index = 0;
+    const ForceRecorder* recorder = nullptr;
+    std::size_t width = 0;
+  };
+  std::vector<Element> elements;
 };
+
+const ForceRecorder* recorded_by_run(const ForceElement& element, const ModelDescription& model) {
+  const ForceRecorder* recorder = recorder_of(element);
+  if (recorder == nullptr || recorder->output_columns().empty()) return nullptr;
+  const auto& wanted = model.output_force_elements;
+  const bool listed = model.output_all_force_elements ||
+                      std::find(wanted.begin(), wanted.end(), element.name()) != wanted.end();
+  return listed ? recorder : nullptr;
+}
 
 SimulationRun::SimulationRun(const ModelDescription& model, const RunOptions& options)
     : simulator_(std::make_unique<Simulator>(model)), sources_(std::make_unique<Sources>()) {
@@ -98,16 +107,14 @@ SimulationRun::SimulationRun(const ModelDescription& model, const RunOptions& op
     body_names.push_back(names.add(table_name("body_", m.output_bodies[k]),
                                    "output.bodies[" + std::to_string(k) + "] \"" + m.output_bodies[k] + "\""));
   }
-  std::vector<std::pair<size_t, std::string>> element_names;
+  std::vector<std::pair<Sources::Element, std::string>> element_names;
   for (size_t e = 0; e < system.force_elements().size(); ++e) {
     const ForceElement& element = *system.force_elements()[e];
-    const auto& wanted = m.output_force_elements;
-    if (element.output_columns().empty() ||
-        (!m.output_all_force_elements && std::find(wanted.begin(), wanted.end(), element.name()) == wanted.end())) {
-      continue;
-    }
-    element_names.emplace_back(e, names.add(table_name("force_", element.name()),
-                                            "force element \"" + std::string(element.name()) + "\""));
+    const ForceRecorder* recorder = recorded_by_run(element, m);
+    if (recorder == nullptr) continue;
+    element_names.emplace_back(Sources::Element{e, recorder, 0},
+                               names.add(table_name("force_", element.name()),
+                                         "force element \"" + std::string(element.name()) + "\""));
   }
   // The plan, in the order the tables are declared (and the files listed).
   for (size_t k = 0; k < m.output_bodies.size(); ++k) {
@@ -117,9 +124,10 @@ SimulationRun::SimulationRun(const ModelDescription& model, const RunOptions& op
   tables_.push_back({"energy", {"time", "kinetic", "potential", "total", "position_violation",
                                 "velocity_violation", "euler_norm_drift"}});
   tables_.push_back({"reactions", reaction_header(system.constraints())});
-  for (const auto& [e, name] : element_names) {
-    std::vector<std::string> header = system.force_elements()[e]->output_columns();
-    sources_->elements.emplace_back(e, header.size());
+  for (auto& [e, name] : element_names) {
+    std::vector<std::string> header = e.recorder->output_columns();
+    e.width = header.size();
+    sources_->elements.push_back(e);
     header.insert(header.begin(), "time");
     tables_.push_back({name, std::move(header)});
   }
@@ -184,11 +192,11 @@ SimulationSummary SimulationRun::run(SimulationOutput& output, const ProgressCal
       output.write_row(reaction_table, row);
 
       for (size_t k = 0; k < sources_->elements.size(); ++k) {
-        const auto [element, width] = sources_->elements[k];
-        row.assign(width + 1, 0.0);
+        const Sources::Element& e = sources_->elements[k];
+        row.assign(e.width + 1, 0.0);
         row[0] = t;
-        system.force_elements()[element]->record_outputs(t, system.kinematics(), system.extra_state(y, element),
-                                                         std::span<double>(row).subspan(1));
+        e.recorder->record_outputs(t, system.kinematics(), system.extra_state(y, e.index),
+                                   std::span<double>(row).subspan(1));
         output.write_row(table_index[bodies + 2 + k], row);
       }
     }
@@ -223,7 +231,8 @@ SimulationSummary SimulationRun::run(SimulationOutput& output, const ProgressCal
   summary.integration = simulator_->statistics();
   output.commit();
   for (const auto& element : system.force_elements()) {
-    std::string text = element->statistics_text();
+    const ForceRecorder* recorder = recorder_of(*element);
+    std::string text = recorder != nullptr ? recorder->statistics_text() : std::string();
     if (!text.empty()) summary.element_statistics.push_back(std::move(text));
   }
   return summary;

@@ -48,6 +48,7 @@ void check_unique(const std::vector<dynamics::TablePlan>& tables) {
 /// a clearance joint its index in MoreauJean::clearance_joint_names and where its columns are.
 struct ElementTable {
   size_t element = 0;
+  const dynamics::ForceRecorder* recorder = nullptr;
   size_t width = 0;
   size_t table = 0;
   int site = -1;
@@ -84,14 +85,12 @@ struct MoreauJeanRun::Impl {
     const auto names = scheme.clearance_joint_names();
     for (size_t e = 0; e < system.force_elements().size(); ++e) {
       const dynamics::ForceElement& element = *system.force_elements()[e];
-      const auto& wanted = model.output_force_elements;
-      if (element.output_columns().empty() ||
-          (!model.output_all_force_elements && std::find(wanted.begin(), wanted.end(), element.name()) == wanted.end())) {
-        continue;
-      }
-      std::vector<std::string> header = element.output_columns();
+      const dynamics::ForceRecorder* recorder = dynamics::recorded_by_run(element, model);
+      if (recorder == nullptr) continue;
+      std::vector<std::string> header = recorder->output_columns();
       ElementTable t;
       t.element = e;
+      t.recorder = recorder;
       t.width = header.size();
       t.table = tables.size();
       if (dynamic_cast<const dynamics::ClearanceRevoluteJoint*>(&element) != nullptr) {
@@ -237,9 +236,8 @@ struct MoreauJeanRun::Impl {
           row.assign(e.width + 1, 0.0);
           row[0] = t;
           const std::span<double> values = std::span<double>(row).subspan(1);
-          const dynamics::ForceElement& element = *system.force_elements()[e.element];
-          element.record_outputs(t, system.kinematics(), system.extra_state(y, e.element),
-                                 values.first(e.site >= 0 ? e.percussion_column : e.width));
+          e.recorder->record_outputs(t, system.kinematics(), system.extra_state(y, e.element),
+                                     values.first(e.site >= 0 ? e.percussion_column : e.width));
           if (e.site >= 0) fill_contacts(e, h, values);
           output.write_row(table_index[e.table], row);
         }

@@ -234,7 +234,7 @@ TEST(Integrator, CallsTheStepMonitorWithTimesInOrderWithTheReports) {
 /// Keeps a count of the accepted states it is shown (update_extra_state) in its one extra state
 /// variable, and notes every value its force evaluation (trial stages included) reads there. Its
 /// force is a stiff one-sided spring at x = 0.5 m, whose onset makes the controller reject steps.
-class AcceptedStateCounter final : public ForceElement {
+class AcceptedStateCounter final : public ForceElement, public ForceEvents {
  public:
   std::string_view name() const override { return "counter"; }
   int extra_state_count() const override { return 1; }

@@ -58,6 +58,8 @@
 
 #include "clearjoint/dynamics/clearance_joint_parameters.hpp"
 #include "clearjoint/dynamics/force_element.hpp"
+#include "clearjoint/dynamics/force_events.hpp"
+#include "clearjoint/dynamics/force_recorder.hpp"
 #include "clearjoint/dynamics/joint_lubrication.hpp"
 #include "clearjoint/dynamics/normal_contact_force.hpp"
 #include "clearjoint/dynamics/regularised_friction.hpp"
@@ -152,7 +154,8 @@ class JointFilm;
 /// Index, in a lubricated joint's extra state, of the film's work W_film [J] (after the memory).
 inline constexpr int kFilmWorkIndex = kContactSlotCount;
 
-class ClearanceRevoluteJoint final : public ForceElement {
+/// A force element with events (the impact memory) and a recorder (its table and counters).
+class ClearanceRevoluteJoint final : public ForceElement, public ForceEvents, public ForceRecorder {
  public:
   /// Throws ModelError naming "<name>.<field>" for bad dimensions (non-finite, non-positive,
   /// journal not smaller than bearing), zero axes, bad force or friction parameters, or a

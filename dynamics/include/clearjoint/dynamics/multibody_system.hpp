@@ -14,6 +14,7 @@
 #include "clearjoint/dynamics/baumgarte_parameters.hpp"
 #include "clearjoint/dynamics/constraint_set.hpp"
 #include "clearjoint/dynamics/force_element.hpp"
+#include "clearjoint/dynamics/force_events.hpp"
 
 namespace clearjoint::dynamics {
 
@@ -61,11 +62,11 @@ class MultibodySystem {
   /// (Cholesky, in place). Throws SolverError if Phi_q loses rank. No heap allocation.
   void derivative(double time, std::span<const double> y, std::span<double> dydt);
 
-  /// Let the force elements change their extra state discretely at (t, y), an accepted state
-  /// (ForceElement::update_extra_state). Returns true if any element changed y.
+  /// Let the force elements with events and extra state change it discretely at (t, y), an
+  /// accepted state (ForceEvents::update_extra_state). Returns true if any element changed y.
   bool update_extra_states(double time, std::span<double> y);
-  /// True if any force element would record an event that begins at (t, y)
-  /// (ForceElement::begins_event). Updates kinematics(). No allocation.
+  /// True if any force element with events would record one that begins at (t, y)
+  /// (ForceEvents::begins_event). Updates kinematics(). No allocation.
   bool begins_event(double time, std::span<const double> y);
   /// Force element e's extra variables within y.
   std::span<const double> extra_state(std::span<const double> y, size_t e) const;
@@ -103,6 +104,13 @@ class MultibodySystem {
   std::vector<std::unique_ptr<ForceElement>> forces_;
   std::vector<ExternalLoad> external_loads_;
   std::vector<int> extra_offsets_;
+  /// The elements with events and extra state (events_of, found once): what the integrator's
+  /// discrete updates and onset probes ask.
+  struct ElementEvents {
+    size_t element = 0;
+    const ForceEvents* events = nullptr;
+  };
+  std::vector<ElementEvents> events_;
   StateLayout layout_;
   ConstraintSet constraints_;
   BaumgarteParameters baumgarte_;

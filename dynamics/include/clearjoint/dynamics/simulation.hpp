@@ -11,9 +11,9 @@
 ///                    velocity_violation (max |Phi_q v + Phi_t|), euler_norm_drift (max ||p|-1|)
 ///   reactions.csv    time, then per joint `<joint>.fx` .. `<joint>.mz`: the reaction (eq. 37) on
 ///                    body j (body i for joints to ground), moment about the joint point, world frame
-///   force_<name>.csv time, then the columns a force element records (ForceElement::output_columns;
+///   force_<name>.csv time, then the columns a force element records (ForceRecorder::output_columns;
 ///                    e.g. a clearance joint's contact depths, forces, scenario), for every element
-///                    that records any
+///                    that records any (recorded_by_run)
 /// In body_<name> and force_<name>, characters other than letters, digits, - and _ of the name
 /// become _ (also in the table names of TablesInMemory); two files whose names then match, also
 /// without case, are refused before the run starts.
@@ -24,6 +24,7 @@
 #include <string>
 #include <string_view>
 
+#include "clearjoint/dynamics/force_recorder.hpp"
 #include "clearjoint/dynamics/model_builder.hpp"
 #include "clearjoint/dynamics/model_overrides.hpp"
 #include "clearjoint/dynamics/run_size.hpp"
@@ -40,7 +41,7 @@ struct SimulationSummary {
   double max_position_violation = 0.0;
   double max_velocity_violation = 0.0;
   double max_euler_norm_drift = 0.0;
-  std::vector<std::string> element_statistics;  ///< ForceElement::statistics_text(), non-empty ones
+  std::vector<std::string> element_statistics;  ///< ForceRecorder::statistics_text(), non-empty ones
   /// The values set in place of the model file's (model_overrides.hpp), set by the caller that
   /// applied them; the run does not see them (its model has them written in).
   ModelOverrides overrides;
@@ -64,6 +65,12 @@ using ProgressCallback = std::function<void(double fraction)>;
 /// no "..", no control characters). Model files keep names to kMaxNameBytes (model_file.hpp), so
 /// the file name fits any file system. Engine adapters name their tables with it too.
 std::string table_name(std::string_view prefix, std::string_view name);
+
+/// The recorder of `element` when a run writes its table force_<name>: the element records
+/// columns (ForceRecorder) and the model's output.force_elements lists it (or is absent, which
+/// lists every element). Null otherwise. The compliant and the non-smooth runs pick their tables
+/// with it.
+const ForceRecorder* recorded_by_run(const ForceElement& element, const ModelDescription& model);
 
 struct RunOptions {
   /// Run beyond the size guard (run_size.hpp); the command line's --allow-large.
