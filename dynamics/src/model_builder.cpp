@@ -69,25 +69,33 @@ int held_component_index(std::string_view name, bool velocity, std::string_view 
                    (velocity ? "vx, vy, vz, wx, wy, wz" : "x, y, z, rx, ry, rz"));
 }
 
-BuiltModel build_model(const ModelDescription& model) {
+namespace {
+
+/// A model's mechanism, checked: its bodies (properties, initial guesses), its joints' equations
+/// at those poses, and the coordinates held while the initial conditions are made consistent.
+struct Mechanism {
+  std::vector<BodyProperties> properties;
+  std::vector<BodyState> states;
+  std::vector<JointEquations> joints;
+  std::vector<HeldCoordinate> held_positions;
+  std::vector<HeldVelocity> held_velocities;
+};
+
+/// The bodies and joints of `model` into `mechanism`.
+void add_bodies_and_joints(const ModelDescription& model, Mechanism& mechanism) {
   if (model.bodies.empty()) throw ModelError("bodies: the model has no bodies");
   require_unique_names(model);
   const int n = static_cast<int>(model.bodies.size());
-
-  std::vector<BodyProperties> properties;
-  std::vector<BodyState> states;
   SystemKinematics initial(n);
   for (BodyIndex b = 0; b < n; ++b) {
     const std::string field = "bodies[" + std::to_string(b) + "]";
     validate(model.bodies[b].properties, field);
     validate(model.bodies[b].initial, field);
-    properties.push_back(model.bodies[b].properties);
-    states.push_back(model.bodies[b].initial);
-    states.back().euler_parameters.normalize();
-    initial.set(b, states.back());
+    mechanism.properties.push_back(model.bodies[b].properties);
+    mechanism.states.push_back(model.bodies[b].initial);
+    mechanism.states.back().euler_parameters.normalize();
+    initial.set(b, mechanism.states.back());
   }
-
-  std::vector<JointEquations> joints;
   for (size_t k = 0; k < model.joints.size(); ++k) {
     const JointDescription& j = model.joints[k];
     const std::string field = "joints[" + std::to_string(k) + "]";
@@ -97,34 +105,49 @@ BuiltModel build_model(const ModelDescription& model) {
         throw ModelError(field + ".name = \"" + j.name + "\": used by joints[" + std::to_string(other) + "] already");
       }
     }
-    joints.push_back(JointEquations::build(j, find_body(model, j.body_i, field + ".body_i"),
-                                           find_body(model, j.body_j, field + ".body_j"), initial));
+    mechanism.joints.push_back(JointEquations::build(j, find_body(model, j.body_i, field + ".body_i"),
+                                                     find_body(model, j.body_j, field + ".body_j"), initial));
   }
+}
 
-  std::vector<std::unique_ptr<ForceElement>> forces;
-  if (model.gravity_W.squaredNorm() > 0.0) {
-    std::vector<double> masses;
-    for (const BodyProperties& p : properties) masses.push_back(p.mass);
-    forces.push_back(std::make_unique<Gravity>(std::move(masses), model.gravity_W));
-  }
-  const size_t first_described_force = forces.size();  // after gravity, which has no name of the model's
-  for (size_t k = 0; k < model.forces.size(); ++k) {
-    forces.push_back(std::visit(ForceBuilder{model, "forces[" + std::to_string(k) + "]"}, model.forces[k]));
-    for (size_t other = 0; other < k; ++other) {
-      if (forces[first_described_force + other]->name() == forces.back()->name()) {
-        throw ModelError("forces[" + std::to_string(k) + "].name = \"" + std::string(forces.back()->name()) +
-                         "\": used by forces[" + std::to_string(other) + "] already");
-      }
+std::string_view force_name(const ForceDescription& force) {
+  return std::visit([](const auto& d) -> std::string_view { return d.name; }, force);
+}
+
+/// forces[k]'s name must differ from the earlier forces' names.
+void require_unique_force_name(const ModelDescription& model, size_t k) {
+  const std::string_view name = force_name(model.forces[k]);
+  for (size_t other = 0; other < k; ++other) {
+    if (force_name(model.forces[other]) == name) {
+      throw ModelError("forces[" + std::to_string(k) + "].name = \"" + std::string(name) +
+                       "\": used by forces[" + std::to_string(other) + "] already");
     }
   }
+}
 
-  std::vector<HeldCoordinate> held_positions;
+/// The bodies a force description names, each with its field ("forces[2].body_i").
+struct ForceBodies {
+  const ModelDescription& model;
+  std::string field;
+  void operator()(const PointLoadDescription& d) const { find_body(model, d.body, field + ".body"); }
+  void operator()(const ClearanceRevoluteDescription& d) const {
+    find_body(model, d.bearing.body, field + ".bearing.body");
+    find_body(model, d.journal.body, field + ".journal.body");
+  }
+  void operator()(const SpringDamperDescription& d) const {
+    find_body(model, d.body_i, field + ".body_i");
+    find_body(model, d.body_j, field + ".body_j");
+  }
+};
+
+/// The held coordinates of `model` into `mechanism`, and the output bodies checked.
+void add_held_coordinates(const ModelDescription& model, Mechanism& mechanism) {
   for (size_t k = 0; k < model.held_positions.size(); ++k) {
     const auto& h = model.held_positions[k];
     const std::string field = "initial_conditions.hold_positions[" + std::to_string(k) + "]";
     const BodyIndex body = find_body(model, h.body, field + ".body");
     if (body == kGround) throw ModelError(field + ".body = \"ground\": the ground is always held");
-    held_positions.push_back({body, held_component_index(h.component, false, field + ".components")});
+    mechanism.held_positions.push_back({body, held_component_index(h.component, false, field + ".components")});
     for (size_t other = 0; other < k; ++other) {
       if (model.held_positions[other].body == h.body && model.held_positions[other].component == h.component) {
         throw ModelError(field + " = (\"" + h.body + "\", \"" + h.component +
@@ -132,13 +155,12 @@ BuiltModel build_model(const ModelDescription& model) {
       }
     }
   }
-  std::vector<HeldVelocity> held_velocities;
   for (size_t k = 0; k < model.held_velocities.size(); ++k) {
     const auto& h = model.held_velocities[k];
     const std::string field = "initial_conditions.hold_velocities[" + std::to_string(k) + "]";
     const BodyIndex body = find_body(model, h.body, field + ".body");
     if (body == kGround) throw ModelError(field + ".body = \"ground\": the ground is always at rest");
-    held_velocities.push_back({body, held_component_index(h.component, true, field + ".component"), h.value});
+    mechanism.held_velocities.push_back({body, held_component_index(h.component, true, field + ".component"), h.value});
     // Two values for one component cannot both hold; the later one must not win silently.
     for (size_t other = 0; other < k; ++other) {
       if (model.held_velocities[other].body == h.body && model.held_velocities[other].component == h.component) {
@@ -158,27 +180,75 @@ BuiltModel build_model(const ModelDescription& model) {
       }
     }
   }
+}
 
-  if (!model.output_all_force_elements) {
-    for (size_t k = 0; k < model.output_force_elements.size(); ++k) {
-      const std::string& name = model.output_force_elements[k];
-      const bool known = std::any_of(forces.begin(), forces.end(),
-                                     [&](const auto& f) { return f->name() == name; });
-      if (!known) {
-        throw ModelError("output.force_elements[" + std::to_string(k) + "] = \"" + name +
-                         "\": no force element of that name");
-      }
+/// Every name in output.force_elements must be a force element's: gravity's (when the model has
+/// gravity, build_model adds it under that name) or a described force's.
+void require_known_output_forces(const ModelDescription& model) {
+  if (model.output_all_force_elements) return;
+  const bool has_gravity = model.gravity_W.squaredNorm() > 0.0;
+  for (size_t k = 0; k < model.output_force_elements.size(); ++k) {
+    const std::string& name = model.output_force_elements[k];
+    const bool known = (has_gravity && name == kGravityName) ||
+                       std::any_of(model.forces.begin(), model.forces.end(),
+                                   [&](const auto& f) { return force_name(f) == name; });
+    if (!known) {
+      throw ModelError("output.force_elements[" + std::to_string(k) + "] = \"" + name +
+                       "\": no force element of that name");
     }
   }
+}
+
+}  // namespace
+
+BuiltModel build_model(const ModelDescription& model) {
+  Mechanism mechanism;
+  add_bodies_and_joints(model, mechanism);
+
+  std::vector<std::unique_ptr<ForceElement>> forces;
+  if (model.gravity_W.squaredNorm() > 0.0) {
+    std::vector<double> masses;
+    for (const BodyProperties& p : mechanism.properties) masses.push_back(p.mass);
+    forces.push_back(std::make_unique<Gravity>(std::move(masses), model.gravity_W));
+  }
+  for (size_t k = 0; k < model.forces.size(); ++k) {
+    forces.push_back(std::visit(ForceBuilder{model, "forces[" + std::to_string(k) + "]"}, model.forces[k]));
+    require_unique_force_name(model, k);
+  }
+
+  add_held_coordinates(model, mechanism);
+  require_known_output_forces(model);
 
   BuiltModel built;
-  built.system = std::make_unique<MultibodySystem>(std::move(properties), std::move(joints),
+  built.system = std::make_unique<MultibodySystem>(std::move(mechanism.properties), std::move(mechanism.joints),
                                                    std::move(forces), model.baumgarte);
-  built.initial_conditions = make_consistent(*built.system, model.solver.start_time, states,
-                                             held_positions, held_velocities);
-  built.initial_states = states;
-  built.initial_state = built.system->pack(states);
+  built.initial_conditions = make_consistent(*built.system, model.solver.start_time, mechanism.states,
+                                             mechanism.held_positions, mechanism.held_velocities);
+  built.initial_states = mechanism.states;
+  built.initial_state = built.system->pack(mechanism.states);
   return built;
+}
+
+ConsistentStart consistent_start(const ModelDescription& model) {
+  Mechanism mechanism;
+  add_bodies_and_joints(model, mechanism);
+  require_finite("gravity", model.gravity_W);  // as Gravity's constructor checks it
+  for (size_t k = 0; k < model.forces.size(); ++k) {
+    std::visit(ForceBodies{model, "forces[" + std::to_string(k) + "]"}, model.forces[k]);
+    require_unique_force_name(model, k);
+  }
+  add_held_coordinates(model, mechanism);
+  require_known_output_forces(model);
+
+  // make_consistent reads the bodies and the constraints alone: a system without force elements
+  // gives build_model's states, bit for bit.
+  MultibodySystem mechanism_only(std::move(mechanism.properties), std::move(mechanism.joints), {},
+                                 model.baumgarte);
+  ConsistentStart start;
+  start.initial_conditions = make_consistent(mechanism_only, model.solver.start_time, mechanism.states,
+                                             mechanism.held_positions, mechanism.held_velocities);
+  start.initial_states = std::move(mechanism.states);
+  return start;
 }
 
 }  // namespace clearjoint::dynamics

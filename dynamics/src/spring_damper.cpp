@@ -14,16 +14,22 @@ void require_non_negative(const std::string& field, double value) {
 
 }  // namespace
 
+void validate_spring_damper(std::string_view name, const Vector3& point_i_B, const Vector3& point_j_B,
+                            const SpringDamperParameters& parameters) {
+  const std::string prefix(name);
+  require_finite(prefix + ".point_i", point_i_B);
+  require_finite(prefix + ".point_j", point_j_B);
+  require_non_negative(prefix + ".stiffness", parameters.stiffness);
+  require_non_negative(prefix + ".damping", parameters.damping);
+  require_non_negative(prefix + ".free_length", parameters.free_length);
+}
+
 SpringDamper::SpringDamper(std::string name, BodyIndex body_i, const Vector3& point_i_B,
                            BodyIndex body_j, const Vector3& point_j_B,
                            const SpringDamperParameters& parameters)
     : name_(std::move(name)), body_i_(body_i), point_i_B_(point_i_B), body_j_(body_j),
       point_j_B_(point_j_B), parameters_(parameters) {
-  require_finite(name_ + ".point_i", point_i_B_);
-  require_finite(name_ + ".point_j", point_j_B_);
-  require_non_negative(name_ + ".stiffness", parameters_.stiffness);
-  require_non_negative(name_ + ".damping", parameters_.damping);
-  require_non_negative(name_ + ".free_length", parameters_.free_length);
+  validate_spring_damper(name_, point_i_B_, point_j_B_, parameters_);
 }
 
 void SpringDamper::add_forces(const ForceContext& context, GeneralisedForces& forces) const {

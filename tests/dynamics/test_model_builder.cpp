@@ -5,6 +5,7 @@
 
 #include "clearjoint/dynamics/clearance_revolute_joint.hpp"
 #include "clearjoint/dynamics/errors.hpp"
+#include "clearjoint/dynamics/model_file.hpp"
 #include "dynamics_test_support.hpp"
 
 namespace clearjoint::dynamics {
@@ -13,6 +14,15 @@ namespace {
 std::string error_of(const ModelDescription& model) {
   try {
     build_model(model);
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+std::string start_error_of(const ModelDescription& model) {
+  try {
+    consistent_start(model);
   } catch (const std::exception& e) {
     return e.what();
   }
@@ -74,6 +84,48 @@ TEST(ModelBuilder, NamesAnUnknownForceElementAmongTheOutputs) {
   model.output_all_force_elements = false;
   model.output_force_elements = {"gap", "gapp"};
   EXPECT_EQ(error_of(model), "output.force_elements[1] = \"gapp\": no force element of that name");
+}
+
+/// The lubricated slider-crank (its joint builds an oil film) with one more force: a spring whose
+/// constructor refuses its negative stiffness, so that building the force elements throws.
+ModelDescription lubricated_slider_crank_with_unbuildable_spring() {
+  ModelDescription model = read_model_file(std::string(CLEARJOINT_MODELS_DIR) +
+                                           "/slider_crank_planar_clearance_lubricated.json");
+  SpringDamperDescription spring{"unbuildable", "rod", "slider", Vector3::Zero(), Vector3::Zero(), {}};
+  spring.parameters.stiffness = -1.0;
+  model.forces.push_back(spring);
+  return model;
+}
+
+TEST(ConsistentStart, GivesBuildModelsInitialStatesWithoutBuildingAnyForceElement) {
+  ModelDescription model = lubricated_slider_crank_with_unbuildable_spring();
+  EXPECT_THROW(build_model(model), ModelError);
+  const ConsistentStart start = consistent_start(model);
+  model.forces.pop_back();
+  const BuiltModel built = build_model(model);
+  ASSERT_EQ(start.initial_states.size(), built.initial_states.size());
+  for (size_t b = 0; b < start.initial_states.size(); ++b) {
+    const BodyState& s = start.initial_states[b];
+    const BodyState& expected = built.initial_states[b];
+    EXPECT_TRUE(s.position_W == expected.position_W) << b;  // bit for bit
+    EXPECT_TRUE(s.euler_parameters == expected.euler_parameters) << b;
+    EXPECT_TRUE(s.velocity_W == expected.velocity_W) << b;
+    EXPECT_TRUE(s.angular_velocity_B == expected.angular_velocity_B) << b;
+  }
+  EXPECT_EQ(start.initial_conditions.iterations, built.initial_conditions.iterations);
+  EXPECT_EQ(start.initial_conditions.position_residual, built.initial_conditions.position_residual);
+  EXPECT_EQ(start.initial_conditions.velocity_residual, built.initial_conditions.velocity_residual);
+}
+
+TEST(ConsistentStart, NamesAnUnknownBodyOfAForceAndAnUnknownForceAmongTheOutputs) {
+  ModelDescription model = pendulum_with_clearance_joint();
+  std::get<ClearanceRevoluteDescription>(model.forces[0]).journal.body = "bobb";
+  EXPECT_EQ(start_error_of(model), "forces[0].journal.body = \"bobb\": no body of that name (use \"ground\" "
+                                   "for the world frame)");
+  model = pendulum_with_clearance_joint();
+  model.output_all_force_elements = false;
+  model.output_force_elements = {"gap", "gravity", "gapp"};
+  EXPECT_EQ(start_error_of(model), "output.force_elements[2] = \"gapp\": no force element of that name");
 }
 
 TEST(ModelBuilder, AddsGravityAsAForceElementWithPotentialEnergy) {

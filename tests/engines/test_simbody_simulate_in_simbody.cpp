@@ -377,5 +377,20 @@ TEST(SimulateInSimbody, RefusesAPointLoadByName) {
   EXPECT_NE(error.find("\"push\" (point_load)"), std::string::npos) << error;
 }
 
+TEST(SimulateInSimbody, RefusesASpringsNegativeStiffnessNamingTheField) {
+  // The route builds Simbody's spring, not clearjoint's, and checks it as clearjoint's would.
+  dynamics::ModelDescription model = shipped_model("slider_crank_planar_ideal.json");
+  dynamics::SpringDamperDescription spring{"weak", "ground", "slider", dynamics::Vector3::Zero(),
+                                           dynamics::Vector3::Zero(), {}};
+  spring.parameters.stiffness = -1.0;
+  model.forces.push_back(spring);
+  try {
+    SimbodyModel built(model);
+    ADD_FAILURE() << "accepted";
+  } catch (const dynamics::ModelError& e) {
+    EXPECT_STREQ(e.what(), "weak.stiffness = -1: must be >= 0");
+  }
+}
+
 }  // namespace
 }  // namespace clearjoint::simbody

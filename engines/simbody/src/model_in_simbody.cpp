@@ -3,6 +3,8 @@
 
 #include <variant>
 
+#include "clearjoint/dynamics/spring_damper.hpp"
+
 namespace clearjoint::simbody {
 
 namespace {
@@ -74,9 +76,10 @@ SimTK::Rotation mobilizer_axes(JointType type, const Vector3& parent_axis_P,
 
 SimbodyModel::SimbodyModel(const dynamics::ModelDescription& model) {
   refuse_unsupported(model);
-  // Every check of the model, and the consistent initial state both engines start from.
-  const dynamics::BuiltModel built = dynamics::build_model(model);
-  initial_conditions_ = built.initial_conditions;
+  // The model's checks and the consistent initial state both engines start from, without
+  // clearjoint's force elements: this route builds its own (below), which check their constants.
+  const dynamics::ConsistentStart start = dynamics::consistent_start(model);
+  initial_conditions_ = start.initial_conditions;
 
   system_ = std::make_unique<SimTK::MultibodySystem>();
   matter_ = std::make_unique<SimTK::SimbodyMatterSubsystem>(*system_);
@@ -88,12 +91,12 @@ SimbodyModel::SimbodyModel(const dynamics::ModelDescription& model) {
   const int body_count = static_cast<int>(model.bodies.size());
   std::vector<InitialMotion> motion;
   for (const dynamics::BodyDescription& b : model.bodies) body_names_.push_back(b.properties.name);
-  for (const dynamics::BodyState& s : built.initial_states) motion.push_back(initial_motion(s));
+  for (const dynamics::BodyState& s : start.initial_states) motion.push_back(initial_motion(s));
   auto index_of = [&](const std::string& name) {
     for (int b = 0; b < body_count; ++b) {
       if (body_names_[b] == name) return b;
     }
-    return kGround;  // build_model has checked every name
+    return kGround;  // consistent_start has checked every name
   };
   auto motion_of = [&](int b) { return b == kGround ? InitialMotion{} : motion[b]; };
   bodies_.resize(body_count);
@@ -232,6 +235,7 @@ SimbodyModel::SimbodyModel(const dynamics::ModelDescription& model) {
                               to_simtk(c->journal.axis_B)},
           c->parameters));
     } else if (const auto* s = std::get_if<dynamics::SpringDamperDescription>(&model.forces[k])) {
+      dynamics::validate_spring_damper(s->name, s->point_i_B, s->point_j_B, s->parameters);
       SimTK::MobilizedBody& bi = mobod(index_of(s->body_i));
       SimTK::MobilizedBody& bj = mobod(index_of(s->body_j));
       const SimTK::Vec3 pi = to_simtk(s->point_i_B);

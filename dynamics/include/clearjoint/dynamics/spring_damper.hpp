@@ -15,6 +15,11 @@ namespace clearjoint::dynamics {
 /// 1e-12 m is far below any part of a mechanism and far above rounding of metre-scale positions.
 inline constexpr double kSpringMinimumLength = 1e-12;
 
+/// The checks SpringDamper's constructor makes: finite points, constants >= 0, each named
+/// "<name>.<field>"; also for an engine that builds its own spring from the model's description.
+void validate_spring_damper(std::string_view name, const Vector3& point_i_B, const Vector3& point_j_B,
+                            const SpringDamperParameters& parameters);
+
 class SpringDamper final : public ForceElement {
  public:
   SpringDamper(std::string name, BodyIndex body_i, const Vector3& point_i_B, BodyIndex body_j,

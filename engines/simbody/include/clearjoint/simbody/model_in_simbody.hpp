@@ -4,8 +4,9 @@
 /// A clearjoint model file's mechanism built in Simbody: bodies as MobilizedBodies, ideal joints
 /// as mobilizers (a spanning tree from the ground) or, for the joints that close a loop,
 /// constraints, and clearance joints as ClearanceRevoluteForce. The initial state is the one
-/// clearjoint's own builder makes consistent (dynamics::build_model), so that both engines start
-/// from the same state.
+/// clearjoint's own builder makes consistent (dynamics::consistent_start, from the mechanism
+/// alone: no clearjoint force element is built for it), so that both engines start from the same
+/// state.
 ///
 /// Joints and their mobilizers (F on the parent, M on the child; M is F carried into the child
 /// at the initial poses, so that every mobilizer starts at q = 0):
@@ -74,7 +75,7 @@ class SimbodyModel {
   const std::vector<std::unique_ptr<ClearanceRevoluteForce>>& clearance_joints() const {
     return clearance_joints_;
   }
-  /// What dynamics::build_model reported on making the initial conditions consistent.
+  /// What dynamics::consistent_start reported on making the initial conditions consistent.
   const dynamics::InitialConditionReport& initial_conditions() const { return initial_conditions_; }
 
  private:
