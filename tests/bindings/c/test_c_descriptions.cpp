@@ -130,7 +130,9 @@ TEST(CDescriptions, CopyingADetectionCarriesEveryField) {
     EXPECT_FALSE(same_bytes(copy, base_copy)) << "cj_result does not carry " << field;
     ++changes;
   });
-  EXPECT_EQ(changes, 30);  // one contact with one crossing: 30 leaves, each reached
+  // One contact with one crossing: 30 leaves when this test was written. A floor, not the count,
+  // so that a field added to the lists needs no edit here: it is one more leaf, checked above.
+  EXPECT_GE(changes, 30);
 }
 
 TEST(CDescriptions, CopyingACrossingCarriesEveryField) {
