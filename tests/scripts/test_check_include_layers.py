@@ -110,6 +110,14 @@ class CheckIncludeLayers(unittest.TestCase):
                               '#include "clearjoint/json_input/json_reader.hpp"\n'},
                              "dynamics/include/clearjoint/dynamics/joint.hpp:1", "installed public header")
 
+    def test_reports_an_installed_header_that_includes_test_scaffolding(self):
+        # The helpers that change one field or option at a time (support/testing/) are test code:
+        # a public header that reached them would ship them.
+        self.assert_reported({PUBLIC + "joint/detect_contacts.hpp":
+                              '#include "clearjoint/geometry/queries/intersect_circle_plane.hpp"\n'
+                              '#include "joint_properties.hpp"\n'},
+                             PUBLIC + "joint/detect_contacts.hpp:2", "shipped code may not use test code")
+
     def test_reports_a_kernel_header_named_without_its_room(self):
         self.assert_reported({"geometry/src/joint/detect.cpp": '#include "rounded.hpp"\n'},
                              "geometry/src/joint/detect.cpp:1", '("queries/rounded.hpp")')
