@@ -149,8 +149,11 @@ def build_model(study, point, member):
             json_pointer.set_value(model, pointer, value, create=True)
         for name, value in point.values:
             for target in study.parameters[name]["set"]:
-                json_pointer.set_value(model, target["path"],
-                                       target.get("offset", 0.0) + target.get("scale", 1.0) * value)
+                if "choices" in target:  # an index, checked by study_file against every list
+                    json_pointer.set_value(model, target["path"], copy.deepcopy(target["choices"][int(value)]))
+                else:
+                    json_pointer.set_value(model, target["path"],
+                                           target.get("offset", 0.0) + target.get("scale", 1.0) * value)
         if member != 0:
             ensemble = study.spec["ensemble"]
             factor = 1.0 + member * ensemble["relative_step"]

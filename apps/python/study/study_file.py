@@ -160,10 +160,46 @@ REDUCTION_NEEDS = {  # quantity -> fields it needs
 }
 
 
+def _choices(parameter):
+    """The choices of a parameter whose set entries pick from lists (study-v1 schema: choices),
+    the shortest list's length bounding its values; None for a numeric parameter."""
+    lists = [target["choices"] for target in parameter["set"] if "choices" in target]
+    return min(lists, key=len) if lists else None
+
+
+def _check_choices(path, parameters):
+    for name, parameter in parameters.items():
+        for k, target in enumerate(parameter["set"]):
+            if "choices" in target and ("scale" in target or "offset" in target):
+                raise StudyError("%s: parameters.%s.set[%d]: choices cannot be combined with scale or offset "
+                                 "(the value is the choice's index)" % (path, name, k))
+
+
+def _check_choice_values(where, design, parameters):
+    """A parameter with choices takes whole numbers that index every list of choices."""
+    for kind in ("grid", "zip", "fixed", "random"):
+        block = design.get(kind, {})
+        if kind == "random":
+            block = block.get("distributions", {}) if block else {}
+        for name, values in block.items():
+            choices = _choices(parameters[name]) if name in parameters else None
+            if choices is None:
+                continue
+            if kind == "random":
+                raise StudyError("%s: random.%s: a parameter with choices takes listed values (grid, zip or "
+                                 "fixed), not draws" % (where, name))
+            for value in values if isinstance(values, list) else [values]:
+                if not (value == int(value) and 0 <= value < len(choices)):
+                    raise StudyError("%s: %s.%s = %r: must be a whole number from 0 to %d, the index of one of "
+                                     "its choices (%s)" % (where, kind, name, value, len(choices) - 1,
+                                                           ", ".join(json.dumps(c) for c in choices)))
+
+
 def _check_references(path, spec):
     """What the schema cannot say: designs name declared parameters, names are unique, members
     above 1 have an ensemble to draw them from, plots name designs and reductions that exist."""
     parameters = spec.get("parameters", {})
+    _check_choices(path, parameters)
     names = [d["name"] for d in spec["designs"]]
     duplicates = sorted({n for n in names if names.count(n) > 1})
     if duplicates:
@@ -191,6 +227,7 @@ def _check_references(path, spec):
             if len(set(lengths.values())) > 1:
                 raise StudyError("%s: zip: the lists differ in length (%s)" % (
                     where, ", ".join("%s: %d" % item for item in lengths.items())))
+        _check_choice_values(where, design, parameters)
         if design.get("members", 1) > 1 and "ensemble" not in spec:
             raise StudyError("%s: members = %d needs the study's ensemble (how members differ)" % (
                 where, design["members"]))

@@ -270,3 +270,54 @@ def test_model_paths_are_relative_to_the_study_file_not_the_current_folder(tmp_p
     with open(models_dir / "slider_crank_spatial_clearance.json") as f:
         assert study.base_models[""] == json.load(f)
     assert study.store_path == str(tmp_path / "studies" / "store_small")
+
+
+# The formulation as a parameter (docs/studies.md, "Sweeping a setting that is not a number").
+FORMULATION = {"set": [{"path": "/solver/method", "choices": ["dormand_prince", "moreau_jean"]}]}
+
+
+def formulation_study(spec):
+    spec["set"]["/solver/method"] = "dormand_prince"
+    spec["parameters"]["formulation"] = json.loads(json.dumps(FORMULATION))
+    spec["designs"] = [{"name": "formulations", "grid": {"formulation": [0, 1]},
+                        "fixed": {"radial_clearance_mm": 0.1, "axial_clearance_mm": 0.1}, "x": "formulation"}]
+    spec.pop("ensemble")
+
+
+def test_a_parameter_with_choices_sweeps_the_formulation_and_both_run(tmp_path, models_dir):
+    from clearjoint.study.execute import execute_run
+    study = load_study(edited(tmp_path, models_dir, formulation_study))
+    points, runs, _ = expand_study(study)
+    assert [p.point_id for p in points] == ["axial_clearance_mm=0.1,formulation=0.0,radial_clearance_mm=0.1",
+                                            "axial_clearance_mm=0.1,formulation=1.0,radial_clearance_mm=0.1"]
+    assert [r.model["solver"]["method"] for r in runs] == ["dormand_prince", "moreau_jean"]
+    assert runs[0].run_id != runs[1].run_id
+    results = [execute_run({"run_id": r.run_id, "model": r.model, "outputs": study.spec["outputs"]}) for r in runs]
+    for result in results:
+        assert all(np.isfinite(v) for v in result["reductions"].values())
+    # Two formulations, two motions: the slider's peak acceleration is not the same number.
+    assert results[0]["reductions"]["peak"] != results[1]["reductions"]["peak"]
+
+
+@pytest.mark.parametrize("edit, message", [
+    (lambda s: s["designs"][0]["grid"].update(formulation=[0, 2]),
+     "grid.formulation = 2: must be a whole number from 0 to 1, the index of one of its choices "
+     "(\"dormand_prince\", \"moreau_jean\")"),
+    (lambda s: s["designs"][0]["grid"].update(formulation=[0.5]), "grid.formulation = 0.5: must be a whole number"),
+    (lambda s: s["designs"][0].update(grid={"radial_clearance_mm": [0.1]},
+                                      fixed={"formulation": -1, "axial_clearance_mm": 0.1}),
+     "fixed.formulation = -1: must be a whole number"),
+    (lambda s: s["parameters"]["formulation"]["set"][0].update(scale=2.0),
+     "parameters.formulation.set[0]: choices cannot be combined with scale or offset"),
+    (lambda s: s["designs"][0].update(random={"draws": 2, "seed": 1,
+                                              "distributions": {"formulation": {"uniform": [0, 1]}}})
+     or s["designs"][0].pop("grid"),
+     "random.formulation: a parameter with choices takes listed values"),
+])
+def test_a_bad_choice_is_an_error_naming_the_field_and_the_choices(tmp_path, models_dir, edit, message):
+    def both(spec):
+        formulation_study(spec)
+        edit(spec)
+    with pytest.raises(StudyError) as error:
+        expand_study(load_study(edited(tmp_path, models_dir, both)))
+    assert message in str(error.value)
