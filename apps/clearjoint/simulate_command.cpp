@@ -18,15 +18,20 @@
 #include "clearjoint/dynamics/model_file.hpp"
 #include "clearjoint/dynamics/model_overrides.hpp"
 #include "clearjoint/dynamics/simulation.hpp"
+#include "clearjoint/engines/engine_choice.hpp"
 #include "clearjoint/json_input/bounded_json.hpp"
 #include "run_folder.hpp"
-#include "simulate_engine.hpp"
 #include "commands.hpp"
 #ifdef CLEARJOINT_WITH_NONSMOOTH
 #include "clearjoint/nonsmooth/moreau_jean_run.hpp"
 #endif
 
 namespace clearjoint::app {
+
+using engines::kDefaultEngine;
+using engines::PlannedRun;
+/// The option that names the engine: the field path of an engine's refusal.
+constexpr std::string_view kEngineOption = "--engine";
 
 namespace {
 
@@ -210,7 +215,7 @@ int parse(Arguments args, SimulateArguments& a) {
       const char* engine = value("an engine name");
       if (engine == nullptr) return 2;
       a.engine = engine;
-      if (const std::string why = engine_unavailable(a.engine); !why.empty()) {
+      if (const std::string why = engines::engine_unavailable(a.engine, kEngineOption); !why.empty()) {
         std::fprintf(stderr, "clearjoint simulate: %s\n", why.c_str());
         return 2;
       }
@@ -265,14 +270,16 @@ PlannedRun plan_fclib_run(const SimulateArguments& a, const dynamics::ModelDescr
                                "problems; docs/nonsmooth.md)");
   }
 #ifdef CLEARJOINT_WITH_NONSMOOTH
-  if (a.engine != kDefaultEngine) return plan_run(a.engine, model, options);  // refuses, naming --engine
+  if (a.engine != kDefaultEngine) {
+    return engines::plan_run(a.engine, kEngineOption, model, options);  // refuses, naming --engine
+  }
   auto run = std::make_shared<nonsmooth::MoreauJeanRun>(model, options);
   run->write_fclib({a.fclib_dir, a.fclib_count.value_or(nonsmooth::kDefaultFclibProblems)});
   return [run](dynamics::SimulationOutput& output, const dynamics::ProgressCallback& progress) {
     return run->run(output, progress);
   };
 #else
-  return plan_run(a.engine, model, options);  // refuses: built without the non-smooth integrator
+  return engines::plan_run(a.engine, kEngineOption, model, options);  // refuses: built without the non-smooth integrator
 #endif
 }
 
@@ -293,7 +300,7 @@ int run_simulate(Arguments args) {
   // solver.method "moreau_jean" plans the non-smooth run (docs/nonsmooth.md).
   const dynamics::RunOptions run_options{.allow_large = a.allow_large};
   const PlannedRun run = a.fclib_dir != nullptr ? plan_fclib_run(a, model, run_options)
-                                                : plan_run(a.engine, model, run_options);
+                                                : engines::plan_run(a.engine, kEngineOption, model, run_options);
   const dynamics::RunFolderOptions options{dynamics::run_format(a.format), a.force, a.overrides};
   ProgressReport bar;
   dynamics::SimulationSummary summary;

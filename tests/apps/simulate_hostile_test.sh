@@ -352,7 +352,7 @@ unknown_engine)
   model "$ball" >m.json
   run "$clearjoint" simulate m.json --out out --engine bogus
   expect_rc 2
-  expect_in err.txt "--engine = 'bogus': unknown engine; the engines are clearjoint (default)"
+  expect_in err.txt "--engine = 'bogus': unknown engine; the engines of this build are clearjoint"
   expect_no_output
   ;;
 end_time_and_set_shape_the_run)

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// simulate's engine choice (apps/clearjoint/simulate_engine.cpp): an engine that cannot run the
-// model is refused with the project's ValidationError naming --engine, as every bad input is.
+// simulate's engine choice (engines/choice, shared with Python's simulate): an engine that cannot
+// run the model is refused with the project's ValidationError naming --engine, as every bad input is.
 
 #include <gtest/gtest.h>
 
@@ -8,15 +8,15 @@
 
 #include "clearjoint/dynamics/model_description.hpp"
 #include "clearjoint/validation_error.hpp"
-#include "simulate_engine.hpp"
+#include "clearjoint/engines/engine_choice.hpp"
 
-namespace clearjoint::app {
+namespace clearjoint::engines {
 namespace {
 
 /// The ValidationError plan_run throws, as "field_path | what()"; "no error" or "other error".
 std::string refusal(std::string_view engine, const dynamics::ModelDescription& model) {
   try {
-    plan_run(engine, model, {});
+    plan_run(engine, "--engine", model, {});
   } catch (const ValidationError& e) {
     return std::string(e.field_path()) + " | " + e.what();
   } catch (const std::exception& e) {
@@ -25,9 +25,12 @@ std::string refusal(std::string_view engine, const dynamics::ModelDescription& m
   return "no error";
 }
 
-TEST(SimulateEngine, RefusesAnUnknownEngineWithAValidationErrorNamingTheOption) {
+TEST(SimulateEngine, RefusesAnUnknownEngineWithAValidationErrorNamingTheOptionAndThisBuildsEngines) {
+  // The words of Python's simulate(engine=...) too, which has the same check under its keyword.
+  std::string engines;
+  for (const std::string_view name : available_engines()) engines += (engines.empty() ? "" : ", ") + std::string(name);
   EXPECT_EQ(refusal("bogus", {}),
-            "--engine | --engine = 'bogus': unknown engine; the engines are clearjoint (default), simbody");
+            "--engine | --engine = 'bogus': unknown engine; the engines of this build are " + engines);
 }
 
 TEST(SimulateEngine, RefusesAMoreauJeanModelOutsideItsOwnEngineNamingTheOption) {
@@ -39,4 +42,4 @@ TEST(SimulateEngine, RefusesAMoreauJeanModelOutsideItsOwnEngineNamingTheOption) 
 }
 
 }  // namespace
-}  // namespace clearjoint::app
+}  // namespace clearjoint::engines

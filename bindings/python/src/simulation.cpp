@@ -29,11 +29,9 @@
 #include "clearjoint/dynamics/simulation.hpp"
 #include "clearjoint/dynamics/simulation_output.hpp"
 #include "clearjoint/dynamics/simulator.hpp"
+#include "clearjoint/engines/engine_choice.hpp"
 #include "run_folder.hpp"
 
-#ifdef CLEARJOINT_WITH_SIMBODY
-#include "clearjoint/simbody/simulate_in_simbody.hpp"
-#endif
 #ifdef CLEARJOINT_WITH_NONSMOOTH
 #include "clearjoint/nonsmooth/moreau_jean_run.hpp"
 #endif
@@ -70,6 +68,9 @@ py::object summary_to_python(const dynamics::SimulationSummary& s) {
 }
 
 /// What a run does with its model: where it comes from, and the overrides the call adds.
+/// The keyword that names the engine: the field path of an engine's refusal.
+constexpr std::string_view kEngineKeyword = "engine";
+
 struct RunRequest {
   bool allow_large = false;
   std::optional<double> report_step;
@@ -83,28 +84,6 @@ struct RunRequest {
   std::optional<long> fclib_count;
 };
 
-/// The engines this module can run: clearjoint's own, and Simbody's when the module was built
-/// with the Simbody adapter (as the program's `simulate --engine`, apps/clearjoint/simulate_engine).
-std::vector<std::string> available_engines() {
-#ifdef CLEARJOINT_WITH_SIMBODY
-  return {"clearjoint", "simbody"};
-#else
-  return {"clearjoint"};
-#endif
-}
-
-void check_engine(const std::string& engine) {
-  const std::vector<std::string> engines = available_engines();
-  if (std::find(engines.begin(), engines.end(), engine) != engines.end()) return;
-  std::string names;
-  for (const std::string& name : engines) names += (names.empty() ? "" : ", ") + name;
-  if (engine == "simbody") {
-    throw py::value_error("engine = 'simbody': this clearjoint Python package was built without Simbody "
-                          "(CLEARJOINT_WITH_SIMBODY; Debian: libsimbody-dev, docs/engines.md); its engines: " + names);
-  }
-  throw py::value_error("engine = '" + engine + "': unknown engine; the engines of this build are " + names);
-}
-
 /// Python's overrides {path: JSON text of the value}, in the order given, named in messages as
 /// the argument ("overrides['solver.end_time']").
 dynamics::ModelOverrides overrides_of(const std::vector<std::pair<std::string, std::string>>& items) {
@@ -116,15 +95,6 @@ dynamics::ModelOverrides overrides_of(const std::vector<std::pair<std::string, s
 /// The model text with the request's overrides written in (the text as given without any).
 std::string text_with_overrides(const std::string& json_text, const std::string& source, const RunRequest& request) {
   return request.overrides.empty() ? json_text : dynamics::apply_overrides(json_text, source, request.overrides);
-}
-
-/// Runs `run` with the request's engine into `output`.
-dynamics::SimulationSummary run_with_engine(dynamics::SimulationRun& run, dynamics::SimulationOutput& output,
-                                            const RunRequest& request, const dynamics::ProgressCallback& progress) {
-#ifdef CLEARJOINT_WITH_SIMBODY
-  if (request.engine == "simbody") return simbody::simulate_in_simbody(run, output, progress);
-#endif
-  return run.run(output, progress);
 }
 
 dynamics::ModelDescription with_overrides(dynamics::ModelDescription model, const RunRequest& request) {
@@ -141,12 +111,11 @@ dynamics::ModelDescription with_overrides(dynamics::ModelDescription model, cons
   return model;
 }
 
-/// The run of `model`, planned before any output exists: a compliant model as
-/// dynamics::SimulationRun run with the request's engine, a solver.method "moreau_jean" one as
-/// nonsmooth::MoreauJeanRun (the same tables, docs/nonsmooth.md), as the program's
-/// simulate (apps/clearjoint/simulate_engine.cpp, plan_run).
-using PlannedRun =
-    std::function<dynamics::SimulationSummary(dynamics::SimulationOutput&, const dynamics::ProgressCallback&)>;
+/// The run of `model`, planned before any output exists, as the program's simulate plans it
+/// (engines/choice: the engine's checks under the keyword's name, Simbody's route, a
+/// solver.method "moreau_jean" model as nonsmooth::MoreauJeanRun); a Moreau-Jean run that also
+/// writes its contact problems (write_fclib) here, as the program's --write-fclib.
+using engines::PlannedRun;
 PlannedRun plan_run(const dynamics::ModelDescription& model, const RunRequest& request) {
   const dynamics::ModelDescription m = with_overrides(model, request);
   const dynamics::RunOptions options{.allow_large = request.allow_large};
@@ -155,34 +124,21 @@ PlannedRun plan_run(const dynamics::ModelDescription& model, const RunRequest& r
                                "': needs solver.method = \"moreau_jean\" (a compliant run has no contact "
                                "problems; docs/nonsmooth.md)");
   }
-  if (m.solver_method == dynamics::SolverMethod::moreau_jean) {
-    if (request.engine != "clearjoint") {
-      throw py::value_error("engine = '" + request.engine + "': solver.method = \"moreau_jean\" runs in "
-                            "clearjoint's own engine only (docs/nonsmooth.md)");
-    }
 #ifdef CLEARJOINT_WITH_NONSMOOTH
+  if (request.fclib_folder && request.engine == engines::kDefaultEngine) {
     auto run = std::make_shared<nonsmooth::MoreauJeanRun>(m, options);
-    if (request.fclib_folder) {
-      const nonsmooth::FclibExport fclib{*request.fclib_folder,
-                                         request.fclib_count.value_or(nonsmooth::kDefaultFclibProblems)};
-      // Checked under the keyword's name first (errors name write_fclib, not the program's
-      // --write-fclib); the run's own check of the same folder then passes.
-      nonsmooth::prepare_fclib_folder(fclib, "write_fclib");
-      run->write_fclib(fclib);
-    }
+    const nonsmooth::FclibExport fclib{*request.fclib_folder,
+                                       request.fclib_count.value_or(nonsmooth::kDefaultFclibProblems)};
+    // Checked under the keyword's name first (errors name write_fclib, not the program's
+    // --write-fclib); the run's own check of the same folder then passes.
+    nonsmooth::prepare_fclib_folder(fclib, "write_fclib");
+    run->write_fclib(fclib);
     return [run](dynamics::SimulationOutput& output, const dynamics::ProgressCallback& progress) {
       return run->run(output, progress);
     };
-#else
-    throw dynamics::ModelError("solver.method = \"moreau_jean\": this clearjoint Python package was built "
-                               "without Siconos Numerics (CLEARJOINT_WITH_SICONOS; Debian: "
-                               "libsiconos-numerics-dev, docs/nonsmooth.md)");
-#endif
   }
-  auto run = std::make_shared<dynamics::SimulationRun>(m, options);
-  return [run, request](dynamics::SimulationOutput& output, const dynamics::ProgressCallback& progress) {
-    return run_with_engine(*run, output, request, progress);
-  };
+#endif
+  return engines::plan_run(request.engine, kEngineKeyword, m, options);
 }
 
 /// The callback run under the GIL-free integration: takes the GIL back to let Python handle
@@ -233,7 +189,7 @@ using OverrideItems = std::vector<std::pair<std::string, std::string>>;
 RunRequest request_of(bool allow_large, std::optional<double> report_step, std::optional<long> decimation,
                       const OverrideItems& overrides, const std::string& engine,
                       const std::optional<std::string>& fclib_folder, std::optional<long> fclib_count) {
-  check_engine(engine);
+  engines::require_engine(engine, kEngineKeyword);
   return {allow_large, report_step, decimation, overrides_of(overrides), engine, fclib_folder, fclib_count};
 }
 
@@ -366,7 +322,14 @@ void bind_simulation(py::module_& module) {
       py::arg("write_fclib") = py::none(), py::arg("fclib_count") = py::none(),
       "Run a model (JSON text) into the output folder `out` as `clearjoint simulate --out` does "
       "(model.json: the model as run, overrides written in); the summary.");
-  module.def("engines", &available_engines, "The engines simulate() can run in this build.");
+  module.def(
+      "engines",
+      [] {
+        std::vector<std::string> names;
+        for (const std::string_view name : engines::available_engines()) names.emplace_back(name);
+        return names;
+      },
+      "The engines simulate() can run in this build.");
   module.def("hdf5_available", &dynamics::hdf5_available, "Whether this build writes HDF5 run files.");
 
   py::class_<dynamics::Simulator>(module, "Simulator")

@@ -125,9 +125,22 @@ def test_an_unknown_engine_is_a_value_error_naming_the_engines_of_this_build(mod
         clearjoint.simulate(model_path, engine=3)
 
 
+def test_an_unknown_engine_gets_the_command_lines_refusal_under_the_keywords_name(model_path, cli, tmp_path):
+    # One check of an engine's name (engines/choice) for both front-ends: the same words after the
+    # field, which each names in its own terms (--engine, engine).
+    done = subprocess.run([str(cli), "simulate", str(model_path), "--out", str(tmp_path / "out"),
+                           "--engine", "bogus"], capture_output=True, text=True)
+    assert done.returncode == 2
+    prefix = "clearjoint simulate: --engine"
+    assert done.stderr.startswith(prefix), done.stderr
+    with pytest.raises(ValueError) as refusal:
+        clearjoint.simulate(model_path, engine="bogus")
+    assert str(refusal.value) == "engine" + done.stderr[len(prefix):].rstrip("\n")
+
+
 @pytest.mark.skipif("simbody" in _core.engines(), reason="this package is built with Simbody")
 def test_engine_simbody_without_simbody_says_the_package_was_built_without_it(model_path):
-    with pytest.raises(ValueError, match="engine = 'simbody': this clearjoint Python package was built without"):
+    with pytest.raises(ValueError, match="engine = 'simbody': this clearjoint was built without Simbody"):
         clearjoint.simulate(model_path, engine="simbody")
 
 
