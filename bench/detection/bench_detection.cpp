@@ -33,6 +33,7 @@
 
 #include "detection_methods.hpp"
 #include "input_families.hpp"
+#include "pin_in_hole_bench.hpp"
 
 namespace {
 
@@ -216,6 +217,10 @@ int main(int argc, char** argv) {
   // The groups of the margin families time one repetition each (they feed the plots against the
   // margin); whole families take the command line's repetitions.
   for (const InputSet& set : sets) register_set(set, set.name.find('/') != std::string::npos ? 1 : 0);
+  // The pin-in-hole joint on the realistic poses, against the paper's joint measured interleaved.
+  for (const InputSet& set : sets) {
+    if (set.name == "realistic") bench::register_pin_in_hole_benchmark("realistic", set.inputs);
+  }
 
   double load[3] = {0.0, 0.0, 0.0};
   if (getloadavg(load, 3) < 0) load[0] = load[1] = load[2] = -1.0;

@@ -17,6 +17,7 @@
 #include <limits>
 #include <numbers>
 
+#include "arithmetic/a_priori_bounds.hpp"
 #include "arithmetic/error_bounded.hpp"
 #include "arithmetic/rounded_point.hpp"
 #include "exact/parallel_axes_exact.hpp"
@@ -49,8 +50,20 @@ bool products_equal(double a, double b, double c, double d) {
   return detail::exact_products_equal(a, b, c, d);
 }
 
-/// eq. (5) for the hole and the pin: a_i x a_j = 0 on the stored doubles, exactly.
+/// eq. (5) for the hole and the pin: a_i x a_j = 0 on the stored doubles, exactly. First the
+/// floating-point filter (as detect_contacts'): a component of the cross product computed in
+/// double is within gamma_64 of its absolute-value twin plus the products' underflow of the exact
+/// one, so beyond that it is not zero and the axes are not parallel (every misaligned pose stops
+/// there); otherwise each component exactly.
 bool axes_exactly_parallel(const Vector3& a, const Vector3& b) {
+  const Vector3 cross = a.cross(b);
+  const Vector3 twin = detail::abs_cross(a.cwiseAbs(), b.cwiseAbs());
+  constexpr double kProductUnderflow = 4 * detail::kUnderflowError;
+  for (int i = 0; i < 3; ++i) {
+    if (std::fabs(cross[i]) > detail::kGamma64 * twin[i] * detail::kMagnitudeInflation + kProductUnderflow) {
+      return false;
+    }
+  }
   return products_equal(a.y(), b.z(), a.z(), b.y()) && products_equal(a.z(), b.x(), a.x(), b.z()) &&
          products_equal(a.x(), b.y(), a.y(), b.x());
 }
@@ -69,6 +82,7 @@ struct Setup {
   /// +1 when the pin's axis points through face A (a_i . a_j > 0), -1 otherwise.
   int toward_a = 1;
   double cosine = 1.0;  // |a_i_hat . a_j_hat|
+  double sine = 0.0;    // |a_i_hat x a_j_hat|
 };
 
 /// Index of a face: 0 for A (the one a_i points to), 1 for B.
@@ -96,16 +110,33 @@ struct AxisCrossing {
   double rho = 0.0;
   double error = 0.0;
 };
-AxisCrossing pin_axis_crossing(const Setup& s, const Vector3& d_ji, double plane_offset) {
-  // The pin's axis x(t) = d_ji + t a_j_hat (d_ji = P_j - P_i) meets a_i_hat . x = plane_offset at
-  // t = (plane_offset - a_i_hat . d_ji) / (a_i_hat . a_j_hat); rho = |x(t) x a_i_hat|.
-  const double dot = s.hole_hat.dot(s.pin_hat);
-  if (dot == 0.0) return {std::numeric_limits<double>::infinity(), 0.0};
-  const double t = (plane_offset - s.hole_hat.dot(d_ji)) / dot;
-  const Vector3 x = d_ji + t * s.pin_hat;
-  const double rho = x.cross(s.hole_hat).norm();
-  const double scale = d_ji.cwiseAbs().sum() + std::fabs(plane_offset) + std::fabs(t) * 2.0 + rho;
-  return {rho, kAPrioriFactor * kUnitRoundoff * scale / std::fabs(dot)};
+/// The pin's axis x(t) = d_ji + t a_j_hat (d_ji = P_j - P_i) meets a_i_hat . x = c at
+/// t = t_mid + c / (a_i_hat . a_j_hat), t_mid = -(a_i_hat . d_ji) / (a_i_hat . a_j_hat), and its
+/// distance from the hole's axis is rho = |x(t) x a_i_hat| = |m + (c / dot) w| with
+/// m = x(t_mid) x a_i_hat and w = a_j_hat x a_i_hat, formed once per joint.
+struct AxisLine {
+  double dot = 0.0;
+  double t_mid = 0.0;
+  Vector3 m = Vector3::Zero();
+  Vector3 w = Vector3::Zero();
+  double d_norm = 0.0;  // |d_ji|_1
+};
+AxisLine pin_axis_line(const Setup& s, const Vector3& d_ji) {
+  AxisLine line;
+  line.dot = s.hole_hat.dot(s.pin_hat);
+  line.d_norm = d_ji.cwiseAbs().sum();
+  if (line.dot == 0.0) return line;
+  line.t_mid = -s.hole_hat.dot(d_ji) / line.dot;
+  line.m = (d_ji + line.t_mid * s.pin_hat).cross(s.hole_hat);
+  line.w = s.pin_hat.cross(s.hole_hat);
+  return line;
+}
+AxisCrossing pin_axis_crossing(const AxisLine& line, double plane_offset) {
+  if (line.dot == 0.0) return {std::numeric_limits<double>::infinity(), 0.0};
+  const double shift = plane_offset / line.dot;
+  const double rho = (line.m + shift * line.w).norm();
+  const double scale = line.d_norm + std::fabs(plane_offset) + (std::fabs(line.t_mid) + std::fabs(shift)) * 2.0 + rho;
+  return {rho, kAPrioriFactor * kUnitRoundoff * scale / std::fabs(line.dot)};
 }
 
 /// The contact's points and bounds moved from a frame at `origin` to the world frame: each
@@ -316,11 +347,26 @@ void stop_against_face(const Setup& s, const AxialStop& stop, double axial_limit
       detail::intersect_circle_plane(outer, Plane3{face_point.value, into_link}, options.intersection, &centre, &face_point);
   tally.add(query.certificate);
   if (!query.has_penetration) return;
-  const Cylinder3 bore{Vector3::Zero(), s.hole_axis, s.hole_radius};
-  const CircleCylinderIntersection over_hole = detail::intersect_circle_cylinder(outer, bore, options.intersection, &centre);
-  tally.add(over_hole.certificate);
   if (out.contact_count >= kMaxPinInHoleContacts) return;
   Contact& contact = out.contacts[out.contact_count++];
+  // Is the outer circle wholly outside the bore? First without a query: the hole's axis crosses the
+  // stop's plane at X0 = t a_i_hat, t = (S . a_j_hat) / (a_i_hat . a_j_hat), and every point x of
+  // the circle, x - X0 lying in the plane, is at least (Ro - |S - X0|) |cos(a_i, a_j)| from the
+  // hole's axis (the edge prefilter's argument with the roles exchanged).
+  CircleCylinderIntersection over_hole;
+  const double t = centre.value.dot(s.pin_hat) / s.hole_hat.dot(s.pin_hat);
+  const double rho = (centre.value - t * s.hole_hat).norm();
+  const double reach_error = centre.error + kAPrioriFactor * kUnitRoundoff *
+                                                (centre.value.cwiseAbs().sum() + std::fabs(t) + rho + stop.outer_radius) /
+                                                s.cosine;
+  if ((stop.outer_radius - rho) * s.cosine - reach_error > s.hole_radius) {
+    over_hole.topology = CircleCylinderTopology::outside;
+    over_hole.certificate = proved(options);
+  } else {
+    const Cylinder3 bore{Vector3::Zero(), s.hole_axis, s.hole_radius};
+    over_hole = detail::intersect_circle_cylinder(outer, bore, options.intersection, &centre);
+  }
+  tally.add(over_hole.certificate);
   if (over_hole.topology == CircleCylinderTopology::outside) {
     stop_contact(outer, centre, query, true, into_link_hat, base, contact);
     if (query.penetration.full) tally.beyond = true;
@@ -395,8 +441,7 @@ bool stop_proved_clear(const Setup& s, const Vector3& d_ji, const AxialStop& sto
   const int face = face_of(s, stop);
   const Vector3 stop_centre = d_ji + stop.position * s.pin_hat;
   const double beyond = -face_sign(face) * s.hole_hat.dot(stop_centre) + s.half_length;
-  const double sine = s.hole_hat.cross(s.pin_hat).norm();
-  const double reach = beyond + stop.outer_radius * sine;
+  const double reach = beyond + stop.outer_radius * s.sine;
   const double error = kAPrioriFactor * kUnitRoundoff *
                        (d_ji.cwiseAbs().sum() + std::fabs(stop.position) + s.half_length + stop.outer_radius);
   return reach + error < 0.0;
@@ -443,6 +488,7 @@ PinInHoleContacts detect_pin_in_hole_contacts(const PinInHoleDimensions& dimensi
   const double dot = s.hole_hat.dot(s.pin_hat);
   s.toward_a = dot >= 0.0 ? 1 : -1;
   s.cosine = std::fabs(dot);
+  s.sine = s.hole_hat.cross(s.pin_hat).norm();
   // The axial limit of the model: the axial clearance with two stops, half the hole's length
   // (the stop's face at the link's mid-plane) with one.
   const double axial_limit = dimensions.stop_count == 2 ? dimensions.axial_clearance() : s.half_length;
@@ -455,7 +501,7 @@ PinInHoleContacts detect_pin_in_hole_contacts(const PinInHoleDimensions& dimensi
   bool aligned = exactly_parallel;
   if (!aligned && options.parallel_angle_tolerance > 0.0) {
     // |a_i_hat x a_j_hat| = sin(angle between the lines), compared in double, as detect_contacts.
-    aligned = s.hole_hat.cross(s.pin_hat).norm() <= std::sin(options.parallel_angle_tolerance);
+    aligned = s.sine <= std::sin(options.parallel_angle_tolerance);
   }
   out.aligned = aligned;
 
@@ -464,7 +510,8 @@ PinInHoleContacts detect_pin_in_hole_contacts(const PinInHoleDimensions& dimensi
   // section misses the hole's circle, and the undecided band is the evaluation's bound.
   const Vector3 d_ji = s.p_WPj - s.p_WPi;
   const double d_ji_error = detail::difference_rounding_bound(d_ji);
-  const AxisCrossing mid = pin_axis_crossing(s, d_ji, 0.0);
+  const AxisLine axis_line = pin_axis_line(s, d_ji);
+  const AxisCrossing mid = pin_axis_crossing(axis_line, 0.0);
   const double mid_error = mid.error + d_ji_error / std::max(s.cosine, 1e-300);
   if (!(mid.rho + mid_error < s.hole_radius)) {
     if (mid.rho - mid_error >= s.hole_radius) {
@@ -487,7 +534,7 @@ PinInHoleContacts detect_pin_in_hole_contacts(const PinInHoleDimensions& dimensi
     }
   } else {
     for (const int sign : {1, -1}) {
-      const AxisCrossing at_face = pin_axis_crossing(s, d_ji, sign * s.half_length);
+      const AxisCrossing at_face = pin_axis_crossing(axis_line, sign * s.half_length);
       const AxisCrossing bounded{at_face.rho, at_face.error + d_ji_error / std::max(s.cosine, 1e-300)};
       if (edge_proved_clear(s, bounded)) continue;
       hole_circle_against_pin(s, sign, sign > 0 ? ContactBase::a : ContactBase::b, options, out, tally);

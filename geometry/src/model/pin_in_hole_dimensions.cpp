@@ -40,6 +40,11 @@ void validate(const PinInHoleDimensions& dimensions, std::string_view name, cons
   const double half_length = 0.5 * dimensions.hole_length;
   for (int k = 0; k < dimensions.stop_count; ++k) {
     const AxialStop& stop = dimensions.stops[static_cast<std::size_t>(k)];
+    // The inline tests first: a field's name is only put together for its message.
+    const bool position_ok = detail::length_in_range(stop.position) &&
+                             (stop.position > half_length || stop.position < -half_length);
+    const bool radius_ok = stop.outer_radius > dimensions.hole_radius && detail::length_in_range(stop.outer_radius);
+    if (position_ok && radius_ok) [[likely]] continue;
     const std::string prefix = std::string(names.stops) + "[" + std::to_string(k) + "].";
     const std::string position = prefix + "position";
     const std::string outer_radius = prefix + "outer_radius";
@@ -47,17 +52,15 @@ void validate(const PinInHoleDimensions& dimensions, std::string_view name, cons
     if (!detail::length_in_range(stop.position)) detail::reject_out_of_range(format(stop.position), name, position);
     // |s| > L/2: measured from the pin point at the hole's centre, a stop nearer than half the
     // hole's length would sit inside the hole. Exact: halving a double in range is exact.
-    if (!(stop.position > half_length || stop.position < -half_length)) {
+    if (!position_ok) {
       reject(name, position, format(stop.position),
              "the stop lies inside the hole: its distance from the pin's point P must exceed " +
                  std::string(names.hole_length) + " / 2 = " + format(half_length));
     }
     require_positive_in_range(stop.outer_radius, name, outer_radius);
-    if (!(stop.outer_radius > dimensions.hole_radius)) {
-      reject(name, outer_radius, format(stop.outer_radius),
-             "must be larger than " + std::string(names.hole_radius) + " = " + format(dimensions.hole_radius) +
-                 " (a stop smaller than the hole passes through it)");
-    }
+    reject(name, outer_radius, format(stop.outer_radius),
+           "must be larger than " + std::string(names.hole_radius) + " = " + format(dimensions.hole_radius) +
+               " (a stop smaller than the hole passes through it)");
   }
   if (dimensions.stop_count == 2 && (dimensions.stops[0].position > 0.0) == (dimensions.stops[1].position > 0.0)) {
     reject(name, std::string(names.stops) + "[1].position", format(dimensions.stops[1].position),
