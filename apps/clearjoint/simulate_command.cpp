@@ -178,8 +178,10 @@ int parse(Arguments args, SimulateArguments& a) {
       const char* format = value("csv or hdf5");
       if (format == nullptr) return 2;
       a.format = format;
-      if (a.format != "csv" && a.format != "hdf5") {
-        std::fprintf(stderr, "clearjoint simulate: --format = '%s': must be csv or hdf5\n%s", format, kUsage);
+      try {
+        dynamics::run_format(a.format, "--format");  // the one check of a format, Python's too
+      } catch (const ValidationError& e) {
+        std::fprintf(stderr, "clearjoint simulate: %s\n%s", e.what(), kUsage);
         return 2;
       }
     } else if (std::strcmp(arg, "--report-step") == 0) {

@@ -8,6 +8,7 @@
 
 #include "clearjoint/dynamics/csv_directory.hpp"
 #include "clearjoint/dynamics/output_folder.hpp"
+#include "clearjoint/validation_error.hpp"
 #ifdef CLEARJOINT_WITH_HDF5
 #include "hdf5_tables.hpp"
 #endif
@@ -33,15 +34,15 @@ bool hdf5_available() {
 #endif
 }
 
-RunFormat run_format(const std::string& name) {
+RunFormat run_format(const std::string& name, std::string_view field) {
   if (name == "csv") return RunFormat::csv;
   if (name == "hdf5") {
     if (!hdf5_available()) {
-      throw std::invalid_argument("format = \"hdf5\": this clearjoint was built without HDF5 (libhdf5-dev)");
+      throw ValidationError(field, " = 'hdf5': this clearjoint was built without HDF5 (libhdf5-dev)");
     }
     return RunFormat::hdf5;
   }
-  throw std::invalid_argument("format = \"" + name + "\": must be csv or hdf5");
+  throw ValidationError(field, " = '" + name + "': must be csv or hdf5");
 }
 
 SimulationSummary write_run_folder(SimulationRun& run, const std::string& model_json,
@@ -63,7 +64,7 @@ SimulationSummary write_run_folder(const std::function<SimulationSummary(Simulat
     summary.overrides = options.overrides;
     file.add_text_attribute("summary", summary_json(summary));
 #else
-    throw std::invalid_argument("format = \"hdf5\": this clearjoint was built without HDF5 (libhdf5-dev)");
+    throw ValidationError("format", " = 'hdf5': this clearjoint was built without HDF5 (libhdf5-dev)");
 #endif
   } else {
     CsvDirectory files(folder.staging());

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <functional>
 #include <string>
+#include <string_view>
 
 #include "clearjoint/dynamics/simulation.hpp"
 
@@ -17,9 +18,10 @@ namespace clearjoint::dynamics {
 
 enum class RunFormat { csv, hdf5 };
 
-/// "csv" or "hdf5"; std::invalid_argument naming the value otherwise, or for hdf5 when this
-/// build has no HDF5.
-RunFormat run_format(const std::string& name);
+/// "csv" or "hdf5": the one check of a run's format for every front-end; otherwise, or for hdf5
+/// when this build has no HDF5, a ValidationError whose path is the caller's `field`
+/// ("--format", "format") and whose message names the value.
+RunFormat run_format(const std::string& name, std::string_view field = "format");
 /// Whether this build writes HDF5.
 bool hdf5_available();
 

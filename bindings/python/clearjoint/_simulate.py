@@ -193,8 +193,8 @@ def _check_options(allow_large: Any, report_step: Any, decimation: Any, out: Any
             float(report_step)
         except OverflowError:
             raise ValueError(f"report_step = {report_step!r}: too large for a double") from None
-    if format not in ("csv", "hdf5"):
-        raise ValueError(f"format = {format!r}: must be 'csv' or 'hdf5'")
+    if not isinstance(format, str):
+        raise TypeError(f"format = {format!r}: must be a str, csv or hdf5")
     if out is None and (format != "csv" or force):
         raise ValueError("format and force apply to a run written to a folder: give out=")
     if out is not None:

@@ -138,6 +138,19 @@ def test_an_unknown_engine_gets_the_command_lines_refusal_under_the_keywords_nam
     assert str(refusal.value) == "engine" + done.stderr[len(prefix):].rstrip("\n")
 
 
+def test_a_bad_format_gets_the_command_lines_refusal_under_the_keywords_name(model_path, cli, tmp_path):
+    # One check of a run's format (dynamics' run_format) for both front-ends.
+    done = subprocess.run([str(cli), "simulate", str(model_path), "--out", str(tmp_path / "cli"),
+                           "--format", "bogus"], capture_output=True, text=True)
+    assert done.returncode == 2
+    prefix = "clearjoint simulate: --format"
+    first_line = done.stderr.splitlines()[0]
+    assert first_line.startswith(prefix), done.stderr
+    with pytest.raises(ValueError) as refusal:
+        clearjoint.simulate(model_path, out=tmp_path / "python", format="bogus")
+    assert str(refusal.value) == "format" + first_line[len(prefix):]
+
+
 @pytest.mark.skipif("simbody" in _core.engines(), reason="this package is built with Simbody")
 def test_engine_simbody_without_simbody_says_the_package_was_built_without_it(model_path):
     with pytest.raises(ValueError, match="engine = 'simbody': this clearjoint was built without Simbody"):
