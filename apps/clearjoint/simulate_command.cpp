@@ -158,6 +158,12 @@ bool read_number_option(const char* option, const char* text, double& out) {
 }
 
 /// Parses `args`; returns an exit status when the call ends here (help, usage error), else -1.
+/// An option the library's check refused: its message and the usage; exit status 2.
+int refused_option(const ValidationError& error) {
+  std::fprintf(stderr, "clearjoint simulate: %s\n%s", error.what(), kUsage);
+  return 2;
+}
+
 int parse(Arguments args, SimulateArguments& a) {
   for (size_t k = 0; k < args.size(); ++k) {
     const char* arg = args[k];
@@ -181,8 +187,7 @@ int parse(Arguments args, SimulateArguments& a) {
       try {
         dynamics::run_format(a.format, "--format");  // the one check of a format, Python's too
       } catch (const ValidationError& e) {
-        std::fprintf(stderr, "clearjoint simulate: %s\n%s", e.what(), kUsage);
-        return 2;
+        return refused_option(e);
       }
     } else if (std::strcmp(arg, "--report-step") == 0) {
       const char* text = value("a time step in seconds");
@@ -199,9 +204,8 @@ int parse(Arguments args, SimulateArguments& a) {
       if (text == nullptr) return 2;
       try {
         a.overrides.push_back(dynamics::parse_override_assignment(text, std::string("--set ") + text));
-      } catch (const dynamics::ModelError& e) {
-        std::fprintf(stderr, "clearjoint simulate: %s\n%s", e.what(), kUsage);
-        return 2;
+      } catch (const ValidationError& e) {
+        return refused_option(e);
       }
     } else if (std::strcmp(arg, "--decimation") == 0) {
       const char* text = value("a whole number");
