@@ -20,6 +20,7 @@
 #include "arithmetic/a_priori_bounds.hpp"
 #include "arithmetic/error_bounded.hpp"
 #include "arithmetic/rounded_point.hpp"
+#include "arithmetic/scale_normalisation.hpp"
 #include "exact/parallel_axes_exact.hpp"
 #include "model/input_checks.hpp"
 #include "queries/rounded_point_queries.hpp"
@@ -77,6 +78,10 @@ struct Setup {
   Vector3 p_WPj = Vector3::Zero();
   Vector3 hole_axis = Vector3::UnitZ();  // as given: the circles' and planes' normals
   Vector3 pin_axis = Vector3::UnitZ();
+  // The same scaled by powers of two as each circle-cylinder query scales them
+  // (scale_normalisation.hpp), once per joint: the queries then take them as they are.
+  Vector3 hole_axis_scaled = Vector3::UnitZ();
+  Vector3 pin_axis_scaled = Vector3::UnitZ();
   Vector3 hole_hat = Vector3::UnitZ();   // unit_axis: the centres' definition
   Vector3 pin_hat = Vector3::UnitZ();
   /// +1 when the pin's axis points through face A (a_i . a_j > 0), -1 otherwise.
@@ -253,9 +258,12 @@ Certificate proved(const DetectionOptions& options) {
 void hole_circle_against_pin(const Setup& s, int sign, ContactBase base, const DetectionOptions& options,
                              PinInHoleContacts& out, Tally& tally) {
   const detail::RoundedPoint centre = edge_centre_from_pin(s, sign);
-  const Circle3 circle{centre.value, s.hole_axis, s.hole_radius};
-  const Cylinder3 pin{Vector3::Zero(), s.pin_axis, s.pin_radius};
-  const CircleCylinderIntersection query = detail::intersect_circle_cylinder(circle, pin, options.intersection, &centre);
+  // Valid inputs with scaled axes (detect_pin_in_hole_contacts checked and scaled them): the
+  // query's answer without its checks, bit for bit.
+  const Circle3 circle{centre.value, s.hole_axis_scaled, s.hole_radius};
+  const Cylinder3 pin{Vector3::Zero(), s.pin_axis_scaled, s.pin_radius};
+  const CircleCylinderIntersection query =
+      detail::intersect_valid_circle_cylinder(circle, pin, options.intersection, &centre);
   tally.add(query.certificate);
   std::array<RimArc, 2> arcs;
   const int count = inside_arcs(query, arcs);
@@ -363,8 +371,9 @@ void stop_against_face(const Setup& s, const AxialStop& stop, double axial_limit
     over_hole.topology = CircleCylinderTopology::outside;
     over_hole.certificate = proved(options);
   } else {
-    const Cylinder3 bore{Vector3::Zero(), s.hole_axis, s.hole_radius};
-    over_hole = detail::intersect_circle_cylinder(outer, bore, options.intersection, &centre);
+    const Circle3 scaled{outer.center, s.pin_axis_scaled, outer.radius};
+    const Cylinder3 bore{Vector3::Zero(), s.hole_axis_scaled, s.hole_radius};
+    over_hole = detail::intersect_valid_circle_cylinder(scaled, bore, options.intersection, &centre);
   }
   tally.add(over_hole.certificate);
   if (over_hole.topology == CircleCylinderTopology::outside) {
@@ -447,6 +456,28 @@ bool stop_proved_clear(const Setup& s, const Vector3& d_ji, const AxialStop& sto
   return reach + error < 0.0;
 }
 
+/// Whether validate() would pass, without formatting anything: a subset of its tests that
+/// implies the rest, so that a false here sends the caller to validate() for the message.
+bool passes_validation(const PartPose& pose) {
+  return detail::all_finite(pose.p_WP) && detail::coordinates_in_range(pose.p_WP) && detail::all_finite(pose.axis_W) &&
+         !(pose.axis_W.x() == 0.0 && pose.axis_W.y() == 0.0 && pose.axis_W.z() == 0.0);
+}
+bool passes_validation(const PinInHoleDimensions& d) {
+  // length_in_range fails NaN and infinities; positivity and the order Rp < Rh are tested apart.
+  bool ok = detail::length_in_range(d.hole_radius) & detail::length_in_range(d.hole_length) &
+            detail::length_in_range(d.pin_radius) & (d.pin_radius > 0.0) & (d.hole_length > 0.0) &
+            (d.pin_radius < d.hole_radius) & (d.stop_count >= 0) & (d.stop_count <= kMaxAxialStops);
+  if (!ok) return false;
+  const double half_length = 0.5 * d.hole_length;
+  for (int k = 0; k < d.stop_count; ++k) {
+    const AxialStop& stop = d.stops[static_cast<std::size_t>(k)];
+    ok = ok & detail::length_in_range(stop.position) & (stop.position > half_length || stop.position < -half_length) &
+         detail::length_in_range(stop.outer_radius) & (stop.outer_radius > d.hole_radius);
+  }
+  if (d.stop_count == 2) ok = ok & ((d.stops[0].position > 0.0) != (d.stops[1].position > 0.0));
+  return ok;
+}
+
 PinInHoleScenario classify(const PinInHoleContacts& out, const Tally& tally) {
   if (tally.beyond) return PinInHoleScenario::beyond_model;
   if (out.aligned) {
@@ -470,10 +501,12 @@ PinInHoleScenario classify(const PinInHoleContacts& out, const Tally& tally) {
 
 PinInHoleContacts detect_pin_in_hole_contacts(const PinInHoleDimensions& dimensions, const PartPose& hole,
                                               const PartPose& pin, const DetectionOptions& options) {
-  validate(dimensions);
-  validate(hole, "hole");
-  validate(pin, "pin");
-  validate(options);
+  // The inline tests first: validate() formats its message and is out of line, and the checks
+  // run on every call.
+  if (!passes_validation(dimensions)) validate(dimensions);
+  if (!passes_validation(hole)) validate(hole, "hole");
+  if (!passes_validation(pin)) validate(pin, "pin");
+  if (!(options.parallel_angle_tolerance == 0.0)) validate(options);
 
   Setup s;
   s.hole_radius = dimensions.hole_radius;
@@ -483,6 +516,8 @@ PinInHoleContacts detect_pin_in_hole_contacts(const PinInHoleDimensions& dimensi
   s.p_WPj = pin.p_WP;
   s.hole_axis = hole.axis_W;
   s.pin_axis = pin.axis_W;
+  s.hole_axis_scaled = detail::direction_scaled(hole.axis_W);
+  s.pin_axis_scaled = detail::direction_scaled(pin.axis_W);
   s.hole_hat = unit_axis(hole);
   s.pin_hat = unit_axis(pin);
   const double dot = s.hole_hat.dot(s.pin_hat);
