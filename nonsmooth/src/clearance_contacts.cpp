@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "clearjoint/dynamics/errors.hpp"
+#include "clearjoint/dynamics/kernel_pose.hpp"
 #include "clearjoint/validation_error.hpp"
 
 namespace clearjoint::nonsmooth {
@@ -39,8 +40,8 @@ geometry::ContactScenario find_contacts(const ClearanceSite& site, int site_inde
                                         std::vector<UnilateralContact>& out) {
   const dynamics::BodyKinematics& bi = kinematics.body(site.bearing_body);
   const dynamics::BodyKinematics& bj = kinematics.body(site.journal_body);
-  const geometry::PartPose bearing{bi.point_W(site.bearing_point_B), bi.rotation * site.bearing_axis_B};
-  const geometry::PartPose journal{bj.point_W(site.journal_point_B), bj.rotation * site.journal_axis_B};
+  const geometry::PartPose bearing = dynamics::kernel_pose(bi, site.bearing_point_B, site.bearing_axis_B);
+  const geometry::PartPose journal = dynamics::kernel_pose(bj, site.journal_point_B, site.journal_axis_B);
   // The journal inflated by the margin, radially and at both ends: a contact of the inflated
   // journal at depth d is a contact of the true one at gap margin - d, its journal point margin
   // nearer the bearing along the normal (exact for the line and face contacts of aligned axes,
