@@ -205,6 +205,33 @@ TEST(DetectPinInHoleContacts, ThePinsAxisOutsideTheHoleIsBeyondTheModel) {
   EXPECT_EQ(pushed.scenario, PinInHoleScenario::beyond_model);
 }
 
+TEST(DetectPinInHoleContacts, AStopWhoseOuterCircleReachesOverTheHoleIsBeyondTheModel) {
+  // Outer radius 10.05 on a hole of 10. The pin 0.08 off centre along -y, tilted by t = 0.005
+  // towards +y and pushed 0.52 along z (as in the one-stop test): the stop's centre is
+  // 0.08 + 10.5 sin t = 0.1325 off the hole's axis, so its outer circle comes within 9.92 of it,
+  // over the hole, while it dips 0.52 - 10.5 cos t + 10.05 sin t + 10 = 0.070 into face B. The
+  // hole's edge at y = -10 lies 9.87 sin t + 0.02 cos t = 0.069 inside the head: a stop contact
+  // bounded by the hole's edge (normal +a, the way the pin moves into the link), beyond the model.
+  PinInHoleDimensions d = joint();
+  d.stops[0].outer_radius = 10.05;
+  const double t = 0.005;
+  const PinInHoleContacts answer =
+      detect_pin_in_hole_contacts(d, kHole, PartPose{Vector3(0.0, -0.08, 0.52), Vector3(0.0, std::sin(t), std::cos(t))});
+  EXPECT_EQ(answer.scenario, PinInHoleScenario::beyond_model);
+  bool stop_found = false;
+  for (int k = 0; k < answer.contact_count; ++k) {
+    if (answer.contacts[k].type == ContactType::axial) {
+      stop_found = true;
+      EXPECT_EQ(answer.contacts[k].base, ContactBase::b);
+      EXPECT_TRUE((answer.contacts[k].normal_W - Vector3(0.0, std::sin(t), std::cos(t))).norm() < 1e-12)
+          << answer.contacts[k].normal_W.transpose();
+      EXPECT_NEAR(answer.contacts[k].p_WCi.z(), -10.0, 1e-12);  // on the hole's edge
+      EXPECT_NEAR(answer.contacts[k].depth, 0.069, 0.001);
+    }
+  }
+  EXPECT_TRUE(stop_found);
+}
+
 TEST(DetectPinInHoleContacts, ScalingEverythingByAPowerOfTwoScalesTheAnswerExactly) {
   // Huge and tiny joints: the tilted-pin closed form at 2^-400 and 2^400 times its size gives the
   // same scenario and depths times the scale (powers of two scale every double exactly).
@@ -246,6 +273,14 @@ TEST(DetectPinInHoleContacts, BadInputIsNamedByItsField) {
             "hole.axis_W = [0, 0, 0]: must not be the zero vector");
   EXPECT_EQ(message(joint(), kHole, PartPose{Vector3(std::nan(""), 0.0, 0.0), Vector3::UnitZ()}),
             "pin.p_WP = [nan, 0, 0]: every component must be finite");
+  try {
+    DetectionOptions options;
+    options.parallel_angle_tolerance = -1.0;
+    detect_pin_in_hole_contacts(joint(), kHole, PartPose{}, options);
+    ADD_FAILURE() << "no error";
+  } catch (const InvalidInput& error) {
+    EXPECT_EQ(std::string(error.what()), "options.parallel_angle_tolerance = -1: must lie in [0, pi/2) radians");
+  }
   PinInHoleDimensions inside = joint();
   inside.stops[0].position = -5.0;
   EXPECT_EQ(message(inside, kHole, PartPose{}).rfind("dimensions.stops[0].position = -5: the stop lies inside", 0), 0u);
