@@ -29,4 +29,22 @@ struct PlanarSample {
 
 std::vector<PlanarSample> run_siconos(const PlanarJournal& system);
 
+/// The same journal as a disc that turns (x, y, phi), with Coulomb friction of coefficient mu
+/// at its contact point (radius journal_radius from its centre): NewtonImpactFrictionNSL of size
+/// 2 (normal, in-plane tangent; no tangential restitution) and a FrictionContact(2) problem.
+struct FrictionalJournal {
+  PlanarJournal planar;
+  double inertia = 0.0;         ///< about the journal's axis [kg m^2]
+  double journal_radius = 0.0;  ///< [m]
+  double friction = 0.0;        ///< mu
+};
+
+struct FrictionalSample {
+  PlanarSample planar;
+  double omega = 0.0;                ///< the journal's angular velocity about z [rad/s]
+  double tangent_percussion = 0.0;   ///< [N s], signed along the relation's tangent
+};
+
+std::vector<FrictionalSample> run_siconos(const FrictionalJournal& system);
+
 }  // namespace clearjoint::nonsmooth::siconos_reference

@@ -150,6 +150,22 @@ TEST(MoreauJean, RefusesAStepWithoutTheMoreauJeanMethod) {
 namespace clearjoint::nonsmooth {
 namespace {
 
+TEST(MoreauJean, RefusesALubricatedJointNamingTheField) {
+  // Rigid contact has no film (docs/nonsmooth.md, "What it assumes").
+  dynamics::ModelDescription model =
+      dynamics::read_model_file(std::string(CLEARJOINT_MODELS_DIR) + "/slider_crank_planar_clearance_lubricated.json");
+  model.solver_method = dynamics::SolverMethod::moreau_jean;
+  try {
+    MoreauJean scheme(model);
+    ADD_FAILURE() << "ran a lubricated joint without its film";
+  } catch (const dynamics::ModelError& e) {
+    EXPECT_NE(std::string(e.what()).find("forces[0].lubrication: a lubricated joint is not supported by "
+                                         "solver.method = \"moreau_jean\""),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 TEST(MoreauJean, KeepsTheSpatialSliderCranksIdealJointsAssembledThroughItsImpacts) {
   // The position projection solves with the step's factor of Phi_q M^-1 Phi_q^T (a chord
   // method): it must still bring every step's drift below its tolerance (1e-12, moreau_jean.cpp),
