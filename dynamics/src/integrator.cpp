@@ -95,16 +95,21 @@ class StepBudget {
 
 }  // namespace
 
+/// The largest step budget (solver.max_steps): far beyond any run (1e15 steps of a microsecond
+/// of wall time each are 30 years), and exact in double, so that a model file's count converts
+/// to the budget without rounding.
+constexpr long kLargestMaxSteps = 1'000'000'000'000'000;
+
 void validate(const IntegratorSettings& s) {
   require_finite("solver.start_time", s.start_time);
   require_finite("solver.end_time", s.end_time);
   if (!(s.end_time > s.start_time)) {
-    throw ModelError("solver.end_time = " + format_number(s.end_time) +
-                     ": must be after solver.start_time = " + format_number(s.start_time));
+    throw ModelError("solver.end_time", " = " + format_number(s.end_time) +
+                                            ": must be after solver.start_time = " + format_number(s.start_time));
   }
   require_positive("solver.report_step", s.report_step);
   if (!((s.end_time - s.start_time) / s.report_step <= kMaxReportCount)) {
-    throw ModelError("solver.report_step = " + format_number(s.report_step) + ": gives " +
+    throw ModelError("solver.report_step", " = " + format_number(s.report_step) + ": gives " +
                      format_number((s.end_time - s.start_time) / s.report_step) +
                      " report times, more than " + format_number(kMaxReportCount) +
                      ", the most the integrator counts");
@@ -134,7 +139,9 @@ void validate(const IntegratorSettings& s) {
                                                 ": must not be longer than solver.initial_step = " +
                                                 format_number(s.initial_step) + " s");
   }
-  if (s.max_steps <= 0) throw ModelError("solver.max_steps = " + std::to_string(s.max_steps) + ": must be positive");
+  if (!(s.max_steps >= 1 && s.max_steps <= kLargestMaxSteps)) {
+    throw ModelError("solver.max_steps", " = " + std::to_string(s.max_steps) + ": must be in [1, 1e15]");
+  }
   require_positive("solver.stall_wall_time", s.stall_wall_time);
 }
 

@@ -337,9 +337,12 @@ void parse_solver(const Node& n, ModelDescription& model) {
   s.absolute_tolerance = n.number("absolute_tolerance", s.absolute_tolerance);
   s.initial_step = n.number("initial_step", s.initial_step);
   s.minimum_step = n.number("minimum_step", s.minimum_step);
+  // A count: read whole, within 2^53 where a double holds every whole number and a long converts
+  // it exactly; its range is validate()'s (solver.max_steps).
   const double max_steps = n.number("max_steps", static_cast<double>(s.max_steps));
-  if (!(max_steps >= 1.0 && max_steps <= 1e15)) {
-    throw ModelError(n.field("max_steps") + " = " + format_number(max_steps) + ": must be in [1, 1e15]");
+  if (!(max_steps == std::floor(max_steps) && std::fabs(max_steps) <= 0x1p53)) {
+    throw ModelError(n.field("max_steps"), " = " + format_number(max_steps) +
+                                               ": must be a whole number of steps (at most 2^53 in size)");
   }
   s.max_steps = static_cast<long>(max_steps);
   model.baumgarte.alpha = n.number("baumgarte_alpha", model.baumgarte.alpha);

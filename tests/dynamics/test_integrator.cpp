@@ -363,6 +363,27 @@ TEST(IntegratorSettings, KeepTheFieldPathOfARefusedSetting) {
   }
 }
 
+TEST(IntegratorSettings, RejectAStepBudgetOutsideOneToOneE15NamingItsFieldPath) {
+  // The one range of solver.max_steps, for a model file, Python's builder and every engine.
+  EXPECT_EQ(refusal([](auto& s) { s.max_steps = 0; }), "solver.max_steps = 0: must be in [1, 1e15]");
+  EXPECT_EQ(refusal([](auto& s) { s.max_steps = 2'000'000'000'000'000; }),
+            "solver.max_steps = 2000000000000000: must be in [1, 1e15]");
+  EXPECT_EQ(refusal([](auto& s) { s.max_steps = 1'000'000'000'000'000; }), "accepted");
+  const auto path_of = [](auto edit) {
+    IntegratorSettings settings;
+    edit(settings);
+    try {
+      validate(settings);
+    } catch (const ModelError& e) {
+      return std::string(e.field_path());
+    }
+    return std::string("accepted");
+  };
+  EXPECT_EQ(path_of([](auto& s) { s.max_steps = 0; }), "solver.max_steps");
+  EXPECT_EQ(path_of([](auto& s) { s.end_time = s.start_time; }), "solver.end_time");
+  EXPECT_EQ(path_of([](auto& s) { s.report_step = 1e-300; }), "solver.report_step");
+}
+
 TEST(IntegratorSettings, RejectNonPositiveToleranceNamingTheField) {
   IntegratorSettings settings;
   settings.relative_tolerance = 0.0;

@@ -34,6 +34,19 @@ TEST(ModelFile, ReadsAMinimalModelWithDefaults) {
   EXPECT_EQ(m.output_bodies, std::vector<std::string>{"ball"});
 }
 
+TEST(ModelFile, ReadsAStepBudgetWholeAndLeavesItsRangeToTheSettingsCheck) {
+  const auto with_max_steps = [](const std::string& value) {
+    return error_of(R"({"bodies": [{"name": "b", "mass": 1, "inertia": [1,1,1], "position": [0,0,0]}],
+                        "solver": {"end_time": 0.5, "report_step": 0.01, "max_steps": )" + value + "}}");
+  };
+  // A fraction is not a count: refused, not truncated.
+  EXPECT_EQ(with_max_steps("2.5"), "m.json: solver.max_steps = 2.5: must be a whole number of steps (at most 2^53 in size)");
+  EXPECT_EQ(with_max_steps("1e300").rfind("m.json: solver.max_steps = 1.0000000000000001e+300: must be a whole", 0), 0u);
+  // The range is validate(IntegratorSettings)'s, with its words.
+  EXPECT_EQ(with_max_steps("0"), "m.json: solver.max_steps = 0: must be in [1, 1e15]");
+  EXPECT_EQ(with_max_steps("1000"), "no error");
+}
+
 TEST(ModelFile, NamesTheFieldAndValueOfANonPositiveMass) {
   EXPECT_EQ(error_of(R"({"bodies": [{"name": "b", "mass": -2, "inertia": [1,1,1], "position": [0,0,0]}]})"),
             "m.json: bodies[0].mass = -2: must be positive");

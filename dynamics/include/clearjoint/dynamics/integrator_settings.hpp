@@ -61,7 +61,8 @@ struct IntegratorSettings {
 /// and ordered; report_step, the tolerances, initial_step and minimum_step positive;
 /// relative_tolerance in [kMinRelativeTolerance, kMaxRelativeTolerance]; minimum_step shorter
 /// than the span (end_time - start_time) and the report step, and not longer than initial_step
-/// (the first step would already count as collapsed); max_steps and stall_wall_time positive.
+/// (the first step would already count as collapsed); max_steps in [1, 1e15]; stall_wall_time
+/// positive. The error's field path is the field's ("solver.max_steps").
 /// Every engine reads the settings only after this check (Simbody aborts on some of them).
 void validate(const IntegratorSettings& settings);
 
