@@ -49,8 +49,8 @@ std::string usage() {
          "  for squeeze, d eps / dt in place of omega), the attitude angle [rad] from the load to the\n"
          "  line of centres, the side-flow variable 2 pi Q_s / (R c omega B), p_max / (F / (B D)), and\n"
          "  what was solved. Defaults: rotation, grid 96x24; cavitation mass_conserving for the grid\n"
-         "  (fed along the thickest film, as Raimondi & Boyd's tables), half_sommerfeld for short and\n"
-         "  long. A grid whose estimated cost is above the solver's limits (about half a second a solve)\n"
+         "  (fed along the thickest film, as Raimondi & Boyd's tables), half_sommerfeld for short,\n"
+         "  long and table (the grid's film tabulated over eps up to 0.98, built on first use). A grid whose estimated cost is above the solver's limits (about half a second a solve)\n"
          "  is refused with the estimate unless --allow-large-grid is given. Each option once.\n"
          "  Exit status 2 for a usage error, 1 for a value out of range (the message names it).\n"
          "  docs/lubrication.md describes the models and their accuracy.\n";
@@ -110,7 +110,8 @@ std::string in_option_terms(std::string message) {
 int answer(double eps, double width_ratio, const lubrication::BearingCharacteristicsNames& names) {
   const lubrication::BearingCharacteristicsQuery query = lubrication::query_from_names(eps, width_ratio, names);
   const lubrication::BearingCharacteristics r = lubrication::bearing_characteristics(query);
-  const bool on_grid = query.method == lubrication::BearingMethod::grid;
+  const bool on_grid = query.method == lubrication::BearingMethod::grid ||
+                       query.method == lubrication::BearingMethod::table;  // the grid it tabulates
   Json out;
   out["eccentricity_ratio"] = query.eccentricity_ratio;
   out["width_ratio"] = query.width_ratio;

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// Cost of one film load (issue 36): the closed forms, and the Reynolds grid cold and warm-started,
+// Cost of one film load (issue 36): the closed forms, the table (issue 49) beside the grid it
+// tabulates, and the Reynolds grid cold and warm-started,
 // at 48 x 12 (the grid at which test_bearing_characteristics meets the published-table accuracy),
 // at twice and at two thirds of it, each with the band LU and with the general sparse LU it
 // replaced (the baseline, third argument 1). The warm rows alternate between two nearby states
@@ -17,6 +18,7 @@
 #include <string>
 #include <utility>
 
+#include "clearjoint/lubrication/film_table.hpp"
 #include "clearjoint/lubrication/long_bearing.hpp"
 #include "clearjoint/lubrication/reynolds_grid.hpp"
 #include "clearjoint/lubrication/short_bearing.hpp"
@@ -122,6 +124,49 @@ BENCHMARK(BM_GridMassConservingWarm)->Apply(grid_sizes);
 BENCHMARK(BM_GridMassConservingCold)->Apply(grid_sizes);
 BENCHMARK(BM_GridHalfSommerfeld)->Apply(grid_sizes);
 BENCHMARK(BM_GridHalfSommerfeldPeriodic)->Apply(grid_sizes);
+
+// The table against the grid it tabulates, side by side (issue 49): the same periodic
+// half-Sommerfeld film of the Section 6.1 joint (R 9.9 mm, c 0.1 mm, B 19.8 mm) on the 48 x 12
+// grid, at the same two alternating states (eps 0.6 and 0.601, spin, squeeze and whirl). The
+// table is built before the timing (FilmTable::shared; its build is BM_TableBuild).
+const FilmTableKey kTableKey{9.9e-3, 1e-4, 19.8e-3, 48, 12, CavitationModel::half_sommerfeld};
+const PlanarFilmState kTableStates[2] = {{0.6, 3.0, 20.0, 200.0}, {0.601, 3.0, 20.0, 200.0}};
+
+void BM_TableSection61(benchmark::State& state) {
+  const auto table = FilmTable::shared(kTableKey);
+  long calls = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(table->load(kTableStates[calls++ % 2], kViscosity));
+  }
+  state.counters["error_bound"] = table->error_bound();
+}
+BENCHMARK(BM_TableSection61)->Unit(benchmark::kMicrosecond);
+
+void BM_GridSection61(benchmark::State& state) {
+  ReynoldsGridOptions options;
+  options.circumferential_cells = kTableKey.circumferential_cells;
+  options.axial_cells = kTableKey.axial_cells;
+  options.cavitation = CavitationModel::half_sommerfeld;
+  ReynoldsGridSolver solver(options);
+  const JointDimensions joint{kTableKey.journal_radius + kTableKey.radial_clearance, kTableKey.width * 1.001,
+                              kTableKey.journal_radius, kTableKey.width};
+  long calls = 0;
+  for (auto _ : state) {
+    const PlanarFilmState& s = kTableStates[calls++ % 2];
+    const double e = s.eccentricity_ratio * kTableKey.radial_clearance;
+    RelativeMotion motion;
+    motion.omega_BJ_W = Eigen::Vector3d(0, 0, s.journal_spin);
+    motion.v_BJ_W = Eigen::Vector3d(s.eccentricity_ratio_rate * kTableKey.radial_clearance, s.line_of_centres_rate * e, 0);
+    benchmark::DoNotOptimize(solver.solve(joint, PartPose{}, PartPose{Eigen::Vector3d(e, 0, 0), Eigen::Vector3d::UnitZ()},
+                                          motion, Lubricant{kViscosity}));
+  }
+}
+BENCHMARK(BM_GridSection61)->Unit(benchmark::kMicrosecond);
+
+void BM_TableBuild(benchmark::State& state) {
+  for (auto _ : state) benchmark::DoNotOptimize(FilmTable(kTableKey));
+}
+BENCHMARK(BM_TableBuild)->Unit(benchmark::kMillisecond)->Iterations(1);
 
 }  // namespace
 

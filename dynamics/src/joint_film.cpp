@@ -13,6 +13,13 @@ namespace clearjoint::dynamics {
 
 namespace {
 
+/// How aligned a film must be for the table (made for an aligned journal) to stand for the grid:
+/// the journal axis' offsets at the film's two ends may differ by this fraction of c, and the
+/// ends' squeeze from a tilting rate by this fraction of the centre's velocity across the film
+/// and the spin's surface speed. The load changes by about as much relatively, 1e-6, far below
+/// the table's error bound (FilmTable::error_bound); a planar model is aligned to rounding.
+constexpr double kTableAlignment = 1e-6;
+
 /// A unit vector perpendicular to `axis` (unit): the world axis least aligned with it, projected.
 Vector3 any_perpendicular(const Vector3& axis) {
   Eigen::Index least_aligned = 0;
@@ -25,7 +32,7 @@ Vector3 any_perpendicular(const Vector3& axis) {
 
 JointFilm::JointFilm(const JointLubrication& lubrication, const geometry::JointDimensions& dimensions)
     : lubrication_(lubrication), dimensions_(dimensions) {
-  if (lubrication_.method == FilmMethod::grid) {
+  if (lubrication_.method == FilmMethod::grid || lubrication_.method == FilmMethod::table) {
     lubrication::ReynoldsGridOptions options;
     options.circumferential_cells = lubrication_.circumferential_cells;
     options.axial_cells = lubrication_.axial_cells;
@@ -72,8 +79,38 @@ JointFilmState JointFilm::evaluate(const geometry::PartPose& bearing,
   }
   const Vector3 t_hat = axis_W.cross(e_hat);
 
+  // The table, where it stands for the grid: an aligned journal in a film without a groove,
+  // within the table's eps (film_table.hpp).
+  std::optional<lubrication::PlanarFilmLoad> tabulated;
+  if (lubrication_.method == FilmMethod::table && !groove_W) {
+    const double spin = lubrication::journal_spin(film, motion);
+    const Vector3 tilt_rate_W = motion.omega_BJ_W - motion.omega_BJ_W.dot(axis_W) * axis_W;
+    const bool aligned =
+        (lubrication::journal_offset(film, film.z_high) - lubrication::journal_offset(film, film.z_low)).norm() <=
+            kTableAlignment * c &&
+        tilt_rate_W.norm() * film.width() <= kTableAlignment * (q_W.norm() + c * std::abs(spin));
+    if (aligned) {
+      const lubrication::FilmTableKey key{film.journal_radius, c, film.width(), lubrication_.circumferential_cells,
+                                          lubrication_.axial_cells, lubrication_.cavitation};
+      if (!table_ || !(table_->key() == key)) table_ = lubrication::FilmTable::shared(key);
+      lubrication::PlanarFilmState planar;
+      planar.eccentricity_ratio = state.eccentricity_ratio;
+      planar.eccentricity_ratio_rate = q_W.dot(e_hat) / c;
+      planar.line_of_centres_rate = e_W.norm() > 0.0 ? q_W.dot(t_hat) / e_W.norm() : 0.0;
+      planar.journal_spin = spin;
+      tabulated = table_->load(planar, lubrication_.viscosity);
+    }
+    if (!tabulated) ++statistics_.table_fallbacks;
+  }
+
   Vector3 force_W = Vector3::Zero(), moment_W = Vector3::Zero();
-  if (grid_) {
+  if (tabulated) {
+    force_W = tabulated->radial * e_hat + tabulated->tangential * t_hat;
+    // Through the journal's axis at the mid-plane, as the grid's pressures act: its moment about P_j.
+    const Vector3 p_WA = film.p_WB + z_mid * axis_W + e_W;
+    moment_W = (p_WA - film.p_WJ).cross(force_W);
+    state.max_pressure = tabulated->max_pressure;
+  } else if (grid_) {
     if (!groove_W) {
       // theta = 0 on the line of centres: the warm start then turns with the load as the
       // journal orbits (reynolds_grid.hpp).

@@ -5,11 +5,13 @@
 /// relative motion to the weighted film force (joint_lubrication.hpp) and what the force table
 /// records. Private to the dynamics module: ClearanceRevoluteJoint owns one.
 
+#include <memory>
 #include <optional>
 
 #include "clearjoint/dynamics/joint_lubrication.hpp"
 #include "clearjoint/geometry/model/joint_geometry.hpp"
 #include "clearjoint/lubrication/relative_motion.hpp"
+#include "clearjoint/lubrication/film_table.hpp"
 #include "clearjoint/lubrication/reynolds_grid.hpp"
 
 namespace clearjoint::dynamics {
@@ -19,6 +21,7 @@ struct JointFilmStatistics {
   long solves = 0;          ///< film solutions (instants with a non-zero film weight)
   long not_converged = 0;   ///< grid solves whose active set did not settle (FilmLoad::converged)
   long linear_solves = 0;   ///< sparse LU solves of the grid
+  long table_fallbacks = 0; ///< method table: solutions the grid gave (outside the table's domain)
 };
 
 class JointFilm {
@@ -46,7 +49,9 @@ class JointFilm {
  private:
   JointLubrication lubrication_;
   geometry::JointDimensions dimensions_;
-  std::optional<lubrication::ReynoldsGridSolver> grid_;  ///< method grid only
+  std::optional<lubrication::ReynoldsGridSolver> grid_;  ///< methods grid and table (its fallback)
+  /// Method table: the table of the film's current width, from FilmTable::shared on first use.
+  std::shared_ptr<const lubrication::FilmTable> table_;
   JointFilmStatistics statistics_;
 };
 

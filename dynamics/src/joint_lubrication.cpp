@@ -63,7 +63,7 @@ void validate(const JointLubrication& l, const std::string& name, double radial_
     require_in(name + ".transition_width", l.transition_width, smallest, radial_clearance, false,
                " m (from 1e-6 of the radial clearance to the clearance)");
   }
-  if (l.method == FilmMethod::grid) {
+  if (l.method == FilmMethod::grid || l.method == FilmMethod::table) {  // the table's grid too
     lubrication::ReynoldsGridOptions grid;
     grid.circumferential_cells = l.circumferential_cells;
     grid.axial_cells = l.axial_cells;
@@ -77,8 +77,8 @@ void validate(const JointLubrication& l, const std::string& name, double radial_
   }
   const bool mass_conserving = l.cavitation == lubrication::CavitationModel::mass_conserving;
   if (mass_conserving && l.method != FilmMethod::grid) {
-    throw ModelError(name + ".cavitation", " = \"mass_conserving\": the closed forms (method " +
-                     std::string(lubrication::to_string(l.method)) + ") are half-Sommerfeld only; use method grid");
+    throw ModelError(name + ".cavitation", " = \"mass_conserving\": method " +
+                     std::string(lubrication::to_string(l.method)) + " is half-Sommerfeld only; use method grid");
   }
   if (mass_conserving && !l.groove_direction_B) {
     throw ModelError(name + ".groove_direction", " is missing: a mass-conserving film fed only at "

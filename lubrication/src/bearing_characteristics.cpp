@@ -7,6 +7,7 @@
 #include <string>
 
 #include "clearjoint/geometry/model/primitives.hpp"
+#include "clearjoint/lubrication/film_table.hpp"
 #include "clearjoint/lubrication/long_bearing.hpp"
 #include "clearjoint/lubrication/short_bearing.hpp"
 #include "refuse.hpp"
@@ -35,7 +36,7 @@ std::string_view to_string(BearingMotion motion) noexcept { return geometry::key
 
 std::string_view to_string(BearingMethod method) noexcept { return geometry::key_of(method); }
 
-CavitationModel default_cavitation(BearingMethod method) noexcept {
+CavitationModel default_cavitation(BearingMethod method) noexcept {  // table: half-Sommerfeld
   return method == BearingMethod::grid ? CavitationModel::mass_conserving
                                        : CavitationModel::half_sommerfeld;
 }
@@ -75,8 +76,8 @@ BearingCharacteristics bearing_characteristics(const BearingCharacteristicsQuery
   if (query.method != BearingMethod::grid &&
       query.cavitation != CavitationModel::half_sommerfeld) {
     throw geometry::InvalidInput(
-        "cavitation = mass_conserving: the closed forms (short, long) are half-Sommerfeld only; "
-        "use method = grid");
+        "cavitation = mass_conserving: the closed forms (short, long) and the table are "
+        "half-Sommerfeld only; use method = grid");
   }
   // Unit journal radius, unit viscosity, unit rate: the results are non-dimensional.
   const double radius = 1.0;
@@ -88,7 +89,22 @@ BearingCharacteristics bearing_characteristics(const BearingCharacteristicsQuery
 
   double force_radial = 0.0, force_tangential = 0.0, side_flow = 0.0, max_pressure = 0.0;
   BearingCharacteristics result;
-  if (query.method == BearingMethod::grid) {
+  if (query.method == BearingMethod::table) {
+    validate(query.grid);
+    const auto table = FilmTable::shared({radius, clearance, width, query.grid.circumferential_cells,
+                                          query.grid.axial_cells, query.cavitation});
+    PlanarFilmState state;
+    state.eccentricity_ratio = eps;
+    (rotation ? state.journal_spin : state.eccentricity_ratio_rate) = rate;
+    const std::optional<PlanarFilmLoad> load = table->load(state, 1.0);
+    if (!load) {
+      detail::refuse("eccentricity_ratio", eps, "beyond the table's reach (0.98, kTableLargestEccentricityRatio); use method = grid");
+    }
+    force_radial = load->radial;
+    force_tangential = load->tangential;
+    side_flow = load->side_flow;
+    max_pressure = load->max_pressure;
+  } else if (query.method == BearingMethod::grid) {
     validate(query.grid);
     geometry::JointDimensions dimensions{radius + clearance, width * (1.0 + kBearingLengthMargin),
                                          radius, width};

@@ -97,6 +97,7 @@ struct ReynoldsGridSolver::State {
   // The last solution (u: P where full, f - 1 where cavitated) and which nodes were full.
   bool has_previous = false;
   Eigen::VectorXd u;
+  double pressure_scale = 0.0;  // of the last solve: p = pressure_scale P
   std::vector<char> full;
   // Per-call work arrays.
   std::vector<double> h_east, h3_east, h3_north, h_rate;
@@ -211,6 +212,18 @@ ReynoldsGridSolver& ReynoldsGridSolver::operator=(ReynoldsGridSolver&&) noexcept
 const ReynoldsGridOptions& ReynoldsGridSolver::options() const { return state_->options; }
 
 void ReynoldsGridSolver::forget_previous_solution() { state_->has_previous = false; }
+
+std::vector<double> ReynoldsGridSolver::unclipped_pressures() const {
+  const State& s = *state_;
+  if (!s.has_previous || s.pattern_grooved) return {};
+  std::vector<double> pressures(static_cast<std::size_t>(s.columns) * s.rows);
+  for (int i = 0; i < s.columns; ++i) {
+    for (int j = 1; j <= s.rows; ++j) {
+      pressures[static_cast<std::size_t>(i) * s.rows + (j - 1)] = s.pressure_scale * s.u[s.index(i, j)];
+    }
+  }
+  return pressures;
+}
 
 FilmLoad ReynoldsGridSolver::solve(const geometry::JointDimensions& dimensions,
                                    const geometry::PartPose& bearing,
@@ -378,6 +391,7 @@ FilmLoad ReynoldsGridSolver::solve(const FilmGeometry& film, const RelativeMotio
     }
   }
   s.has_previous = true;
+  s.pressure_scale = pressure_scale;
   load.iterations = iteration;
   load.converged = converged;
 

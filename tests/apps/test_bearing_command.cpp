@@ -87,7 +87,7 @@ TEST(BearingCommand, NamesTheOptionWhoseValueIsOutOfRange) {
   EXPECT_TRUE(contains(eps.err, "clearjoint bearing: --eccentricity-ratio = 1: ")) << eps.err;
   const Outcome method = bearing("--method finite");
   EXPECT_EQ(method.exit_code, 1) << method.err;
-  EXPECT_TRUE(contains(method.err, "clearjoint bearing: --method = 'finite': unknown (known: grid, short, long)"))
+  EXPECT_TRUE(contains(method.err, "clearjoint bearing: --method = 'finite': unknown (known: grid, short, long, table)"))
       << method.err;
 }
 

@@ -176,7 +176,7 @@ TEST(FilmMethod, ReadsBackItsOwnNamesAndNamesTheFieldOfAnUnknownOne) {
     FAIL();
   } catch (const ModelError& e) {
     EXPECT_EQ(std::string(e.what()),
-              "forces[0].lubrication.method = \"finite\": unknown film method (known: grid, short, long)");
+              "forces[0].lubrication.method = \"finite\": unknown film method (known: grid, short, long, table)");
   }
 }
 

@@ -346,7 +346,7 @@ TEST(BearingCharacteristicsQueryFromNames, NamesTheFieldAndTheValueItRefuses) {
   EXPECT_EQ(error_of(names), "motion = 'spin': unknown (known: rotation, squeeze)");
   names = {};
   names.method = "finite";
-  EXPECT_EQ(error_of(names), "method = 'finite': unknown (known: grid, short, long)");
+  EXPECT_EQ(error_of(names), "method = 'finite': unknown (known: grid, short, long, table)");
   names = {};
   names.cavitation = "jfo";
   EXPECT_EQ(error_of(names),
@@ -356,6 +356,52 @@ TEST(BearingCharacteristicsQueryFromNames, NamesTheFieldAndTheValueItRefuses) {
   EXPECT_EQ(error_of(names), "grid = 1x1: options.circumferential_cells = 1: must be at least 8");
   names.grid = std::pair{8, 1};
   EXPECT_EQ(error_of(names).rfind("grid = 8x1: options.axial_cells = 1: ", 0), 0u);
+}
+
+// The table reproduces the half-Sommerfeld grid it tabulates: So, beta, side flow and peak
+// pressure within 0.5 % (the force's error bound, FilmTable::error_bound, is below it), for both
+// motions; beyond its reach it names eps.
+constexpr double kTableTolerance = 5e-3;
+
+TEST(BearingCharacteristics, FromTheTableMatchTheHalfSommerfeldGrid) {
+  for (const BearingMotion motion : {BearingMotion::rotation, BearingMotion::squeeze}) {
+    for (const double eps : {0.2, 0.6, 0.9}) {
+      BearingCharacteristicsQuery query;
+      query.eccentricity_ratio = eps;
+      query.width_ratio = 0.5;
+      query.motion = motion;
+      query.cavitation = CavitationModel::half_sommerfeld;
+      query.grid.circumferential_cells = 48;
+      query.grid.axial_cells = 12;
+      const BearingCharacteristics grid = bearing_characteristics(query);
+      query.method = BearingMethod::table;
+      const BearingCharacteristics table = bearing_characteristics(query);
+      EXPECT_NEAR(table.sommerfeld_number, grid.sommerfeld_number, kTableTolerance * grid.sommerfeld_number)
+          << to_string(motion) << " eps " << eps;
+      EXPECT_NEAR(table.side_flow_variable, grid.side_flow_variable, kTableTolerance * grid.side_flow_variable)
+          << to_string(motion) << " eps " << eps;
+      EXPECT_NEAR(table.max_pressure_ratio, grid.max_pressure_ratio, kTableTolerance * grid.max_pressure_ratio)
+          << to_string(motion) << " eps " << eps;
+      EXPECT_NEAR(table.attitude_angle, grid.attitude_angle, kTableTolerance) << to_string(motion) << " eps " << eps;
+    }
+  }
+  BearingCharacteristicsQuery beyond;
+  beyond.eccentricity_ratio = 0.99;
+  beyond.method = BearingMethod::table;
+  beyond.cavitation = CavitationModel::half_sommerfeld;
+  beyond.grid.circumferential_cells = 48;
+  beyond.grid.axial_cells = 12;
+  try {
+    bearing_characteristics(beyond);
+    ADD_FAILURE() << "no error";
+  } catch (const geometry::InvalidInput& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "eccentricity_ratio = 0.98999999999999999: beyond the table's reach (0.98, "
+              "kTableLargestEccentricityRatio); use method = grid");
+  }
+  beyond.eccentricity_ratio = 0.5;
+  beyond.cavitation = CavitationModel::mass_conserving;
+  EXPECT_THROW(bearing_characteristics(beyond), geometry::InvalidInput);
 }
 
 }  // namespace

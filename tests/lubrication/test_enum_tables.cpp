@@ -49,7 +49,7 @@ TEST(LubricationEnumTables, GiveToStringTheirKeysAndTheFrontEndsTheirEstablished
   EXPECT_EQ(to_string(CavitationModel::mass_conserving), "mass_conserving");
   EXPECT_EQ(to_string(ReynoldsLinearSolver::sparse_lu), "sparse_lu");
   EXPECT_EQ(to_string(BearingMotion::squeeze), "squeeze");
-  EXPECT_EQ(geo::known_keys<BearingMethod>(), "grid, short, long");
+  EXPECT_EQ(geo::known_keys<BearingMethod>(), "grid, short, long, table");
 }
 
 }  // namespace

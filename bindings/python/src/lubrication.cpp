@@ -105,7 +105,7 @@ py::dict characteristics(const py::handle& eccentricity_ratio, const py::handle&
   }
   py::dict d = as_dict(result);
   d["cavitation"] = std::string(lubrication::to_string(query.cavitation));
-  d["grid"] = query.method == lubrication::BearingMethod::grid
+  d["grid"] = query.method == lubrication::BearingMethod::grid || query.method == lubrication::BearingMethod::table
                   ? py::object(py::make_tuple(query.grid.circumferential_cells, query.grid.axial_cells))
                   : py::object(py::none());
   return d;

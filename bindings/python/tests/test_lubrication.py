@@ -61,7 +61,7 @@ def test_bad_input_names_the_argument(call, field):
     (lambda: bearing_characteristics(0.5 + 0j, 1.0), r"eccentricity_ratio = \(0.5\+0j\): must be a number"),
     (lambda: bearing_characteristics(0.5, None), "width_ratio = None: must be a number"),
     (lambda: bearing_characteristics(0.5, np.complex128(1)), r"width_ratio = .*1\+0j.*: must be a number"),
-    (lambda: bearing_characteristics(0.5, 1.0, method=None), "method = None: must be one of grid, short, long"),
+    (lambda: bearing_characteristics(0.5, 1.0, method=None), "method = None: must be one of grid, short, long, table"),
     (lambda: bearing_characteristics(0.5, 1.0, motion=b"rotation"), "motion = b'rotation': must be one of rotation, squeeze"),
     (lambda: bearing_characteristics(0.5, 1.0, cavitation=3), "cavitation = 3: must be one of half_sommerfeld, mass_conserving"),
     (lambda: bearing_characteristics(0.5, 1.0, grid=(48.5, 12)), r"grid\[0\] = 48.5: must be a whole number of cells"),
@@ -129,3 +129,13 @@ def test_the_docstring_names_every_choice_the_librarys_table_has(argument):
     assert len(known) >= 2
     for name in known:
         assert f'``"{name}"``' in bearing_characteristics.__doc__, f"{argument} {name!r} is not described"
+
+
+def test_the_table_gives_the_half_sommerfeld_grids_characteristics_and_names_its_reach():
+    grid = bearing_characteristics(0.6, 0.5, cavitation="half_sommerfeld", grid=(48, 12))
+    table = bearing_characteristics(0.6, 0.5, method="table", grid=(48, 12))
+    assert table.cavitation == "half_sommerfeld" and table.grid == (48, 12)
+    assert table.sommerfeld_number == pytest.approx(grid.sommerfeld_number, rel=5e-3)
+    assert table.attitude_angle == pytest.approx(grid.attitude_angle, rel=5e-3)
+    with pytest.raises(ValueError, match="^eccentricity_ratio = 0.98999999999999999: beyond the table's reach"):
+        bearing_characteristics(0.99, 0.5, method="table", grid=(48, 12))

@@ -48,10 +48,12 @@ def bearing_characteristics(eccentricity_ratio: float, width_ratio: float, *,
     eccentricity_ratio: eps, 0 or in [1e-100, 1). width_ratio: B / D in [1e-50, 1e50]. Both real
     numbers (int, float or a NumPy integer or floating scalar; not bool, str, complex or None).
     motion: ``"rotation"`` (steady spin) or ``"squeeze"`` (pure approach along the line of
-    centres). method: ``"grid"`` (finite width, ReynoldsGridSolver), ``"short"`` (Ocvirk) or
-    ``"long"`` (Sommerfeld). cavitation: ``"half_sommerfeld"`` or ``"mass_conserving"``; None
-    takes mass_conserving for the grid (fed at ambient pressure along the thickest film, as
-    Raimondi & Boyd's tables) and half_sommerfeld, the only one they have, for the closed forms.
+    centres). method: ``"grid"`` (finite width, ReynoldsGridSolver), ``"short"`` (Ocvirk),
+    ``"long"`` (Sommerfeld) or ``"table"`` (the grid's half-Sommerfeld film tabulated over eps up
+    to 0.98, built on first use for the bearing and grid and kept; docs/lubrication.md gives its
+    measured error). cavitation: ``"half_sommerfeld"`` or ``"mass_conserving"``; None takes
+    mass_conserving for the grid (fed at ambient pressure along the thickest film, as Raimondi &
+    Boyd's tables) and half_sommerfeld, the only one they have, for the closed forms and the table.
     grid: (cells around, cells across), integers (NumPy's too), at least (8, 2); None: 96 x 24,
     which keeps So within about 1 % of Raimondi & Boyd. A grid whose estimated cost is above the
     solver's limits (64 MiB of band or 1e9 operations a linear solve, about half a second) is

@@ -37,7 +37,9 @@ namespace clearjoint::dynamics {
 /// How the film's pressure is solved: lubrication::BearingMethod, named "short", "long", "grid"
 /// (its EnumTable's keys). short and long are the Ocvirk and Sommerfeld closed forms at the
 /// film's mid-plane (an aligned journal, half-Sommerfeld); grid is the ReynoldsGridSolver (any
-/// pose, tilt included, either cavitation model).
+/// pose, tilt included, either cavitation model); table is the grid's half-Sommerfeld film
+/// tabulated once per bearing (lubrication::FilmTable), the grid itself where the table does not
+/// reach (a tilted journal, a groove, eps above lubrication::kTableLargestEccentricityRatio).
 using FilmMethod = lubrication::BearingMethod;
 /// The method whose key is `name`; throws ModelError `<field> = "<name>": unknown ...`
 /// listing the names.
@@ -58,7 +60,7 @@ struct JointLubrication {
   double viscosity = 0.0;  ///< eta, Pa s, > 0
   lubrication::CavitationModel cavitation = lubrication::CavitationModel::half_sommerfeld;
   FilmMethod method = FilmMethod::short_bearing;
-  /// The grid (method grid): N_theta around, N_z across; 48 x 12 keeps So within about 1 % of
+  /// The grid (methods grid and table): N_theta around, N_z across; 48 x 12 keeps So within about 1 % of
   /// Raimondi & Boyd at B/D = 1 (docs/lubrication.md) at about 0.3 ms a solve.
   int circumferential_cells = 48;
   int axial_cells = 12;

@@ -22,6 +22,7 @@ enum class BearingMethod {
   grid,           ///< finite width: ReynoldsGridSolver
   short_bearing,  ///< Ocvirk closed form (half-Sommerfeld only)
   long_bearing,   ///< Sommerfeld closed form (half-Sommerfeld only)
+  table,          ///< the grid's film tabulated over eps (FilmTable; half-Sommerfeld only)
 };
 
 }  // namespace clearjoint::lubrication
@@ -47,6 +48,7 @@ struct clearjoint::geometry::EnumTable<clearjoint::lubrication::BearingMethod> {
       {M::grid, "grid", "grid", "finite width, Reynolds equation on a grid"},
       {M::short_bearing, "short_bearing", "short", "short bearing (Ocvirk)"},
       {M::long_bearing, "long_bearing", "long", "long bearing (Sommerfeld)"},
+      {M::table, "table", "table", "finite width, the grid's film tabulated over eps"},
   });
 };
 static_assert(clearjoint::geometry::entries_in_code_order<clearjoint::lubrication::BearingMethod>());
@@ -59,7 +61,7 @@ std::string_view to_string(BearingMethod method) noexcept;
 
 /// The cavitation model a front end takes when none is named: mass-conserving for the grid (the
 /// handbook's set-up, Raimondi & Boyd, below), half-Sommerfeld, the only one they have, for the
-/// closed forms.
+/// closed forms and the table.
 CavitationModel default_cavitation(BearingMethod method) noexcept;
 
 struct BearingCharacteristicsQuery {
@@ -89,8 +91,8 @@ struct BearingCharacteristics {
 };
 
 /// Throws geometry::InvalidInput naming the field for eps outside {0} U [kSmallestEccentricityRatio,
-/// 1), a width ratio outside [kSmallestWidthRatio, kLargestWidthRatio], a closed form asked for
-/// the mass-conserving model, or a bad grid (too fine a one: validate(ReynoldsGridOptions)).
+/// 1), a width ratio outside [kSmallestWidthRatio, kLargestWidthRatio], a closed form or the table
+/// asked for the mass-conserving model, or a bad grid (too fine a one: validate(ReynoldsGridOptions)).
 /// The closed forms' outputs are exact to kClosedFormRelativeError for every accepted input.
 BearingCharacteristics bearing_characteristics(const BearingCharacteristicsQuery& query);
 

@@ -28,6 +28,7 @@
 /// fewer still when warm-started: the previous call's solution (same grid) is the first guess.
 
 #include <memory>
+#include <vector>
 #include <string_view>
 
 #include "clearjoint/geometry/model/joint_geometry.hpp"
@@ -125,6 +126,14 @@ class ReynoldsGridSolver {
   /// must be the groove's direction).
   FilmLoad solve(const FilmGeometry& film, const RelativeMotion& motion, const Lubricant& lubricant,
                  const OilSupply& supply = {});
+
+  /// The last solve's pressure at the grid's unknown nodes, Pa, before a half-Sommerfeld solve
+  /// sets its negative values to ambient: node (i, j), at theta = 2 pi i / N_theta from
+  /// theta_zero_W and z = z_low + j B / N_z, j = 1 ... N_z - 1, at index i (N_z - 1) + j - 1, for
+  /// a periodic film (no groove). Empty before the first solve. For half-Sommerfeld the system is
+  /// linear in the motion (its matrix depends on the film's shape only), which is what lets
+  /// FilmTable superpose these fields.
+  std::vector<double> unclipped_pressures() const;
 
   /// Start the next call from a full film instead of the previous solution.
   void forget_previous_solution();
