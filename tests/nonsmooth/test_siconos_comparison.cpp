@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // clearjoint's Moreau-Jean integrator against Siconos's own kernel (issue 47's check, reported in
 // docs/nonsmooth.md, "Comparison with Siconos"): a journal bouncing in a bearing fixed to the
-// ground, frictionless, e = 0.9, theta = 1/2, h = 1e-5, over 0.1 s.
+// ground, frictionless, e = 0.9, theta = 1/2, h = 1e-5, over 0.1 s; and its first oblique impact
+// with friction (mu = 0.1) at h = 1e-5 and 1e-6.
 #include <gtest/gtest.h>
 
 #include <cmath>
