@@ -10,6 +10,7 @@
 #include <numbers>
 
 #include "clearjoint/dynamics/errors.hpp"
+#include "clearjoint/dynamics/kernel_pose.hpp"
 #include "clearjoint/geometry/model/joint_geometry.hpp"
 #include "joint_film.hpp"
 
@@ -160,8 +161,8 @@ void ClearanceRevoluteJoint::detect(double time, const SystemKinematics& kinemat
                                     geometry::JointContacts& contacts) const {
   const BodyKinematics& bi = kinematics.body(bearing_.body);
   const BodyKinematics& bj = kinematics.body(journal_.body);
-  const geometry::PartPose bearing_pose{bi.point_W(bearing_.point_B), bi.rotation * bearing_.axis_B};
-  const geometry::PartPose journal_pose{bj.point_W(journal_.point_B), bj.rotation * journal_.axis_B};
+  const geometry::PartPose bearing_pose = kernel_pose(bi, bearing_.point_B, bearing_.axis_B);
+  const geometry::PartPose journal_pose = kernel_pose(bj, journal_.point_B, journal_.axis_B);
   const std::array<Vector3, 4> poses{bearing_pose.p_WP, bearing_pose.axis_W, journal_pose.p_WP,
                                      journal_pose.axis_W};
   const bool into_workspace = &contacts == &workspace.state.contacts;
@@ -254,8 +255,8 @@ void ClearanceRevoluteJoint::evaluate_film(double time, const SystemKinematics& 
       groove_B ? std::optional<Vector3>(bi.rotation * *groove_B) : std::nullopt;
   try {
     const std::lock_guard turn(shared_->film_turn);
-    state.film = film_->evaluate({p_WPi, bi.rotation * bearing_.axis_B},
-                                 {p_WPj, bj.rotation * journal_.axis_B}, groove_W, motion);
+    state.film = film_->evaluate(kernel_pose(bi, bearing_.point_B, bearing_.axis_B),
+                                 kernel_pose(bj, journal_.point_B, journal_.axis_B), groove_W, motion);
   } catch (const std::exception& e) {  // geometry::InvalidInput, or a singular grid system
     throw SolverError("clearance joint '" + name_ + "' at t = " + format_number(time) +
                       ": the oil film cannot be solved (" + e.what() + ")");
@@ -271,17 +272,18 @@ ClearanceJointState ClearanceRevoluteJoint::evaluate(double time, const SystemKi
   evaluate_forces(time, kinematics, impact_memory, lease.get(), state);
   const BodyKinematics& bi = kinematics.body(bearing_.body);
   const BodyKinematics& bj = kinematics.body(journal_.body);
-  const Vector3 p_WPj = bj.point_W(journal_.point_B);
+  // The centres the detection saw (kernel_pose.hpp).
+  const geometry::PartPose journal_pose = kernel_pose(bj, journal_.point_B, journal_.axis_B);
+  const Vector3 p_WPi = kernel_pose(bi, bearing_.point_B, bearing_.axis_B).p_WP;
 
   const Vector3 bearing_axis_W = bi.rotation * bearing_axis_hat_B_;
-  const Vector3 journal_axis_W = bj.rotation * journal_.axis_B;
+  const Vector3& journal_axis_W = journal_pose.axis_W;
   state.axis_angle = angle_between(bearing_axis_W, journal_axis_W);
   // Rim labels follow the bearing's bases, as in the detection: when the axes point opposite
   // ways, the journal's base "B" faces the bearing's base A.
-  const geometry::BaseCenters rims = geometry::base_centers(
-      {p_WPj, journal_axis_W}, parameters_.dimensions.journal_length);
+  const geometry::BaseCenters rims =
+      geometry::base_centers(journal_pose, parameters_.dimensions.journal_length);
   const bool same_direction = bearing_axis_W.dot(journal_axis_W) >= 0.0;
-  const Vector3 p_WPi = bi.point_W(bearing_.point_B);
   const Matrix3 to_bearing_frame =
       (Matrix3() << (bi.rotation * bearing_u_B_).transpose(),
        (bi.rotation * bearing_v_B_).transpose(), bearing_axis_W.transpose())

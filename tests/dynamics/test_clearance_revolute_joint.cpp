@@ -370,6 +370,59 @@ TEST(ClearanceRevoluteJoint, StopsWithTheTimeWhenTheStateIsNotFinite) {
   }
 }
 
+void expect_same_contacts(const geometry::JointContacts& actual, const geometry::JointContacts& expected) {
+  EXPECT_EQ(actual.scenario, expected.scenario);
+  ASSERT_EQ(actual.contact_count, expected.contact_count);
+  for (int c = 0; c < actual.contact_count; ++c) {
+    const geometry::Contact& a = actual.contacts[c];
+    const geometry::Contact& e = expected.contacts[c];
+    EXPECT_EQ(a.type, e.type);
+    EXPECT_EQ(a.base, e.base);
+    EXPECT_EQ(a.depth, e.depth);
+    EXPECT_EQ(a.normal_W, e.normal_W);
+    EXPECT_EQ(a.p_WCj, e.p_WCj);
+    EXPECT_EQ(a.p_WCi, e.p_WCi);
+  }
+}
+
+TEST(ClearanceRevoluteJoint, DetectsAtAStateWithANegligibleCoordinateWhatItDetectsAtThatCoordinateZero) {
+  // A planar motion's out-of-plane coordinate, rounded to -8.7e-165 m instead of 0: below the
+  // kernel's smallest accepted length (1e-150 m), so the joint hands the kernel 0 (kernel_pose.hpp)
+  // and finds the contacts of that pose, bit for bit.
+  constexpr double kNegligible = -8.7e-165;
+  for (const auto& [p_WPj, flushed] :
+       {std::pair{Vector3(kRadialClearance + kDepth, 0.0, kNegligible), Vector3(kRadialClearance + kDepth, 0.0, 0.0)},
+        std::pair{Vector3(0.0, kNegligible, kAxialClearance + kDepth), Vector3(0.0, 0.0, kAxialClearance + kDepth)}}) {
+    const ClearanceRevoluteJoint joint = make_joint(hertz_without_friction());
+    const ClearanceRevoluteJoint reference = make_joint(hertz_without_friction());
+    const SystemKinematics k = poses(p_WPj);
+    // The state's centre has the negligible coordinate (and the others of p_WPj, to rounding).
+    const Vector3 p_WPj_state = k.body(kJournal).point_W(kJournalCentre_B);
+    ASSERT_TRUE((p_WPj_state.array() == kNegligible).any()) << p_WPj_state.transpose();
+    const ClearanceJointState state = joint.evaluate(0.25, k, kNoMemory);
+    const ClearanceJointState expected = reference.evaluate(0.25, poses(flushed), kNoMemory);
+    EXPECT_NE(state.contacts.contact_count, 0);
+    expect_same_contacts(state.contacts, expected.contacts);
+    EXPECT_EQ(state.force_on_journal_W, expected.force_on_journal_W);
+  }
+}
+
+TEST(ClearanceRevoluteJoint, TakesAnAxisWithANegligibleComponentAsItIs) {
+  // A journal turned by 2e-165 rad about x: its axis has a y component of that size. A direction
+  // has no smallest length in the kernel (joint_geometry.hpp): detected as given, axes that are
+  // not exactly parallel (eq. 5), so both rims touch the wall at the line contact's depth.
+  const ClearanceRevoluteJoint joint = make_joint(hertz_without_friction());
+  const SystemKinematics k =
+      poses(Vector3(kRadialClearance + kDepth, 0.0, 0.0), euler_parameters_from_axis_angle(Vector3::UnitX(), 2e-165));
+  const Vector3 axis_W = k.body(kJournal).rotation * Vector3::UnitZ();
+  ASSERT_NE(axis_W.y(), 0.0);
+  ASSERT_LT(std::abs(axis_W.y()), geometry::kSmallestAcceptedLength);
+  const geometry::JointContacts contacts = joint.evaluate(0.25, k, kNoMemory).contacts;
+  EXPECT_EQ(contacts.scenario, ContactScenario::radial_at_both_bases);
+  ASSERT_EQ(contacts.contact_count, 2);
+  for (int c = 0; c < 2; ++c) EXPECT_NEAR(contacts.contacts[c].depth, kDepth, kRelativeTolerance * kDepth);
+}
+
 std::string construction_error(ClearanceJointParameters p, BodyIndex journal_body = kJournal,
                                Vector3 journal_axis = Vector3::UnitZ()) {
   try {
