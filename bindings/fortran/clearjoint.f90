@@ -70,30 +70,53 @@ module clearjoint
   end type
 
   type, bind(c), public :: cj_certificate
-    integer(c_int32_t) :: level, reason
+    ! BEGIN GENERATED cj_certificate components: the C struct's members, from scripts/projections
+    integer(c_int32_t) :: level
+    integer(c_int32_t) :: reason
     type(c_ptr) :: reason_text  ! static C string: cj_string(reason_text)
+    ! END GENERATED cj_certificate components
   end type
 
   type, bind(c), public :: cj_crossing
-    real(c_double) :: angle, angle_error_bound, point(3), point_error_bound
-    integer(c_int32_t) :: multiplicity, reserved
+    ! BEGIN GENERATED cj_crossing components: the C struct's members, from scripts/projections
+    real(c_double) :: angle
+    real(c_double) :: angle_error_bound
+    real(c_double) :: point(3)
+    real(c_double) :: point_error_bound
+    integer(c_int32_t) :: multiplicity
+    integer(c_int32_t) :: reserved
+    ! END GENERATED cj_crossing components
   end type
 
   type, bind(c), public :: cj_contact
-    integer(c_int32_t) :: type, base
-    real(c_double) :: p_WCj(3), p_WCi(3), normal_W(3)
-    real(c_double) :: depth, depth_error_bound, p_WCj_error_bound, p_WCi_error_bound
+    ! BEGIN GENERATED cj_contact components: the C struct's members, from scripts/projections
+    integer(c_int32_t) :: type
+    integer(c_int32_t) :: base
+    real(c_double) :: p_WCj(3)
+    real(c_double) :: p_WCi(3)
+    real(c_double) :: normal_W(3)
+    real(c_double) :: depth
+    real(c_double) :: depth_error_bound
+    real(c_double) :: p_WCj_error_bound
+    real(c_double) :: p_WCi_error_bound
     type(cj_crossing) :: crossings(2)
-    integer(c_int32_t) :: crossing_count, reserved0
+    integer(c_int32_t) :: crossing_count
+    integer(c_int32_t) :: reserved0
     type(cj_certificate) :: certificate
     real(c_double) :: reserved(4)
+    ! END GENERATED cj_contact components
   end type
 
   type, bind(c), public :: cj_result
-    integer(c_int32_t) :: scenario, aligned, contact_count, reserved0
+    ! BEGIN GENERATED cj_result components: the C struct's members, from scripts/projections
+    integer(c_int32_t) :: scenario
+    integer(c_int32_t) :: aligned
+    integer(c_int32_t) :: contact_count
+    integer(c_int32_t) :: reserved0
     type(cj_certificate) :: certificate
     type(cj_contact) :: contacts(CJ_MAX_CONTACTS)
     real(c_double) :: reserved(8)
+    ! END GENERATED cj_result components
   end type
 
   type, bind(c), public :: cj_pose_array

@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: BSD-3-Clause
 """Writes the projections of the library's enum tables and result field lists into the files that
-a consumer reads without a build: the C header's enums, the Fortran module's constants, the
-Python stubs' enums and result classes, the JSON schemas' enum lists.
+a consumer reads without a build: the C header's enums and result structs' members, the Fortran
+module's constants and BIND(C) types' components, the Python stubs' enums and result classes, the
+JSON schemas' enum lists.
 
 The descriptions come from describe_projections (a program built from the C++ tables, which prints
 them as JSON). Each projection replaces the lines between a "BEGIN GENERATED <name>" and an
@@ -16,7 +17,8 @@ checked-in copy differs from what the tables give.
 
 What this script itself says, and the tables cannot: the C name and constant prefix of each enum
 the C API declares, which schema lists which enum, and the Python attributes of result classes
-that are not fields (a certificate's reason_text, an arc's middle).
+that are not fields (a certificate's reason_text, an arc's middle); c_structs.py says the C layout
+the ABI freezes.
 """
 import argparse
 import difflib
@@ -25,6 +27,8 @@ import pathlib
 import subprocess
 import sys
 import textwrap
+
+from c_structs import struct_projections
 
 # The enums of the C API, in the header's order: C++ type, C type, constant prefix, comment.
 C_ENUMS = [
@@ -185,6 +189,10 @@ def projections(root, description):
 
     region(C_HEADER, "enums", c_enums(tables))
     region(FORTRAN_MODULE, "enums", fortran_constants(tables))
+    enum_names = {type_name: c_name for type_name, c_name, _, _ in C_ENUMS}
+    for c_name, (c_lines, fortran_lines) in struct_projections(description["results"], enum_names).items():
+        region(C_HEADER, f"{c_name} members", c_lines)
+        region(FORTRAN_MODULE, f"{c_name} components", fortran_lines)
     region(PY_STUB, "enums", py_enums(tables))
     region(PY_STUB, "results", py_results(description["results"]))
     for path in sorted({path for path, _, _ in SCHEMA_ENUMS}):

@@ -25,10 +25,14 @@ def description():
              for name in C_TYPES]
     enums.append({"type": "JointType", "module": "dynamics",
                   "entries": [{"code": 0, "name": "spherical", "key": "spherical", "label": ""}]})
+    plain = {"point_journal": "vector3", "point_bearing": "vector3", "normal": "vector3", "type": "ContactType",
+             "base": "ContactBase", "certificate": "Certificate"}
+    bounds = ["depth_error", "point_journal_error", "point_bearing_error"]
     results = [{"type": "Contact", "fields": [
         {"key": "depth", "doc": "", "kind": "plain", "value": "float"},
-        {"key": "type", "doc": "", "kind": "plain", "value": "ContactType"},
-        {"key": "crossings", "doc": "", "kind": "list", "value": "RimCrossing", "capacity": 2}]}]
+        {"key": "crossings", "doc": "", "kind": "list", "value": "RimCrossing", "capacity": 2}]
+        + [{"key": key, "doc": "", "kind": "plain", "value": value} for key, value in plain.items()]
+        + [{"key": key, "doc": "", "kind": "bound", "value": "float"} for key in bounds]}]
     return {"enums": enums, "results": results}
 
 
@@ -51,8 +55,10 @@ SCHEMAS = {
 }
 
 MARKED = {
-    "bindings/c/include/clearjoint/clearjoint.h": "/* BEGIN GENERATED enums */\n/* END GENERATED enums */\n",
-    "bindings/fortran/clearjoint.f90": "! BEGIN GENERATED enums\n! END GENERATED enums\n",
+    "bindings/c/include/clearjoint/clearjoint.h": "/* BEGIN GENERATED enums */\n/* END GENERATED enums */\n"
+        "/* BEGIN GENERATED cj_contact members */\n/* END GENERATED cj_contact members */\n",
+    "bindings/fortran/clearjoint.f90": "! BEGIN GENERATED enums\n! END GENERATED enums\n"
+        "! BEGIN GENERATED cj_contact components\n! END GENERATED cj_contact components\n",
     "bindings/python/clearjoint/__init__.pyi":
         "# BEGIN GENERATED enums\n# END GENERATED enums\n# BEGIN GENERATED results\n# END GENERATED results\n",
 }
@@ -128,6 +134,43 @@ class GenerateProjections(unittest.TestCase):
         self.assertEqual(check.returncode, 1)
         self.assertIn("+    def trial(self) -> float: ...", check.stdout)
         self.assertIn("bindings/python/clearjoint/__init__.pyi", check.stdout.split("stale:")[1])
+
+    def test_the_c_struct_and_fortran_type_keep_the_abi_order_not_the_field_list_order(self):
+        self.assertEqual(self.run_generator("--write").returncode, 0)
+        header = self.read("bindings/c/include/clearjoint/clearjoint.h")
+        self.assertLess(header.index("double p_WCj[3];"), header.index("double depth;"))
+        self.assertIn("int32_t crossing_count;\n  int32_t reserved0;\n  cj_certificate certificate;\n"
+                      "  double reserved[4];", header)
+        self.assertIn("real(c_double) :: p_WCj(3)", self.read("bindings/fortran/clearjoint.f90"))
+
+    def test_a_field_added_to_a_result_takes_the_room_of_its_reserved_members(self):
+        self.run_generator("--write")
+        grown = description()
+        grown["results"][0]["fields"].append({"key": "trial", "doc": "", "kind": "plain", "value": "float"})
+        self.set_description(grown)
+        check = self.run_generator("--check")
+        self.assertEqual(check.returncode, 1)
+        self.assertIn("-  double reserved[4];\n+  double trial;\n+  double reserved[3];", check.stdout)
+        self.assertIn("+    real(c_double) :: trial\n", check.stdout)
+        self.assertIn("bindings/fortran/clearjoint.f90", check.stdout.split("stale:")[1])
+
+    def test_a_field_that_does_not_fit_the_reserved_room_is_an_error_naming_the_abi(self):
+        grown = description()
+        grown["results"][0]["fields"].append({"key": "trial", "doc": "", "kind": "plain", "value": "vector3"})
+        grown["results"][0]["fields"].append({"key": "other", "doc": "", "kind": "plain", "value": "vector3"})
+        self.set_description(grown)
+        run = self.run_generator("--check")
+        self.assertNotEqual(run.returncode, 0)
+        self.assertIn("cj_contact: no reserved room left for the new field other", run.stderr)
+        self.assertIn("CJ_ABI_VERSION", run.stderr)
+
+    def test_a_field_removed_from_a_result_is_an_error_naming_the_abi(self):
+        shrunk = description()
+        shrunk["results"][0]["fields"] = [f for f in shrunk["results"][0]["fields"] if f["key"] != "normal"]
+        self.set_description(shrunk)
+        run = self.run_generator("--check")
+        self.assertNotEqual(run.returncode, 0)
+        self.assertIn("the field list of Contact no longer has normal", run.stderr)
 
     def test_a_file_without_its_markers_is_an_error_naming_it(self):
         self.write("bindings/fortran/clearjoint.f90", "module clearjoint\nend module\n")

@@ -247,21 +247,25 @@ CJ_API cj_options cj_default_options(void);
 
 /** A trust level and why it is not stronger. */
 typedef struct cj_certificate {
-  int32_t level;           /**< cj_certainty */
-  int32_t reason;          /**< cj_reason */
+  /* BEGIN GENERATED cj_certificate members (the field list of Certificate: scripts/projections) */
+  int32_t level; /**< cj_certainty */
+  int32_t reason; /**< cj_reason */
   const char* reason_text; /**< static string: cj_reason_string(reason) */
+  /* END GENERATED cj_certificate members */
 } cj_certificate;
 
 /** A point where a journal rim meets a bearing surface. When the answer is certified or exact,
  * the true crossing angle lies within angle_error_bound of `angle` and the true point within
  * point_error_bound (Euclidean) of `point`. */
 typedef struct cj_crossing {
+  /* BEGIN GENERATED cj_crossing members (the field list of RimCrossing: scripts/projections) */
   double angle; /**< rim angle in [0, 2 pi), in the rim's CircleFrame (primitives.hpp) */
   double angle_error_bound;
   double point[3];
   double point_error_bound;
   int32_t multiplicity; /**< 1 crossing, 2 tangency, 3-4 higher-order contact */
   int32_t reserved;
+  /* END GENERATED cj_crossing members */
 } cj_crossing;
 
 /** One contact (C++: Contact). normal_W points out of the bearing, in the direction the journal
@@ -271,10 +275,11 @@ typedef struct cj_crossing {
  * its depth within depth_error_bound of depth; certified enclosures unless the contact is
  * uncertain. */
 typedef struct cj_contact {
+  /* BEGIN GENERATED cj_contact members (the field list of Contact: scripts/projections) */
   int32_t type; /**< cj_contact_type */
   int32_t base; /**< cj_base */
-  double p_WCj[3];    /**< contact point on the journal */
-  double p_WCi[3];    /**< contact point on the bearing */
+  double p_WCj[3]; /**< contact point on the journal */
+  double p_WCi[3]; /**< contact point on the bearing */
   double normal_W[3];
   double depth;
   double depth_error_bound;
@@ -287,6 +292,7 @@ typedef struct cj_contact {
   int32_t reserved0;
   cj_certificate certificate;
   double reserved[4];
+  /* END GENERATED cj_contact members */
 } cj_contact;
 
 #define CJ_MAX_CONTACTS 6
@@ -294,14 +300,16 @@ typedef struct cj_contact {
 /** The answer of a detection (C++: JointContacts). contacts[0, contact_count) are set, radial
  * before axial, base A before B; the entries after them are left as they were. */
 typedef struct cj_result {
-  int32_t scenario;      /**< cj_scenario */
-  int32_t aligned;       /**< 1 when the axes are (treated as) parallel */
+  /* BEGIN GENERATED cj_result members (the field list of JointContacts: scripts/projections) */
+  int32_t scenario; /**< cj_scenario */
+  int32_t aligned; /**< 1 when the axes are (treated as) parallel */
   int32_t contact_count; /**< 0 to CJ_MAX_CONTACTS */
   int32_t reserved0;
   /** The weakest certificate over every decision taken, "no contact" answers included. */
   cj_certificate certificate;
   cj_contact contacts[CJ_MAX_CONTACTS];
   double reserved[8];
+  /* END GENERATED cj_result members */
 } cj_result;
 
 /* ---- Detection -------------------------------------------------------------------------------- */
