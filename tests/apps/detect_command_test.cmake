@@ -3,7 +3,8 @@
 # docs/command-line.md. Run by ctest, one case per test:
 #   cmake -DCLEARJOINT=<program> -DSOURCE_DIR=<repository> -DWORK_DIR=<scratch dir> -DCASE=<case>
 #         -P detect_command_test.cmake
-# Cases: example, scenarios, stdin, exact, bad_lines, number_ids, missing_file, usage, help.
+# Cases: example, scenarios, stdin, exact, bad_lines, number_ids, missing_file, usage, help,
+# pin_in_hole, pin_in_hole_bad_lines.
 # Any failed check ends the script with FATAL_ERROR, which fails the test. The checks themselves
 # are in json_lines_checks.cmake.
 
@@ -19,6 +20,8 @@ set(EXAMPLE "${SOURCE_DIR}/examples/joints.jsonl")
 set(SCENARIOS "${SOURCE_DIR}/examples/scenarios.jsonl")
 set(EXACT "${SOURCE_DIR}/tests/apps/detect_exact.jsonl")
 set(BAD_LINES "${SOURCE_DIR}/tests/apps/detect_bad_lines.jsonl")
+set(PIN_IN_HOLE "${SOURCE_DIR}/tests/apps/detect_pin_in_hole.jsonl")
+set(PIN_IN_HOLE_BAD_LINES "${SOURCE_DIR}/tests/apps/detect_pin_in_hole_bad_lines.jsonl")
 
 set(SUBCOMMAND detect)
 set(TEST_NAME detect_command_test)
@@ -256,6 +259,73 @@ elseif(CASE STREQUAL "bad_lines")
   expect_no_error(25)
   expect_in("${ERR}" "detect_bad_lines.jsonl" "stderr")
   expect_in("${ERR}" "23 line(s)" "stderr")
+
+elseif(CASE STREQUAL "pin_in_hole")
+  # "joint": "pin_in_hole" (docs/command-line.md). Hole Rh = 0.5, L = 1; pin Rp = 0.375 (cr =
+  # 0.125), stops at -+0.625 of outer radius 1 (ca = 0.125): dyadic, so the aligned answers below
+  # are exact in double and their text must be exactly this. The closed forms are those of
+  # tests/geometry/joint/test_detect_pin_in_hole_contacts.cpp.
+  run("" "${PIN_IN_HOLE}")
+  expect_status(0)
+  file(READ "${PIN_IN_HOLE}" input)
+  expect_ids_in_order("${input}" "${OUT}")
+  split_lines("${OUT}" ANSWER_LINE)
+  expect_member(centred "pin_in_hole" joint)
+  expect_joint(centred none true)
+  expect_member(centred "certified" certificate)
+  # Aligned, offset 0.1875 along y: the hole's mid circle point (0, 0.5, 0) is 0.3125 from the
+  # pin's axis, a line contact of depth offset - cr = 0.0625 along +y.
+  expect_joint(line line true radial:mid)
+  expect_member(line "certified" certificate)
+  expect_member(line "0.0625" contacts 0 depth)
+  expect_member(line "0.5625" contacts 0 point_journal 1)
+  expect_member(line "0.5" contacts 0 point_bearing 1)
+  expect_member(line "1.0" contacts 0 normal 1)
+  # eq. (25): pin point velocity (0, 1, 0) + (0, 0, 2) x (0, 0.375, 0) = (-0.75, 1, 0); link
+  # point (0.5, 0.25, 0). Relative (-1.25, 0.75, 0): eq. (24) 0.75, eq. (26) (-1.25, 0, 0).
+  expect_joint(line-with-motions line true radial:mid)
+  expect_member(line-with-motions "0.75" contacts 0 approach_velocity)
+  expect_member(line-with-motions "-1.25" contacts 0 tangential_velocity 0)
+  expect_absent(line contacts 0 approach_velocity)
+  # Pushed 0.1875 along +z: the stop at -0.625 comes to -0.4375, 0.0625 beyond face B (z = -0.5).
+  expect_joint(face face true axial:b)
+  expect_member(face "0.0625" contacts 0 depth)
+  expect_member(face "-0.4375" contacts 0 point_journal 2)
+  expect_member(face "-0.5" contacts 0 point_bearing 2)
+  expect_member(face "1.0" contacts 0 normal 2)
+  # The same push without stops: a free sliding pin touches nothing.
+  expect_joint(free-pin-pushed none true)
+  # Rh = 10, L = 20, Rp = 9.9, tilted by t = 0.0125 about the hole's centre: both edges, at
+  # opposite sides, each 9.9 - 10 sqrt(1 - sin 2t) = 0.0257779846446... deep (mpmath, 40 digits).
+  expect_joint(tilted both_edges_opposite false radial:a radial:b)
+  expect_member(tilted "certified" certificate)
+  expect_match(tilted "^0\\.0257779846[0-9]*$" contacts 0 depth)
+  expect_match(tilted "^0\\.0257779846[0-9]*$" contacts 1 depth)
+  # "journal_bearing" names the paper's joint, the default: its answer has no "joint".
+  expect_joint(paper-joint-by-name j true radial:mid)
+  expect_absent(paper-joint-by-name joint)
+
+elseif(CASE STREQUAL "pin_in_hole_bad_lines")
+  run("" "${PIN_IN_HOLE_BAD_LINES}")
+  expect_status(1)
+  file(READ "${PIN_IN_HOLE_BAD_LINES}" input)
+  expect_ids_in_order("${input}" "${OUT}")
+  split_lines("${OUT}" ANSWER_LINE)
+  expect_error(0 "line 1" "joint = \"screw\"" "pin_in_hole")
+  expect_error(1 "joint = 2: must be a string")
+  # The kernel's validate(PinInHoleDimensions), its messages naming the fields as in the line.
+  expect_error(2 "pin.radius = 0.625: must be smaller than hole.radius = 0.5")
+  expect_error(3 "pin.stops[1].position = 0.25" "inside the hole")
+  expect_error(4 "pin.stops = " "at most 2 stops")
+  expect_error(5 "hole.length = -1: must be positive")
+  expect_error(6 "pin.stops: missing")
+  expect_error(7 "pin.length: unknown field")
+  expect_error(8 "pin.stops[0].outer_radius = \"NaN\": must be a number")
+  expect_error(9 "pin_motion: missing (hole_motion is given")
+  expect_error(10 "journal: unknown field")
+  expect_error(11 "pin.axis = [0, 0, 0]: must not be the zero vector")
+  expect_error(12 "pin.stops[0].outer_radius = 0.5: must be larger than hole.radius = 0.5")
+  expect_in("${ERR}" "13 line(s)" "stderr")
 
 elseif(CASE STREQUAL "number_ids")
   # As for intersect: a number id comes back as the text it was written in, also where no double
