@@ -29,6 +29,7 @@ import sys
 import textwrap
 
 from c_structs import struct_projections
+import schema_results
 
 # The enums of the C API, in the header's order: C++ type, C type, constant prefix, comment.
 C_ENUMS = [
@@ -167,8 +168,9 @@ def replace_region(text, name, lines, path):
     return "\n".join(source[:begin[0] + 1] + lines + source[end[0]:])
 
 
-def schema_text(text, path, targets, tables):
+def schema_text(text, path, targets, tables, results):
     schema = json.loads(text)
+    schema_results.apply(schema, path, results, tables)
     for _, keys, type_name in targets:
         node = schema
         for key in keys:
@@ -197,7 +199,7 @@ def projections(root, description):
     region(PY_STUB, "results", py_results(description["results"]))
     for path in sorted({path for path, _, _ in SCHEMA_ENUMS}):
         targets = [t for t in SCHEMA_ENUMS if t[0] == path and t[2] in tables]
-        files[path] = schema_text((root / path).read_text(), path, targets, tables)
+        files[path] = schema_text((root / path).read_text(), path, targets, tables, description["results"])
     return files
 
 

@@ -172,6 +172,38 @@ class GenerateProjections(unittest.TestCase):
         self.assertNotEqual(run.returncode, 0)
         self.assertIn("the field list of Contact no longer has normal", run.stderr)
 
+    def test_the_schema_lists_every_field_of_a_result_as_the_command_writes_it(self):
+        self.assertEqual(self.run_generator("--write").returncode, 0)
+        contact = json.loads(self.read("docs/schema/detect-answer.schema.json"))["$defs"]["contact"]
+        self.assertEqual(contact["properties"]["depth"], {"type": "number"})
+        self.assertEqual(contact["properties"]["depth_error"], {"$ref": "#/$defs/error_bound"})
+        self.assertEqual(contact["properties"]["crossings"]["maxItems"], 2)
+        self.assertEqual(contact["properties"]["certificate_reason"], {"type": "string"})
+        self.assertIn("crossing_errors", contact["required"])
+        self.assertIn("point_journal", contact["required"])
+
+    def test_a_field_added_to_a_result_makes_the_check_fail_on_the_schema(self):
+        self.run_generator("--write")
+        grown = description()
+        grown["results"][0]["fields"].append({"key": "trial", "doc": "", "kind": "plain", "value": "bool"})
+        self.set_description(grown)
+        check = self.run_generator("--check")
+        self.assertIn('+        "trial": {\n+          "type": "boolean"', check.stdout)
+        self.assertIn("docs/schema/detect-answer.schema.json", check.stdout.split("stale:")[1])
+
+    def test_a_field_removed_from_a_result_leaves_the_schema_and_the_command_s_own_keys_stay(self):
+        sys.path.insert(0, os.path.dirname(GENERATOR))
+        import schema_results
+        schema = {"$defs": {"contact": {"required": ["depth", "gone", "approach_velocity"], "properties": {
+            "depth": {"type": "number"}, "gone": {"type": "number"},
+            "approach_velocity": {"type": "number", "description": "kept"}}}}}
+        fields = [{"key": "depth", "doc": "", "kind": "plain", "value": "float"}]
+        schema_results.apply(schema, "docs/schema/detect-answer.schema.json",
+                             [{"type": "Contact", "fields": fields}], {})
+        contact = schema["$defs"]["contact"]
+        self.assertEqual(list(contact["properties"]), ["depth", "approach_velocity"])
+        self.assertEqual(contact["required"], ["depth", "approach_velocity"])
+
     def test_a_file_without_its_markers_is_an_error_naming_it(self):
         self.write("bindings/fortran/clearjoint.f90", "module clearjoint\nend module\n")
         run = self.run_generator("--check")
