@@ -83,6 +83,7 @@ PY_TYPES = {"float": "float", "int": "int", "bool": "bool", "vector3": "npt.NDAr
 C_HEADER = "bindings/c/include/clearjoint/clearjoint.h"
 FORTRAN_MODULE = "bindings/fortran/clearjoint.f90"
 PY_STUB = "bindings/python/clearjoint/__init__.pyi"
+DETECT_HELP = "apps/clearjoint/detect_command.cpp"
 REGENERATE = "cmake --build build --target projections"
 
 
@@ -200,6 +201,9 @@ def projections(root, description):
     for path in sorted({path for path, _, _ in SCHEMA_ENUMS}):
         targets = [t for t in SCHEMA_ENUMS if t[0] == path and t[2] in tables]
         files[path] = schema_text((root / path).read_text(), path, targets, tables, description["results"])
+    if "JointContacts" in {result["type"] for result in description["results"]}:
+        answer = json.loads(files["docs/schema/detect-answer.schema.json"])
+        region(DETECT_HELP, "answer keys", schema_results.detect_help_lines(answer))
     return files
 
 

@@ -68,3 +68,30 @@ def apply(schema, path, results, enums):
         node["properties"] = properties
         required = [key for key in node.get("required", []) if key in generated or key in extras]
         node["required"] = required + [key for key in generated if key not in required]
+
+
+# How `detect --help` shows a key's value, where the key alone says too little.
+HELP_VALUES = {"v": "1", "scenario": '"none"|"a".."l"|"beyond_model"'}
+
+
+def detect_help_lines(schema):
+    """The answer's keys as `detect --help` lists them (apps/clearjoint/detect_command.cpp): C++
+    string literal lines, an answer object with its contacts' keys, in the schema's order."""
+    objects = schema["$defs"]
+
+    def keys(name, nested):
+        items = []
+        for key in objects[name]["properties"]:
+            text = f'"{key}"'
+            if key in HELP_VALUES:
+                text += f": {HELP_VALUES[key]}"
+            elif key in nested:
+                text += ": [" + keys(nested[key], {}) + "]"
+            items.append(text)
+        return "{" + ", ".join(items) + "}"
+
+    text = keys("answer", {"contacts": "contact"})
+    import textwrap
+    lines = textwrap.wrap(text, 76, initial_indent="  ", subsequent_indent="   ", break_on_hyphens=False)
+    escaped = [line.replace("\\", "\\\\").replace('"', '\\"') for line in lines]
+    return [f'    "{line}\\n"' for line in escaped]

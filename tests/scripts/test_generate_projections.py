@@ -204,6 +204,14 @@ class GenerateProjections(unittest.TestCase):
         self.assertEqual(list(contact["properties"]), ["depth", "approach_velocity"])
         self.assertEqual(contact["required"], ["depth", "approach_velocity"])
 
+    def test_detect_help_lists_the_answer_and_contact_keys_of_the_schema(self):
+        sys.path.insert(0, os.path.dirname(GENERATOR))
+        import schema_results
+        schema = {"$defs": {"answer": {"properties": {"v": {}, "id": {}, "contacts": {}}},
+                            "contact": {"properties": {"depth": {}, "trial": {}}}}}
+        self.assertEqual(schema_results.detect_help_lines(schema),
+                         ['    "  {\\"v\\": 1, \\"id\\", \\"contacts\\": [{\\"depth\\", \\"trial\\"}]}\\n"'])
+
     def test_a_file_without_its_markers_is_an_error_naming_it(self):
         self.write("bindings/fortran/clearjoint.f90", "module clearjoint\nend module\n")
         run = self.run_generator("--check")
