@@ -169,8 +169,9 @@ FilmTable::FilmTable(const FilmTableKey& key) : key_(key) {
 
   // The error midway between nodes, where an interpolant strays furthest from them, for spin and
   // squeeze mixed at kTableErrorDirections angles, without and with whirl.
+  interval_errors_.assign(kTableEccentricityNodes - 1, 0.0);
   for (int e = 0; e + 1 < kTableEccentricityNodes; ++e) {
-    const double eps = eccentricity_of((e + 0.5) / (kTableEccentricityNodes - 1));
+    const double eps = interval_eccentricity(e);
     for (int d = 0; d < 2 * kTableErrorDirections; ++d) {
       const double angle = 2.0 * std::numbers::pi * (d % kTableErrorDirections) / kTableErrorDirections;
       // Squeeze weighted by 1 / sqrt(1 - eps^2) against spin so that neither swamps the other
@@ -186,9 +187,14 @@ FilmTable::FilmTable(const FilmTableKey& key) : key_(key) {
       const PlanarFilmLoad table = *load(state, 1.0);
       const double size = std::hypot(grid.force_W.x(), grid.force_W.y());
       const double difference = std::hypot(table.radial - grid.force_W.x(), table.tangential - grid.force_W.y());
-      if (size > 0.0) error_bound_ = std::max(error_bound_, difference / size);
+      if (size > 0.0) interval_errors_[e] = std::max(interval_errors_[e], difference / size);
     }
   }
+  error_bound_ = *std::max_element(interval_errors_.begin(), interval_errors_.end());
+}
+
+double FilmTable::interval_eccentricity(int interval) {
+  return eccentricity_of((interval + 0.5) / (kTableEccentricityNodes - 1));
 }
 
 std::shared_ptr<const FilmTable> FilmTable::shared(const FilmTableKey& key) {

@@ -80,6 +80,10 @@ class FilmTable {
   /// The largest relative force error |F_table - F_grid| / |F_grid| measured against the grid
   /// midway (in log(1 - eps)) between every pair of nodes.
   double error_bound() const noexcept { return error_bound_; }
+  /// The same per interval between neighbouring nodes: [e] for the interval from node e to
+  /// e + 1, whose midpoint is at eps = interval_eccentricity(e).
+  const std::vector<double>& interval_errors() const noexcept { return interval_errors_; }
+  static double interval_eccentricity(int interval);
   const FilmTableKey& key() const noexcept { return key_; }
 
  private:
@@ -99,6 +103,7 @@ class FilmTable {
   /// next to them, times the viscosity (m^3 / (Pa s)): [e * N_theta + i].
   std::vector<double> side_flow_weight_;
   double error_bound_ = 0.0;
+  std::vector<double> interval_errors_;
 };
 
 }  // namespace clearjoint::lubrication
