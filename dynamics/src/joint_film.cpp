@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "joint_film.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -89,8 +90,13 @@ JointFilmState JointFilm::evaluate(const geometry::PartPose& bearing,
         (lubrication::journal_offset(film, film.z_high) - lubrication::journal_offset(film, film.z_low)).norm() <=
             kTableAlignment * c &&
         tilt_rate_W.norm() * film.width() <= kTableAlignment * (q_W.norm() + c * std::abs(spin));
-    if (aligned) {
-      const lubrication::FilmTableKey key{film.journal_radius, c, film.width(), lubrication_.circumferential_cells,
+    // One table per joint, for the film of the whole journal inside its bearing (Lj < Li): a
+    // journal partly out of its bearing, whose film is narrower and changes with every step,
+    // is solved by the grid rather than tabulated again at each width.
+    const double full_width = std::min(dimensions_.journal_length, dimensions_.bearing_length);
+    const bool whole = std::abs(film.width() - full_width) <= kTableAlignment * full_width;
+    if (aligned && whole) {
+      const lubrication::FilmTableKey key{film.journal_radius, c, full_width, lubrication_.circumferential_cells,
                                           lubrication_.axial_cells, lubrication_.cavitation};
       if (!table_ || !(table_->key() == key)) table_ = lubrication::FilmTable::shared(key);
       lubrication::PlanarFilmState planar;

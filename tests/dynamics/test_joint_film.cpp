@@ -354,6 +354,17 @@ TEST(JointFilm, TabledHandsATiltedJournalToTheGrid) {
   EXPECT_EQ(film_at(table, state).force_on_journal_W, solved);
 }
 
+TEST(JointFilm, TabledHandsAJournalPartlyOutOfItsBearingToTheGrid) {
+  const ClearanceRevoluteJoint table = make_joint(lubricated(FilmMethod::table));
+  const ClearanceRevoluteJoint grid = make_joint(lubricated(FilmMethod::grid));
+  // 0.5 mm along the axis: 0.4 mm of the journal's 19.8 mm is out of the 20 mm bearing, so the
+  // film is narrower than the table's.
+  const SystemKinematics state = journal_at(Vector3(0.5 * kClearance, 0.0, 5e-4), Vector3(0.0, 0.01, 0.0));
+  const Vector3 solved = film_at(grid, state).force_on_journal_W;
+  ASSERT_GT(solved.norm(), 0.0);
+  EXPECT_EQ(film_at(table, state).force_on_journal_W, solved);
+}
+
 TEST(JointFilm, TabledRefusesTheMassConservingModelNamingTheField) {
   ClearanceJointParameters p = lubricated(FilmMethod::table);
   p.lubrication->cavitation = lubrication::CavitationModel::mass_conserving;
