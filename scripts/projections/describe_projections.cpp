@@ -14,10 +14,12 @@
 
 #include <nlohmann/json.hpp>
 
+#include "clearjoint/geometry/joint/detect_pin_in_hole_contacts.hpp"
 #include "clearjoint/geometry/joint/result_fields.hpp"
 #include "clearjoint/geometry/model/circle_plane_topology.hpp"
 #include "clearjoint/geometry/model/contact_scenario.hpp"
 #include "clearjoint/geometry/model/enum_table.hpp"
+#include "clearjoint/geometry/model/pin_in_hole_scenario.hpp"
 
 #ifdef CLEARJOINT_DESCRIBE_DYNAMICS
 #include "clearjoint/dynamics/clearance_revolute_joint.hpp"
@@ -111,6 +113,7 @@ int main() {
       describe_enum<geo::ContactBase>("geometry"),
       describe_enum<geo::CirclePlaneTopology>("geometry"),
       describe_enum<geo::CircleCylinderTopology>("geometry"),
+      describe_enum<geo::PinInHoleScenario>("geometry"),
   });
 #ifdef CLEARJOINT_DESCRIBE_DYNAMICS
   namespace dyn = clearjoint::dynamics;
@@ -132,6 +135,7 @@ int main() {
       describe_result<geo::JointContacts>(),
       describe_result<geo::CirclePlaneIntersection>(),
       describe_result<geo::CircleCylinderIntersection>(),
+      describe_result<geo::PinInHoleContacts>(),
   });
   std::cout << json{{"enums", enums}, {"results", results}}.dump(2) << '\n';
   return 0;

@@ -75,6 +75,7 @@ PY_EXTRAS = {
     "Certificate": [("reason_text", "str")],
     "RimArc": [("middle", "float"), ("sweep", "float")],
     "JointContacts": [("contact_count", "int")],
+    "PinInHoleContacts": [("contact_count", "int")],
     "CircleCylinderIntersection": [("root_count", "int")],
 }
 PY_TYPES = {"float": "float", "int": "int", "bool": "bool", "vector3": "npt.NDArray[np.float64]",

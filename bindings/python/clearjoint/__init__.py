@@ -7,6 +7,9 @@ axial clearances", Mechanism and Machine Theory 116 (2017) 123-144. docs/python.
 
 - ``detect(dims, bearing_center, bearing_axis, journal_center, journal_axis)``: the contacts of
   a journal in its bearing, for one pose or a NumPy batch (Section 3, eqs. 3-26);
+- ``detect_pin_in_hole(dims, hole_center, hole_axis, pin_center, pin_axis)``: the same for a
+  pin longer than the hole it passes through, its play limited by stops (docs/contact-detection.md,
+  "The pin-in-hole joint");
 - ``intersect_circle_plane``, ``intersect_circle_cylinder``: the certified kernel queries
   (eqs. 11-15, 16-21);
 - ``simulate(model)``: run a multibody model file (or dict) and get its time series as arrays,
@@ -18,12 +21,13 @@ Lengths are in one unit of the caller's choice (metres in the shipped models), a
 vectors in the world frame.
 """
 from ._core import (Certificate, CircleCylinderIntersection, CirclePlaneIntersection, Contact,
-                    JointContacts, JointDimensions, RimArc, RimCrossing, SolverError, __version__,
+                    JointContacts, JointDimensions, PinInHoleContacts, PinInHoleDimensions, RimArc,
+                    RimCrossing, SolverError, __version__,
                     certificate_reason_text, scenario_label)
 from ._enums import (Certainty, CertificateReason, CircleCylinderTopology, CirclePlaneTopology,
-                     ContactBase, ContactScenario, ContactType)
+                     ContactBase, ContactScenario, ContactType, PinInHoleScenario)
 from ._detect import (MAX_CONTACTS, CircleCylinderBatch, CirclePlaneBatch, DetectionBatch, detect,
-                      intersect_circle_cylinder, intersect_circle_plane)
+                      detect_pin_in_hole, intersect_circle_cylinder, intersect_circle_plane)
 from ._simulate import SimulationResult, read_run, simulate
 from ._simulator import Simulator
 from .model import Model
@@ -32,7 +36,8 @@ __all__ = [
     "MAX_CONTACTS", "Certainty", "Certificate", "CertificateReason", "CircleCylinderBatch",
     "CircleCylinderIntersection", "CircleCylinderTopology", "CirclePlaneBatch",
     "CirclePlaneIntersection", "CirclePlaneTopology", "Contact", "ContactBase", "ContactScenario",
-    "ContactType", "DetectionBatch", "JointContacts", "JointDimensions", "Model", "RimArc", "RimCrossing",
+    "ContactType", "DetectionBatch", "JointContacts", "JointDimensions", "Model", "PinInHoleContacts",
+    "PinInHoleDimensions", "PinInHoleScenario", "RimArc", "RimCrossing",
     "SimulationResult", "Simulator", "SolverError", "__version__", "certificate_reason_text", "detect",
-    "intersect_circle_cylinder", "intersect_circle_plane", "read_run", "scenario_label", "simulate",
+    "detect_pin_in_hole",    "intersect_circle_cylinder", "intersect_circle_plane", "read_run", "scenario_label", "simulate",
 ]

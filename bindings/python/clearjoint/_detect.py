@@ -4,14 +4,14 @@ from __future__ import annotations
 
 import operator
 from collections.abc import Mapping
-from typing import Any, Dict, Iterator, Optional, Union
+from typing import Any, Dict, Iterator, List, Optional, Union
 
 import numpy as np
 
 from . import _core
 from ._arrays import ArrayResult
 from ._core import (CircleCylinderIntersection, CirclePlaneIntersection, JointContacts,
-                    JointDimensions)
+                    JointDimensions, PinInHoleContacts, PinInHoleDimensions)
 from ._enums import ContactScenario
 
 #: Room for contacts per pose: two radial per rim (beyond the model a rim may have two
@@ -266,6 +266,54 @@ def detect(dims: JointDimensions, bearing_center: ArrayLike, bearing_axis: Array
                "parallel_angle_tolerance": parallel_angle_tolerance}
     result = _core.detect(dims, bearing_center, bearing_axis, journal_center, journal_axis, options, threads)
     return DetectionBatch(result) if isinstance(result, dict) else result
+
+
+def detect_pin_in_hole(dims: PinInHoleDimensions, hole_center: ArrayLike, hole_axis: ArrayLike,
+                       pin_center: ArrayLike, pin_axis: ArrayLike, *, certify: bool = True,
+                       exact_fallback: bool = True, parallel_angle_tolerance: float = 0.0
+                       ) -> Union[PinInHoleContacts, List[PinInHoleContacts]]:
+    """Detect every contact between a pin and the hole it passes through: the hole's edges
+    against the pin, the stops against the link's faces, the line and face contacts of parallel
+    axes (docs/contact-detection.md, "The pin-in-hole joint").
+
+    Parameters
+    ----------
+    dims:
+        The joint's :class:`PinInHoleDimensions` (Rh, L, Rp and the stops).
+    hole_center, hole_axis:
+        The hole's centre, midway between the link's faces, and its axis (face A is the one the
+        axis points to). Shape (3,) or (N, 3), as for :func:`detect`.
+    pin_center, pin_axis:
+        The pin's point P (at the hole's centre when the pin is centred; the stops' positions
+        are measured from it) and its axis.
+    certify, exact_fallback, parallel_angle_tolerance:
+        As for :func:`detect`.
+
+    Returns
+    -------
+    PinInHoleContacts
+        When every pose argument has shape (3,): its ``scenario`` a :class:`PinInHoleScenario`,
+        its ``contacts`` :class:`Contact` objects as :func:`detect` gives them, the link in the
+        bearing's place (``point_bearing``) and the pin in the journal's (``point_journal``).
+    list of PinInHoleContacts
+        Otherwise, one per pose, each bit for bit the answer on that pose alone.
+
+    Raises
+    ------
+    ValueError
+        A bad value, naming the argument and the row (``"pin_axis[3] = [0, 0, 0]: must not be
+        the zero vector"``), or a shape other than (3,) or (N, 3).
+    TypeError
+        Arguments that are not numbers, or ``dims`` not a :class:`PinInHoleDimensions`.
+
+    The detection runs without the GIL, the poses of a batch one after another.
+    """
+    if not isinstance(dims, PinInHoleDimensions):
+        hint = " (PinInHoleDimensions(**dims) for a dict)" if isinstance(dims, Mapping) else ""
+        raise TypeError(f"dims = {dims!r}: must be a clearjoint.PinInHoleDimensions{hint}")
+    options = {"certify": certify, "exact_fallback": exact_fallback,
+               "parallel_angle_tolerance": parallel_angle_tolerance}
+    return _core.detect_pin_in_hole(dims, hole_center, hole_axis, pin_center, pin_axis, options)
 
 
 def intersect_circle_plane(circle_center: ArrayLike, circle_normal: ArrayLike,

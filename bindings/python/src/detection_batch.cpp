@@ -271,6 +271,8 @@ py::dict detect_batch(const geo::JointDimensions& dimensions, const PoseRows& po
   return out;
 }
 
+}  // namespace
+
 /// The options clearjoint.detect passes by their keys in the option list (option_fields.hpp),
 /// each checked as its keyword argument. A key it does not pass is an error of the package, not
 /// of the caller: tests/test_detect.py checks that detect has a keyword for each.
@@ -288,6 +290,8 @@ geo::DetectionOptions detection_options(const py::dict& given) {
   });
   return options;
 }
+
+namespace {
 
 /// Every option's default by its key, for the check of detect's keywords.
 py::dict detection_option_defaults() {

@@ -6,6 +6,7 @@
 
 #include "bindings.hpp"
 #include "clearjoint/dynamics/clearance_revolute_joint.hpp"
+#include "clearjoint/geometry/model/pin_in_hole_scenario.hpp"
 
 #include <stdexcept>
 #include <string>
@@ -49,6 +50,10 @@ py::list enum_tables() {
       "The contact scenarios of the paper's Fig. 2: (a)-(i) misaligned axes, (j)-(l) parallel "
       "axes, plus none (free flight) and beyond_model. Array results hold these codes as int8; "
       "scenario_label(code) gives the label.");
+  tables.add<geo::PinInHoleScenario>(
+      "The contact scenarios of the pin-in-hole joint (docs/contact-detection.md, \"The "
+      "pin-in-hole joint\"): edges, line, stops, face, their combinations, plus none and "
+      "beyond_model.");
   tables.add<geo::ContactType>("What a contact is against. Array results hold these codes as int8.");
   tables.add<geo::ContactBase>("Where a contact is. Array results hold these codes as int8.");
   tables.add<geo::CirclePlaneTopology>("How a circle meets a plane. Array results hold these codes as int8.");

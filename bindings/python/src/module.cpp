@@ -25,6 +25,7 @@ PYBIND11_MODULE(_core, module) {
   clearjoint::python::bind_enum_tables(module);
   clearjoint::python::bind_types(module);
   clearjoint::python::bind_detection_batch(module);
+  clearjoint::python::bind_pin_in_hole(module);
   clearjoint::python::bind_kernel(module);
   clearjoint::python::bind_simulation(module);
   clearjoint::python::bind_lubrication(module);
