@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Prints the library's descriptions of its public enums (the EnumTable of each) and results (the
 // ResultFields of each) as one JSON document: the input of generate_projections.py, which writes
-// from it every front-end that lists values or fields in another language (the C header's enums,
-// the Fortran constants, the Python stubs, the JSON schemas' enum lists).
+// from it every front-end that lists values or fields in another language (the C header's enums
+// and detection structs, the Fortran constants and types, the Python stubs, the JSON schemas' enum
+// lists and detect answer properties, detect --help's answer keys).
 //
 // The lists below name the enum and result *types*; their values and fields come from the tables.
 
