@@ -41,19 +41,22 @@ MODULES = {
     "engines/common": 4,
     "engines/mujoco": 5,
     "engines/simbody": 5,
-    "apps": 6,
-    "bindings/c": 6,
-    "bindings/python": 6,
-    "bindings/matlab": 7,
-    "bindings/fortran": 7,
-    "support": 8,
-    "bench": 9,
-    "fuzz": 9,
-    "examples": 9,
-    "tests": 10,
-    "scripts": 10,
-    "reproduction": 10,
-    "models": 10,
+    # The choice of an engine for a run (the program's --engine, Python's engine=): above every
+    # engine it dispatches to, below the front-ends that ask for one.
+    "engines/choice": 6,
+    "apps": 7,
+    "bindings/c": 7,
+    "bindings/python": 7,
+    "bindings/matlab": 8,
+    "bindings/fortran": 8,
+    "support": 9,
+    "bench": 10,
+    "fuzz": 10,
+    "examples": 10,
+    "tests": 11,
+    "scripts": 11,
+    "reproduction": 11,
+    "models": 11,
 }
 SUBMODULE_PARENTS = ("engines", "bindings")
 # Shipped code: what the libraries, the program and the bindings are built from. Test code
@@ -262,6 +265,13 @@ def check(root):
     tree = Tree(root)
     problems = cmake_problems(tree)
     for path in tree.files:
+        parts = path.split("/")
+        if path.endswith(SOURCE_SUFFIXES) and parts[0] in SUBMODULE_PARENTS and len(parts) > 2 \
+                and module_of(path) is None:
+            # A new engine or binding must take its place in the order before it is checked.
+            problems.append(f"{path}: {parts[0]}/{parts[1]}/ is a module the order does not list "
+                            "(add it to MODULES)")
+            continue
         if not path.endswith(SOURCE_SUFFIXES) or module_of(path) is None and not path.startswith("geometry/"):
             continue
         for number, name, target in tree.includes_of(path):

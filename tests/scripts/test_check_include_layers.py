@@ -168,6 +168,24 @@ class CheckIncludeLayers(unittest.TestCase):
         self.assert_reported({"bindings/c/src/detect.cpp": '#include "common/source.hpp"\n'},
                              "bindings/c/src/detect.cpp:1", "bindings/c/ may not use bench/")
 
+    def test_reports_an_engine_or_binding_the_module_order_does_not_list(self):
+        self.assert_reported({"engines/racing/src/race.cpp": '#include "clearjoint/dynamics/joint.hpp"\n'},
+                             "engines/racing/src/race.cpp", "a module the order does not list")
+
+    def test_lets_the_engine_choice_use_an_engine_and_the_program_use_the_choice(self):
+        code, out = self.run_checker({
+            "engines/choice/include/clearjoint/engines/choice.hpp": '#include "clearjoint/dynamics/joint.hpp"\n',
+            "engines/choice/src/choice.cpp": '#include "clearjoint/engines/choice.hpp"\n'
+                                             '#include "clearjoint/dynamics/joint.hpp"\n',
+            "apps/clearjoint/simulate.cpp": '#include "clearjoint/engines/choice.hpp"\n'})
+        self.assertEqual(code, 0, out)
+
+    def test_reports_an_engine_using_the_engine_choice_above_it(self):
+        self.assert_reported({
+            "engines/choice/include/clearjoint/engines/choice.hpp": "",
+            "engines/simbody/src/force.cpp": '#include "clearjoint/engines/choice.hpp"\n'},
+            "engines/simbody/src/force.cpp:1", "a higher layer")
+
     def test_follows_includes_through_files_outside_every_layer(self):
         self.assert_reported({"geometry/src/model/checks.cpp": '#include "third_party/glue.hpp"\n',
                               "third_party/glue.hpp": '#include "clearjoint/dynamics/joint.hpp"\n'},
