@@ -4,7 +4,7 @@
 #   cmake -DCLEARJOINT=<program> -DSOURCE_DIR=<repository> -DWORK_DIR=<scratch dir> -DCASE=<case>
 #         -P detect_command_test.cmake
 # Cases: example, scenarios, stdin, exact, bad_lines, number_ids, missing_file, usage, help,
-# pin_in_hole, pin_in_hole_bad_lines.
+# pin_in_hole, pin_in_hole_bad_lines, pin_in_hole_scenarios.
 # Any failed check ends the script with FATAL_ERROR, which fails the test. The checks themselves
 # are in json_lines_checks.cmake.
 
@@ -21,6 +21,7 @@ set(SCENARIOS "${SOURCE_DIR}/examples/scenarios.jsonl")
 set(EXACT "${SOURCE_DIR}/tests/apps/detect_exact.jsonl")
 set(BAD_LINES "${SOURCE_DIR}/tests/apps/detect_bad_lines.jsonl")
 set(PIN_IN_HOLE "${SOURCE_DIR}/tests/apps/detect_pin_in_hole.jsonl")
+set(PIN_IN_HOLE_SCENARIOS "${SOURCE_DIR}/examples/pin_in_hole_scenarios.jsonl")
 set(PIN_IN_HOLE_BAD_LINES "${SOURCE_DIR}/tests/apps/detect_pin_in_hole_bad_lines.jsonl")
 
 set(SUBCOMMAND detect)
@@ -304,6 +305,20 @@ elseif(CASE STREQUAL "pin_in_hole")
   # "journal_bearing" names the paper's joint, the default: its answer has no "joint".
   expect_joint(paper-joint-by-name j true radial:mid)
   expect_absent(paper-joint-by-name joint)
+
+elseif(CASE STREQUAL "pin_in_hole_scenarios")
+  # The pin-in-hole configurations drawn in docs/figures: one per scenario of the table, the id
+  # "pin-<scenario>", each answer certified.
+  run("" "${PIN_IN_HOLE_SCENARIOS}")
+  expect_status(0)
+  file(READ "${PIN_IN_HOLE_SCENARIOS}" input)
+  expect_ids_in_order("${input}" "${OUT}")
+  split_lines("${OUT}" ANSWER_LINE)
+  foreach(scenario none one_edge both_edges_opposite both_edges_same_side line one_stop both_stops face
+                   edges_and_stops line_and_face beyond_model)
+    expect_member(pin-${scenario} "${scenario}" scenario)
+    expect_member(pin-${scenario} "certified" certificate)
+  endforeach()
 
 elseif(CASE STREQUAL "pin_in_hole_bad_lines")
   run("" "${PIN_IN_HOLE_BAD_LINES}")

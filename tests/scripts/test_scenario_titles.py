@@ -42,6 +42,17 @@ def test_every_pictured_scenario_is_titled_with_its_label_from_the_table(tables)
     assert pictured and set(pictured) <= set(titles)
 
 
+def test_every_pictured_pin_in_hole_scenario_is_titled_from_the_pin_in_hole_table(tables):
+    table = next(t for t in tables["enums"] if t["type"] == "PinInHoleScenario")
+    titles = plot_scenarios.scenario_titles(tables, plot_scenarios.SCENARIO_TABLES["pin_in_hole"])
+    assert titles == {e["key"]: e["label"] for e in table["entries"]}
+    lines = [json.loads(line) for line in (ROOT / "examples" / "pin_in_hole_scenarios.jsonl").read_text().splitlines()
+             if line.strip()]
+    # One picture per scenario of the table, each line's id "pin-<key>".
+    assert sorted(line["id"] for line in lines) == sorted(f"pin-{key}" for key in titles)
+    assert all(line["joint"] == "pin_in_hole" for line in lines)
+
+
 def test_a_scenario_planted_in_the_table_is_titled_from_it(tables):
     scenario_table(tables)["entries"].append({"code": 99, "key": "z", "label": "(z) planted", "name": "planted"})
     assert plot_scenarios.scenario_titles(tables)["z"] == "(z) planted"
