@@ -13,6 +13,7 @@ the list no longer has and is dropped. A property keeps its place in the object 
 SCHEMA_RESULTS = [
     ("docs/schema/detect-answer.schema.json", "contact", "Contact", ["approach_velocity", "tangential_velocity"]),
     ("docs/schema/detect-answer.schema.json", "answer", "JointContacts", ["v", "id"]),
+    ("docs/schema/detect-answer.schema.json", "pin_in_hole_answer", "PinInHoleContacts", ["v", "id", "joint"]),
 ]
 
 # The $defs each schema's results refer to: the result type whose object it is.
