@@ -4,7 +4,7 @@
 /// The misaligned scenarios (a)-(i) of the paper's Fig. 2, plus none, built from a journal tilted
 /// in the y-z plane of a bearing on the z axis, where every depth and contact point has a closed
 /// form. Shared by the library's detection tests (test_detect_contacts.cpp) and the detection
-/// suite's tests of its reference and of the paper baseline (bench/detection/tests), so that all
+/// suite's tests of its reference and of the paper baseline (tests/bench/detection), so that all
 /// three check the same configurations.
 
 #include <cmath>

@@ -12,7 +12,7 @@ import pytest
 import clearjoint
 from clearjoint import _core, _enums
 
-APPLICATIONS = pathlib.Path(__file__).resolve().parents[3] / "apps" / "python"
+APPLICATIONS = pathlib.Path(__file__).resolve().parents[2] / "apps" / "python"
 PLANTED_SCENARIO = ("planted_scenario", 99, "(z) planted")
 PLANTED_SLOT = ("planted_slot", 99, "planted")
 

@@ -12,7 +12,7 @@ import pytest
 
 import clearjoint
 
-EXAMPLES = pathlib.Path(__file__).resolve().parents[3] / "examples" / "rims.jsonl"
+EXAMPLES = pathlib.Path(__file__).resolve().parents[2] / "examples" / "rims.jsonl"
 
 
 def bits(x):

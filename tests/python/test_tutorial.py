@@ -26,7 +26,7 @@ import pytest
 import clearjoint
 from clearjoint import plot
 
-ROOT = pathlib.Path(__file__).resolve().parents[3]
+ROOT = pathlib.Path(__file__).resolve().parents[2]
 TUTORIAL = ROOT / "docs" / "tutorial.md"
 
 #: The page shows numbers as one build printed them. Another compiler, or a change of the

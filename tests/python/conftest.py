@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: BSD-3-Clause
-"""Paths the tests share, from the environment ctest sets (bindings/python/tests/CMakeLists.txt)."""
+"""Paths the tests share, from the environment ctest sets (tests/python/CMakeLists.txt)."""
 import os
 import pathlib
 

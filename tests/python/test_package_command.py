@@ -11,7 +11,7 @@ import tomllib
 
 import clearjoint
 
-ROOT = pathlib.Path(__file__).resolve().parents[3]
+ROOT = pathlib.Path(__file__).resolve().parents[2]
 
 
 def command(*args, path=None, **env):

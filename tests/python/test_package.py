@@ -10,7 +10,7 @@ import sys
 
 import clearjoint
 
-ROOT = pathlib.Path(__file__).resolve().parents[3]
+ROOT = pathlib.Path(__file__).resolve().parents[2]
 GUIDE = ROOT / "docs" / "python.md"
 STUB = pathlib.Path(clearjoint.__file__).with_name("__init__.pyi")
 

@@ -16,7 +16,7 @@ import pytest
 
 import clearjoint
 
-ROOT = pathlib.Path(__file__).resolve().parents[3]
+ROOT = pathlib.Path(__file__).resolve().parents[2]
 SCHEMA = ROOT / "docs" / "schema" / "model.schema.json"
 GUIDE = ROOT / "docs" / "python.md"
 
