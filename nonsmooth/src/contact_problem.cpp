@@ -21,6 +21,20 @@ struct MatrixDeleter {
   void operator()(NumericsMatrix* matrix) const { NM_free(matrix); }
 };
 
+/// One fc3d_driver call with the solver's default options but the tolerance and iteration limit.
+ContactSolve run_fc3d(FrictionContactProblem& problem, int solver, double tolerance, int max_iterations,
+                      Eigen::VectorXd& r, Eigen::VectorXd& u) {
+  std::unique_ptr<SolverOptions, OptionsDeleter> options(solver_options_create(solver));
+  options->iparam[SICONOS_IPARAM_MAX_ITER] = max_iterations;
+  options->dparam[SICONOS_DPARAM_TOL] = tolerance;
+  const int info = fc3d_driver(&problem, r.data(), u.data(), options.get());
+  ContactSolve solve;
+  solve.converged = info == 0;
+  solve.iterations = options->iparam[SICONOS_IPARAM_ITER_DONE];
+  solve.error = options->dparam[SICONOS_DPARAM_RESIDU];
+  return solve;
+}
+
 }  // namespace
 
 ContactSolve solve_contact_problem(const Eigen::MatrixXd& W, const Eigen::VectorXd& q,
@@ -44,14 +58,33 @@ ContactSolve solve_contact_problem(const Eigen::MatrixXd& W, const Eigen::Vector
   problem.q = q_copy.data();
   problem.mu = mu_copy.data();
 
-  std::unique_ptr<SolverOptions, OptionsDeleter> options(solver_options_create(SICONOS_FRICTION_3D_NSGS));
-  options->iparam[SICONOS_IPARAM_MAX_ITER] = max_iterations;
-  options->dparam[SICONOS_DPARAM_TOL] = tolerance;
-  const int info = fc3d_driver(&problem, r.data(), u.data(), options.get());
-  ContactSolve solve;
-  solve.converged = info == 0;
-  solve.iterations = options->iparam[SICONOS_IPARAM_ITER_DONE];
-  solve.error = options->dparam[SICONOS_DPARAM_RESIDU];
+  const Eigen::VectorXd r_start = r;
+  ContactSolve solve = run_fc3d(problem, SICONOS_FRICTION_3D_NSGS, tolerance, max_iterations, r, u);
+  if (!solve.converged) {
+    // NSGS converges linearly, at a rate set by the coupling between contacts: two rim contacts
+    // of a misaligned journal at nearly the same normal (W_NN's off-diagonal term close to its
+    // diagonal ones) take it thousands of sweeps, though the problem is well posed. A Newton
+    // method on the whole problem does not depend on that coupling, but W is singular in such
+    // problems (tangential directions held by the ideal joints), where Alart-Curnier's plain
+    // Newton method (fc3d NSN_AC) can stall. fc3d PROX, the proximal point method, solves a short
+    // sequence of problems regularised by a multiple of I (positive definite) by fc3d NSN_AC
+    // and solved every problem NSGS missed in the shipped slider-cranks (docs/nonsmooth.md). It
+    // starts from the same r as NSGS (NSGS's last iterate can lie far from the solution), with
+    // the same tolerance and iteration limit; if it misses too, the smaller error's r is kept.
+    const Eigen::VectorXd r_nsgs = r;
+    const Eigen::VectorXd u_nsgs = u;
+    r = r_start;
+    const ContactSolve fallback = run_fc3d(problem, SICONOS_FRICTION_3D_PROX, tolerance, max_iterations, r, u);
+    solve.fallback = true;
+    solve.fallback_iterations = fallback.iterations;
+    if (fallback.converged || fallback.error < solve.error) {
+      solve.converged = fallback.converged;
+      solve.error = fallback.error;
+    } else {
+      r = r_nsgs;
+      u = u_nsgs;
+    }
+  }
   return solve;
 }
 

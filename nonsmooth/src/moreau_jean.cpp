@@ -253,15 +253,20 @@ struct MoreauJean::Impl {
         write_fclib_step(W, q, mu, r, u, solve);
       }
       statistics.solver_iterations += solve.iterations;
+      if (solve.fallback) {
+        ++statistics.fallback_solves;
+        statistics.fallback_iterations += solve.fallback_iterations;
+      }
       statistics.largest_solver_error = std::max(statistics.largest_solver_error, solve.error);
       if (!solve.converged) {
         if (statistics.unconverged_steps == 0) statistics.first_unconverged_time = time;
         ++statistics.unconverged_steps;
         if (settings.stop_on_unconverged) {
           throw dynamics::SolverError("moreau_jean at t = " + dynamics::format_number(time) +
-                                      " s: the contact problem did not converge (fc3d NSGS error " +
-                                      dynamics::format_number(solve.error) + " after " +
-                                      std::to_string(solve.iterations) + " sweeps)");
+                                      " s: the contact problem did not converge (fc3d NSGS " +
+                                      std::to_string(solve.iterations) + " sweeps, then fc3d PROX " +
+                                      std::to_string(solve.fallback_iterations) + " iterations: error " +
+                                      dynamics::format_number(solve.error) + ")");
         }
       }
       v_next = v_free + Y * r;
@@ -310,8 +315,14 @@ struct MoreauJean::Impl {
         "Local frictional contact problem of a clearance joint's contacts (clearjoint docs/nonsmooth.md); "
         "solution by Siconos Numerics fc3d NSGS, tolerance " + dynamics::format_number(settings.contact_tolerance) +
         ", at most " + std::to_string(settings.contact_max_iterations) + " sweeps, from r = 0: " +
-        (solve.converged ? "converged" : "NOT converged") + ", error " + dynamics::format_number(solve.error) +
-        " after " + std::to_string(solve.iterations) + " sweeps";
+        (solve.fallback ? "missed the tolerance after " + std::to_string(solve.iterations) +
+                              " sweeps, then by fc3d PROX from r = 0 with the same tolerance and limit: " +
+                              (solve.converged ? "converged" : "NOT converged") + ", error " +
+                              dynamics::format_number(solve.error) + " after " +
+                              std::to_string(solve.fallback_iterations) + " iterations"
+                        : std::string(solve.converged ? "converged" : "NOT converged") + ", error " +
+                              dynamics::format_number(solve.error) + " after " + std::to_string(solve.iterations) +
+                              " sweeps");
     write_fclib_problem(fclib_problem_path(fclib, number), W, q, mu, r, u, title, description);
     ++statistics.fclib_problems_written;
   }

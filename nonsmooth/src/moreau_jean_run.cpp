@@ -277,6 +277,10 @@ struct MoreauJeanRun::Impl {
                        dynamics::format_shortest(s.largest_solver_error) + ", " + std::to_string(s.unconverged_steps) +
                        " unconverged steps";
     if (s.unconverged_steps > 0) line += " (the first at t = " + dynamics::format_shortest(s.first_unconverged_time) + " s)";
+    if (s.fallback_solves > 0) {
+      line += ", " + std::to_string(s.fallback_solves) + " problems missed by NSGS solved again by fc3d PROX (" +
+              std::to_string(s.fallback_iterations) + " iterations)";
+    }
     summary.element_statistics.push_back(std::move(line));
     if (s.fclib_problems_written > 0) {
       summary.element_statistics.push_back("moreau_jean: " + std::to_string(s.fclib_problems_written) +

@@ -43,7 +43,9 @@ struct MoreauJeanStatistics {
   long steps = 0;
   long contact_problems = 0;   ///< steps with at least one active contact
   long solver_iterations = 0;  ///< fc3d NSGS sweeps, summed
-  long unconverged_steps = 0;  ///< steps whose contact problem missed the tolerance
+  long unconverged_steps = 0;  ///< steps whose contact problem missed the tolerance, fallback included
+  long fallback_solves = 0;      ///< problems NSGS missed, handed to fc3d PROX
+  long fallback_iterations = 0;  ///< PROX's iterations, summed
   double first_unconverged_time = std::numeric_limits<double>::quiet_NaN();  ///< [s]
   double largest_solver_error = 0.0;       ///< largest fc3d residual of any step
   double largest_projection_residual = 0.0;  ///< max |Phi| left after a projection
