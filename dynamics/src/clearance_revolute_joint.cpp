@@ -11,6 +11,7 @@
 
 #include "clearjoint/dynamics/errors.hpp"
 #include "clearjoint/dynamics/kernel_pose.hpp"
+#include "clearjoint/geometry/joint/detect_pin_in_hole_contacts.hpp"
 #include "clearjoint/geometry/model/joint_geometry.hpp"
 #include "joint_film.hpp"
 
@@ -125,8 +126,18 @@ ClearanceRevoluteJoint::ClearanceRevoluteJoint(std::string name, const Clearance
   if (bearing_.body == journal_.body) {
     throw ModelError(name_ + ".journal.body", ": the journal and the bearing must be on different bodies");
   }
-  // Named as in a model file: "<joint>.journal.radius".
-  validate_in_kernel(parameters_.dimensions, name_, geometry::kPartDimensionNames);
+  if (parameters_.pin_in_hole) {
+    // Named as in a model file: "<joint>.hole.radius", "<joint>.pin.stops[1].position".
+    validate_in_kernel(*parameters_.pin_in_hole, name_, geometry::kPinInHolePartNames);
+    if (parameters_.lubrication) {
+      throw ModelError(name_ + ".lubrication",
+                       ": not supported with \"geometry\": \"pin_in_hole\" (the oil film is the "
+                       "journal-bearing's; remove \"lubrication\" or use the paper's joint)");
+    }
+  } else {
+    // Named as in a model file: "<joint>.journal.radius".
+    validate_in_kernel(parameters_.dimensions, name_, geometry::kPartDimensionNames);
+  }
   validate(parameters_.normal, name_ + ".normal_force");
   validate(parameters_.friction, name_ + ".friction");
   validate_in_kernel(parameters_.detection, name_ + ".detection");
@@ -158,28 +169,45 @@ int ClearanceRevoluteJoint::extra_state_count() const {
 }
 
 void ClearanceRevoluteJoint::detect(double time, const SystemKinematics& kinematics, Workspace& workspace,
-                                    geometry::JointContacts& contacts) const {
+                                    ClearanceJointState& found) const {
+  geometry::JointContacts& contacts = found.contacts;
   const BodyKinematics& bi = kinematics.body(bearing_.body);
   const BodyKinematics& bj = kinematics.body(journal_.body);
   const geometry::PartPose bearing_pose = kernel_pose(bi, bearing_.point_B, bearing_.axis_B);
   const geometry::PartPose journal_pose = kernel_pose(bj, journal_.point_B, journal_.axis_B);
   const std::array<Vector3, 4> poses{bearing_pose.p_WP, bearing_pose.axis_W, journal_pose.p_WP,
                                      journal_pose.axis_W};
-  const bool into_workspace = &contacts == &workspace.state.contacts;
+  const bool into_workspace = &found == &workspace.state;
   // The detection is a function of the poses alone: the same poses, bit for bit, give the same
   // answer. The last stage of a Dormand-Prince step is evaluated at the accepted state (FSAL),
   // where begins_event and update_extra_state detect again: they find the answer in place.
   // Outputs at a report time follow the right-hand side at the same state: they copy.
   if (workspace.holds_poses && std::memcmp(poses.data(), workspace.poses.data(), sizeof poses) == 0) {
-    if (!into_workspace) contacts = workspace.state.contacts;
+    if (!into_workspace) {
+      contacts = workspace.state.contacts;
+      found.pin_in_hole_scenario = workspace.state.pin_in_hole_scenario;
+    }
     return;
   }
   shared_->detection_calls.fetch_add(1, std::memory_order_relaxed);
   if (into_workspace) workspace.holds_poses = false;  // until the detection below succeeds
   try {
-    // In place: a fresh JointContacts is 1.4 KB of default values (detect_contacts.hpp).
-    geometry::detect_contacts(parameters_.dimensions, bearing_pose, journal_pose, contacts,
-                              parameters_.detection);
+    if (parameters_.pin_in_hole) {
+      // The hole is the bearing's pose, the pin the journal's; its Contact is the paper's.
+      const geometry::PinInHoleContacts pin = geometry::detect_pin_in_hole_contacts(
+          *parameters_.pin_in_hole, bearing_pose, journal_pose, parameters_.detection);
+      static_assert(geometry::kMaxPinInHoleContacts <= geometry::kMaxContacts);
+      contacts.scenario = geometry::ContactScenario::none;
+      contacts.aligned = pin.aligned;
+      contacts.certificate = pin.certificate;
+      contacts.contact_count = pin.contact_count;
+      std::copy_n(pin.contacts.begin(), pin.contact_count, contacts.contacts.begin());
+      found.pin_in_hole_scenario = pin.scenario;
+    } else {
+      // In place: a fresh JointContacts is 1.4 KB of default values (detect_contacts.hpp).
+      geometry::detect_contacts(parameters_.dimensions, bearing_pose, journal_pose, contacts,
+                                parameters_.detection);
+    }
   } catch (const geometry::InvalidInput& e) {
     throw SolverError("clearance joint '" + name_ + "' at t = " + format_number(time) +
                       ": the contact detection rejected the poses (" + e.what() + ")");
@@ -193,7 +221,7 @@ void ClearanceRevoluteJoint::detect(double time, const SystemKinematics& kinemat
 void ClearanceRevoluteJoint::evaluate_forces(double time, const SystemKinematics& kinematics,
                                              std::span<const double> impact_memory, Workspace& workspace,
                                              ClearanceJointState& state) const {
-  detect(time, kinematics, workspace, state.contacts);
+  detect(time, kinematics, workspace, state);
   state.slots = {};
   state.film.reset();
   state.force_on_journal_W.setZero();
@@ -281,8 +309,10 @@ ClearanceJointState ClearanceRevoluteJoint::evaluate(double time, const SystemKi
   state.axis_angle = angle_between(bearing_axis_W, journal_axis_W);
   // Rim labels follow the bearing's bases, as in the detection: when the axes point opposite
   // ways, the journal's base "B" faces the bearing's base A.
-  const geometry::BaseCenters rims =
-      geometry::base_centers(journal_pose, parameters_.dimensions.journal_length);
+  // A pin has no rims: its axis points in the planes of the link's faces stand for them.
+  const geometry::BaseCenters rims = geometry::base_centers(
+      journal_pose, parameters_.pin_in_hole ? parameters_.pin_in_hole->hole_length
+                                            : parameters_.dimensions.journal_length);
   const bool same_direction = bearing_axis_W.dot(journal_axis_W) >= 0.0;
   const Matrix3 to_bearing_frame =
       (Matrix3() << (bi.rotation * bearing_u_B_).transpose(),
@@ -325,7 +355,7 @@ double ClearanceRevoluteJoint::potential_energy(const SystemKinematics& kinemati
   WorkspaceLease lease(*shared_);
   Workspace& workspace = lease.get();
   geometry::JointContacts& contacts = workspace.state.contacts;
-  detect(kinematics.time(), kinematics, workspace, contacts);
+  detect(kinematics.time(), kinematics, workspace, workspace.state);
   double energy = 0.0;
   for (int c = 0; c < contacts.contact_count; ++c) {
     energy += contact_elastic_energy(parameters_.normal, contacts.contacts[c].depth);
@@ -343,7 +373,7 @@ bool ClearanceRevoluteJoint::update_extra_state(double time, const SystemKinemat
   Workspace& workspace = lease.get();
   ClearanceJointState& now = workspace.state;
   evaluate_forces(time, kinematics, state, workspace, now);
-  if (now.contacts.scenario == geometry::ContactScenario::beyond_model) {
+  if (beyond_model(now)) {
     shared_->beyond_model_updates.fetch_add(1, std::memory_order_relaxed);
   }
   bool changed = false;
@@ -367,7 +397,7 @@ bool ClearanceRevoluteJoint::begins_event(const SystemKinematics& kinematics,
   WorkspaceLease lease(*shared_);
   Workspace& workspace = lease.get();
   geometry::JointContacts& contacts = workspace.state.contacts;
-  detect(kinematics.time(), kinematics, workspace, contacts);
+  detect(kinematics.time(), kinematics, workspace, workspace.state);
   for (int c = 0; c < contacts.contact_count; ++c) {
     if (state[index_of(slot_of(contacts.contacts[c]))] == 0.0) return true;
   }
@@ -398,7 +428,9 @@ void ClearanceRevoluteJoint::record_outputs(double time, const SystemKinematics&
                                             std::span<double> values) const {
   const ClearanceJointState s = evaluate(time, kinematics, state);
   size_t k = 0;
-  values[k++] = static_cast<double>(s.contacts.scenario);
+  // The scenario's number in the table of the joint's kind (ContactScenario or PinInHoleScenario).
+  values[k++] = parameters_.pin_in_hole ? static_cast<double>(s.pin_in_hole_scenario)
+                                        : static_cast<double>(s.contacts.scenario);
   values[k++] = s.contacts.aligned ? 1.0 : 0.0;
   values[k++] = static_cast<double>(s.contacts.certificate.level);
   values[k++] = s.contacts.contact_count;
@@ -427,6 +459,21 @@ void ClearanceRevoluteJoint::record_outputs(double time, const SystemKinematics&
                       ? state[kFilmWorkIndex]
                       : std::numeric_limits<double>::quiet_NaN();
   }
+}
+
+bool ClearanceRevoluteJoint::beyond_model(const ClearanceJointState& state) const {
+  return parameters_.pin_in_hole ? state.pin_in_hole_scenario == geometry::PinInHoleScenario::beyond_model
+                                 : state.contacts.scenario == geometry::ContactScenario::beyond_model;
+}
+
+double ClearanceRevoluteJoint::radial_clearance() const {
+  return parameters_.pin_in_hole ? parameters_.pin_in_hole->radial_clearance()
+                                 : parameters_.dimensions.radial_clearance();
+}
+
+double ClearanceRevoluteJoint::axial_clearance() const {
+  return parameters_.pin_in_hole ? parameters_.pin_in_hole->axial_clearance()
+                                 : parameters_.dimensions.axial_clearance();
 }
 
 ClearanceJointStatistics ClearanceRevoluteJoint::statistics() const {

@@ -35,6 +35,15 @@ void require_unique_names(const ModelDescription& model) {
   }
 }
 
+/// The model file's keys of a clearance joint's parts: the pin-in-hole's hole and pin, else the
+/// paper's bearing and journal.
+std::string bearing_key(const ClearanceRevoluteDescription& d) {
+  return d.parameters.pin_in_hole ? ".hole" : ".bearing";
+}
+std::string journal_key(const ClearanceRevoluteDescription& d) {
+  return d.parameters.pin_in_hole ? ".pin" : ".journal";
+}
+
 struct ForceBuilder {
   const ModelDescription& model;
   std::string field;
@@ -43,9 +52,9 @@ struct ForceBuilder {
                                        d.force_W, d.moment_W);
   }
   std::unique_ptr<ForceElement> operator()(const ClearanceRevoluteDescription& d) const {
-    const ClearanceJointPart bearing{find_body(model, d.bearing.body, field + ".bearing.body"),
+    const ClearanceJointPart bearing{find_body(model, d.bearing.body, field + bearing_key(d) + ".body"),
                                      d.bearing.point_B, d.bearing.axis_B};
-    const ClearanceJointPart journal{find_body(model, d.journal.body, field + ".journal.body"),
+    const ClearanceJointPart journal{find_body(model, d.journal.body, field + journal_key(d) + ".body"),
                                      d.journal.point_B, d.journal.axis_B};
     return std::make_unique<ClearanceRevoluteJoint>(d.name, bearing, journal, d.parameters);
   }
@@ -131,8 +140,8 @@ struct ForceBodies {
   std::string field;
   void operator()(const PointLoadDescription& d) const { find_body(model, d.body, field + ".body"); }
   void operator()(const ClearanceRevoluteDescription& d) const {
-    find_body(model, d.bearing.body, field + ".bearing.body");
-    find_body(model, d.journal.body, field + ".journal.body");
+    find_body(model, d.bearing.body, field + bearing_key(d) + ".body");
+    find_body(model, d.journal.body, field + journal_key(d) + ".body");
   }
   void operator()(const SpringDamperDescription& d) const {
     find_body(model, d.body_i, field + ".body_i");

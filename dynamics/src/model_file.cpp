@@ -185,6 +185,26 @@ ClearancePartDescription parse_clearance_part(const Node& n, double& radius, dou
   return {n.text("body"), n.vector<3>("point", Vector3::Zero()), n.vector<3>("axis")};
 }
 
+/// The pin of a pin-in-hole joint: {"body", "point", "axis", "radius", "stops"}, each stop
+/// {"position", "outer_radius"}, spelled as the command line's detect line (docs/command-line.md).
+/// The stops' positions and sizes are the kernel's to check (validate(PinInHoleDimensions), by
+/// the joint); only their number is checked here, as the description holds at most two.
+ClearancePartDescription parse_pin(const Node& n, geometry::PinInHoleDimensions& d) {
+  n.require_object({"body", "point", "axis", "radius", "stops"});
+  d.pin_radius = n.number("radius");
+  const std::vector<Node> stops = n.array_or_empty("stops");
+  if (stops.size() > static_cast<std::size_t>(geometry::kMaxAxialStops)) {
+    n.member("stops").refuse("at most " + std::to_string(geometry::kMaxAxialStops) +
+                             " stops (one on each side of the hole; [] for a free sliding pin)");
+  }
+  d.stop_count = static_cast<int>(stops.size());
+  for (std::size_t k = 0; k < stops.size(); ++k) {
+    stops[k].require_object({"position", "outer_radius"});
+    d.stops[k] = {stops[k].number("position"), stops[k].number("outer_radius")};
+  }
+  return {n.text("body"), n.vector<3>("point", Vector3::Zero()), n.vector<3>("axis")};
+}
+
 /// A clearance joint's oil film: {"viscosity", "cavitation", "method", "grid", "allow_large_grid", "groove_direction",
 /// "supply_pressure", "film_thickness_limit", "transition_width"} (joint_lubrication.hpp).
 JointLubrication parse_lubrication(const Node& n) {
@@ -219,13 +239,26 @@ JointLubrication parse_lubrication(const Node& n) {
 }
 
 ClearanceRevoluteDescription parse_clearance_revolute(const Node& n) {
-  n.require_object({"type", "name", "bearing", "journal", "normal_force", "friction", "detection",
-                    "lubrication"});
   ClearanceRevoluteDescription d;
-  d.name = n.name("name");
-  geometry::JointDimensions& dims = d.parameters.dimensions;
-  d.bearing = parse_clearance_part(n.child("bearing"), dims.bearing_radius, dims.bearing_length);
-  d.journal = parse_clearance_part(n.child("journal"), dims.journal_radius, dims.journal_length);
+  const std::string geometry_kind = n.text("geometry", "journal_bearing");
+  if (geometry_kind == "pin_in_hole") {
+    // The hole is the bearing (body i), the pin the journal (body j).
+    n.require_object({"type", "name", "geometry", "hole", "pin", "normal_force", "friction", "detection",
+                      "lubrication"});
+    d.name = n.name("name");
+    geometry::PinInHoleDimensions& dims = d.parameters.pin_in_hole.emplace();
+    d.bearing = parse_clearance_part(n.child("hole"), dims.hole_radius, dims.hole_length);
+    d.journal = parse_pin(n.child("pin"), dims);
+  } else if (geometry_kind == "journal_bearing") {
+    n.require_object({"type", "name", "geometry", "bearing", "journal", "normal_force", "friction",
+                      "detection", "lubrication"});
+    d.name = n.name("name");
+    geometry::JointDimensions& dims = d.parameters.dimensions;
+    d.bearing = parse_clearance_part(n.child("bearing"), dims.bearing_radius, dims.bearing_length);
+    d.journal = parse_clearance_part(n.child("journal"), dims.journal_radius, dims.journal_length);
+  } else {
+    n.member("geometry").refuse("must be \"journal_bearing\" (the paper's joint, the default) or \"pin_in_hole\"");
+  }
 
   const Node normal = n.child("normal_force");
   normal.require_object({"model", "stiffness", "exponent", "restitution", "minimum_impact_speed"});

@@ -45,14 +45,13 @@ void refuse_start_beyond_model(MultibodySystem& system, double time, std::span<c
     }
     const ClearanceJointState at_start = joint->evaluate(time, system.kinematics(), system.extra_state(state, e));
     const geometry::JointContacts& found = at_start.contacts;
-    if (found.scenario != geometry::ContactScenario::beyond_model) continue;
-    const geometry::JointDimensions& d = joint->parameters().dimensions;
+    if (!joint->beyond_model(at_start)) continue;
     std::string deepest = "no single contact deeper than its clearance (a rim crosses the wall four times)";
     double worst = -INFINITY;
     for (int k = 0; k < found.contact_count; ++k) {
       const geometry::Contact& c = found.contacts[k];
       const bool radial = c.type == geometry::ContactType::radial;
-      const double clearance = radial ? d.radial_clearance() : d.axial_clearance();
+      const double clearance = radial ? joint->radial_clearance() : joint->axial_clearance();
       if (c.depth / clearance <= worst) continue;
       worst = c.depth / clearance;
       deepest = std::string("a ") + (radial ? "radial" : "axial") + " penetration of " + format_number(c.depth) +

@@ -468,6 +468,78 @@ TEST(ClearanceRevoluteJoint, RejectsBadInputNamingTheField) {
   EXPECT_EQ(construction_error(p), "j.detection.parallel_angle_tolerance = 2: must lie in [0, pi/2) radians");
 }
 
+// --- The pin-in-hole geometry (parameters.pin_in_hole): the same forces after its own detection.
+
+// The paper's Table 2 clearances as a pin-in-hole joint: hole Rh = 10 mm through a link L = 20 mm
+// long, pin Rp = 9.9 mm, heads whose faces are 0.1 mm beyond the link's faces (ca = 0.1 mm).
+ClearanceJointParameters pin_in_hole_without_friction() {
+  ClearanceJointParameters p = hertz_without_friction();
+  geometry::PinInHoleDimensions d;
+  d.hole_radius = 0.010;
+  d.hole_length = 0.020;
+  d.pin_radius = 0.0099;
+  d.stops = {geometry::AxialStop{0.0101, 0.015}, geometry::AxialStop{-0.0101, 0.015}};
+  d.stop_count = 2;
+  p.pin_in_hole = d;
+  return p;
+}
+
+TEST(ClearanceRevoluteJoint, PushesAnAlignedPinBackAtItsLineContactAsThePapersJointPushesItsJournal) {
+  const ClearanceRevoluteJoint pin = make_joint(pin_in_hole_without_friction());
+  const ClearanceRevoluteJoint paper = make_joint(hertz_without_friction());
+  EXPECT_EQ(pin.radial_clearance(), paper.radial_clearance());
+  const SystemKinematics k = poses(Vector3(kRadialClearance + kDepth, 0.0, 0.0));
+  const Applied a = apply(pin, k, kNoMemory);
+  const Applied b = apply(paper, k, kNoMemory);
+  const double F = hertz(kDepth);
+  expect_vector_near(a.force_journal, Vector3(-F, 0.0, 0.0), F);
+  expect_vector_near(a.force_journal, b.force_journal, F);
+  expect_vector_near(a.moment_journal, b.moment_journal, F * 0.03);
+  expect_vector_near(a.force_bearing, b.force_bearing, F);
+  expect_vector_near(a.moment_bearing, b.moment_bearing, F * 0.06);
+  const ClearanceJointState s = pin.evaluate(0.0, k, kNoMemory);
+  EXPECT_EQ(s.pin_in_hole_scenario, geometry::PinInHoleScenario::line);
+  EXPECT_TRUE(s.slots[static_cast<int>(ContactSlot::line)].active);
+  EXPECT_NEAR(s.slots[static_cast<int>(ContactSlot::line)].depth, kDepth, kDepth * kRelativeTolerance);
+}
+
+TEST(ClearanceRevoluteJoint, PushesAPinBackWhenItsStopCrossesTheLinkFace) {
+  const ClearanceRevoluteJoint pin = make_joint(pin_in_hole_without_friction());
+  // The pin slides along +z: the head at -10.1 mm passes link face B (z = -10 mm) by kDepth.
+  const SystemKinematics k = poses(Vector3(0.0, 0.0, kAxialClearance + kDepth));
+  const Applied a = apply(pin, k, kNoMemory);
+  const double F = hertz(kDepth);
+  expect_vector_near(a.force_journal, Vector3(0.0, 0.0, -F), F);
+  expect_vector_near(a.force_bearing, Vector3(0.0, 0.0, F), F);
+  const ClearanceJointState s = pin.evaluate(0.0, k, kNoMemory);
+  EXPECT_EQ(s.pin_in_hole_scenario, geometry::PinInHoleScenario::face);
+  EXPECT_TRUE(s.slots[static_cast<int>(ContactSlot::axial_b)].active);
+  EXPECT_FALSE(s.slots[static_cast<int>(ContactSlot::axial_a)].active);
+}
+
+TEST(ClearanceRevoluteJoint, RecordsThePinInHoleScenarioNumberInTheScenarioColumn) {
+  const ClearanceRevoluteJoint pin = make_joint(pin_in_hole_without_friction());
+  const SystemKinematics k = poses(Vector3(kRadialClearance + kDepth, 0.0, 0.0));
+  std::vector<double> values(pin.output_columns().size());
+  pin.record_outputs(0.0, k, kNoMemory, values);
+  EXPECT_EQ(values[0], static_cast<double>(geometry::PinInHoleScenario::line));
+}
+
+TEST(ClearanceRevoluteJoint, RejectsBadPinInHoleInputNamingTheField) {
+  ClearanceJointParameters p = pin_in_hole_without_friction();
+  EXPECT_EQ(construction_error(p), "no error");
+  p.pin_in_hole->pin_radius = 0.010;
+  EXPECT_EQ(construction_error(p).rfind("j.pin.radius = 0.01: must be smaller than", 0), 0u)
+      << construction_error(p);
+  p = pin_in_hole_without_friction();
+  p.pin_in_hole->stops[0].position = 0.005;  // inside the hole
+  EXPECT_EQ(construction_error(p).rfind("j.pin.stops[0].position = 0.005", 0), 0u) << construction_error(p);
+  p = pin_in_hole_without_friction();
+  p.lubrication = JointLubrication{};
+  EXPECT_EQ(construction_error(p).rfind("j.lubrication: not supported with \"geometry\": \"pin_in_hole\"", 0), 0u)
+      << construction_error(p);
+}
+
 TEST(ClearanceRevoluteJoint, RefusesAnAxisThatCannotBeNormalisedInDouble) {
   // |a|^2 overflows to infinity (a / |a| would be the zero vector) or underflows to 0 (a would
   // stay unnormalised): both are refused by name, as every other direction of a model is.

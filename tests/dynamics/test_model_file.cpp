@@ -144,6 +144,48 @@ TEST(ModelFile, NamesTheFieldOfAJournalNoSmallerThanItsBearing) {
   EXPECT_EQ(error_of(clearance_model("-1")), "m.json: forces[0].journal.radius = -1: must be positive");
 }
 
+// A pin on body "rod" through a hole in "slider" (Table 2 clearances, heads 0.1 mm beyond the
+// link's faces); `pin_radius` and `extra` (spliced into the force object) vary it.
+std::string pin_in_hole_model(const std::string& pin_radius, const std::string& extra = "") {
+  return R"({"bodies": [{"name": "rod", "mass": 1, "inertia": [1,1,1], "position": [0,0,0]},
+                        {"name": "slider", "mass": 1, "inertia": [1,1,1], "position": [0,0,0]}],
+  "forces": [{"type": "clearance_revolute", "name": "pin", "geometry": "pin_in_hole",
+    "hole": {"body": "slider", "axis": [0,0,1], "radius": 0.01, "length": 0.02},
+    "pin": {"body": "rod", "point": [0,0.1,0], "axis": [0,0,1], "radius": )" + pin_radius +
+         R"(, "stops": [{"position": 0.0101, "outer_radius": 0.015}, {"position": -0.0101, "outer_radius": 0.015}]},
+    "normal_force": {"model": "lankarani_nikravesh", "stiffness": 1e11, "restitution": 0.9})" +
+         extra + "}]}";
+}
+
+TEST(ModelFile, ReadsAPinInHoleClearanceJointWithTheHoleAsBearingAndThePinAsJournal) {
+  const ModelDescription m = parse_model(pin_in_hole_model("0.0099"), "m.json");
+  const auto& d = std::get<ClearanceRevoluteDescription>(m.forces[0]);
+  ASSERT_TRUE(d.parameters.pin_in_hole.has_value());
+  EXPECT_EQ(d.bearing.body, "slider");
+  EXPECT_EQ(d.journal.body, "rod");
+  EXPECT_EQ(d.journal.point_B, Vector3(0, 0.1, 0));
+  EXPECT_EQ(d.parameters.pin_in_hole->hole_length, 0.02);
+  EXPECT_EQ(d.parameters.pin_in_hole->pin_radius, 0.0099);
+  EXPECT_EQ(d.parameters.pin_in_hole->stop_count, 2);
+  EXPECT_EQ(d.parameters.pin_in_hole->stops[1].position, -0.0101);
+}
+
+TEST(ModelFile, NamesTheFieldOfABadPinInHoleJoint) {
+  EXPECT_EQ(error_of(pin_in_hole_model("0.01")).rfind("m.json: forces[0].pin.radius = 0.01: must be smaller than", 0),
+            0u) << error_of(pin_in_hole_model("0.01"));
+  std::string model = pin_in_hole_model("0.0099");
+  model.replace(model.find("\"pin_in_hole\""), 13, "\"pin_in_bush\"");
+  EXPECT_EQ(error_of(model).rfind("m.json: forces[0].geometry = \"pin_in_bush\": must be \"journal_bearing\"", 0), 0u)
+      << error_of(model);
+  EXPECT_NE(error_of(pin_in_hole_model("0.0099", R"(, "lubrication": {"viscosity": 0.04, "film_thickness_limit": 1e-6})"))
+                .find("forces[0].lubrication: not supported with \"geometry\": \"pin_in_hole\""),
+            std::string::npos);
+  // The paper's part keys are not the pin-in-hole's.
+  model = pin_in_hole_model("0.0099");
+  model.replace(model.find("\"hole\""), 6, "\"bearing\"");
+  EXPECT_NE(error_of(model).find("forces[0].bearing: unknown field"), std::string::npos) << error_of(model);
+}
+
 TEST(ModelFile, RejectsAnUnknownContactLawAndAMisspeltFrictionKey) {
   std::string model = clearance_model("0.0099");
   model.replace(model.find("lankarani_nikravesh"), 19, "kelvin");

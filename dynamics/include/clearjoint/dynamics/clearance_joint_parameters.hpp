@@ -11,6 +11,7 @@
 #include "clearjoint/dynamics/regularised_friction.hpp"
 #include "clearjoint/geometry/model/detection_options.hpp"
 #include "clearjoint/geometry/model/joint_geometry.hpp"
+#include "clearjoint/geometry/model/pin_in_hole_dimensions.hpp"
 
 namespace clearjoint::dynamics {
 
@@ -20,8 +21,12 @@ struct ClearanceJointParameters {
   NormalForceParameters normal;
   FrictionParameters friction;
   geometry::DetectionOptions detection;
-  /// The oil film; absent: a dry joint (the paper's).
+  /// The oil film; absent: a dry joint (the paper's). Not with pin_in_hole.
   std::optional<JointLubrication> lubrication;
+  /// The pin-in-hole joint (docs/contact-detection.md, "The pin-in-hole joint") instead of the
+  /// paper's journal-bearing: the bearing part is the hole, the journal part the pin, and
+  /// `dimensions` is not used. Same force laws, friction and detection options.
+  std::optional<geometry::PinInHoleDimensions> pin_in_hole;
 };
 
 }  // namespace clearjoint::dynamics

@@ -31,6 +31,15 @@
 /// (misaligned), i.e. about twice the force. It is kept as the paper states it;
 /// DetectionOptions::parallel_angle_tolerance moves where it happens.
 ///
+/// The pin-in-hole joint (ClearanceJointParameters::pin_in_hole, issue 48): the bearing part is
+/// the hole (its point midway between the link's faces), the journal part the pin (its point P
+/// the one at the hole's centre when centred). geometry::detect_pin_in_hole_contacts replaces
+/// detect_contacts; everything after the detection (the slots, the impact memory, the force laws,
+/// friction and where the forces act) is the same code. Its contacts fill the same slots: an edge
+/// of the hole at link face A or B takes radial_a or radial_b (two edge contacts of one face share
+/// it), the line contact takes line, a stop or face contact at face A or B takes axial_a or
+/// axial_b. No oil film (refused, naming "<name>.lubrication").
+///
 /// Lubrication (issue 36, joint_lubrication.hpp). A joint with parameters.lubrication also carries
 /// the oil film's force at the journal's centre and its moment, faded out as the film thins to
 /// the film_thickness_limit, below which the dry contact above acts alone. Its detection and
@@ -65,6 +74,7 @@
 #include "clearjoint/dynamics/regularised_friction.hpp"
 #include "clearjoint/geometry/joint/contact_kinematics.hpp"
 #include "clearjoint/geometry/joint/detect_contacts.hpp"
+#include "clearjoint/geometry/model/pin_in_hole_scenario.hpp"
 
 namespace clearjoint::dynamics {
 
@@ -116,7 +126,12 @@ struct SlotState {
 
 /// Everything the joint computes at one instant.
 struct ClearanceJointState {
+  /// The contacts found. For a pin-in-hole joint: its contacts (at most
+  /// geometry::kMaxPinInHoleContacts, as detect_pin_in_hole_contacts orders them), its
+  /// aligned flag and certificate; `scenario` is then none, pin_in_hole_scenario tells it.
   geometry::JointContacts contacts;
+  /// A pin-in-hole joint's scenario (none for the paper's joint).
+  geometry::PinInHoleScenario pin_in_hole_scenario = geometry::PinInHoleScenario::none;
   /// Force on the journal of each of contacts.contacts (the bearing gets the opposite).
   std::array<Vector3, geometry::kMaxContacts> contact_force_on_journal_W{};
   std::array<SlotState, kContactSlotCount> slots{};
@@ -191,6 +206,14 @@ class ClearanceRevoluteJoint final : public ForceElement, public ForceEvents, pu
                                std::span<const double> impact_memory) const;
 
   const ClearanceJointParameters& parameters() const { return parameters_; }
+  /// A pin-in-hole joint (parameters().pin_in_hole), not the paper's journal-bearing.
+  bool is_pin_in_hole() const { return parameters_.pin_in_hole.has_value(); }
+  /// Whether `state` (from evaluate) is beyond the model, by the scenario table of the joint's kind.
+  bool beyond_model(const ClearanceJointState& state) const;
+  /// The joint's radial and axial clearances [m] (eqs. 1-2; the pin-in-hole's: Rh - Rp and the
+  /// play between its stops, infinite with fewer than two).
+  double radial_clearance() const;
+  double axial_clearance() const;
   /// The counters so far (read while other threads evaluate, each is a count that was reached).
   ClearanceJointStatistics statistics() const;
   /// Every impact velocity recorded so far, in order (grows by one per impact, never per
@@ -206,11 +229,11 @@ class ClearanceRevoluteJoint final : public ForceElement, public ForceEvents, pu
   class WorkspaceLease;
   struct SharedState;
 
-  /// The certified detection at the bodies' poses, written into `contacts` (in place), reusing
-  /// the answer `workspace` holds for the same poses; `contacts` is the workspace's own or a
-  /// caller's.
+  /// The certified detection at the bodies' poses (the paper's, or the pin-in-hole's), written
+  /// into found.contacts (in place) and found.pin_in_hole_scenario, reusing the answer
+  /// `workspace` holds for the same poses; `found` is the workspace's own state or a caller's.
   void detect(double time, const SystemKinematics& kinematics, Workspace& workspace,
-              geometry::JointContacts& contacts) const;
+              ClearanceJointState& found) const;
   /// Detection, contact kinematics and forces into `state` (contacts, per-contact forces, slots,
   /// totals); not the geometry only the outputs need (axis angle, rim centres).
   void evaluate_forces(double time, const SystemKinematics& kinematics,
