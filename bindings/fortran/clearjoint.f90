@@ -52,6 +52,12 @@ module clearjoint
   integer(c_int32_t), parameter, public :: CJ_CIRCLE_CYLINDER_INSIDE = 0, &
     CJ_CIRCLE_CYLINDER_OUTSIDE = 1, CJ_CIRCLE_CYLINDER_CROSSING = 2, &
     CJ_CIRCLE_CYLINDER_ON_SURFACE = 3
+  ! cj_pin_in_hole_scenario (C++: PinInHoleScenario)
+  integer(c_int32_t), parameter, public :: CJ_PIN_IN_HOLE_NONE = 0, CJ_PIN_IN_HOLE_ONE_EDGE = 1, &
+    CJ_PIN_IN_HOLE_BOTH_EDGES_OPPOSITE = 2, CJ_PIN_IN_HOLE_BOTH_EDGES_SAME_SIDE = 3, &
+    CJ_PIN_IN_HOLE_LINE = 4, CJ_PIN_IN_HOLE_ONE_STOP = 5, CJ_PIN_IN_HOLE_BOTH_STOPS = 6, &
+    CJ_PIN_IN_HOLE_FACE = 7, CJ_PIN_IN_HOLE_EDGES_AND_STOPS = 8, CJ_PIN_IN_HOLE_LINE_AND_FACE = 9, &
+    CJ_PIN_IN_HOLE_BEYOND_MODEL = 10
   ! END GENERATED enums
   integer, parameter, public :: CJ_MAX_CONTACTS = 6
 
@@ -67,6 +73,23 @@ module clearjoint
     integer(c_int32_t) :: certify, exact_fallback
     real(c_double) :: parallel_angle_tolerance
     real(c_double) :: reserved(4)
+  end type
+
+  !> An axial stop of a pin: see cj_axial_stop in clearjoint.h.
+  type, bind(c), public :: cj_axial_stop
+    real(c_double) :: position, outer_radius
+  end type
+
+  integer, parameter, public :: CJ_MAX_AXIAL_STOPS = 2
+
+  !> A pin through a hole: see cj_pin_in_hole_dimensions in clearjoint.h; stops(1:stop_count)
+  !> are read, the reserved members must be zero (as the default initialisation leaves them).
+  type, bind(c), public :: cj_pin_in_hole_dimensions
+    real(c_double) :: hole_radius = 0, hole_length = 0, pin_radius = 0
+    integer(c_int32_t) :: stop_count = 0
+    integer(c_int32_t) :: reserved0 = 0
+    type(cj_axial_stop) :: stops(CJ_MAX_AXIAL_STOPS) = cj_axial_stop(0, 0)
+    real(c_double) :: reserved(4) = 0
   end type
 
   type, bind(c), public :: cj_certificate
@@ -119,6 +142,18 @@ module clearjoint
     ! END GENERATED cj_result components
   end type
 
+  type, bind(c), public :: cj_pin_in_hole_result
+    ! BEGIN GENERATED cj_pin_in_hole_result components: the C struct's members, from scripts/projections
+    integer(c_int32_t) :: scenario
+    integer(c_int32_t) :: aligned
+    integer(c_int32_t) :: contact_count
+    integer(c_int32_t) :: reserved0
+    type(cj_certificate) :: certificate
+    type(cj_contact) :: contacts(CJ_MAX_CONTACTS)
+    real(c_double) :: reserved(8)
+    ! END GENERATED cj_pin_in_hole_result components
+  end type
+
   type, bind(c), public :: cj_pose_array
     type(c_ptr) :: component(6)
     integer(c_ptrdiff_t) :: stride
@@ -126,6 +161,7 @@ module clearjoint
 
   public :: cj_detect, cj_detect_many, cj_default_options, cj_version, cj_string
   public :: cj_scenario_string, cj_certainty_string, cj_contact_type_string, cj_base_string
+  public :: cj_detect_pin_in_hole, cj_pin_in_hole_scenario_string
 
   interface
     function c_detect(dimensions, bearing, journal, options, result, message, capacity) &
@@ -152,6 +188,24 @@ module clearjoint
       character(kind=c_char), dimension(*), intent(out) :: message
       integer(c_size_t), value :: capacity
       integer(c_int) :: status
+    end function
+
+    function c_detect_pin_in_hole(dimensions, hole, pin, options, result, message, capacity) &
+        bind(c, name="cj_detect_pin_in_hole") result(status)
+      import :: c_int, c_ptr, c_char, c_size_t, cj_pin_in_hole_dimensions, cj_pose, cj_pin_in_hole_result
+      type(cj_pin_in_hole_dimensions), intent(in) :: dimensions
+      type(cj_pose), intent(in) :: hole, pin
+      type(c_ptr), value :: options
+      type(cj_pin_in_hole_result), intent(inout) :: result
+      character(kind=c_char), dimension(*), intent(out) :: message
+      integer(c_size_t), value :: capacity
+      integer(c_int) :: status
+    end function
+
+    function c_pin_in_hole_scenario_string(code) bind(c, name="cj_pin_in_hole_scenario_string") result(text)
+      import :: c_ptr, c_int
+      integer(c_int), value :: code
+      type(c_ptr) :: text
     end function
 
     function cj_default_options() bind(c, name="cj_default_options") result(options)
@@ -271,6 +325,30 @@ contains
     options_pointer = c_null_ptr
     if (present(options)) options_pointer = c_loc(options)
     status = c_detect(dimensions, bearing, journal, options_pointer, result, buffer, message_capacity)
+    if (present(message)) message = message_text(buffer)
+  end function
+
+  function cj_pin_in_hole_scenario_string(code) result(out)
+    integer(c_int32_t), intent(in) :: code
+    character(len=:), allocatable :: out
+    out = cj_string(c_pin_in_hole_scenario_string(int(code, c_int)))
+  end function
+
+  !> Detect the contacts of a pin in its hole (C: cj_detect_pin_in_hole). Returns the status; on
+  !> failure `result` is untouched and `message` (when present) holds the reason, naming the
+  !> field and its value.
+  function cj_detect_pin_in_hole(dimensions, hole, pin, result, options, message) result(status)
+    type(cj_pin_in_hole_dimensions), intent(in) :: dimensions
+    type(cj_pose), intent(in) :: hole, pin
+    type(cj_pin_in_hole_result), intent(inout) :: result
+    type(cj_options), intent(in), target, optional :: options
+    character(len=:), allocatable, intent(out), optional :: message
+    integer(c_int) :: status
+    character(kind=c_char, len=message_capacity) :: buffer
+    type(c_ptr) :: options_pointer
+    options_pointer = c_null_ptr
+    if (present(options)) options_pointer = c_loc(options)
+    status = c_detect_pin_in_hole(dimensions, hole, pin, options_pointer, result, buffer, message_capacity)
     if (present(message)) message = message_text(buffer)
   end function
 

@@ -59,6 +59,16 @@ LAYOUTS = [
         ("field", "contacts", None, None),
         ("reserved", "reserved", 8),
     ]),
+    ("PinInHoleContacts", "cj_pin_in_hole_result", [
+        ("field", "scenario", None, None),
+        ("field", "aligned", None, "1 when the axes are (treated as) parallel"),
+        ("count", "contact_count", "contacts", "0 to CJ_MAX_CONTACTS"),
+        ("member", "int32_t reserved0;", "integer(c_int32_t) :: reserved0"),
+        ("field", "certificate", None, "The weakest certificate over every decision taken, \"no contact\" "
+                                       "answers included."),
+        ("field", "contacts", None, "Radial (edges, line) before axial (stops, faces), face A before B."),
+        ("reserved", "reserved", 8),
+    ]),
 ]
 
 # The C array bound of a list whose capacity the header names.

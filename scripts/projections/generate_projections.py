@@ -47,6 +47,9 @@ C_ENUMS = [
      "How a circle meets a plane (C++: CirclePlaneTopology)."),
     ("CircleCylinderTopology", "cj_circle_cylinder_topology", "CJ_CIRCLE_CYLINDER_",
      "How a circle meets a cylinder's lateral surface (C++: CircleCylinderTopology)."),
+    ("PinInHoleScenario", "cj_pin_in_hole_scenario", "CJ_PIN_IN_HOLE_",
+     "The contact scenarios of the pin-in-hole joint (C++: PinInHoleScenario; "
+     "docs/contact-detection.md, \"The pin-in-hole joint\")."),
 ]
 
 # The "enum" lists of the JSON schemas: file, path to the object holding the list, enum type.

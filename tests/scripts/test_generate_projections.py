@@ -15,7 +15,7 @@ GENERATOR = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..",
                          "generate_projections.py")
 
 C_TYPES = ["ContactScenario", "Certainty", "CertificateReason", "ContactType", "ContactBase",
-           "CirclePlaneTopology", "CircleCylinderTopology"]
+           "CirclePlaneTopology", "CircleCylinderTopology", "PinInHoleScenario"]
 
 
 def description():

@@ -4,6 +4,7 @@
 
 #include "clearjoint/version.hpp"
 #include "conversions.hpp"
+#include "clearjoint/geometry/model/pin_in_hole_scenario.hpp"
 
 namespace {
 
@@ -54,5 +55,7 @@ const char* cj_circle_plane_topology_string(int topology) {
 const char* cj_circle_cylinder_topology_string(int topology) {
   return key_of_code<geo::CircleCylinderTopology>(topology);
 }
+
+const char* cj_pin_in_hole_scenario_string(int scenario) { return key_of_code<geo::PinInHoleScenario>(scenario); }
 
 }  // extern "C"

@@ -19,6 +19,7 @@
 
 #include "clearjoint/geometry/model/option_fields.hpp"
 #include "conversions.hpp"
+#include "pin_in_hole_conversions.hpp"
 #include "option_changes.hpp"
 #include "result_field_changes.hpp"
 
@@ -77,6 +78,7 @@ TEST(CDescriptions, EveryEnumValueHasItsConstantAndItsKey) {
   expect_constants<geo::CirclePlaneTopology>("CJ_CIRCLE_PLANE_", false, cj_circle_plane_topology_string);
   expect_constants<geo::CircleCylinderTopology>("CJ_CIRCLE_CYLINDER_", false,
                                                 cj_circle_cylinder_topology_string);
+  expect_constants<geo::PinInHoleScenario>("CJ_PIN_IN_HOLE_", true, cj_pin_in_hole_scenario_string);
 }
 
 TEST(CDescriptions, TheOptionsCarryEveryDetectionOptionByItsKey) {
@@ -133,6 +135,66 @@ TEST(CDescriptions, CopyingADetectionCarriesEveryField) {
   // One contact with one crossing: 30 leaves when this test was written. A floor, not the count,
   // so that a field added to the lists needs no edit here: it is one more leaf, checked above.
   EXPECT_GE(changes, 30);
+}
+
+TEST(CDescriptions, CopyingAPinInHoleDetectionCarriesEveryField) {
+  const auto base = geo::result_with_every_field_set<geo::PinInHoleContacts>();
+  cj_pin_in_hole_result base_copy{};
+  clearjoint::c_api::copy_pin_in_hole_result(base, base_copy);
+  int changes = 0;
+  geo::for_each_field_change(base, [&](std::string_view field, const geo::PinInHoleContacts& changed) {
+    cj_pin_in_hole_result copy{};
+    clearjoint::c_api::copy_pin_in_hole_result(changed, copy);
+    EXPECT_FALSE(same_bytes(copy, base_copy)) << "cj_pin_in_hole_result does not carry " << field;
+    ++changes;
+  });
+  // As for cj_result: a floor (one contact with one crossing), not the count.
+  EXPECT_GE(changes, 30);
+}
+
+TEST(CDescriptions, ThePinInHoleDimensionsCarryEveryMember) {
+  // Every member of PinInHoleDimensions, changed alone, through cj_pin_in_hole_dimensions.
+  geo::PinInHoleDimensions base;
+  base.hole_radius = 1.0;
+  base.hole_length = 2.0;
+  base.pin_radius = 0.5;
+  base.stops[0] = {-1.5, 3.0};
+  base.stops[1] = {1.5, 3.0};
+  base.stop_count = 2;
+  const auto through_c = [](const geo::PinInHoleDimensions& d) {
+    cj_pin_in_hole_dimensions c{};
+    c.hole_radius = d.hole_radius;
+    c.hole_length = d.hole_length;
+    c.pin_radius = d.pin_radius;
+    c.stop_count = d.stop_count;
+    for (int k = 0; k < CJ_MAX_AXIAL_STOPS; ++k) c.stops[k] = {d.stops[k].position, d.stops[k].outer_radius};
+    return clearjoint::c_api::pin_in_hole_dimensions_of(c);
+  };
+  const auto same = [](const geo::PinInHoleDimensions& a, const geo::PinInHoleDimensions& b) {
+    bool stops = true;
+    for (int k = 0; k < geo::kMaxAxialStops; ++k) {
+      stops = stops && a.stops[k].position == b.stops[k].position && a.stops[k].outer_radius == b.stops[k].outer_radius;
+    }
+    return stops && a.hole_radius == b.hole_radius && a.hole_length == b.hole_length &&
+           a.pin_radius == b.pin_radius && a.stop_count == b.stop_count;
+  };
+  // Six doubles and an int: a member added to the struct changes its size and fails here.
+  static_assert(sizeof(geo::PinInHoleDimensions) == 3 * sizeof(double) + 4 * sizeof(double) + sizeof(double));
+  EXPECT_TRUE(same(through_c(base), base));
+  for (int member = 0; member < 8; ++member) {
+    geo::PinInHoleDimensions changed = base;
+    switch (member) {
+      case 0: changed.hole_radius = 1.25; break;
+      case 1: changed.hole_length = 2.25; break;
+      case 2: changed.pin_radius = 0.75; break;
+      case 3: changed.stops[0].position = -1.75; break;
+      case 4: changed.stops[0].outer_radius = 3.25; break;
+      case 5: changed.stops[1].position = 1.75; break;
+      case 6: changed.stops[1].outer_radius = 3.5; break;
+      default: changed.stop_count = 1; break;
+    }
+    EXPECT_TRUE(same(through_c(changed), changed)) << "member " << member;
+  }
 }
 
 TEST(CDescriptions, CopyingACrossingCarriesEveryField) {

@@ -58,4 +58,22 @@ TEST(CLayout, TheResultKeepsItsOffsetsAndSize) {
   EXPECT_EQ(sizeof(cj_result), 1776u);
 }
 
+TEST(CLayout, ThePinInHoleStructsKeepTheirOffsetsAndSizes) {
+  if (!kLp64) GTEST_SKIP() << "offsets written for LP64";
+  EXPECT_EQ(offsetof(cj_pin_in_hole_dimensions, hole_radius), 0u);
+  EXPECT_EQ(offsetof(cj_pin_in_hole_dimensions, hole_length), 8u);
+  EXPECT_EQ(offsetof(cj_pin_in_hole_dimensions, pin_radius), 16u);
+  EXPECT_EQ(offsetof(cj_pin_in_hole_dimensions, stop_count), 24u);
+  EXPECT_EQ(offsetof(cj_pin_in_hole_dimensions, stops), 32u);
+  EXPECT_EQ(offsetof(cj_pin_in_hole_dimensions, reserved), 64u);
+  EXPECT_EQ(sizeof(cj_pin_in_hole_dimensions), 96u);
+  // The same layout as cj_result, so that code reading one reads the other.
+  EXPECT_EQ(offsetof(cj_pin_in_hole_result, scenario), offsetof(cj_result, scenario));
+  EXPECT_EQ(offsetof(cj_pin_in_hole_result, aligned), offsetof(cj_result, aligned));
+  EXPECT_EQ(offsetof(cj_pin_in_hole_result, contact_count), offsetof(cj_result, contact_count));
+  EXPECT_EQ(offsetof(cj_pin_in_hole_result, certificate), offsetof(cj_result, certificate));
+  EXPECT_EQ(offsetof(cj_pin_in_hole_result, contacts), offsetof(cj_result, contacts));
+  EXPECT_EQ(sizeof(cj_pin_in_hole_result), 1776u);
+}
+
 }  // namespace

@@ -186,6 +186,22 @@ typedef enum cj_circle_cylinder_topology {
   CJ_CIRCLE_CYLINDER_CROSSING = 2, /**< 1 to 4 distinct common points */
   CJ_CIRCLE_CYLINDER_ON_SURFACE = 3 /**< coaxial with equal radii */
 } cj_circle_cylinder_topology;
+
+/** The contact scenarios of the pin-in-hole joint (C++: PinInHoleScenario; docs/contact-
+ * detection.md, "The pin-in-hole joint"). */
+typedef enum cj_pin_in_hole_scenario {
+  CJ_PIN_IN_HOLE_NONE = 0, /**< none */
+  CJ_PIN_IN_HOLE_ONE_EDGE = 1, /**< one hole edge against the pin */
+  CJ_PIN_IN_HOLE_BOTH_EDGES_OPPOSITE = 2, /**< both hole edges, at opposite sides (tilt) */
+  CJ_PIN_IN_HOLE_BOTH_EDGES_SAME_SIDE = 3, /**< both hole edges, on one side */
+  CJ_PIN_IN_HOLE_LINE = 4, /**< aligned: line contact along the bore */
+  CJ_PIN_IN_HOLE_ONE_STOP = 5, /**< one stop against its link face */
+  CJ_PIN_IN_HOLE_BOTH_STOPS = 6, /**< both stops against their link faces */
+  CJ_PIN_IN_HOLE_FACE = 7, /**< aligned: a stop flush on its link face */
+  CJ_PIN_IN_HOLE_EDGES_AND_STOPS = 8, /**< edge and stop contacts together */
+  CJ_PIN_IN_HOLE_LINE_AND_FACE = 9, /**< aligned: line and face together */
+  CJ_PIN_IN_HOLE_BEYOND_MODEL = 10 /**< beyond model */
+} cj_pin_in_hole_scenario;
 /* END GENERATED enums */
 
 /** Static strings; "unknown" for a value this version does not know. Each is the value's key in
@@ -202,6 +218,10 @@ CJ_API const char* cj_contact_type_string(int type);
 CJ_API const char* cj_base_string(int base);
 CJ_API const char* cj_circle_plane_topology_string(int topology);
 CJ_API const char* cj_circle_cylinder_topology_string(int topology);
+/** A pin-in-hole scenario's key: "none", "one_edge", "both_edges_opposite",
+ * "both_edges_same_side", "line", "one_stop", "both_stops", "face", "edges_and_stops",
+ * "line_and_face", "beyond_model" (the enumerators' names, as `clearjoint detect` writes them). */
+CJ_API const char* cj_pin_in_hole_scenario_string(int scenario);
 
 /* ---- Inputs ----------------------------------------------------------------------------------- */
 
@@ -356,6 +376,69 @@ CJ_API cj_status cj_detect_many(const cj_dimensions* dimensions, const cj_pose_a
                                 const cj_pose_array* journals, size_t count,
                                 const cj_options* options, cj_result* results, size_t* processed,
                                 char* message, size_t message_capacity);
+
+/* ---- The pin-in-hole joint -------------------------------------------------------------------- */
+
+/** One axial stop of a pin: the inner face of a head, collar or washer, a plane perpendicular to
+ * the pin's axis at `position` along it from the pin's point P (positive: on the side the pin's
+ * axis points to), bounded by a circle of radius `outer_radius` (C++: AxialStop). */
+typedef struct cj_axial_stop {
+  double position;
+  double outer_radius;
+} cj_axial_stop;
+
+#define CJ_MAX_AXIAL_STOPS 2
+
+/** A pin longer than the hole it passes through (C++: PinInHoleDimensions): hole radius Rh and
+ * the hole's length L between the link's two faces, pin radius Rp, and `stop_count` (0, 1 or 2)
+ * axial stops, stops[0, stop_count) read. Valid when Rh > Rp > 0, L > 0, each in [1e-150,
+ * 1e150] (see cj_dimensions), each stop outside the hole (|position| > L/2) and larger than it
+ * (outer_radius > Rh), two stops on opposite sides of P; otherwise cj_detect_pin_in_hole returns
+ * CJ_INVALID_INPUT naming the field ("dimensions.stops[1].outer_radius = ..."). */
+typedef struct cj_pin_in_hole_dimensions {
+  double hole_radius;
+  double hole_length;
+  double pin_radius;
+  int32_t stop_count;
+  /** Must be zero (see the ABI rules). */
+  int32_t reserved0;
+  cj_axial_stop stops[CJ_MAX_AXIAL_STOPS];
+  /** Must be zero (see the ABI rules). */
+  double reserved[4];
+} cj_pin_in_hole_dimensions;
+
+/** The answer of a pin-in-hole detection (C++: PinInHoleContacts). Each contact is a cj_contact
+ * with the link (the hole) for the bearing and the pin for the journal: p_WCj on the pin, p_WCi
+ * on the link, normal_W the direction the pin penetrates the link; type radial: an edge or line
+ * contact, axial: a stop; base a, b: at link face A (the face the hole's axis points to) or B,
+ * mid: the line contact. contacts[0, contact_count) are set; the entries after them are left as
+ * they were. */
+typedef struct cj_pin_in_hole_result {
+  /* BEGIN GENERATED cj_pin_in_hole_result members (the field list of PinInHoleContacts: scripts/projections) */
+  int32_t scenario; /**< cj_pin_in_hole_scenario */
+  int32_t aligned; /**< 1 when the axes are (treated as) parallel */
+  int32_t contact_count; /**< 0 to CJ_MAX_CONTACTS */
+  int32_t reserved0;
+  /** The weakest certificate over every decision taken, "no contact" answers included. */
+  cj_certificate certificate;
+  /** Radial (edges, line) before axial (stops, faces), face A before B. */
+  cj_contact contacts[CJ_MAX_CONTACTS];
+  double reserved[8];
+  /* END GENERATED cj_pin_in_hole_result members */
+} cj_pin_in_hole_result;
+
+/**
+ * Detect every contact between a pin (pose `pin`: P, the pin point at the hole's centre when
+ * centred, and its axis) and the hole it passes through (pose `hole`: the hole's centre, midway
+ * between the link's faces, and its axis) (C++: detect_pin_in_hole_contacts). On CJ_OK `*result`
+ * holds the answer; on any other status `*result` is untouched and the message names the field
+ * ("dimensions.pin_radius = ...", "hole.axis_W = ...", "pin.p_WP = ..."). `options` may be NULL
+ * (cj_default_options()).
+ */
+CJ_API cj_status cj_detect_pin_in_hole(const cj_pin_in_hole_dimensions* dimensions,
+                                       const cj_pose* hole, const cj_pose* pin,
+                                       const cj_options* options, cj_pin_in_hole_result* result,
+                                       char* message, size_t message_capacity);
 
 /* ---- Kernel queries --------------------------------------------------------------------------- */
 
