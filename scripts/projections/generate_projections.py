@@ -28,6 +28,7 @@ import subprocess
 import sys
 import textwrap
 
+from c_copies import MEMBERS_FILE, member_tables
 from c_structs import struct_projections
 import schema_results
 
@@ -200,6 +201,7 @@ def projections(root, description):
     for c_name, (c_lines, fortran_lines) in struct_projections(description["results"], enum_names).items():
         region(C_HEADER, f"{c_name} members", c_lines)
         region(FORTRAN_MODULE, f"{c_name} components", fortran_lines)
+    region(MEMBERS_FILE, "c members", member_tables(description["results"]))
     region(PY_STUB, "enums", py_enums(tables))
     region(PY_STUB, "results", py_results(description["results"]))
     for path in sorted({path for path, _, _ in SCHEMA_ENUMS}):

@@ -59,6 +59,7 @@ MARKED = {
         "/* BEGIN GENERATED cj_contact members */\n/* END GENERATED cj_contact members */\n",
     "bindings/fortran/clearjoint.f90": "! BEGIN GENERATED enums\n! END GENERATED enums\n"
         "! BEGIN GENERATED cj_contact components\n! END GENERATED cj_contact components\n",
+    "bindings/c/src/c_members.hpp": "// BEGIN GENERATED c members\n// END GENERATED c members\n",
     "bindings/python/clearjoint/__init__.pyi":
         "# BEGIN GENERATED enums\n# END GENERATED enums\n# BEGIN GENERATED results\n# END GENERATED results\n",
 }
@@ -142,6 +143,24 @@ class GenerateProjections(unittest.TestCase):
         self.assertIn("int32_t crossing_count;\n  int32_t reserved0;\n  cj_certificate certificate;\n"
                       "  double reserved[4];", header)
         self.assertIn("real(c_double) :: p_WCj(3)", self.read("bindings/fortran/clearjoint.f90"))
+
+    def test_the_c_members_follow_the_field_list_order_with_the_c_names(self):
+        self.assertEqual(self.run_generator("--write").returncode, 0)
+        members = self.read("bindings/c/src/c_members.hpp")
+        self.assertIn("struct CMembers<geometry::Contact> {\n  using type = cj_contact;\n"
+                      "  static constexpr std::tuple members{\n      &cj_contact::depth,\n"
+                      "      Whole{&cj_contact::crossings, &cj_contact::crossing_count},\n"
+                      "      &cj_contact::p_WCj,", members)
+
+    def test_a_field_added_to_a_result_makes_the_check_fail_on_the_c_members(self):
+        self.run_generator("--write")
+        grown = description()
+        grown["results"][0]["fields"].append({"key": "trial", "doc": "", "kind": "plain", "value": "float"})
+        self.set_description(grown)
+        check = self.run_generator("--check")
+        self.assertEqual(check.returncode, 1)
+        self.assertIn("+      &cj_contact::trial};", check.stdout)
+        self.assertIn("bindings/c/src/c_members.hpp", check.stdout.split("stale:")[1])
 
     def test_a_field_added_to_a_result_takes_the_room_of_its_reserved_members(self):
         self.run_generator("--write")

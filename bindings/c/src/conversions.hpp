@@ -7,8 +7,13 @@
 /// Enum values are cast: the C codes are the codes of the library's enum tables, which never
 /// change once released (enum_table.hpp).
 
+#include <array>
+#include <cstddef>
 #include <sstream>
 #include <string>
+#include <tuple>
+#include <type_traits>
+#include <utility>
 
 #include "clearjoint/clearjoint.h"
 #include "clearjoint/geometry/model/certificate.hpp"
@@ -17,6 +22,7 @@
 #include "clearjoint/geometry/queries/intersect_circle_cylinder.hpp"
 #include "clearjoint/geometry/queries/intersect_circle_plane.hpp"
 #include "clearjoint/validation_error.hpp"
+#include "c_members.hpp"
 #include "status_reporting.hpp"
 
 namespace clearjoint::c_api {
@@ -101,43 +107,73 @@ inline cj_certificate certificate_of(const geo::Certificate& c) {
           geo::EnumTable<geo::CertificateReason>::entries[static_cast<std::size_t>(reason)].label.data()};
 }
 
-inline void copy_crossing(const geo::RimCrossing& from, cj_crossing& to) {
-  to.angle = from.angle;
-  to.angle_error_bound = from.angle_error;
-  copy_vector(from.point, to.point);
-  to.point_error_bound = from.point_error;
-  to.multiplicity = from.multiplicity;
+/// The C value of a field, by its type: a double or int as it is, a bool 1 or 0, an enum its code,
+/// a vector its three components, a certificate with its sentence, a result its C struct.
+inline void copy_value(double from, double& to) { to = from; }
+inline void copy_value(int from, int32_t& to) { to = from; }
+inline void copy_value(bool from, int32_t& to) { to = from ? 1 : 0; }
+template <geo::TabledEnum E>
+inline void copy_value(E from, int32_t& to) {
+  to = code_of(from);
 }
+inline void copy_value(const geo::Vector3& from, double (&to)[3]) { copy_vector(from, to); }
+inline void copy_value(const geo::Certificate& from, cj_certificate& to) { to = certificate_of(from); }
+template <class Result>
+  requires requires { typename CMembers<Result>::type; }
+inline void copy_value(const Result& from, typename CMembers<Result>::type& to);
+
+/// One field into its C member, by the field's kind (model/field_lists.hpp).
+template <class S, class M, class C, class T>
+inline void copy_field(const geo::fields::Plain<S, M>& field, T C::*member, const S& from, C& to) {
+  copy_value(from.*field.member, to.*member);
+}
+template <class S, class C>
+inline void copy_field(const geo::fields::Bound<S>& field, double C::*member, const S& from, C& to) {
+  to.*member = from.*field.member;
+}
+/// Whole: every entry (the count is the kernel's to keep; the entries past it hold its defaults).
+template <class S, class A, class Items, class C>
+inline void copy_field(const geo::fields::List<S, A>& field, const Whole<Items, C>& members, const S& from, C& to) {
+  static_assert(std::tuple_size_v<A> == std::extent_v<Items>, "a list and its C array differ in capacity");
+  for (std::size_t k = 0; k < std::tuple_size_v<A>; ++k) copy_value((from.*field.items)[k], (to.*members.items)[k]);
+  to.*members.count = from.*field.count;
+}
+/// InUse: entries [0, count) only, as the C++ in-place overloads write them.
+template <class S, class A, class Items, class C>
+inline void copy_field(const geo::fields::List<S, A>& field, const InUse<Items, C>& members, const S& from, C& to) {
+  static_assert(std::tuple_size_v<A> == std::extent_v<Items>, "a list and its C array differ in capacity");
+  const int count = from.*field.count;
+  to.*members.count = count;
+  for (int k = 0; k < count; ++k) copy_value((from.*field.items)[k], (to.*members.items)[k]);
+}
+
+/// Every field of a result into its C struct: the field list paired, place by place, with the C
+/// members (c_members.hpp, generated from the C layouts); the members the list does not name
+/// (padding, reserved room) are left alone (clearjoint.h: unspecified in results; writing them
+/// measured ~2 ns a call).
+template <class Result>
+  requires requires { typename CMembers<Result>::type; }
+inline void copy_value(const Result& from, typename CMembers<Result>::type& to) {
+  constexpr const auto& fields = geo::ResultFields<Result>::fields;
+  constexpr const auto& members = CMembers<Result>::members;
+  static_assert(std::tuple_size_v<std::remove_cvref_t<decltype(fields)>> ==
+                    std::tuple_size_v<std::remove_cvref_t<decltype(members)>>,
+                "c_members.hpp is stale: cmake --build build --target projections");
+  [&]<std::size_t... I>(std::index_sequence<I...>) {
+    (copy_field(std::get<I>(fields), std::get<I>(members), from, to), ...);
+  }(std::make_index_sequence<std::tuple_size_v<std::remove_cvref_t<decltype(fields)>>>{});
+}
+
+inline void copy_crossing(const geo::RimCrossing& from, cj_crossing& to) { copy_value(from, to); }
 
 inline cj_arc arc_of(const geo::RimArc& a) { return {a.begin, a.end, a.full ? 1 : 0, 0}; }
 
-inline void copy_contact(const geo::Contact& from, cj_contact& to) {
-  to.type = code_of(from.type);
-  to.base = code_of(from.base);
-  copy_vector(from.p_WCj, to.p_WCj);
-  copy_vector(from.p_WCi, to.p_WCi);
-  copy_vector(from.normal_W, to.normal_W);
-  to.depth = from.depth;
-  to.depth_error_bound = from.depth_error;
-  to.p_WCj_error_bound = from.p_WCj_error;
-  to.p_WCi_error_bound = from.p_WCi_error;
-  // Both, as the kernel sets both (those past crossing_count hold its default crossing).
-  copy_crossing(from.crossings[0], to.crossings[0]);
-  copy_crossing(from.crossings[1], to.crossings[1]);
-  to.crossing_count = from.crossing_count;
-  to.certificate = certificate_of(from.certificate);
-}
+/// Both crossings, as the kernel sets both (those past crossing_count hold its default crossing).
+inline void copy_contact(const geo::Contact& from, cj_contact& to) { copy_value(from, to); }
 
 /// Scenario, aligned, certificate, count and contacts[0, contact_count), as the C++ in-place
-/// overload writes them; the contacts after them are left alone, and so are the reserved
-/// members (clearjoint.h: unspecified in results; writing them measured ~2 ns a call).
-inline void copy_result(const geo::JointContacts& from, cj_result& to) {
-  to.scenario = code_of(from.scenario);
-  to.aligned = from.aligned ? 1 : 0;
-  to.contact_count = from.contact_count;
-  to.certificate = certificate_of(from.certificate);
-  for (int k = 0; k < from.contact_count; ++k) copy_contact(from.contacts[k], to.contacts[k]);
-}
+/// overload writes them; the contacts after them are left alone, and so are the reserved members.
+inline void copy_result(const geo::JointContacts& from, cj_result& to) { copy_value(from, to); }
 
 /// The kernel queries' answers; the reserved members are zero.
 inline cj_circle_plane_result circle_plane_result_of(const geo::CirclePlaneIntersection& found) {
