@@ -3,7 +3,17 @@
 
 #include <cstdio>
 #include <string_view>
+#include <tuple>
 #include <type_traits>
+#include <utility>
+
+// The field lists (result_fields.hpp), where the revision has them: a field of Contact's list this
+// file does not print by name is printed through them (append_later_fields). compare-answers.sh
+// also builds this file against revisions from before the lists.
+#if __has_include("clearjoint/geometry/model/field_lists.hpp")
+#include "clearjoint/geometry/model/field_lists.hpp"
+#define CLEARJOINT_ANSWER_TEXT_FIELD_LISTS 1
+#endif
 
 namespace clearjoint::bench {
 namespace {
@@ -78,6 +88,55 @@ void append_contact_errors(std::string& line, const ContactType& contact) {
   }
 }
 
+#ifdef CLEARJOINT_ANSWER_TEXT_FIELD_LISTS
+// The keys of the fields append_contact prints by name.
+constexpr std::string_view kContactKeysByName[] = {
+    "type", "base", "point_journal", "point_bearing", "normal", "depth", "point_journal_error",
+    "point_bearing_error", "depth_error", "crossings", "certificate"};
+
+constexpr bool printed_by_name(std::string_view key) {
+  for (std::string_view k : kContactKeysByName) {
+    if (k == key) return true;
+  }
+  return false;
+}
+
+void append_value(std::string& line, double value) { append_number(line, value); }
+void append_value(std::string& line, geo::ErrorBound<const double> bound) { append_number(line, bound.value); }
+void append_value(std::string& line, const geo::Vector3& value) { append_vector(line, value); }
+void append_value(std::string& line, int value) { line += ' ' + std::to_string(value); }
+void append_value(std::string& line, bool value) { line += value ? " 1" : " 0"; }
+template <class E>
+  requires std::is_enum_v<E>
+void append_value(std::string& line, E value) {
+  line += ' ' + std::to_string(static_cast<int>(value));
+}
+
+template <class ContactType, std::size_t I>
+void append_if_later(std::string& line, const ContactType& contact) {
+  constexpr const auto& field = std::get<I>(geo::ResultFields<ContactType>::fields);
+  if constexpr (!printed_by_name(field.key)) {
+    line += ' ';
+    line += field.key;
+    append_value(line, field.view(contact));
+  }
+}
+#endif
+
+// " <key> <value>" for each field of Contact's list beyond those printed by name: a field added
+// to the list shows with no edit here. Nothing for revisions without the lists.
+template <class ContactType>
+void append_later_fields([[maybe_unused]] std::string& line, [[maybe_unused]] const ContactType& contact) {
+#ifdef CLEARJOINT_ANSWER_TEXT_FIELD_LISTS
+  if constexpr (requires { geo::ResultFields<ContactType>::fields; }) {
+    constexpr std::size_t count = std::tuple_size_v<std::remove_cvref_t<decltype(geo::ResultFields<ContactType>::fields)>>;
+    [&]<std::size_t... I>(std::index_sequence<I...>) {
+      (append_if_later<ContactType, I>(line, contact), ...);
+    }(std::make_index_sequence<count>{});
+  }
+#endif
+}
+
 void append_contact(std::string& line, const geo::Contact& contact) {
   line += " |";
   append_tagged(line, "t", static_cast<int>(contact.type));
@@ -90,6 +149,7 @@ void append_contact(std::string& line, const geo::Contact& contact) {
   append_tagged(line, "nc", contact.crossing_count);
   for (int k = 0; k < contact.crossing_count; ++k) append_crossing(line, contact.crossings[k]);
   append_certificate(line, contact.certificate);
+  append_later_fields(line, contact);
 }
 
 }  // namespace

@@ -213,8 +213,9 @@ TEST(AnswerText, EntriesPastTheCountsDoNotShow) {
 }
 
 // Against the library's field lists (result_fields.hpp): a field added to a result that the
-// text leaves out fails here, named. (answer_text.cpp itself is written field by field, not
-// through the lists: compare-answers.sh builds it against revisions that have no lists.)
+// text leaves out fails here, named. (answer_text.cpp prints the fields it had before the lists
+// by name, as compare-answers.sh builds it against revisions that have no lists; a field Contact's
+// list gains later is printed through the list, after the contact's certificate.)
 template <class Answer>
 void expect_every_listed_field_shows() {
   const auto base = geo::result_with_every_field_set<Answer>();
