@@ -5,7 +5,9 @@
 Ideal joints: slider_crank_planar_ideal.json, slider_crank_spatial_ideal.json.
 With the revolute clearance joint (Table 2): slider_crank_planar_clearance_aligned.json,
 slider_crank_planar_clearance_misaligned.json (rod turned 0.2 degrees about its own axis),
-slider_crank_spatial_clearance.json; and the base model of the clearance studies of Sec. 6.2,
+slider_crank_spatial_clearance.json. With the pin-in-hole joint of the same clearances (issue 48):
+slider_crank_planar_clearance_pin_in_hole.json and slider_crank_spatial_pin_in_hole_misaligned.json
+(the pin tilted in the ground, so that the crank's hole meets it at its edges); and the base model of the clearance studies of Sec. 6.2,
 reproduction/models/slider_crank_spatial_clearance_study.json (cr = ca = 0.1 mm, the slider's
 outputs only: the studies in reproduction/studies/ set the journal's radius and length of each
 point, radial and axial clearance 0.05, 0.1, 0.3, 0.5 mm, when they run).
@@ -184,6 +186,27 @@ def clearance_joint(name, bearing_body, bearing_point, journal_body, journal_poi
             "detection": {"parallel_angle_tolerance": 0.0}}
 
 
+# The pin's heads: washers of 1.5 times the hole's radius, a common washer-to-bore ratio; their
+# faces stand ca beyond the link's faces, so the axial play is the paper's ca.
+HEAD_RADIUS_OVER_HOLE = 1.5
+
+
+def pin_in_hole_joint(name, hole_body, hole_point, pin_body, pin_point, axis_hole, axis_pin,
+                      radial_clearance=1e-4, axial_clearance=1e-4):
+    """The joint of clearance_joint() as a pin through a hole (docs/dynamics.md): the hole is the
+    bearing (Rh = Ri, L = Li), the pin the journal (Rp = Rh - cr) with a head on each side."""
+    joint = clearance_joint(name, hole_body, hole_point, pin_body, pin_point, axis_hole, axis_pin,
+                            radial_clearance, axial_clearance)
+    hole, journal = joint.pop("bearing"), joint.pop("journal")
+    head = {"position": hole["length"] / 2 + axial_clearance,
+            "outer_radius": HEAD_RADIUS_OVER_HOLE * hole["radius"]}
+    pin = {key: journal[key] for key in ("body", "point", "axis", "radius")}
+    pin["stops"] = [head, dict(head, position=-head["position"])]
+    return dict({"type": joint.pop("type"), "name": joint.pop("name"), "geometry": "pin_in_hole",
+                 "comment": "paper Table 2 clearances: Rp = Rh - cr, heads' faces ca beyond the link's faces",
+                 "hole": hole, "pin": pin}, **{k: v for k, v in joint.items() if k != "comment"})
+
+
 def planar_clearance(misalignment_degrees):
     """Sec. 6.1 with the clearance joint between the rod (journal) and the slider (bearing)."""
     L1, L2 = 0.1524, 0.3048
@@ -268,6 +291,48 @@ def planar_lubricated():
     return model
 
 
+def planar_pin_in_hole():
+    """Sec. 6.1 aligned with the rod-slider joint a pin (in the rod) through a hole (in the slider)."""
+    model = planar_clearance(0.0)
+    model["name"] = ("slider-crank with planar motion and a pin-in-hole clearance joint rod-slider, aligned "
+                     "(Marques et al. 2017, Sec. 6.1, Tables 1-2; pin-in-hole joint: issue 48)")
+    model["notes"] = (
+        "slider_crank_planar_clearance_aligned.json with its clearance joint built as a pin through a hole "
+        "(docs/dynamics.md, The pin-in-hole geometry): the hole (Rh = 10 mm, 20 mm long) in the slider, "
+        "the pin (Rp = 9.9 mm) in the rod with a head on each side whose face stands 0.1 mm beyond the "
+        "link's face (outer radius 15 mm): the same radial and axial clearances, 0.1 mm. Same force laws "
+        "and friction. Paper model notes: " + model["notes"])
+    old = model["forces"][0]
+    model["forces"] = [pin_in_hole_joint("rod-slider pin", old["bearing"]["body"], old["bearing"]["point"],
+                                         old["journal"]["body"], old["journal"]["point"],
+                                         old["bearing"]["axis"], old["journal"]["axis"])]
+    return model
+
+
+# The pin's tilt in the spatial pin-in-hole model: 0.3 degrees, below the 2 cr / L = 0.01 rad
+# (0.57 degrees) at which a centred pin would touch both edges of the hole, so that it starts free.
+PIN_TILT_DEGREES = 0.3
+
+
+def spatial_pin_in_hole_misaligned():
+    """Sec. 6.2 with the ground-crank joint a pin (in the ground, tilted) through a hole (in the crank)."""
+    model = spatial_clearance()
+    tilt = math.radians(PIN_TILT_DEGREES)
+    model["name"] = ("slider-crank with spatial motion and a misaligned pin-in-hole clearance joint "
+                     "ground-crank (Marques et al. 2017, Sec. 6.2, Tables 2-3; pin-in-hole joint: issue 48)")
+    model["notes"] = (
+        "slider_crank_spatial_clearance.json with its clearance joint built as a pin through a hole "
+        "(docs/dynamics.md, The pin-in-hole geometry): the hole (Rh = 10 mm, 20 mm long) in the crank, the "
+        "pin (Rp = 9.9 mm, heads 0.1 mm beyond the link's faces) in the ground, its axis tilted %g degrees "
+        "from y about x, so that the hole meets it at its edges (scenarios one_edge, both_edges_*). Paper "
+        "model notes: " % PIN_TILT_DEGREES + model["notes"])
+    old = model["forces"][0]
+    model["forces"] = [pin_in_hole_joint("ground-crank pin", old["bearing"]["body"], old["bearing"]["point"],
+                                         old["journal"]["body"], old["journal"]["point"], old["bearing"]["axis"],
+                                         [0.0, math.cos(tilt), math.sin(tilt)])]
+    return model
+
+
 def spatial_clearance(radial_clearance=1e-4, axial_clearance=1e-4, study=False):
     """Sec. 6.2 with the clearance joint between the ground (journal) and the crank (bearing)."""
     model = spatial()
@@ -316,7 +381,9 @@ def model_files():
         ("slider_crank_planar_clearance_aligned.json", planar_clearance(0.0)),
         ("slider_crank_planar_clearance_misaligned.json", planar_clearance(0.2)),
         ("slider_crank_planar_clearance_lubricated.json", planar_lubricated()),
-        ("slider_crank_spatial_clearance.json", spatial_clearance()))}
+        ("slider_crank_spatial_clearance.json", spatial_clearance()),
+        ("slider_crank_planar_clearance_pin_in_hole.json", planar_pin_in_hole()),
+        ("slider_crank_spatial_pin_in_hole_misaligned.json", spatial_pin_in_hole_misaligned()))}
     files[os.path.join("reproduction", "models", "slider_crank_spatial_clearance_study.json")] = \
         spatial_clearance(study=True)
     return files

@@ -87,7 +87,25 @@ def add_table2_joint(m, name, bearing, journal, lubrication=None):
         lubrication=lubrication)
 
 
-def planar_model(texts, rod=None, clearance=False, lubrication=None):
+PIN_COMMENT = "paper Table 2 clearances: Rp = Rh - cr, heads' faces ca beyond the link's faces"
+
+
+def add_table2_pin(m, name, hole, pin):
+    """add_table2_joint's joint as a pin through a hole: Rh = 10 mm, L = 20 mm, Rp = 9.9 mm, heads
+    of radius 15 mm whose faces stand 0.1 mm beyond the link's faces."""
+    head = 0.02 / 2 + 1e-4
+    m.add_clearance_revolute(
+        name, comment=PIN_COMMENT, geometry="pin_in_hole",
+        hole=dict(hole, radius=0.01, length=0.02),
+        pin=dict(pin, radius=0.0099, stops=[dict(position=head, outer_radius=1.5 * 0.01),
+                                            dict(position=-head, outer_radius=1.5 * 0.01)]),
+        normal_force=dict(model="lankarani_nikravesh", stiffness=1e11, exponent=1.5, restitution=0.9,
+                          minimum_impact_speed=1e-3),
+        friction=dict(coefficient=0.1, velocity_coefficient=1000.0),
+        detection=dict(parallel_angle_tolerance=0.0))
+
+
+def planar_model(texts, rod=None, clearance=False, lubrication=None, pin_in_hole=False):
     """Sec. 6.1: crank about +z in the x-y plane, slider along x, top dead centre."""
     m = clearjoint.Model(texts["name"], gravity=[0.0, -9.81, 0.0], notes=texts["notes"])
     m.add_body("crank", mass=0.15, inertia=[0.002, 0.002, 0.002], position=[L1 / 2, 0.0, 0.0],
@@ -109,8 +127,12 @@ def planar_model(texts, rod=None, clearance=False, lubrication=None):
     m.add_translational("slider-ground", "ground", "slider", point_i=ORIGIN, point_j=ORIGIN,
                         axis_i=X, axis_j=X)
     if clearance:
-        add_table2_joint(m, "rod-slider clearance", dict(body="slider", point=ORIGIN, axis=Z),
-                         dict(body="rod", point=[0.0, L2 / 2, 0.0], axis=Z), lubrication)
+        if pin_in_hole:
+            add_table2_pin(m, "rod-slider pin", dict(body="slider", point=ORIGIN, axis=Z),
+                           dict(body="rod", point=[0.0, L2 / 2, 0.0], axis=Z))
+        else:
+            add_table2_joint(m, "rod-slider clearance", dict(body="slider", point=ORIGIN, axis=Z),
+                             dict(body="rod", point=[0.0, L2 / 2, 0.0], axis=Z), lubrication)
         m.set_initial_conditions(comment="crank pose and angular velocity held; the other guesses "
                                          "already satisfy the joints")
     else:
@@ -137,7 +159,7 @@ OIL = dict(comment="ISO VG 46 oil at 40 C; see make_slider_crank_models.py", vis
            transition_width=2e-6)
 
 
-def spatial_model(texts, clearance=False):
+def spatial_model(texts, clearance=False, pin_tilt_degrees=None):
     """Sec. 6.2: crank about +y, vertical at the start; slider along x on a guide offset in y."""
     m = clearjoint.Model(texts["name"], gravity=[0.0, 0.0, -9.81], notes=texts["notes"])
     m.add_body("crank", mass=0.12, inertia=[1e-4, 1e-4, 1e-5], position=[0.0, 0.0, LC / 2],
@@ -157,9 +179,15 @@ def spatial_model(texts, clearance=False):
     m.add_translational("slider-ground", "ground", "slider", point_i=[0.0, OFFSET, 0.0], point_j=ORIGIN,
                         axis_i=X, axis_j=X)
     m.hold_position("crank")  # all six components
-    if clearance:
+    if clearance and pin_tilt_degrees is not None:
+        # The pin in the ground tilted from y about x.
+        tilt = math.radians(pin_tilt_degrees)
+        add_table2_pin(m, "ground-crank pin", dict(body="crank", point=[0.0, 0.0, -LC / 2], axis=Y),
+                       dict(body="ground", point=ORIGIN, axis=[0.0, math.cos(tilt), math.sin(tilt)]))
+    elif clearance:
         add_table2_joint(m, "ground-crank clearance", dict(body="crank", point=[0.0, 0.0, -LC / 2], axis=Y),
                          dict(body="ground", point=ORIGIN, axis=Y))
+    if clearance:
         m.set_initial_conditions(
             comment="crank vertical, centred on the journal, 2 pi rad/s about +y: v = w x r = (2 pi 0.05, 0, 0)",
             hold_positions=[dict(body="crank", components=ALL_SIX)],
@@ -183,6 +211,10 @@ BUILT = {
                                                                             lubrication=OIL),
     "slider_crank_spatial_ideal.json": lambda t: spatial_model(t),
     "slider_crank_spatial_clearance.json": lambda t: spatial_model(t, clearance=True),
+    "slider_crank_planar_clearance_pin_in_hole.json": lambda t: planar_model(t, ROD_ALIGNED, clearance=True,
+                                                                             pin_in_hole=True),
+    "slider_crank_spatial_pin_in_hole_misaligned.json": lambda t: spatial_model(t, clearance=True,
+                                                                                pin_tilt_degrees=0.3),
 }
 
 
@@ -258,6 +290,7 @@ def schema_fields():
     fields = {"model": top, "body": defs["body"]["properties"], "joint": defs["joint"]["properties"],
               "point_load": forces["point_load"], "spring_damper": forces["spring_damper"],
               "clearance_revolute": clearance, "clearance_part": defs["clearance_part"]["properties"],
+              "pin": defs["pin"]["properties"], "stops": defs["pin"]["properties"]["stops"]["items"]["properties"],
               "initial_conditions": top["initial_conditions"]["properties"],
               "hold_positions": top["initial_conditions"]["properties"]["hold_positions"]["items"]["properties"],
               "hold_velocities": top["initial_conditions"]["properties"]["hold_velocities"]["items"]["properties"],
@@ -282,10 +315,16 @@ def used_fields(d):
     for force in d["forces"]:
         add(force["type"], force)
         if force["type"] == "clearance_revolute":
-            for part in ("bearing", "journal"):
-                add("clearance_part", force[part])
+            for part in ("bearing", "journal", "hole"):
+                if part in force:
+                    add("clearance_part", force[part])
+            if "pin" in force:
+                add("pin", force["pin"])
+                for stop in force["pin"]["stops"]:
+                    add("stops", stop)
             for nested in ("normal_force", "friction", "detection", "lubrication"):
-                add(nested, force[nested])
+                if nested in force:
+                    add(nested, force[nested])
     for kind in ("initial_conditions", "solver", "output"):
         add(kind, d[kind])
     for kind in ("hold_positions", "hold_velocities"):
@@ -311,6 +350,13 @@ def every_field_model():
                         stiffness=10.0, damping=0.1, free_length=0.55, comment="c", notes="n")
     m.add_point_load("push", "arm", point=[0.0, -0.2, 0.0], force=[0.1, 0.0, 0.0],
                      moment=[0.0, 0.0, 0.01], comment="c", notes="n")
+    # A pin of the wheel through a hole in the block: the pin-in-hole geometry's fields.
+    m.add_clearance_revolute(
+        "wheel pin clearance", geometry="pin_in_hole",
+        hole=dict(body="block", point=[-0.5, 0.0, 0.0], axis=Z, radius=0.01, length=0.02),
+        pin=dict(body="wheel", point=ORIGIN, axis=Z, radius=0.0099, comment="c", notes="n",
+                 stops=[dict(position=0.0101, outer_radius=0.015, comment="c", notes="n")]),
+        normal_force=dict(model="hertz", stiffness=1e10))
     m.add_clearance_revolute(
         "pivot", comment="c", notes="n",
         bearing=dict(body="arm", point=[0.0, 0.2, 0.0], axis=Z, radius=0.01, length=0.02, comment="c",

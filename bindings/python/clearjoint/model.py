@@ -182,8 +182,12 @@ _LUBRICATION: _Spec = {"viscosity": _number, "cavitation": _text, "method": _tex
                        "groove_direction": _VECTOR3,
                        "supply_pressure": _number, "film_thickness_limit": _number,
                        "transition_width": _number}
-_CLEARANCE_REVOLUTE: _Spec = {"type": _text, "name": _text, "bearing": _object(_CLEARANCE_PART),
-                              "journal": _object(_CLEARANCE_PART),
+# The pin of a pin-in-hole joint ("geometry": "pin_in_hole"); its hole is a _CLEARANCE_PART.
+_PIN: _Spec = {"body": _text, "point": _VECTOR3, "axis": _VECTOR3, "radius": _number,
+               "stops": _list_of({"position": _number, "outer_radius": _number}, ("position", "outer_radius"))}
+_CLEARANCE_REVOLUTE: _Spec = {"type": _text, "name": _text, "geometry": _text,
+                              "bearing": _object(_CLEARANCE_PART), "journal": _object(_CLEARANCE_PART),
+                              "hole": _object(_CLEARANCE_PART), "pin": _object(_PIN),
                               "normal_force": _object(_NORMAL_FORCE), "friction": _object(_FRICTION),
                               "detection": _object(_DETECTION), "lubrication": _object(_LUBRICATION)}
 
@@ -422,8 +426,12 @@ class Model:
             **_given(comment=comment, notes=notes)),
             ("type", "name", "body_i", "body_j", "stiffness", "free_length"))
 
-    def add_clearance_revolute(self, name: str, *, bearing: Mapping[str, Any],
-                               journal: Mapping[str, Any], normal_force: Mapping[str, Any],
+    def add_clearance_revolute(self, name: str, *, normal_force: Mapping[str, Any],
+                               bearing: Optional[Mapping[str, Any]] = None,
+                               journal: Optional[Mapping[str, Any]] = None,
+                               geometry: Optional[str] = None,
+                               hole: Optional[Mapping[str, Any]] = None,
+                               pin: Optional[Mapping[str, Any]] = None,
                                friction: Optional[Mapping[str, Any]] = None,
                                detection: Optional[Mapping[str, Any]] = None,
                                lubrication: Optional[Mapping[str, Any]] = None,
@@ -433,6 +441,9 @@ class Model:
 
         - ``bearing``, ``journal``: ``body``, ``point``, ``axis`` (body frame), ``radius``,
           ``length``;
+        - or, with ``geometry="pin_in_hole"`` (docs/dynamics.md), ``hole``: ``body``, ``point``,
+          ``axis``, ``radius``, ``length`` and ``pin``: ``body``, ``point``, ``axis``, ``radius``,
+          ``stops`` (a list of 0-2 dicts of ``position``, ``outer_radius``);
         - ``normal_force``: ``model`` (hertz, lankarani_nikravesh, hunt_crossley, flores),
           ``stiffness``, ``exponent``, ``restitution``, ``minimum_impact_speed``;
         - ``friction`` (absent: frictionless): ``coefficient``, ``velocity_coefficient``;
@@ -441,12 +452,13 @@ class Model:
           ``transition_width``, ``method``, ``cavitation``, ``grid``, ``allow_large_grid``,
           ``groove_direction``, ``supply_pressure`` (docs/lubrication.md).
         """
+        parts = ("hole", "pin") if geometry == "pin_in_hole" else ("bearing", "journal")
         return self._append("forces", _CLEARANCE_REVOLUTE, dict(
-            type="clearance_revolute", name=name, bearing=bearing, journal=journal,
-            normal_force=normal_force,
-            **_given(friction=friction, detection=detection, lubrication=lubrication,
+            type="clearance_revolute", name=name, normal_force=normal_force,
+            **_given(geometry=geometry, bearing=bearing, journal=journal, hole=hole, pin=pin,
+                     friction=friction, detection=detection, lubrication=lubrication,
                      comment=comment, notes=notes)),
-            ("type", "name", "bearing", "journal", "normal_force"))
+            ("type", "name") + parts + ("normal_force",))
 
     # --- Initial conditions, solver and output.
 
