@@ -30,6 +30,7 @@ import textwrap
 
 from c_copies import MEMBERS_FILE, member_tables
 from c_structs import struct_projections
+from equivalence_lines import CONTACT_LINE_FILE, writer_lines
 import schema_results
 
 # The enums of the C API, in the header's order: C++ type, C type, constant prefix, comment.
@@ -202,6 +203,8 @@ def projections(root, description):
         region(C_HEADER, f"{c_name} members", c_lines)
         region(FORTRAN_MODULE, f"{c_name} components", fortran_lines)
     region(MEMBERS_FILE, "c members", member_tables(description["results"]))
+    for name, lines in writer_lines(description["results"]).items():
+        region(CONTACT_LINE_FILE, name, lines)
     region(PY_STUB, "enums", py_enums(tables))
     region(PY_STUB, "results", py_results(description["results"]))
     for path in sorted({path for path, _, _ in SCHEMA_ENUMS}):

@@ -60,6 +60,8 @@ MARKED = {
     "bindings/fortran/clearjoint.f90": "! BEGIN GENERATED enums\n! END GENERATED enums\n"
         "! BEGIN GENERATED cj_contact components\n! END GENERATED cj_contact components\n",
     "bindings/c/src/c_members.hpp": "// BEGIN GENERATED c members\n// END GENERATED c members\n",
+    "tests/bindings/equivalence/contact_line.h":
+        "/* BEGIN GENERATED Contact fields */\n/* END GENERATED Contact fields */\n",
     "bindings/python/clearjoint/__init__.pyi":
         "# BEGIN GENERATED enums\n# END GENERATED enums\n# BEGIN GENERATED results\n# END GENERATED results\n",
 }
@@ -161,6 +163,16 @@ class GenerateProjections(unittest.TestCase):
         self.assertEqual(check.returncode, 1)
         self.assertIn("+      &cj_contact::trial};", check.stdout)
         self.assertIn("bindings/c/src/c_members.hpp", check.stdout.split("stale:")[1])
+
+    def test_a_field_added_to_a_result_is_written_by_the_c_equivalence_writer_after_the_certificate(self):
+        self.run_generator("--write")
+        grown = description()
+        grown["results"][0]["fields"].append({"key": "trial", "doc": "", "kind": "plain", "value": "float"})
+        self.set_description(grown)
+        check = self.run_generator("--check")
+        self.assertIn('  if (with_text) add(line, " \\"%s\\"", c->certificate.reason_text);\n'
+                      '+  add_hex(line, c->trial);', check.stdout)
+        self.assertIn("tests/bindings/equivalence/contact_line.h", check.stdout.split("stale:")[1])
 
     def test_a_field_added_to_a_result_takes_the_room_of_its_reserved_members(self):
         self.run_generator("--write")

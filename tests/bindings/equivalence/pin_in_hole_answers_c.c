@@ -11,57 +11,18 @@
 #include <string.h>
 
 #include "clearjoint/clearjoint.h"
+#include "contact_line.h"
 
 #define RECORD 23
-#define LINE_CAPACITY 8192
-
-/* Append printf-formatted text to `line` (capacity LINE_CAPACITY). */
-static void add(char* line, const char* format, ...) {
-  va_list args;
-  const size_t used = strlen(line);
-  va_start(args, format);
-  vsnprintf(line + used, LINE_CAPACITY - used, format, args);
-  va_end(args);
-}
-
-static void add_hex(char* line, double x) {
-  uint64_t bits;
-  memcpy(&bits, &x, sizeof bits);
-  add(line, " %016llX", (unsigned long long)bits);
-}
-
-static void add_vector(char* line, const double v[3]) {
-  add_hex(line, v[0]);
-  add_hex(line, v[1]);
-  add_hex(line, v[2]);
-}
 
 /* One answer line (README.md), with reason texts. */
 static void format_result(char* line, size_t index, const cj_pin_in_hole_result* r) {
-  int k, m;
+  int k;
   line[0] = '\0';
   add(line, "S %zu ok %d %d %d %d \"%s\" %d", index, r->scenario, r->aligned, r->certificate.level,
       r->certificate.reason, r->certificate.reason_text, r->contact_count);
   for (k = 0; k < r->contact_count; ++k) {
-    const cj_contact* c = &r->contacts[k];
-    add(line, " | %d %d", c->type, c->base);
-    add_hex(line, c->depth);
-    add_vector(line, c->p_WCj);
-    add_vector(line, c->p_WCi);
-    add_vector(line, c->normal_W);
-    add_hex(line, c->depth_error_bound);
-    add_hex(line, c->p_WCj_error_bound);
-    add_hex(line, c->p_WCi_error_bound);
-    add(line, " %d", c->crossing_count);
-    for (m = 0; m < c->crossing_count; ++m) {
-      const cj_crossing* x = &c->crossings[m];
-      add_hex(line, x->angle);
-      add_hex(line, x->angle_error_bound);
-      add_vector(line, x->point);
-      add_hex(line, x->point_error_bound);
-      add(line, " %d", x->multiplicity);
-    }
-    add(line, " %d %d \"%s\"", c->certificate.level, c->certificate.reason, c->certificate.reason_text);
+    add_contact(line, 1, &r->contacts[k]);
   }
 }
 
