@@ -38,6 +38,10 @@ double activation_margin(const geometry::JointDimensions& d) {
 geometry::ContactScenario find_contacts(const ClearanceSite& site, int site_index, double time,
                                         const dynamics::SystemKinematics& kinematics,
                                         std::vector<UnilateralContact>& out) {
+  if (site.parameters.pin_in_hole) {
+    throw dynamics::ModelError("clearance joint '" + site.name + "': \"geometry\": \"pin_in_hole\" is not supported by "
+                               "solver.method = \"moreau_jean\" (its contacts are the paper's joint's)");
+  }
   const dynamics::BodyKinematics& bi = kinematics.body(site.bearing_body);
   const dynamics::BodyKinematics& bj = kinematics.body(site.journal_body);
   const geometry::PartPose bearing = dynamics::kernel_pose(bi, site.bearing_point_B, site.bearing_axis_B);

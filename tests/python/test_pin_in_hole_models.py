@@ -56,3 +56,13 @@ def test_the_misaligned_pin_meets_the_hole_at_its_edges(models_dir):
     assert clearjoint.PinInHoleScenario.line not in scenarios(forces)
     edge_force = np.asarray(forces["radial_a.normal_force"]) + np.asarray(forces["radial_b.normal_force"])
     assert edge_force.max() > 0.0
+
+
+def test_the_non_smooth_integrator_refuses_a_pin_in_hole_joint_naming_the_geometry(models_dir):
+    with open(models_dir / "slider_crank_planar_clearance_pin_in_hole.json") as f:
+        model = json.load(f)
+    model["solver"]["end_time"] = 0.01
+    model["solver"]["method"] = "moreau_jean"
+    with pytest.raises(ValueError, match=r"clearance joint 'rod-slider pin': \"geometry\": \"pin_in_hole\" is not "
+                                         r"supported by solver.method = \"moreau_jean\""):
+        clearjoint.simulate(model)
