@@ -38,6 +38,35 @@ cj_dimensions mex_dimensions(const mxArray* dims) {
   return d;
 }
 
+cj_pin_in_hole_dimensions mex_pin_in_hole_dimensions(const mxArray* dims) {
+  cj_pin_in_hole_dimensions d;
+  const mxArray* stops;
+  memset(&d, 0, sizeof d); /* the reserved members */
+  require_scalar_struct(dims, "dims");
+  d.hole_radius = scalar_field(dims, "dims", "hole_radius");
+  d.hole_length = scalar_field(dims, "dims", "hole_length");
+  d.pin_radius = scalar_field(dims, "dims", "pin_radius");
+  stops = mxGetField(dims, 0, "stops");
+  if (stops != NULL && !mxIsEmpty(stops)) {
+    size_t k, count = mxGetM(stops);
+    const double* values;
+    if (!mxIsDouble(stops) || mxIsComplex(stops) || mxIsSparse(stops) || mxGetNumberOfDimensions(stops) != 2 ||
+        mxGetN(stops) != 2 || count > CJ_MAX_AXIAL_STOPS) {
+      mexErrMsgIdAndTxt(kInvalidInput,
+                        "dims.stops: must be a real double K x 2 matrix [position, outer_radius] with K <= %d "
+                        "(%s %d x %d given)",
+                        CJ_MAX_AXIAL_STOPS, mxGetClassName(stops), (int)mxGetM(stops), (int)mxGetN(stops));
+    }
+    values = mxGetPr(stops);
+    for (k = 0; k < count; ++k) {
+      d.stops[k].position = values[k];
+      d.stops[k].outer_radius = values[k + count];
+    }
+    d.stop_count = (int32_t)count;
+  }
+  return d;
+}
+
 cj_pose_array mex_poses(const mxArray* poses, const char* name, size_t* rows) {
   if (!mxIsDouble(poses) || mxIsComplex(poses) || mxIsSparse(poses) ||
       mxGetNumberOfDimensions(poses) != 2 || mxGetN(poses) != 6 || mxGetM(poses) == 0) {

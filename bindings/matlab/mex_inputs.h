@@ -12,6 +12,11 @@
  * journal_length. The values themselves are the C API's to check. */
 cj_dimensions mex_dimensions(const mxArray* dims);
 
+/* dims: a struct with the scalar double fields hole_radius, hole_length, pin_radius and an
+ * optional field stops, a K x 2 real double matrix [position, outer_radius] with K <= 2 (absent or
+ * empty: a free sliding pin). The values themselves are the C API's to check. */
+cj_pin_in_hole_dimensions mex_pin_in_hole_dimensions(const mxArray* dims);
+
 /* An N x 6 real double matrix [p_WP, axis_W] (one pose per row), read in place: MATLAB stores it
  * column-major, which cj_pose_array_columns() describes. *rows receives N. */
 cj_pose_array mex_poses(const mxArray* poses, const char* name, size_t* rows);

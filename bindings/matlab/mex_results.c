@@ -45,12 +45,12 @@ static mxArray* crossings(const cj_contact* c) {
   return out;
 }
 
-static mxArray* contacts(const cj_result* r) {
+static mxArray* contacts(int contact_count, const cj_contact* all) {
   int k;
-  mxArray* out = mxCreateStructMatrix((mwSize)r->contact_count, 1, COUNT_OF(kContactFields),
+  mxArray* out = mxCreateStructMatrix((mwSize)contact_count, 1, COUNT_OF(kContactFields),
                                       (const char**)kContactFields);
-  for (k = 0; k < r->contact_count; ++k) {
-    const cj_contact* c = &r->contacts[k];
+  for (k = 0; k < contact_count; ++k) {
+    const cj_contact* c = &all[k];
     mxSetFieldByNumber(out, k, 0, mxCreateString(cj_contact_type_string(c->type)));
     mxSetFieldByNumber(out, k, 1, mxCreateString(cj_base_string(c->base)));
     mxSetFieldByNumber(out, k, 2, mxCreateDoubleScalar(c->depth));
@@ -70,12 +70,25 @@ mxArray* mex_create_results(size_t count) {
   return mxCreateStructMatrix((mwSize)count, 1, COUNT_OF(kResultFields), (const char**)kResultFields);
 }
 
-void mex_set_result(mxArray* results, size_t index, const cj_result* r) {
+/* The fields every answer has; `scenario` is the scenario's key. */
+static void set_fields(mxArray* results, size_t index, const char* scenario, int32_t scenario_code,
+                       int32_t aligned, const cj_certificate* c, int32_t contact_count,
+                       const cj_contact* all) {
   const mwIndex i = (mwIndex)index;
-  mxSetFieldByNumber(results, i, 0, mxCreateString(cj_scenario_string(r->scenario)));
-  mxSetFieldByNumber(results, i, 1, mxCreateDoubleScalar(r->scenario));
-  mxSetFieldByNumber(results, i, 2, mxCreateLogicalScalar(r->aligned != 0));
-  mxSetFieldByNumber(results, i, 3, certificate(&r->certificate));
-  mxSetFieldByNumber(results, i, 4, mxCreateDoubleScalar(r->contact_count));
-  mxSetFieldByNumber(results, i, 5, contacts(r));
+  mxSetFieldByNumber(results, i, 0, mxCreateString(scenario));
+  mxSetFieldByNumber(results, i, 1, mxCreateDoubleScalar(scenario_code));
+  mxSetFieldByNumber(results, i, 2, mxCreateLogicalScalar(aligned != 0));
+  mxSetFieldByNumber(results, i, 3, certificate(c));
+  mxSetFieldByNumber(results, i, 4, mxCreateDoubleScalar(contact_count));
+  mxSetFieldByNumber(results, i, 5, contacts(contact_count, all));
+}
+
+void mex_set_result(mxArray* results, size_t index, const cj_result* r) {
+  set_fields(results, index, cj_scenario_string(r->scenario), r->scenario, r->aligned, &r->certificate,
+             r->contact_count, r->contacts);
+}
+
+void mex_set_pin_in_hole_result(mxArray* results, size_t index, const cj_pin_in_hole_result* r) {
+  set_fields(results, index, cj_pin_in_hole_scenario_string(r->scenario), r->scenario, r->aligned,
+             &r->certificate, r->contact_count, r->contacts);
 }

@@ -23,4 +23,8 @@ mxArray* mex_create_results(size_t count);
 /* Write `result` into element `index` of an array from mex_create_results. */
 void mex_set_result(mxArray* results, size_t index, const cj_result* result);
 
+/* The same fields for a pin-in-hole answer, scenario a cj_pin_in_hole_scenario key ("none",
+ * "one_edge", ..., "beyond_model"). */
+void mex_set_pin_in_hole_result(mxArray* results, size_t index, const cj_pin_in_hole_result* result);
+
 #endif

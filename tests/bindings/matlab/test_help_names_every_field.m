@@ -1,6 +1,6 @@
 % SPDX-License-Identifier: BSD-3-Clause
-% The help texts of cj_detect and cj_detect_many (the comments-only .m files beside the MEX files)
-% name every field of the answers the MEX files give. The MEX writers are held to the library's
+% The help texts of cj_detect, cj_detect_many and cj_detect_pin_in_hole (the comments-only .m files
+% beside the MEX files) name every field of the answers the MEX files give. The MEX writers are held to the library's
 % result field lists by the equivalence test (every field must reach the Octave lines); their
 % help is a hand-written list, and this test fails naming a field it lacks.
 function test_help_names_every_field()
@@ -15,6 +15,13 @@ function test_help_names_every_field()
             fieldnames(r.contacts(1).crossings); fieldnames(r.contacts(1).certificate)];
   expect_named('cj_detect', unique(fields));
   expect_named('cj_detect_many', fieldnames(cj_detect_many(table2, [0 0 0 0 0 1], journal)));
+  % A pin tilted about the hole's centre: both edges, each with its crossings.
+  pin_dims = struct('hole_radius', 10, 'hole_length', 20, 'pin_radius', 9.9, 'stops', [-10.5 16; 10.5 16]);
+  p = cj_detect_pin_in_hole(pin_dims, [0 0 0 0 0 1], [0 0 0 0 sin(0.0125) cos(0.0125)]);
+  assert(p.contact_count == 2 && numel(p.contacts(1).crossings) == 2);
+  fields = [fieldnames(p); fieldnames(p.certificate); fieldnames(p.contacts); ...
+            fieldnames(p.contacts(1).crossings); fieldnames(p.contacts(1).certificate)];
+  expect_named('cj_detect_pin_in_hole', unique(fields));
 end
 
 function expect_named(name, fields)
