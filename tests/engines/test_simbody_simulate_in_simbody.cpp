@@ -116,6 +116,25 @@ TEST(SimulateInSimbody, WritesClearjointsTablesColumnsAndReportTimesWithAgreeing
   EXPECT_LT(largest_magnitude(energy, 6), 1e-9);  // Simbody keeps its quaternions normalised
 }
 
+TEST(SimulateInSimbody, RunsAPinInHoleJointThroughTheSameForceElementAsClearjoint) {
+  dynamics::ModelDescription model = shipped_model("slider_crank_planar_clearance_pin_in_hole.json");
+  model.solver.end_time = 0.02;  // [s]: the pin reaches its line contact and rides on it
+  model.solver.report_step = 1e-4;
+  model.solver.relative_tolerance = model.solver.absolute_tolerance = 1e-10;
+  TablesInMemory reference, simbody;
+  dynamics::simulate(model, reference);
+  simulate_in_simbody(model, simbody);
+  expect_same_tables(simbody, reference);
+  // The scenario column holds the pin-in-hole table's numbers: the line contact (4) is reached.
+  const auto& forces = table(simbody, "force_rod-slider_pin");
+  bool line = false;
+  for (size_t r = 0; r < forces.rows(); ++r) {
+    line = line || forces.values[r * forces.header.size() + 1] ==
+                       static_cast<double>(geometry::PinInHoleScenario::line);
+  }
+  EXPECT_TRUE(line);
+}
+
 TEST(SimulateInSimbody, WritesTheRowsOfEveryKthReportTimeAndTheLastAsClearjointDoes) {
   dynamics::ModelDescription model = short_planar_run();
   model.output_decimation = 3;  // 201 report times: rows 0, 3, ..., 198 and the last, 200
