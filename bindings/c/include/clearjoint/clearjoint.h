@@ -411,8 +411,9 @@ typedef struct cj_pin_in_hole_dimensions {
  * with the link (the hole) for the bearing and the pin for the journal: p_WCj on the pin, p_WCi
  * on the link, normal_W the direction the pin penetrates the link; type radial: an edge or line
  * contact, axial: a stop; base a, b: at link face A (the face the hole's axis points to) or B,
- * mid: the line contact. contacts[0, contact_count) are set; the entries after them are left as
- * they were. */
+ * mid: the line contact; crossings bound the contact's arc on the circle that bounds it (a hole
+ * edge circle or a stop's outer circle), in that circle's frame. contacts[0, contact_count) are
+ * set; the entries after them are left as they were. */
 typedef struct cj_pin_in_hole_result {
   /* BEGIN GENERATED cj_pin_in_hole_result members (the field list of PinInHoleContacts: scripts/projections) */
   int32_t scenario; /**< cj_pin_in_hole_scenario */
