@@ -446,8 +446,10 @@ class Model:
                           free_length: float, damping: Optional[float] = ...,
                           point_i: Optional[_Vector] = ..., point_j: Optional[_Vector] = ...,
                           comment: Optional[str] = ..., notes: Optional[str] = ...) -> str: ...
-    def add_clearance_revolute(self, name: str, *, bearing: _Fields, journal: _Fields,
-                               normal_force: _Fields, friction: Optional[_Fields] = ...,
+    def add_clearance_revolute(self, name: str, *, normal_force: _Fields,
+                               bearing: Optional[_Fields] = ..., journal: Optional[_Fields] = ...,
+                               geometry: Optional[str] = ..., hole: Optional[_Fields] = ...,
+                               pin: Optional[_Fields] = ..., friction: Optional[_Fields] = ...,
                                detection: Optional[_Fields] = ..., lubrication: Optional[_Fields] = ...,
                                comment: Optional[str] = ..., notes: Optional[str] = ...) -> str: ...
     def set_initial_conditions(self, *, hold_positions: Optional[Sequence[_Fields]] = ...,
