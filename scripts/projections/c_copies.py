@@ -25,17 +25,29 @@ def _c_names(layout):
     return names, counts
 
 
+def _abi_order(layout, keys):
+    """The field keys in the C struct's order: the layout's fields, then those it does not name
+    (placed in the reserved room in the list's order, as c_structs.py places them)."""
+    named = [entry[1] for entry in layout if entry[0] == "field"]
+    return [key for key in named if key in keys] + [key for key in keys if key not in named]
+
+
 def member_tables(results):
-    """The lines of a CMembers specialisation for every laid-out result the description has."""
+    """The lines of a CMembers specialisation for every laid-out result the description has: the C
+    members in the struct's order (so that the copy writes the struct front to back), with the
+    place of each one's field in the field list."""
     described = {result["type"]: result for result in results}
     lines = []
     for result_type, c_struct, layout in LAYOUTS:
         if result_type not in described:
             continue
         names, counts = _c_names(layout)
+        fields = described[result_type]["fields"]
+        place = {field["key"]: i for i, field in enumerate(fields)}
         entries = []
-        for field in described[result_type]["fields"]:
-            key = field["key"]
+        order = _abi_order(layout, [field["key"] for field in fields])
+        for key in order:
+            field = fields[place[key]]
             c_name = names.get(key, key)  # a field added later is named by its key (c_structs.py)
             if field["kind"] == "list":
                 if key not in counts:
@@ -45,6 +57,7 @@ def member_tables(results):
             else:
                 entries.append(f"&{c_struct}::{c_name}")
         lines += ["template <>", f"struct CMembers<geometry::{result_type}> {{", f"  using type = {c_struct};",
+                  f"  static constexpr std::size_t fields[] = {{{', '.join(str(place[key]) for key in order)}}};",
                   "  static constexpr std::tuple members{"]
         lines += [f"      {entry}," for entry in entries[:-1]] + [f"      {entries[-1]}}};", "};"]
     return lines

@@ -146,13 +146,14 @@ class GenerateProjections(unittest.TestCase):
                       "  double reserved[4];", header)
         self.assertIn("real(c_double) :: p_WCj(3)", self.read("bindings/fortran/clearjoint.f90"))
 
-    def test_the_c_members_follow_the_field_list_order_with_the_c_names(self):
+    def test_the_c_members_follow_the_abi_order_with_the_c_names_and_their_fields_places(self):
         self.assertEqual(self.run_generator("--write").returncode, 0)
         members = self.read("bindings/c/src/c_members.hpp")
         self.assertIn("struct CMembers<geometry::Contact> {\n  using type = cj_contact;\n"
-                      "  static constexpr std::tuple members{\n      &cj_contact::depth,\n"
-                      "      Whole{&cj_contact::crossings, &cj_contact::crossing_count},\n"
-                      "      &cj_contact::p_WCj,", members)
+                      "  static constexpr std::size_t fields[] = {5, 6, 2, 3, 4, 0, 8, 9, 10, 1, 7};\n"
+                      "  static constexpr std::tuple members{\n      &cj_contact::type,\n"
+                      "      &cj_contact::base,\n      &cj_contact::p_WCj,", members)
+        self.assertIn("      Whole{&cj_contact::crossings, &cj_contact::crossing_count},\n", members)
 
     def test_a_field_added_to_a_result_makes_the_check_fail_on_the_c_members(self):
         self.run_generator("--write")
@@ -162,6 +163,8 @@ class GenerateProjections(unittest.TestCase):
         check = self.run_generator("--check")
         self.assertEqual(check.returncode, 1)
         self.assertIn("+      &cj_contact::trial};", check.stdout)
+        self.assertIn("+  static constexpr std::size_t fields[] = {5, 6, 2, 3, 4, 0, 8, 9, 10, 1, 7, 11};",
+                      check.stdout)
         self.assertIn("bindings/c/src/c_members.hpp", check.stdout.split("stale:")[1])
 
     def test_a_field_added_to_a_result_is_written_by_the_c_equivalence_writer_after_the_certificate(self):

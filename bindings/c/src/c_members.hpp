@@ -1,12 +1,13 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// \file
-/// The C member of each field of the results clearjoint.h mirrors, in the order of the results'
-/// field lists: CMembers<R>::members[i] is where ResultFields<R>::fields[i] goes in the C struct
-/// CMembers<R>::type. conversions.hpp copies a result by pairing the two. The block below is
+/// The C member of each field of the results clearjoint.h mirrors, in the C struct's order:
+/// CMembers<R>::members[i] is where field CMembers<R>::fields[i] of ResultFields<R>::fields goes
+/// in the C struct CMembers<R>::type. conversions.hpp copies a result by pairing the two. The block below is
 /// written from the C layouts (scripts/projections/c_copies.py, c_structs.py) by
 /// `cmake --build build --target projections`; projections.up_to_date fails while it is stale.
 
+#include <cstddef>
 #include <cstdint>
 #include <tuple>
 
@@ -39,6 +40,7 @@ struct CMembers;
 template <>
 struct CMembers<geometry::Certificate> {
   using type = cj_certificate;
+  static constexpr std::size_t fields[] = {0, 1};
   static constexpr std::tuple members{
       &cj_certificate::level,
       &cj_certificate::reason};
@@ -46,6 +48,7 @@ struct CMembers<geometry::Certificate> {
 template <>
 struct CMembers<geometry::RimCrossing> {
   using type = cj_crossing;
+  static constexpr std::size_t fields[] = {0, 1, 2, 3, 4};
   static constexpr std::tuple members{
       &cj_crossing::angle,
       &cj_crossing::angle_error_bound,
@@ -56,22 +59,24 @@ struct CMembers<geometry::RimCrossing> {
 template <>
 struct CMembers<geometry::Contact> {
   using type = cj_contact;
+  static constexpr std::size_t fields[] = {0, 1, 4, 5, 8, 2, 3, 6, 7, 9, 10};
   static constexpr std::tuple members{
       &cj_contact::type,
       &cj_contact::base,
-      &cj_contact::depth,
-      &cj_contact::depth_error_bound,
       &cj_contact::p_WCj,
       &cj_contact::p_WCi,
+      &cj_contact::normal_W,
+      &cj_contact::depth,
+      &cj_contact::depth_error_bound,
       &cj_contact::p_WCj_error_bound,
       &cj_contact::p_WCi_error_bound,
-      &cj_contact::normal_W,
       Whole{&cj_contact::crossings, &cj_contact::crossing_count},
       &cj_contact::certificate};
 };
 template <>
 struct CMembers<geometry::JointContacts> {
   using type = cj_result;
+  static constexpr std::size_t fields[] = {0, 1, 2, 3};
   static constexpr std::tuple members{
       &cj_result::scenario,
       &cj_result::aligned,
@@ -81,6 +86,7 @@ struct CMembers<geometry::JointContacts> {
 template <>
 struct CMembers<geometry::PinInHoleContacts> {
   using type = cj_pin_in_hole_result;
+  static constexpr std::size_t fields[] = {0, 1, 2, 3};
   static constexpr std::tuple members{
       &cj_pin_in_hole_result::scenario,
       &cj_pin_in_hole_result::aligned,

@@ -147,8 +147,8 @@ inline void copy_field(const geo::fields::List<S, A>& field, const InUse<Items, 
   for (int k = 0; k < count; ++k) copy_value((from.*field.items)[k], (to.*members.items)[k]);
 }
 
-/// Every field of a result into its C struct: the field list paired, place by place, with the C
-/// members (c_members.hpp, generated from the C layouts); the members the list does not name
+/// Every field of a result into its C struct, front to back: each C member (c_members.hpp, generated
+/// from the C layouts, in the struct's order) paired with its field of the list; the members the list does not name
 /// (padding, reserved room) are left alone (clearjoint.h: unspecified in results; writing them
 /// measured ~2 ns a call).
 template <class Result>
@@ -160,7 +160,7 @@ inline void copy_value(const Result& from, typename CMembers<Result>::type& to) 
                     std::tuple_size_v<std::remove_cvref_t<decltype(members)>>,
                 "c_members.hpp is stale: cmake --build build --target projections");
   [&]<std::size_t... I>(std::index_sequence<I...>) {
-    (copy_field(std::get<I>(fields), std::get<I>(members), from, to), ...);
+    (copy_field(std::get<CMembers<Result>::fields[I]>(fields), std::get<I>(members), from, to), ...);
   }(std::make_index_sequence<std::tuple_size_v<std::remove_cvref_t<decltype(fields)>>>{});
 }
 
