@@ -3,11 +3,19 @@
 
 static const char* const kResultFields[] = {"scenario",      "scenario_code", "aligned",
                                             "certificate",   "contact_count", "contacts"};
+/* The contacts' and crossings' fields, and the lines that set them below, are written from the
+ * field lists (scripts/projections/mex_results.py; `cmake --build build --target projections`). */
 static const char* const kContactFields[] = {
-    "type",  "base",     "depth",     "depth_error_bound", "p_WCj",     "p_WCj_error_bound",
-    "p_WCi", "p_WCi_error_bound", "normal_W", "crossings", "certificate"};
-static const char* const kCrossingFields[] = {"angle", "angle_error_bound", "point",
-                                              "point_error_bound", "multiplicity"};
+    /* BEGIN GENERATED Contact names */
+    "type", "base", "depth", "depth_error_bound", "p_WCj", "p_WCj_error_bound", "p_WCi",
+    "p_WCi_error_bound", "normal_W", "crossings", "certificate"
+    /* END GENERATED Contact names */
+};
+static const char* const kCrossingFields[] = {
+    /* BEGIN GENERATED RimCrossing names */
+    "angle", "angle_error_bound", "point", "point_error_bound", "multiplicity"
+    /* END GENERATED RimCrossing names */
+};
 static const char* const kCertificateFields[] = {"level", "level_code", "reason", "reason_code"};
 
 #define COUNT_OF(a) ((int)(sizeof(a) / sizeof((a)[0])))
@@ -36,11 +44,13 @@ static mxArray* crossings(const cj_contact* c) {
                                       (const char**)kCrossingFields);
   for (k = 0; k < c->crossing_count; ++k) {
     const cj_crossing* x = &c->crossings[k];
+    /* BEGIN GENERATED RimCrossing values */
     mxSetFieldByNumber(out, k, 0, mxCreateDoubleScalar(x->angle));
     mxSetFieldByNumber(out, k, 1, mxCreateDoubleScalar(x->angle_error_bound));
     mxSetFieldByNumber(out, k, 2, row3(x->point));
     mxSetFieldByNumber(out, k, 3, mxCreateDoubleScalar(x->point_error_bound));
     mxSetFieldByNumber(out, k, 4, mxCreateDoubleScalar(x->multiplicity));
+    /* END GENERATED RimCrossing values */
   }
   return out;
 }
@@ -51,6 +61,7 @@ static mxArray* contacts(int contact_count, const cj_contact* all) {
                                       (const char**)kContactFields);
   for (k = 0; k < contact_count; ++k) {
     const cj_contact* c = &all[k];
+    /* BEGIN GENERATED Contact values */
     mxSetFieldByNumber(out, k, 0, mxCreateString(cj_contact_type_string(c->type)));
     mxSetFieldByNumber(out, k, 1, mxCreateString(cj_base_string(c->base)));
     mxSetFieldByNumber(out, k, 2, mxCreateDoubleScalar(c->depth));
@@ -62,6 +73,7 @@ static mxArray* contacts(int contact_count, const cj_contact* all) {
     mxSetFieldByNumber(out, k, 8, row3(c->normal_W));
     mxSetFieldByNumber(out, k, 9, crossings(c));
     mxSetFieldByNumber(out, k, 10, certificate(&c->certificate));
+    /* END GENERATED Contact values */
   }
   return out;
 }

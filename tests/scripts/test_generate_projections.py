@@ -60,6 +60,8 @@ MARKED = {
     "bindings/fortran/clearjoint.f90": "! BEGIN GENERATED enums\n! END GENERATED enums\n"
         "! BEGIN GENERATED cj_contact components\n! END GENERATED cj_contact components\n",
     "bindings/c/src/c_members.hpp": "// BEGIN GENERATED c members\n// END GENERATED c members\n",
+    "bindings/matlab/mex_results.c": "/* BEGIN GENERATED Contact names */\n/* END GENERATED Contact names */\n"
+        "/* BEGIN GENERATED Contact values */\n/* END GENERATED Contact values */\n",
     "tests/bindings/equivalence/contact_line.h":
         "/* BEGIN GENERATED Contact fields */\n/* END GENERATED Contact fields */\n",
     "bindings/python/clearjoint/__init__.pyi":
@@ -176,6 +178,16 @@ class GenerateProjections(unittest.TestCase):
         self.assertIn('  if (with_text) add(line, " \\"%s\\"", c->certificate.reason_text);\n'
                       '+  add_hex(line, c->trial);', check.stdout)
         self.assertIn("tests/bindings/equivalence/contact_line.h", check.stdout.split("stale:")[1])
+
+    def test_a_field_added_to_a_result_is_set_by_the_mex_results_after_the_others(self):
+        self.run_generator("--write")
+        grown = description()
+        grown["results"][0]["fields"].append({"key": "trial", "doc": "", "kind": "plain", "value": "float"})
+        self.set_description(grown)
+        check = self.run_generator("--check")
+        self.assertIn('"crossings", "certificate", "trial"', check.stdout)
+        self.assertIn("+    mxSetFieldByNumber(out, k, 11, mxCreateDoubleScalar(c->trial));", check.stdout)
+        self.assertIn("bindings/matlab/mex_results.c", check.stdout.split("stale:")[1])
 
     def test_a_field_added_to_a_result_takes_the_room_of_its_reserved_members(self):
         self.run_generator("--write")
