@@ -260,6 +260,25 @@ TEST(SimulationRun, RefusesAJournalThatStartsBeyondItsClearanceNamingTheJointAnd
   }
 }
 
+TEST(SimulationRun, RefusesAPinThatStartsBeyondItsHolesClearanceNamingItsOwnClearance) {
+  // A pin of 9.8 mm (cr = 0.2 mm, not the paper's 0.1 mm) moved 1 mm across the hole.
+  ModelDescription model = test::shipped_model("slider_crank_planar_clearance_pin_in_hole.json");
+  auto& joint = std::get<ClearanceRevoluteDescription>(model.forces.at(0));
+  joint.parameters.pin_in_hole->pin_radius = 0.0098;
+  joint.journal.point_B.x() += 0.001;
+  try {
+    SimulationRun run(model);
+    FAIL() << "the run was planned";
+  } catch (const ModelError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("clearance joint \"rod-slider pin\" starts beyond its model (a radial penetration of "),
+              std::string::npos)
+        << message;
+    EXPECT_NE(message.find("m, deeper than the radial clearance of 0.00020000000000000052 m"), std::string::npos)
+        << message;
+  }
+}
+
 TEST(SimulationRun, AcceptsAJournalThatStartsInContactWithinItsClearance) {
   // A tenth of the clearance deep: a contact the force law describes.
   ModelDescription model = test::shipped_model("slider_crank_planar_clearance_aligned.json");
