@@ -7,7 +7,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <utility>
 #include <variant>
+#include <vector>
 
 #include "clearjoint/dynamics/errors.hpp"
 #include "clearjoint/dynamics/integrator.hpp"
@@ -197,6 +199,53 @@ TEST(SimbodyClearanceRevoluteForce, RefusesAJournalNoSmallerThanItsBearingNaming
   dynamics::ClearanceJointParameters parameters;
   parameters.dimensions.journal_radius = parameters.dimensions.bearing_radius;
   EXPECT_NE(construction_error(false, parameters).find("pin.journal.radius"), std::string::npos);
+}
+
+/// The radius and length of every DecorativeCylinder it is shown (Simbody's visitor; the
+/// downcasts are not exported).
+struct CylinderSizes final : SimTK::DecorativeGeometryImplementation {
+  std::vector<std::pair<double, double>> cylinders;
+  void implementCylinderGeometry(const SimTK::DecorativeCylinder& c) override {
+    cylinders.emplace_back(c.getRadius(), 2.0 * c.getHalfHeight());
+  }
+  void implementPointGeometry(const SimTK::DecorativePoint&) override {}
+  void implementLineGeometry(const SimTK::DecorativeLine&) override {}
+  void implementBrickGeometry(const SimTK::DecorativeBrick&) override {}
+  void implementCircleGeometry(const SimTK::DecorativeCircle&) override {}
+  void implementSphereGeometry(const SimTK::DecorativeSphere&) override {}
+  void implementEllipsoidGeometry(const SimTK::DecorativeEllipsoid&) override {}
+  void implementFrameGeometry(const SimTK::DecorativeFrame&) override {}
+  void implementTextGeometry(const SimTK::DecorativeText&) override {}
+  void implementMeshGeometry(const SimTK::DecorativeMesh&) override {}
+  void implementMeshFileGeometry(const SimTK::DecorativeMeshFile&) override {}
+  void implementTorusGeometry(const SimTK::DecorativeTorus&) override {}
+  void implementArrowGeometry(const SimTK::DecorativeArrow&) override {}
+  void implementConeGeometry(const SimTK::DecorativeCone&) override {}
+};
+
+TEST(SimbodyClearanceRevoluteForce, DrawsAPinInHoleJointsHoleAndPinAtTheirOwnSizes) {
+  SimTK::MultibodySystem system;
+  SimTK::SimbodyMatterSubsystem matter(system);
+  SimTK::GeneralForceSubsystem forces(system);
+  const SimTK::Body::Rigid body(SimTK::MassProperties(kMass, SimTK::Vec3(0.0),
+                                                      SimTK::Inertia(kInertia[0], kInertia[1], kInertia[2])));
+  SimTK::MobilizedBody::Free pin_body(matter.Ground(), body);
+  dynamics::ClearanceJointParameters parameters;
+  geometry::PinInHoleDimensions& d = parameters.pin_in_hole.emplace();
+  d.hole_radius = 0.010;
+  d.hole_length = 0.020;
+  d.pin_radius = 0.0098;  // not Table 2's journal
+  d.stops = {geometry::AxialStop{0.0125, 0.015}, geometry::AxialStop{-0.011, 0.015}};
+  d.stop_count = 2;
+  ClearanceRevoluteForce clearance(system, forces, "pin", {matter.Ground(), SimTK::Vec3(0.0), SimTK::Vec3(0, 0, 1)},
+                                   {pin_body, SimTK::Vec3(0.0), SimTK::Vec3(0, 0, 1)}, parameters);
+  const SimTK::State state = system.realizeTopology();
+  SimTK::Array_<SimTK::DecorativeGeometry> geometry;
+  system.calcDecorativeGeometryAndAppend(state, SimTK::Stage::Topology, geometry);
+  CylinderSizes sizes;
+  for (const SimTK::DecorativeGeometry& g : geometry) g.implementGeometry(sizes);
+  const std::vector<std::pair<double, double>> expected{{0.010, 0.020}, {0.0098, 0.025}};
+  EXPECT_EQ(sizes.cylinders, expected);
 }
 
 TEST(SimbodyClearanceRevoluteForce, RefusesABearingAndJournalOnOneBody) {

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 
 #include "clearjoint/dynamics/errors.hpp"
 #include "two_body_clearance_joint.hpp"
@@ -104,6 +105,15 @@ class ClearanceRevoluteForce::Impl final : public SimTK::Force::Custom::Implemen
                              .setColor(colour)
                              .setOpacity(opacity));
     };
+    if (const auto& pin = joint_.joint().parameters().pin_in_hole) {
+      // The hole, and the pin through it as far as its farthest stop (the model takes it as long
+      // as it needs to be; without stops, drawn twice the hole's length).
+      double reach = pin->stop_count == 0 ? pin->hole_length : 0.5 * pin->hole_length;
+      for (int k = 0; k < pin->stop_count; ++k) reach = std::max(reach, std::abs(pin->stops[k].position));
+      cylinder(bearing_, pin->hole_radius, pin->hole_length, SimTK::Gray, 0.3);
+      cylinder(journal_, pin->pin_radius, 2.0 * reach, SimTK::Orange, 1.0);
+      return;
+    }
     cylinder(bearing_, d.bearing_radius, d.bearing_length, SimTK::Gray, 0.3);
     cylinder(journal_, d.journal_radius, d.journal_length, SimTK::Orange, 1.0);
   }
