@@ -131,7 +131,7 @@ template <class S, class C>
 inline void copy_field(const geo::fields::Bound<S>& field, double C::*member, const S& from, C& to) {
   to.*member = from.*field.member;
 }
-/// Whole: every entry (the count is the kernel's to keep; the entries past it hold its defaults).
+/// Whole: every entry and the count (the entries past the count hold the kernel's defaults).
 template <class S, class A, class Items, class C>
 inline void copy_field(const geo::fields::List<S, A>& field, const Whole<Items, C>& members, const S& from, C& to) {
   static_assert(std::tuple_size_v<A> == std::extent_v<Items>, "a list and its C array differ in capacity");
@@ -147,10 +147,10 @@ inline void copy_field(const geo::fields::List<S, A>& field, const InUse<Items, 
   for (int k = 0; k < count; ++k) copy_value((from.*field.items)[k], (to.*members.items)[k]);
 }
 
-/// Every field of a result into its C struct, front to back: each C member (c_members.hpp, generated
-/// from the C layouts, in the struct's order) paired with its field of the list; the members the list does not name
-/// (padding, reserved room) are left alone (clearjoint.h: unspecified in results; writing them
-/// measured ~2 ns a call).
+/// Every field of a result into its C struct, front to back: each C member (c_members.hpp,
+/// generated from the C layouts, in the struct's order) paired with its field of the list. The
+/// members no field names (padding, reserved room) are left alone (clearjoint.h: unspecified in
+/// results; writing them measured ~2 ns a call).
 template <class Result>
   requires requires { typename CMembers<Result>::type; }
 inline void copy_value(const Result& from, typename CMembers<Result>::type& to) {
