@@ -429,8 +429,8 @@ void ClearanceRevoluteJoint::record_outputs(double time, const SystemKinematics&
   const ClearanceJointState s = evaluate(time, kinematics, state);
   size_t k = 0;
   // The scenario's number in the table of the joint's kind (ContactScenario or PinInHoleScenario).
-  values[k++] = parameters_.pin_in_hole ? static_cast<double>(s.pin_in_hole_scenario)
-                                        : static_cast<double>(s.contacts.scenario);
+  values[k++] = s.pin_in_hole_scenario ? static_cast<double>(*s.pin_in_hole_scenario)
+                                       : static_cast<double>(s.contacts.scenario);
   values[k++] = s.contacts.aligned ? 1.0 : 0.0;
   values[k++] = static_cast<double>(s.contacts.certificate.level);
   values[k++] = s.contacts.contact_count;

@@ -93,6 +93,7 @@ TEST(ClearanceRevoluteJoint, AppliesNothingToACentredJournal) {
   EXPECT_EQ(a.force_bearing, Vector3::Zero());
   EXPECT_EQ(joint.evaluate(0.0, poses(Vector3::Zero()), kNoMemory).contacts.scenario,
             ContactScenario::none);
+  EXPECT_FALSE(joint.evaluate(0.0, poses(Vector3::Zero()), kNoMemory).pin_in_hole_scenario.has_value());
 }
 
 TEST(ClearanceRevoluteJoint, PushesAnAlignedJournalBackAtTheLineContactAndTheBearingForward) {
@@ -498,7 +499,7 @@ TEST(ClearanceRevoluteJoint, PushesAnAlignedPinBackAtItsLineContactAsThePapersJo
   expect_vector_near(a.force_bearing, b.force_bearing, F);
   expect_vector_near(a.moment_bearing, b.moment_bearing, F * 0.06);
   const ClearanceJointState s = pin.evaluate(0.0, k, kNoMemory);
-  EXPECT_EQ(s.pin_in_hole_scenario, geometry::PinInHoleScenario::line);
+  EXPECT_EQ(s.pin_in_hole_scenario, std::optional(geometry::PinInHoleScenario::line));
   EXPECT_TRUE(s.slots[static_cast<int>(ContactSlot::line)].active);
   EXPECT_NEAR(s.slots[static_cast<int>(ContactSlot::line)].depth, kDepth, kDepth * kRelativeTolerance);
 }
@@ -512,7 +513,7 @@ TEST(ClearanceRevoluteJoint, PushesAPinBackWhenItsStopCrossesTheLinkFace) {
   expect_vector_near(a.force_journal, Vector3(0.0, 0.0, -F), F);
   expect_vector_near(a.force_bearing, Vector3(0.0, 0.0, F), F);
   const ClearanceJointState s = pin.evaluate(0.0, k, kNoMemory);
-  EXPECT_EQ(s.pin_in_hole_scenario, geometry::PinInHoleScenario::face);
+  EXPECT_EQ(s.pin_in_hole_scenario, std::optional(geometry::PinInHoleScenario::face));
   EXPECT_TRUE(s.slots[static_cast<int>(ContactSlot::axial_b)].active);
   EXPECT_FALSE(s.slots[static_cast<int>(ContactSlot::axial_a)].active);
 }

@@ -66,3 +66,17 @@ def test_the_non_smooth_integrator_refuses_a_pin_in_hole_joint_naming_the_geomet
     with pytest.raises(ValueError, match=r"clearance joint 'rod-slider pin': \"geometry\": \"pin_in_hole\" is not "
                                          r"supported by solver.method = \"moreau_jean\""):
         clearjoint.simulate(model)
+
+
+def test_a_stepped_pin_in_hole_joint_reports_its_contacts_in_the_pin_in_hole_table(models_dir):
+    with open(models_dir / "slider_crank_planar_clearance_pin_in_hole.json") as f:
+        model = json.load(f)
+    model["solver"]["end_time"] = 0.01
+    sim = clearjoint.Simulator(model)
+    seen = set()
+    while not sim.finished:
+        sim.step()
+        contacts = sim.joint_state("rod-slider pin")["contacts"]
+        assert isinstance(contacts, clearjoint.PinInHoleContacts)
+        seen.add(contacts.scenario)
+    assert clearjoint.PinInHoleScenario.line in seen

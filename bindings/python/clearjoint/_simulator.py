@@ -110,7 +110,8 @@ class Simulator:
 
     def joint_state(self, name: str) -> Dict[str, Any]:
         """The clearance joint `name` at the current state, as its joint table has it: ``contacts``
-        (a JointContacts, as detect gives), ``force_on_journal`` and ``moment_on_journal`` (world
+        (a JointContacts, as detect gives; a PinInHoleContacts, as detect_pin_in_hole gives, for a
+        pin-in-hole joint), ``force_on_journal`` and ``moment_on_journal`` (world
         frame, N and N m about the journal's point: contacts plus film), each contact's
         ``contact_force_on_journal`` (rows in the order of ``contacts``), ``slots`` (per contact
         slot: active, depth, approach_speed, impact_speed, normal_force, friction_force; eqs.

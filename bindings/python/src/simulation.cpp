@@ -28,6 +28,7 @@
 #include "clearjoint/dynamics/run_size.hpp"
 #include "clearjoint/dynamics/simulation.hpp"
 #include "clearjoint/dynamics/simulation_output.hpp"
+#include "clearjoint/geometry/joint/detect_pin_in_hole_contacts.hpp"
 #include "clearjoint/dynamics/simulator.hpp"
 #include "clearjoint/engines/engine_choice.hpp"
 #include "run_folder.hpp"
@@ -227,7 +228,18 @@ py::array_t<double> vector_array(const dynamics::Vector3& v) {
 /// and the rim centres in the bearing frame: the quantities of the run's joint table.
 py::dict joint_state_dict(const dynamics::ClearanceJointState& s) {
   py::dict d;
-  d["contacts"] = py::cast(s.contacts);
+  if (s.pin_in_hole_scenario) {
+    // A pin-in-hole joint: its contacts as detect_pin_in_hole gives them.
+    geometry::PinInHoleContacts pin;
+    pin.scenario = *s.pin_in_hole_scenario;
+    pin.aligned = s.contacts.aligned;
+    pin.certificate = s.contacts.certificate;
+    pin.contact_count = s.contacts.contact_count;
+    std::copy_n(s.contacts.contacts.begin(), pin.contact_count, pin.contacts.begin());
+    d["contacts"] = py::cast(pin);
+  } else {
+    d["contacts"] = py::cast(s.contacts);
+  }
   d["force_on_journal"] = vector_array(s.force_on_journal_W);
   d["moment_on_journal"] = vector_array(s.moment_on_journal_W);
   py::array_t<double> contact_forces({static_cast<py::ssize_t>(s.contacts.contact_count), py::ssize_t{3}});

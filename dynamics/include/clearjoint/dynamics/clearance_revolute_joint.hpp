@@ -130,8 +130,8 @@ struct ClearanceJointState {
   /// geometry::kMaxPinInHoleContacts, as detect_pin_in_hole_contacts orders them), its
   /// aligned flag and certificate; `scenario` is then none, pin_in_hole_scenario tells it.
   geometry::JointContacts contacts;
-  /// A pin-in-hole joint's scenario (none for the paper's joint).
-  geometry::PinInHoleScenario pin_in_hole_scenario = geometry::PinInHoleScenario::none;
+  /// A pin-in-hole joint's scenario; empty for the paper's joint.
+  std::optional<geometry::PinInHoleScenario> pin_in_hole_scenario;
   /// Force on the journal of each of contacts.contacts (the bearing gets the opposite).
   std::array<Vector3, geometry::kMaxContacts> contact_force_on_journal_W{};
   std::array<SlotState, kContactSlotCount> slots{};
