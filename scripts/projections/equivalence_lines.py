@@ -1,7 +1,9 @@
 # SPDX-License-Identifier: BSD-3-Clause
-"""The C writer of a contact's part of the equivalence test's lines
-(tests/bindings/equivalence/contact_line.h, used by answers_c.c and pin_in_hole_answers_c.c), from
-the field lists and the C names of c_structs.py.
+"""The C and Fortran writers of a contact's part of the equivalence test's lines
+(tests/bindings/equivalence/contact_line.h, used by answers_c.c and pin_in_hole_answers_c.c;
+contact_line.inc, included by answers_fortran.f90 and pin_in_hole_answers_fortran.f90), from the
+field lists and the C names of c_structs.py (the Fortran types' components are named as the C
+members).
 
 The line's order is the test's format (tests/bindings/equivalence/README.md), which the C++,
 Fortran and Octave writers share, not the field list's: ORDER names it. A field the list has
@@ -14,6 +16,7 @@ from c_copies import _c_names
 from c_structs import LAYOUTS
 
 CONTACT_LINE_FILE = "tests/bindings/equivalence/contact_line.h"
+FORTRAN_CONTACT_LINE_FILE = "tests/bindings/equivalence/contact_line.inc"
 
 # The fields of each item in the format's order; the variable that points to the item.
 ORDER = {
@@ -23,6 +26,7 @@ ORDER = {
 }
 # The writer of a list's items.
 ITEM_WRITERS = {"RimCrossing": "add_crossing"}
+FORTRAN_ITEM_WRITERS = {"RimCrossing": "crossing_text"}
 
 
 def _field_lines(field, var, c_name, counts):
@@ -41,8 +45,24 @@ def _field_lines(field, var, c_name, counts):
     return [f'add(line, " %d", {member});']  # an integer, a bool (1 or 0) or an enum's code
 
 
-def writer_lines(results):
-    """{region name: lines} of contact_line.h for the items ORDER names."""
+def _fortran_lines(field, var, c_name, counts):
+    member = f"{var}%{c_name}"
+    if field["kind"] == "list":
+        count = f"{var}%{counts[field['key']]}"
+        return [f"line = line//' '//decimal({count})", f"do m = 1, {count}",
+                f"  line = line//{FORTRAN_ITEM_WRITERS[field['value']]}({member}(m))", "end do"]
+    if field["value"] == "Certificate":
+        return [f"line = line//' '//decimal({member}%level)//' '//decimal({member}%reason)",
+                f"if (with_text) line = line//' \"'//cj_string({member}%reason_text)//'\"'"]
+    if field["value"] == "vector3":
+        return [f"line = line//hex3({member})"]
+    if field["kind"] == "bound" or field["value"] == "float":
+        return [f"line = line//hex({member})"]
+    return [f"line = line//' '//decimal({member})"]  # an integer, a bool (1 or 0) or an enum's code
+
+
+def writer_lines(results, fortran=False):
+    """{region name: lines} of contact_line.h (of contact_line.inc if `fortran`) for the items ORDER names."""
     described = {result["type"]: result for result in results}
     layouts = {result_type: layout for result_type, _, layout in LAYOUTS}
     regions = {}
@@ -58,6 +78,9 @@ def writer_lines(results):
         keys = order + [f["key"] for f in described[result_type]["fields"] if f["key"] not in order]
         lines = []
         for key in keys:
-            lines += [f"  {text}" for text in _field_lines(fields[key], var, names.get(key, key), counts)]
+            if fortran:
+                lines += [f"    {text}" for text in _fortran_lines(fields[key], var, names.get(key, key), counts)]
+            else:
+                lines += [f"  {text}" for text in _field_lines(fields[key], var, names.get(key, key), counts)]
         regions[f"{result_type} fields"] = lines
     return regions

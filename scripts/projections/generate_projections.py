@@ -30,7 +30,7 @@ import textwrap
 
 from c_copies import MEMBERS_FILE, member_tables
 from c_structs import struct_projections
-from equivalence_lines import CONTACT_LINE_FILE, writer_lines
+from equivalence_lines import CONTACT_LINE_FILE, FORTRAN_CONTACT_LINE_FILE, writer_lines
 from mex_results import MEX_FILE, mex_lines
 import schema_results
 
@@ -206,6 +206,8 @@ def projections(root, description):
     region(MEMBERS_FILE, "c members", member_tables(description["results"]))
     for name, lines in writer_lines(description["results"]).items():
         region(CONTACT_LINE_FILE, name, lines)
+    for name, lines in writer_lines(description["results"], fortran=True).items():
+        region(FORTRAN_CONTACT_LINE_FILE, name, lines)
     for name, lines in mex_lines(description["results"], enum_names).items():
         region(MEX_FILE, name, lines)
     region(PY_STUB, "enums", py_enums(tables))

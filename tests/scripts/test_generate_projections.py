@@ -62,6 +62,8 @@ MARKED = {
     "bindings/c/src/c_members.hpp": "// BEGIN GENERATED c members\n// END GENERATED c members\n",
     "bindings/matlab/mex_results.c": "/* BEGIN GENERATED Contact names */\n/* END GENERATED Contact names */\n"
         "/* BEGIN GENERATED Contact values */\n/* END GENERATED Contact values */\n",
+    "tests/bindings/equivalence/contact_line.inc":
+        "! BEGIN GENERATED Contact fields\n! END GENERATED Contact fields\n",
     "tests/bindings/equivalence/contact_line.h":
         "/* BEGIN GENERATED Contact fields */\n/* END GENERATED Contact fields */\n",
     "bindings/python/clearjoint/__init__.pyi":
@@ -169,7 +171,7 @@ class GenerateProjections(unittest.TestCase):
                       check.stdout)
         self.assertIn("bindings/c/src/c_members.hpp", check.stdout.split("stale:")[1])
 
-    def test_a_field_added_to_a_result_is_written_by_the_c_equivalence_writer_after_the_certificate(self):
+    def test_a_field_added_to_a_result_is_written_by_the_c_and_fortran_equivalence_writers_after_the_certificate(self):
         self.run_generator("--write")
         grown = description()
         grown["results"][0]["fields"].append({"key": "trial", "doc": "", "kind": "plain", "value": "float"})
@@ -178,6 +180,8 @@ class GenerateProjections(unittest.TestCase):
         self.assertIn('  if (with_text) add(line, " \\"%s\\"", c->certificate.reason_text);\n'
                       '+  add_hex(line, c->trial);', check.stdout)
         self.assertIn("tests/bindings/equivalence/contact_line.h", check.stdout.split("stale:")[1])
+        self.assertIn("reason_text)//'\"'\n+    line = line//hex(c%trial)\n", check.stdout)
+        self.assertIn("tests/bindings/equivalence/contact_line.inc", check.stdout.split("stale:")[1])
 
     def test_a_field_added_to_a_result_is_set_by_the_mex_results_after_the_others(self):
         self.run_generator("--write")

@@ -78,51 +78,20 @@ program answers_fortran
 
 contains
 
-  function decimal(n) result(text)
-    integer, intent(in) :: n
-    character(len=:), allocatable :: text
-    character(len=24) :: buffer
-    write (buffer, '(i0)') n
-    text = trim(buffer)
-  end function
-
-  !> IEEE bits of x as 16 upper-case hex digits, after a space.
-  function hex(x) result(text)
-    real(c_double), intent(in) :: x
-    character(len=17) :: text
-    write (text, '(1x, z16.16)') transfer(x, 0_int64)
-  end function
-
-  function hex3(v) result(text)
-    real(c_double), intent(in) :: v(3)
-    character(len=51) :: text
-    text = hex(v(1))//hex(v(2))//hex(v(3))
-  end function
+  include 'contact_line.inc'
 
   function result_line(tag, index, r) result(line)
     character, intent(in) :: tag
     integer, intent(in) :: index
     type(cj_result), intent(in) :: r
     character(len=:), allocatable :: line
-    integer :: k, m
+    integer :: k
     line = tag//' '//decimal(index)//' ok '//decimal(r%scenario)//' '//decimal(r%aligned)//' '// &
            decimal(r%certificate%level)//' '//decimal(r%certificate%reason)
     if (tag == 'S') line = line//' "'//cj_string(r%certificate%reason_text)//'"'
     line = line//' '//decimal(r%contact_count)
     do k = 1, r%contact_count
-      associate (c => r%contacts(k))
-        line = line//' | '//decimal(c%type)//' '//decimal(c%base)//hex(c%depth)//hex3(c%p_WCj)// &
-               hex3(c%p_WCi)//hex3(c%normal_W)//hex(c%depth_error_bound)//hex(c%p_WCj_error_bound)// &
-               hex(c%p_WCi_error_bound)//' '//decimal(c%crossing_count)
-        do m = 1, c%crossing_count
-          associate (x => c%crossings(m))
-            line = line//hex(x%angle)//hex(x%angle_error_bound)//hex3(x%point)// &
-                   hex(x%point_error_bound)//' '//decimal(x%multiplicity)
-          end associate
-        end do
-        line = line//' '//decimal(c%certificate%level)//' '//decimal(c%certificate%reason)
-        if (tag == 'S') line = line//' "'//cj_string(c%certificate%reason_text)//'"'
-      end associate
+      line = line//contact_text(r%contacts(k), tag == 'S')
     end do
   end function
 
