@@ -57,7 +57,8 @@ TEST(DetectionOptions, TheDetectCommandRefusesAKeyOutsideTheListNamingTheList) {
 }
 
 TEST(DetectionOptions, TheQueryAndModelSchemasNameEveryOptionWithItsDefault) {
-  const Json query = read_schema("detect-query.schema.json")["properties"]["options"]["properties"];
+  // One "options" object, referred to by both joints' queries.
+  const Json query = read_schema("detect-query.schema.json")["$defs"]["options"]["properties"];
   const Json model = read_schema("model.schema.json");
   // The clearance joint's "detection" object, wherever the model schema defines it.
   Json detection;
