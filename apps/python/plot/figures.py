@@ -13,8 +13,14 @@ from . import panels as draw
 from .joint_series import ClearanceJointSeries, joint_series, rotation_angle, window_rows
 from .result_manifest import register_written
 from .run_folder import Run, RunError, read_run
+from .scenario_colours import JOURNAL_BEARING, PIN_IN_HOLE
 
 #: Panels in the order they are drawn; ``panels=`` picks among them.
+#: The legend's title by joint geometry: the paper's Fig. 2 cases, or the pin-in-hole table
+#: (docs/contact-detection.md, "The pin-in-hole joint").
+SCENARIO_LEGEND_TITLES = {JOURNAL_BEARING: "contact scenario (Fig. 2)",
+                          PIN_IN_HOLE: "contact scenario (pin in hole)"}
+
 PANELS = ("orbit", "force", "film", "axial", "tilt", "slider")
 Window = Optional[Tuple[Optional[float], Optional[float]]]
 
@@ -148,9 +154,10 @@ def joint_figure(run: Any, joint: Optional[str] = None, *, model: Any = None, id
         else:
             legend_axes = figure.add_subplot(grid[0, 0])
             draw.plot_orbit(legend_axes, series, "a", title="journal centre")
-        legend_axes.legend(handles=draw.scenario_legend_handles(series.scenario), fontsize=7,
-                           loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0.0,
-                           title="contact scenario (Fig. 2)", title_fontsize=8)
+        legend_axes.legend(handles=draw.scenario_legend_handles(series.scenario, geometry=series.geometry),
+                           fontsize=7, loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0.0,
+                           title=SCENARIO_LEGEND_TITLES.get(series.geometry, SCENARIO_LEGEND_TITLES[JOURNAL_BEARING]),
+                           title_fontsize=8)
         row = 1
     shared = None
     for panel in time_panels:
@@ -168,7 +175,8 @@ def joint_figure(run: Any, joint: Optional[str] = None, *, model: Any = None, id
         elif panel == "slider":
             _draw_slider(ax, run, table, slider, ideal, x, window, x_values, x_label)
     if "orbit" not in wanted and time_panels:
-        figure.axes[0].legend(handles=draw.scenario_legend_handles(series.scenario), fontsize=7,
+        figure.axes[0].legend(handles=draw.scenario_legend_handles(series.scenario, geometry=series.geometry),
+                              fontsize=7,
                               loc="upper right", ncol=2)
     # Tick labels and the x label on the bottom time panel only: the panels share their axis.
     time_axes = figure.axes[-len(time_panels):] if time_panels else []

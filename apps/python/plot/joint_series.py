@@ -12,6 +12,7 @@ import numpy as np
 
 from .._enums import ContactSlot
 from .run_folder import ClearanceJointModel, Run, RunError
+from .scenario_colours import JOURNAL_BEARING
 
 #: The contact slots of a clearance joint's table, in the order of the library's table
 #: (ContactSlot, clearance_revolute_joint.hpp).
@@ -24,7 +25,7 @@ class ClearanceJointSeries:
 
     name: str                      # the table's name without "force_"
     time: np.ndarray               # [s]
-    scenario: np.ndarray           # ContactScenario codes (int)
+    scenario: np.ndarray           # ContactScenario codes (int); PinInHoleScenario's for a pin in a hole
     rim_a: np.ndarray              # (N, 3): centre of the journal rim facing bearing base A, in
     rim_b: np.ndarray              #   the bearing frame (u, v, axial) relative to P_i [m] (Fig. 14)
     normal_force: np.ndarray       # sum of the slots' F_N [N]
@@ -48,6 +49,12 @@ class ClearanceJointSeries:
         if self.film is None or self.total_force is None:
             return None
         return np.where(self.contact_free, self.total_force, np.nan)
+
+    @property
+    def geometry(self) -> str:
+        """The joint's geometry, which says the table of its scenario codes; the paper's joint
+        when the model is unknown."""
+        return JOURNAL_BEARING if self.joint is None else self.joint.geometry
 
     @property
     def axial_position(self) -> np.ndarray:

@@ -31,27 +31,29 @@ CLEARANCE_CURVE = dict(color="tab:blue", linewidth=0.8)
 TOTAL_FORCE_CURVE = dict(color="tab:blue", linewidth=1.0, alpha=0.8, zorder=1)
 
 
-def _scenario_stretches(points: np.ndarray, scenario: np.ndarray):
+def _scenario_stretches(points: np.ndarray, scenario: np.ndarray, geometry: Optional[str] = None):
     """(paths, colours): one polyline per stretch of steps that arrive in the same scenario, the
-    step from point k to k + 1 taking the colour of scenario[k + 1]."""
+    step from point k to k + 1 taking the colour of scenario[k + 1] (codes of a joint of
+    ``geometry``: scenario_colours.py)."""
     arrived = np.asarray(scenario[1:], dtype=int)
     starts = np.concatenate([[0], np.flatnonzero(np.diff(arrived)) + 1])  # first step of a stretch
     ends = np.concatenate([starts[1:], [len(arrived)]])
     paths = [points[start:end + 1] for start, end in zip(starts, ends)]
-    return paths, [scenario_colour(arrived[start]) for start in starts]
+    return paths, [scenario_colour(arrived[start], geometry) for start in starts]
 
 
-def _scenario_segments(ax, x: np.ndarray, y: np.ndarray, scenario: np.ndarray, linewidth: float = 1.0):
+def _scenario_segments(ax, x: np.ndarray, y: np.ndarray, scenario: np.ndarray, linewidth: float = 1.0,
+                       geometry: Optional[str] = None):
     """A polyline whose step from point k to k + 1 has the colour of scenario[k + 1], the state
     the step arrived in, so that a contact shows from its first report time. Steps are grouped
     into one path per stretch of equal scenario: a run of 1e5 report times changes scenario a few
     thousand times, and one matplotlib Path per step would take seconds to build and draw."""
     from matplotlib.collections import LineCollection
     if len(x) < 2:
-        ax.scatter(x, y, c=[scenario_colour(s) for s in scenario], s=4)
+        ax.scatter(x, y, c=[scenario_colour(s, geometry) for s in scenario], s=4)
         return
     points = np.column_stack([x, y])
-    paths, colours = _scenario_stretches(points, scenario)
+    paths, colours = _scenario_stretches(points, scenario, geometry)
     # A long run is drawn as an image inside the SVG (axes and text stay vector): 1e5 points per
     # panel as vector paths make a file that viewers render slowly.
     ax.add_collection(LineCollection(paths, colors=colours, linewidths=linewidth,
@@ -60,10 +62,13 @@ def _scenario_segments(ax, x: np.ndarray, y: np.ndarray, scenario: np.ndarray, l
     ax.autoscale_view()
 
 
-def scenario_legend_handles(scenarios: Sequence[int], with_impacts: bool = True) -> list:
-    """Legend entries for the scenarios that occur (in code order), then the impact mark."""
+def scenario_legend_handles(scenarios: Sequence[int], with_impacts: bool = True,
+                            geometry: Optional[str] = None) -> list:
+    """Legend entries for the scenarios that occur (in code order; codes of a joint of
+    ``geometry``, default the paper's), then the impact mark."""
     from matplotlib.lines import Line2D
-    handles = [Line2D([], [], color=scenario_colour(code), linewidth=2.5, label=scenario_name(code))
+    handles = [Line2D([], [], color=scenario_colour(code, geometry), linewidth=2.5,
+                      label=scenario_name(code, geometry))
                for code in sorted(set(int(s) for s in scenarios))]
     if with_impacts:
         handles.append(Line2D([], [], linestyle="none", marker="o", markerfacecolor="none",
@@ -90,7 +95,7 @@ def plot_orbit(ax, series: ClearanceJointSeries, rim: str = "a", title: Optional
     else:
         ax.set_xlabel("u [m]")
         ax.set_ylabel("v [m]")
-    _scenario_segments(ax, u, v, series.scenario, linewidth=0.7)
+    _scenario_segments(ax, u, v, series.scenario, geometry=series.geometry, linewidth=0.7)
     if len(series.impact_rows):
         ax.scatter(u[series.impact_rows], v[series.impact_rows], **IMPACT_MARK)
     if cr:  # a tilted journal's rim may pass the circle by up to (Rj sin(tilt)); keep it framed
@@ -108,7 +113,8 @@ def plot_normal_force(ax, series: ClearanceJointSeries, x: np.ndarray, x_label: 
     which carries the load while the film holds and F_N is 0."""
     if series.lubricated and series.total_force is not None:
         ax.plot(x, series.total_force, label="|F|, film + contact", **TOTAL_FORCE_CURVE)
-    _scenario_segments(ax, x, series.normal_force, series.scenario, linewidth=0.8)
+    _scenario_segments(ax, x, series.normal_force, series.scenario, linewidth=0.8,
+                       geometry=series.geometry)
     if len(series.impact_rows):
         ax.plot(x[series.impact_rows], np.zeros(len(series.impact_rows)),
                 transform=ax.get_xaxis_transform(), clip_on=False, **IMPACT_TICK)
@@ -128,7 +134,7 @@ def plot_film_thickness(ax, series: ClearanceJointSeries, x: np.ndarray, x_label
     """A lubricated joint's minimum film thickness h_min [µm] (docs/dynamics.md,
     film.min_thickness), coloured by contact scenario; 0 is where the surfaces would touch."""
     _scenario_segments(ax, x, series.film["min_thickness"] * MICROMETRES_PER_METRE, series.scenario,
-                       linewidth=0.8)
+                       linewidth=0.8, geometry=series.geometry)
     ax.axhline(0.0, color="0.4", linestyle="--", linewidth=0.8)
     ax.set_ylabel("h_min [µm]")
     ax.set_xlabel(x_label)
@@ -140,7 +146,8 @@ def plot_axial_position(ax, series: ClearanceJointSeries, x: np.ndarray, x_label
     whose bounds +-1 are dashed; in metres when the model (hence c_a) is not known."""
     ca = series.axial_clearance
     ax.set_ylabel("axial position / c_a [-]" if ca else "axial position [m]")
-    _scenario_segments(ax, x, series.axial_position / (ca if ca else 1.0), series.scenario, linewidth=0.8)
+    _scenario_segments(ax, x, series.axial_position / (ca if ca else 1.0), series.scenario, linewidth=0.8,
+                       geometry=series.geometry)
     if ca:
         for side in (-1.0, 1.0):
             ax.axhline(side, color="0.4", linestyle="--", linewidth=0.8)
@@ -157,7 +164,7 @@ def plot_tilt(ax, series: ClearanceJointSeries, x: np.ndarray, x_label: str, log
         positive = tilt[tilt > 0.0]
         tilt = np.maximum(tilt, positive.min() if positive.size else 1e-12)
         ax.set_yscale("log")
-    _scenario_segments(ax, x, tilt, series.scenario, linewidth=0.8)
+    _scenario_segments(ax, x, tilt, series.scenario, geometry=series.geometry, linewidth=0.8)
     ax.set_ylabel("tilt [deg]")
     ax.set_xlabel(x_label)
     ax.grid(True, linewidth=0.3, alpha=0.5)
@@ -167,18 +174,21 @@ def plot_compared(ax, x: np.ndarray, y: np.ndarray, x_label: str, y_label: str,
                   reference_x: Optional[np.ndarray] = None, reference_y: Optional[np.ndarray] = None, *,
                   scenario: Optional[np.ndarray] = None, label: str = "clearance joint",
                   reference_label: str = "ideal joint", linewidth: float = 0.8,
-                  colour: Optional[str] = None, legend: bool = True) -> None:
+                  colour: Optional[str] = None, legend: bool = True,
+                  geometry: Optional[str] = None) -> None:
     """A quantity of a run with a clearance joint against ``x`` (time, or another quantity for a
     phase portrait), beside the same quantity of a reference run, dashed (the ideal joint's:
     paper Figs. 7-10, 13, 15-18). With ``scenario`` (the joint's scenario code at each of the
     run's report times) the curve is coloured by contact scenario as the joint's panels are,
     otherwise drawn in one colour (``colour``, default the clearance curve's) and labelled
     ``label``; ``legend`` names the curves drawn in one colour (a scenario-coloured curve takes its
-    legend from ``scenario_legend_handles``)."""
+    legend from ``scenario_legend_handles``); ``geometry`` is the joint's, which says the table
+    of its scenario codes (scenario_colours.py)."""
     if reference_x is not None and reference_y is not None:
         ax.plot(reference_x, reference_y, label=reference_label, **IDEAL_CURVE)
     if scenario is not None:
-        _scenario_segments(ax, np.asarray(x), np.asarray(y), np.asarray(scenario), linewidth=linewidth)
+        _scenario_segments(ax, np.asarray(x), np.asarray(y), np.asarray(scenario), linewidth=linewidth,
+                           geometry=geometry)
     else:
         style = dict(CLEARANCE_CURVE, linewidth=linewidth)
         if colour is not None:
@@ -216,7 +226,7 @@ def plot_orbit_3d(ax, series: ClearanceJointSeries) -> None:
         if cr:
             ax.plot(np.cos(angle), np.sin(angle), np.full(angle.size, np.median(points[:, 2])), color="0.4",
                     linewidth=0.8)
-        paths, colours = _scenario_stretches(points, series.scenario)
+        paths, colours = _scenario_stretches(points, series.scenario, series.geometry)
         ax.add_collection3d(Line3DCollection(paths, colors=colours, linewidths=0.6))
         ax.auto_scale_xyz(points[:, 0], points[:, 1], points[:, 2], had_data=True)
     ax.set_xlabel("u / c_r [-]" if cr else "u [m]")

@@ -17,11 +17,12 @@ from __future__ import annotations
 import os
 import re
 from dataclasses import dataclass, field
-from typing import Any, Dict, List, Mapping, Optional, Union
+from typing import Any, Dict, List, Mapping, Optional, Tuple, Union
 
 import numpy as np
 
 from .._run_files import read_folder_tables, read_json_bounded
+from .scenario_colours import JOURNAL_BEARING, PIN_IN_HOLE
 
 Tables = Dict[str, Dict[str, np.ndarray]]
 
@@ -35,7 +36,12 @@ class RunError(ValueError):
 
 @dataclass(frozen=True)
 class ClearanceJointModel:
-    """What the figures need of one ``clearance_revolute`` force element of the model file."""
+    """What the figures need of one ``clearance_revolute`` force element of the model file.
+
+    A pin-in-hole joint (``geometry`` "pin_in_hole", docs/dynamics.md) fills the same fields: the
+    hole is the bearing (radius, the link's thickness as length), the pin the journal (radius;
+    as length the span between its two stops, else the hole's length plus twice its radius, a
+    length to draw), and ``stops`` are its stops as (position along the pin, outer radius)."""
 
     name: str
     table: str                 # its table: "force_" + the name, sanitised as the C++ side does
@@ -50,6 +56,8 @@ class ClearanceJointModel:
     journal_radius: float      # Rj [m]
     journal_length: float      # Lj [m]
     parallel_angle_tolerance: float = 0.0
+    geometry: str = JOURNAL_BEARING
+    stops: Tuple[Tuple[float, float], ...] = ()  # a pin's stops: (position, outer radius) [m]
 
     @property
     def radial_clearance(self) -> float:
@@ -58,7 +66,13 @@ class ClearanceJointModel:
 
     @property
     def axial_clearance(self) -> float:
-        """ca = (Li - Lj) / 2 [m] (paper eq. 2)."""
+        """ca = (Li - Lj) / 2 [m] (paper eq. 2); a pin with two stops: how far the stops' faces
+        lie beyond the link's faces, (s_0 - s_1 - Li) / 2; a pin with fewer: 0 (no axial play
+        to scale by)."""
+        if self.geometry == PIN_IN_HOLE:
+            if len(self.stops) != 2:
+                return 0.0
+            return 0.5 * (abs(self.stops[0][0] - self.stops[1][0]) - self.bearing_length)
         return 0.5 * (self.bearing_length - self.journal_length)
 
 
@@ -116,6 +130,10 @@ def clearance_joints_of(model: Mapping[str, Any]) -> List[ClearanceJointModel]:
     for element in model.get("forces", []):
         if element.get("type") != "clearance_revolute":
             continue
+        geometry = element.get("geometry", JOURNAL_BEARING)
+        if geometry == PIN_IN_HOLE:
+            joints.append(_pin_in_hole_joint(element))
+            continue
         bearing, journal = element["bearing"], element["journal"]
         axis_i = _vector(bearing.get("axis"), [0.0, 0.0, 1.0])
         axis_j = _vector(journal.get("axis"), [0.0, 0.0, 1.0])
@@ -131,6 +149,26 @@ def clearance_joints_of(model: Mapping[str, Any]) -> List[ClearanceJointModel]:
             parallel_angle_tolerance=float(
                 element.get("detection", {}).get("parallel_angle_tolerance", 0.0))))
     return joints
+
+
+def _pin_in_hole_joint(element: Mapping[str, Any]) -> ClearanceJointModel:
+    hole, pin = element["hole"], element["pin"]
+    axis_i = _vector(hole.get("axis"), [0.0, 0.0, 1.0])
+    axis_j = _vector(pin.get("axis"), [0.0, 0.0, 1.0])
+    stops = tuple((float(stop["position"]), float(stop["outer_radius"])) for stop in pin.get("stops", []))
+    hole_length, pin_radius = float(hole["length"]), float(pin["radius"])
+    drawn_length = abs(stops[0][0] - stops[1][0]) if len(stops) == 2 else hole_length + 2.0 * pin_radius
+    return ClearanceJointModel(
+        name=element["name"], table=table_name("force_", element["name"]),
+        bearing_body=hole["body"], journal_body=pin["body"],
+        bearing_point=_vector(hole.get("point"), [0.0, 0.0, 0.0]),
+        bearing_axis=axis_i / np.linalg.norm(axis_i),
+        journal_point=_vector(pin.get("point"), [0.0, 0.0, 0.0]),
+        journal_axis=axis_j / np.linalg.norm(axis_j),
+        bearing_radius=float(hole["radius"]), bearing_length=hole_length,
+        journal_radius=pin_radius, journal_length=drawn_length,
+        parallel_angle_tolerance=float(element.get("detection", {}).get("parallel_angle_tolerance", 0.0)),
+        geometry=PIN_IN_HOLE, stops=stops)
 
 
 def _read_model(model: Union[str, "os.PathLike[str]", Mapping[str, Any], None]) -> Optional[Dict[str, Any]]:

@@ -9,8 +9,15 @@ parallel axes, 13 beyond the model. Free flight is a light grey so that the cont
 the three parallel-axis cases are darker shades of (a), (b) and their pair, because a line
 contact is the aligned limit of a rim on the wall (a) and a face contact that of a rim on a base
 (b); beyond the model is black, the colour of a warning.
+
+A pin-in-hole joint (``"geometry": "pin_in_hole"``, docs/dynamics.md) writes
+:class:`clearjoint.PinInHoleScenario` codes in the same column: its names and colours are
+PIN_IN_HOLE_SCENARIO_COLOURS, chosen by the joint's geometry (every function here takes it; a run
+whose model is unknown is read as the paper's joint). Its colours follow the same logic: edge
+contacts are the blues and greens of rims on the wall, stop contacts the orange and red of rims
+on a base, the aligned cases darker shades, beyond the model black.
 """
-from typing import Dict, List
+from typing import Dict, List, Optional
 
 # Hex strings: matplotlib and the browser's canvas both read them.
 SCENARIO_COLOURS: Dict[int, str] = {
@@ -30,28 +37,61 @@ SCENARIO_COLOURS: Dict[int, str] = {
     13: "#000000",  # beyond the paper's model
 }
 
+#: The model file's ``geometry`` of a clearance joint (docs/dynamics.md): the paper's journal in a
+#: bearing (the default when a model does not say) and the pin through a hole.
+JOURNAL_BEARING = "journal_bearing"
+PIN_IN_HOLE = "pin_in_hole"
+
+PIN_IN_HOLE_SCENARIO_COLOURS: Dict[int, str] = {
+    0: "#c8c8c8",   # none: free flight
+    1: "#1f77b4",   # one hole edge against the pin
+    2: "#2ca02c",   # both edges, at opposite sides (tilt)
+    3: "#17becf",   # both edges, on one side
+    4: "#0b3d6b",   # line: parallel axes, the pin along the bore
+    5: "#ff7f0e",   # one stop against its link face
+    6: "#d62728",   # both stops against their faces
+    7: "#a34a00",   # face: a stop flush on its link face
+    8: "#9467bd",   # edge and stop contacts together
+    9: "#5a2d82",   # line and face
+    10: "#000000",  # beyond the model
+}
+
 #: Colour for a code outside the table (a newer library than this module).
 UNKNOWN_SCENARIO_COLOUR = "#ff00ff"
 
 
-def scenario_colour(code: int) -> str:
-    """The colour of a :class:`clearjoint.ContactScenario` code."""
-    return SCENARIO_COLOURS.get(int(code), UNKNOWN_SCENARIO_COLOUR)
+def _geometry_tables(geometry: Optional[str]):
+    """(enum class name, colours) of a joint geometry; None and unknown names: the paper's."""
+    if geometry == PIN_IN_HOLE:
+        return "PinInHoleScenario", PIN_IN_HOLE_SCENARIO_COLOURS
+    return "ContactScenario", SCENARIO_COLOURS
 
 
-def scenario_name(code: int) -> str:
-    """The library's label of a scenario code ("(a) single radial", "none", ...), or "scenario N"
-    for a code the library does not know."""
-    from .. import ContactScenario, scenario_label
-    try:
-        return scenario_label(ContactScenario(int(code)))
-    except ValueError:
-        return f"scenario {int(code)}"
+def _labels(enum_name: str) -> Dict[int, str]:
+    """code -> label of one of the library's enum tables (the C++ table's labels)."""
+    from .. import _core
+    for name, _, members in _core._enum_tables():
+        if name == enum_name:
+            return {code: text for _, code, text in members}
+    return {}
 
 
-def scenario_table() -> List[dict]:
-    """Every scenario of the library's table as ``{"code", "label", "colour"}``, in code order
-    (the viewer's legend)."""
-    from .._enums import ContactScenario
-    return [{"code": int(scenario), "label": scenario_name(scenario), "colour": scenario_colour(scenario)}
-            for scenario in ContactScenario]
+def scenario_colour(code: int, geometry: Optional[str] = None) -> str:
+    """The colour of a scenario code of a joint of ``geometry`` (default: the paper's
+    :class:`clearjoint.ContactScenario`)."""
+    return _geometry_tables(geometry)[1].get(int(code), UNKNOWN_SCENARIO_COLOUR)
+
+
+def scenario_name(code: int, geometry: Optional[str] = None) -> str:
+    """The library's label of a scenario code of a joint of ``geometry`` ("(a) single radial",
+    "one hole edge against the pin", "none", ...), or "scenario N" for a code the library does
+    not know."""
+    return _labels(_geometry_tables(geometry)[0]).get(int(code), f"scenario {int(code)}")
+
+
+def scenario_table(geometry: Optional[str] = None) -> List[dict]:
+    """Every scenario of the library's table for ``geometry`` as ``{"code", "label", "colour"}``,
+    in code order (the viewer's legend)."""
+    labels = _labels(_geometry_tables(geometry)[0])
+    return [{"code": code, "label": label, "colour": scenario_colour(code, geometry)}
+            for code, label in sorted(labels.items())]

@@ -29,7 +29,7 @@ import numpy as np
 
 from ..plot.joint_series import CONTACT_SLOTS
 from ..plot.run_folder import ClearanceJointModel, Run, RunError
-from ..plot.scenario_colours import scenario_table
+from ..plot.scenario_colours import PIN_IN_HOLE, scenario_table
 
 #: Frames sent to the page at most: 20 000 frames of a three-body, one-joint model are 4.6 MB.
 DEFAULT_MAX_FRAMES = 20_000
@@ -92,10 +92,18 @@ def nice_magnification(limit: float) -> float:
     return max(m * power for m in (1.0, 2.0, 5.0) if m * power <= limit)
 
 
+def _magnification_limit(joint: ClearanceJointModel, share: float) -> float:
+    """The magnification that shows the radial and axial clearances as ``share`` of Ri and Li/2;
+    a pin without two stops has no axial clearance, and only its radial one limits."""
+    limits = [share * joint.bearing_radius / joint.radial_clearance]
+    if joint.axial_clearance > 0.0:
+        limits.append(share * 0.5 * joint.bearing_length / joint.axial_clearance)
+    return min(limits)
+
+
 def default_magnification(joint: ClearanceJointModel) -> float:
     """So that the displayed clearances are at most DISPLAYED_CLEARANCE_SHARE of Ri and Li/2."""
-    return nice_magnification(min(DISPLAYED_CLEARANCE_SHARE * joint.bearing_radius / joint.radial_clearance,
-                                  DISPLAYED_CLEARANCE_SHARE * 0.5 * joint.bearing_length / joint.axial_clearance))
+    return nice_magnification(_magnification_limit(joint, DISPLAYED_CLEARANCE_SHARE))
 
 
 def _body_pose(run: Run, body: str, rows: np.ndarray) -> Tuple[np.ndarray, np.ndarray]:
@@ -116,6 +124,8 @@ def _contacts_in_bearing_frame(run: Run, joint: ClearanceJointModel, rows: np.nd
     certified detection (clearjoint.detect, paper Sec. 3) on the recorded poses; NaN where no
     contact. The run's table says which scenario each report time was in; the page shows where."""
     from .. import JointDimensions, detect
+    if joint.geometry == PIN_IN_HOLE:
+        return _pin_in_hole_contacts_in_hole_frame(run, joint, rows)
     r_i, e_i = _body_pose(run, joint.bearing_body, rows)
     r_j, e_j = _body_pose(run, joint.journal_body, rows)
     rot_i, rot_j = rotation_matrices(e_i), rotation_matrices(e_j)
@@ -136,6 +146,29 @@ def _contacts_in_bearing_frame(run: Run, joint: ClearanceJointModel, rows: np.nd
         relative = batch.point_bearing - p_WPi[pose]
         out[pose, slot, 0:3] = np.einsum("nij,nj->ni", to_bearing[pose], relative)
         out[pose, slot, 3:6] = np.einsum("nij,nj->ni", to_bearing[pose], batch.normal)
+    return out
+
+
+def _pin_in_hole_contacts_in_hole_frame(run: Run, joint: ClearanceJointModel, rows: np.ndarray) -> np.ndarray:
+    """As _contacts_in_bearing_frame for a pin in a hole (clearjoint.detect_pin_in_hole, one pose
+    at a time: it has no batch form), in the hole's frame."""
+    from .. import PinInHoleDimensions, detect_pin_in_hole
+    r_i, e_i = _body_pose(run, joint.bearing_body, rows)
+    r_j, e_j = _body_pose(run, joint.journal_body, rows)
+    rot_i, rot_j = rotation_matrices(e_i), rotation_matrices(e_j)
+    dims = PinInHoleDimensions(hole_radius=joint.bearing_radius, hole_length=joint.bearing_length,
+                               pin_radius=joint.journal_radius, stops=list(joint.stops))
+    to_bearing = bearing_frame_B(joint.bearing_axis).T
+    out = np.full((len(rows), MAX_CONTACTS, CONTACT_FLOATS), np.nan)
+    for n in range(len(rows)):
+        p_WPi = r_i[n] + rot_i[n] @ joint.bearing_point
+        found = detect_pin_in_hole(dims, p_WPi, rot_i[n] @ joint.bearing_axis,
+                                   r_j[n] + rot_j[n] @ joint.journal_point, rot_j[n] @ joint.journal_axis,
+                                   parallel_angle_tolerance=joint.parallel_angle_tolerance)
+        for slot, contact in enumerate(found.contacts[:MAX_CONTACTS]):
+            world_to_hole = to_bearing @ rot_i[n].T
+            out[n, slot, 0:3] = world_to_hole @ (np.asarray(contact.point_bearing) - p_WPi)
+            out[n, slot, 3:6] = world_to_hole @ np.asarray(contact.normal)
     return out
 
 
@@ -198,11 +231,13 @@ def viewer_data(run: Run, max_frames: int = DEFAULT_MAX_FRAMES,
             "journal_radius": joint.journal_radius, "journal_length": joint.journal_length,
             "radial_clearance": joint.radial_clearance, "axial_clearance": joint.axial_clearance,
             "magnification": magnification or default_magnification(joint),
-            "max_magnification": 0.9 * min(joint.bearing_radius / joint.radial_clearance,
-                                            0.5 * joint.bearing_length / joint.axial_clearance),
+            "max_magnification": _magnification_limit(joint, 0.9),
             "peak_force": float(np.nanmax(normal_force, initial=0.0)),
             "peak_total_force": float(np.nanmax(total_force, initial=0.0)),
             "lubricated": "film.min_thickness" in table,
+            # The table of this joint's scenario codes (the paper's, or the pin-in-hole one).
+            "geometry": joint.geometry,
+            "scenarios": scenario_table(joint.geometry),
         })
         offset += JOINT_HEAD_FLOATS + MAX_CONTACTS * CONTACT_FLOATS
 

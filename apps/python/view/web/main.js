@@ -24,19 +24,30 @@ window.addEventListener("error", (event) => fail(event.message));
 window.addEventListener("unhandledrejection", (event) => fail(event.reason?.message ?? event.reason));
 
 function legend(run) {
-  const seen = new Set();
+  // One list per table of scenario codes in the run (the paper's, the pin-in-hole one).
+  const tables = new Map();
   for (const j of run.manifest.joints) {
-    for (let f = 0; f < run.frameCount; ++f) seen.add(run.value(f, j.offset));
+    const key = j.geometry ?? "journal_bearing";
+    if (!tables.has(key)) tables.set(key, { scenarios: j.scenarios ?? run.manifest.scenarios, seen: new Set() });
+    for (let f = 0; f < run.frameCount; ++f) tables.get(key).seen.add(run.value(f, j.offset));
   }
+  if (tables.size === 0) tables.set("journal_bearing", { scenarios: run.manifest.scenarios, seen: new Set() });
   const list = document.getElementById("legend");
-  for (const s of run.manifest.scenarios) {
-    const item = document.createElement("li");
-    item.className = seen.has(s.code) ? "" : "absent";
-    const swatch = document.createElement("span");
-    swatch.className = "swatch";
-    swatch.style.background = s.colour;
-    item.append(swatch, document.createTextNode(s.label));
-    list.append(item);
+  for (const [key, { scenarios, seen }] of tables) {
+    if (tables.size > 1) {
+      const heading = document.createElement("li");
+      heading.textContent = key === "pin_in_hole" ? "pin in hole:" : "journal in bearing:";
+      list.append(heading);
+    }
+    for (const s of scenarios) {
+      const item = document.createElement("li");
+      item.className = seen.has(s.code) ? "" : "absent";
+      const swatch = document.createElement("span");
+      swatch.className = "swatch";
+      swatch.style.background = s.colour;
+      item.append(swatch, document.createTextNode(s.label));
+      list.append(item);
+    }
   }
 }
 
@@ -82,7 +93,7 @@ async function start() {
       force.draw(frame);
       const jv = scene.joints[0];
       const code = run.value(frame, joint.offset);
-      contactState.textContent = `scenario: ${run.scenarioLabel(code)}; contacts drawn: ${jv.shownColours.length}; ` +
+      contactState.textContent = `scenario: ${run.scenarioLabel(code, joint)}; contacts drawn: ${jv.shownColours.length}; ` +
         `F_N = ${run.value(frame, joint.offset + JOINT.normalForce).toPrecision(4)} N; ` +
         `|F| = ${run.value(frame, joint.offset + JOINT.totalForce).toPrecision(4)} N` +
         (joint.lubricated ? ` (film + contact); h_min = ${(1e6 * run.value(frame, joint.offset + JOINT.filmThickness)).toPrecision(3)} µm` : "") +

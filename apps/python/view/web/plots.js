@@ -18,13 +18,13 @@ function background(canvas) {
 }
 
 // A polyline whose segment to point k has the colour of scenario k (batched by colour runs).
-function drawScenarioPath(ctx, run, xy, scenarioOf) {
+function drawScenarioPath(ctx, run, xy, scenarioOf, joint) {
   let colour = null;
   ctx.lineWidth = 1;
   for (let f = 0; f < run.frameCount; ++f) {
     const [x, y] = xy(f);
     if (!Number.isFinite(x) || !Number.isFinite(y)) continue;
-    const c = run.scenarioColour(scenarioOf(f));
+    const c = run.scenarioColour(scenarioOf(f), joint);
     if (c !== colour) {
       if (colour !== null) { ctx.lineTo(x, y); ctx.stroke(); }
       ctx.strokeStyle = c;
@@ -65,7 +65,8 @@ export class OrbitPlot {
     ctx.fillText("c_r", canvas.width / 2 + this.scale * 0.72, canvas.height / 2 - this.scale * 0.72);
     const scenario = (f) => run.value(f, o + JOINT.scenario);
     for (const rim of [JOINT.rimA, JOINT.rimB]) {
-      drawScenarioPath(ctx, run, (f) => this.pixel(run.value(f, o + rim), run.value(f, o + rim + 1)), scenario);
+      drawScenarioPath(ctx, run, (f) => this.pixel(run.value(f, o + rim), run.value(f, o + rim + 1)), scenario,
+                       this.joint);
     }
   }
 
@@ -78,7 +79,7 @@ export class OrbitPlot {
     const ctx = this.canvas.getContext("2d");
     ctx.drawImage(this.base, 0, 0);
     const o = this.joint.offset;
-    const colour = this.run.scenarioColour(this.run.value(frame, o + JOINT.scenario));
+    const colour = this.run.scenarioColour(this.run.value(frame, o + JOINT.scenario), this.joint);
     for (const [rim, filled, name] of [[JOINT.rimA, true, "A"], [JOINT.rimB, false, "B"]]) {
       const [x, y] = this.pixel(this.run.value(frame, o + rim), this.run.value(frame, o + rim + 1));
       ctx.beginPath();
@@ -131,7 +132,7 @@ export class ForcePlot {
     }
     ctx.stroke();
     drawScenarioPath(ctx, run, (f) => this.pixel(run.time(f), run.value(f, o + JOINT.peakForce)),
-                     (f) => run.value(f, o + JOINT.scenario));
+                     (f) => run.value(f, o + JOINT.scenario), this.joint);
   }
 
   pixel(t, force) {

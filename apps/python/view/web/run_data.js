@@ -29,6 +29,14 @@ export class RunData {
     this.frameCount = manifest.frame_count;
     this.colours = new Map(manifest.scenarios.map((s) => [s.code, s.colour]));
     this.labels = new Map(manifest.scenarios.map((s) => [s.code, s.label]));
+    // A joint's own table of scenario codes (a pin in a hole writes PinInHoleScenario codes).
+    this.jointColours = new Map();
+    this.jointLabels = new Map();
+    for (const j of manifest.joints ?? []) {
+      if (!j.scenarios) continue;
+      this.jointColours.set(j, new Map(j.scenarios.map((s) => [s.code, s.colour])));
+      this.jointLabels.set(j, new Map(j.scenarios.map((s) => [s.code, s.label])));
+    }
   }
 
   time(frame) { return this.data[frame * this.stride]; }
@@ -44,7 +52,13 @@ export class RunData {
     return Math.min(n - 1, Math.max(0, k));
   }
 
-  scenarioColour(code) { return this.colours.get(code) ?? "#ff00ff"; }
+  // The colour and label of a scenario code of `joint` (a manifest joint; without one, the
+  // paper's table).
+  scenarioColour(code, joint) {
+    return (this.jointColours.get(joint) ?? this.colours).get(code) ?? "#ff00ff";
+  }
 
-  scenarioLabel(code) { return this.labels.get(code) ?? `scenario ${code}`; }
+  scenarioLabel(code, joint) {
+    return (this.jointLabels.get(joint) ?? this.labels).get(code) ?? `scenario ${code}`;
+  }
 }

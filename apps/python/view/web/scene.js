@@ -90,7 +90,7 @@ class JointView {
     this.rimA.position.copy(centre).addScaledVector(shown, 0.5 * this.shownLength);
 
     const scenario = run.value(frame, o + JOINT.scenario);
-    const colour = new THREE.Color(run.scenarioColour(scenario));
+    const colour = new THREE.Color(run.scenarioColour(scenario, this.joint));
     this.shownColours = [];
     for (let k = 0; k < this.contacts.length; ++k) {
       const base = o + JOINT.contacts + k * CONTACT_FLOATS;
