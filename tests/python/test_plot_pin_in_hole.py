@@ -121,3 +121,13 @@ def test_a_run_folder_without_its_model_keeps_the_papers_table(runs):
     figure = plot.joint_figure(run)
     assert "(a) single radial" in legend_texts(figure)
     plt.close(figure)
+
+
+def test_clearjoint_plot_writes_the_pin_in_hole_names_into_the_figure(runs, tmp_path, cli):
+    done = subprocess.run([str(cli), "plot", str(runs["hdf5"]), "--out", str(tmp_path),
+                           "--panels", "orbit", "--format", "svg"], capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
+    svg = (tmp_path / "joint_ground-crank_pin.svg").read_text()
+    # Matplotlib keeps each text as a comment beside its glyph paths.
+    assert "one hole edge against the pin" in svg and "contact scenario (pin in hole)" in svg
+    assert "single radial" not in svg
