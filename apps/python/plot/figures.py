@@ -156,7 +156,8 @@ def joint_figure(run: Any, joint: Optional[str] = None, *, model: Any = None, id
             draw.plot_orbit(legend_axes, series, "a", title="journal centre")
         legend_axes.legend(handles=draw.scenario_legend_handles(series.scenario, geometry=series.geometry),
                            fontsize=7, loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0.0,
-                           title=SCENARIO_LEGEND_TITLES.get(series.geometry, SCENARIO_LEGEND_TITLES[JOURNAL_BEARING]),
+                           title=SCENARIO_LEGEND_TITLES.get(series.geometry,
+                                                            SCENARIO_LEGEND_TITLES[JOURNAL_BEARING]),
                            title_fontsize=8)
         row = 1
     shared = None
