@@ -204,3 +204,12 @@ def test_dimensions_of_the_papers_joint_are_refused_with_a_type_error():
                                        journal_length=19.8)
     with pytest.raises(TypeError, match="must be a clearjoint.PinInHoleDimensions"):
         clearjoint.detect_pin_in_hole(paper, HOLE[0], HOLE[1], [0.0, 0.0, 0.0], [0.0, 0.0, 1.0])
+
+
+def test_scenario_label_names_a_pin_in_hole_member_from_the_pin_in_hole_table():
+    labels = {code: text for _, code, text in next(
+        members for name, _, members in clearjoint._core._enum_tables() if name == "PinInHoleScenario")}
+    for member in clearjoint.PinInHoleScenario:
+        assert clearjoint.scenario_label(member) == labels[int(member)], member
+    # A plain code, or a ContactScenario member, is still the paper's (Fig. 2).
+    assert clearjoint.scenario_label(1) == clearjoint.scenario_label(clearjoint.ContactScenario(1)) == "(a) single radial"

@@ -23,9 +23,9 @@ vectors in the world frame.
 from ._core import (Certificate, CircleCylinderIntersection, CirclePlaneIntersection, Contact,
                     JointContacts, JointDimensions, PinInHoleContacts, PinInHoleDimensions, RimArc,
                     RimCrossing, SolverError, __version__,
-                    certificate_reason_text, scenario_label)
+                    certificate_reason_text)
 from ._enums import (Certainty, CertificateReason, CircleCylinderTopology, CirclePlaneTopology,
-                     ContactBase, ContactScenario, ContactType, PinInHoleScenario)
+                     ContactBase, ContactScenario, ContactType, PinInHoleScenario, scenario_label)
 from ._detect import (MAX_CONTACTS, CircleCylinderBatch, CirclePlaneBatch, DetectionBatch, detect,
                       detect_pin_in_hole, intersect_circle_cylinder, intersect_circle_plane)
 from ._simulate import SimulationResult, read_run, simulate

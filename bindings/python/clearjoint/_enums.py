@@ -35,3 +35,17 @@ CirclePlaneTopology = _CLASSES["CirclePlaneTopology"]
 CircleCylinderTopology = _CLASSES["CircleCylinderTopology"]
 # Not a result's enum: the clearance joint's output columns, which clearjoint.plot names.
 ContactSlot = _CLASSES["ContactSlot"]
+
+# Each table's labels by code, for scenario_label: a PinInHoleScenario member is an int like a
+# ContactScenario code, so its class, not its value, says which table labels it.
+_LABELS = {name: {code: text for _, code, text in members} for name, _, members in _core._enum_tables()}
+
+
+def scenario_label(scenario) -> str:
+    """The scenario's label for people ("(a) single radial", "one hole edge against the pin",
+    "none", ...): a PinInHoleScenario member by the pin-in-hole table, a ContactScenario member or a
+    plain code by the paper's (Fig. 2); clearjoint detect writes the key instead."""
+    if isinstance(scenario, PinInHoleScenario):
+        return _LABELS["PinInHoleScenario"][int(scenario)]
+    return _core.scenario_label(scenario)
+
