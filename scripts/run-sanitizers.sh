@@ -99,7 +99,12 @@ cmake -S . -B build-sanitize "${config[@]}" -DCMAKE_CXX_FLAGS="$flags" -DCMAKE_C
       -DCMAKE_SHARED_LINKER_FLAGS="-fsanitize=address,undefined" >build-sanitize/configure.log 2>&1 ||
   { cat build-sanitize/configure.log; exit 1; }
 
-export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:detect_stack_use_after_return=1
+# fast_unwind_on_malloc=0: Debian's libraries are built without frame pointers, so the fast
+# unwinder stops a report's stack at the first library frame; the suppressions below match a
+# leak by the library function that allocated it, which only the whole stack shows.
+export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:detect_stack_use_after_return=1:fast_unwind_on_malloc=0
+# Leaks inside third-party libraries, each named with its cause (scripts/lsan-suppressions.txt).
+export LSAN_OPTIONS=suppressions=$PWD/scripts/lsan-suppressions.txt:print_suppressions=0
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 if ((reduced)); then
   # The program (its end-to-end tests run it), the targets of tests/geometry/joint and

@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "contact_problem.hpp"
 
+#include <cstdlib>
 #include <memory>
 #include <stdexcept>
+#include <vector>
 
 #include <FrictionContactProblem.h>
 #include <Friction_cst.h>
@@ -14,8 +16,26 @@ namespace clearjoint::nonsmooth {
 
 namespace {
 
+/// Every SolverOptions below `options` (its internal solvers', recursively), then `options`.
+void collect_options(SolverOptions* options, std::vector<SolverOptions*>& found) {
+  for (std::size_t k = 0; k < options->numberOfInternalSolvers; ++k) {
+    if (options->internalSolvers[k] != nullptr) collect_options(options->internalSolvers[k], found);
+  }
+  found.push_back(options);
+}
+
+/// Siconos Numerics 4.4's solver_options_delete frees what a SolverOptions holds (its parameters,
+/// its internal solvers' contents and their list) but not the structures solver_options_create
+/// allocated: neither the options nor their internal solvers' (AddressSanitizer's leak report, one
+/// NSGS options and its local solver's every step). They are collected before the delete and
+/// freed after it.
 struct OptionsDeleter {
-  void operator()(SolverOptions* options) const { solver_options_delete(options); }
+  void operator()(SolverOptions* options) const {
+    std::vector<SolverOptions*> structures;
+    collect_options(options, structures);
+    solver_options_delete(options);
+    for (SolverOptions* structure : structures) std::free(structure);
+  }
 };
 struct MatrixDeleter {
   void operator()(NumericsMatrix* matrix) const { NM_free(matrix); }
