@@ -9,6 +9,7 @@
 #include "clearjoint/geometry/model/primitives.hpp"
 #include "clearjoint/lubrication/film_table.hpp"
 #include "clearjoint/lubrication/long_bearing.hpp"
+#include "clearjoint/lubrication/reynolds_grid.hpp"
 #include "clearjoint/lubrication/short_bearing.hpp"
 #include "refuse.hpp"
 
@@ -73,6 +74,9 @@ BearingCharacteristics bearing_characteristics(const BearingCharacteristicsQuery
   require(query.width_ratio >= kSmallestWidthRatio && query.width_ratio <= kLargestWidthRatio,
           "width_ratio", query.width_ratio,
           "must be in [1e-50, 1e50] (beyond, the outputs over- or underflow)");
+  if (query.method == BearingMethod::grid || query.method == BearingMethod::table) {
+    validate_grid_width_ratio(query.width_ratio, "width_ratio");
+  }
   if (query.method != BearingMethod::grid &&
       query.cavitation != CavitationModel::half_sommerfeld) {
     throw geometry::InvalidInput(

@@ -240,10 +240,20 @@ FilmLoad ReynoldsGridSolver::solve(const geometry::JointDimensions& dimensions,
   return solve(describe_film(dimensions, bearing, journal, hint), motion, lubricant, supply);
 }
 
+void validate_grid_width_ratio(double width_ratio, std::string_view field) {
+  if (width_ratio <= kLargestGridWidthRatio) return;
+  std::ostringstream message;
+  message << field << " = " << width_ratio
+          << ": the grid solves films at most 1e4 diameters wide (beyond, its rounding grows as the "
+             "square of the width; use method = long, the infinitely long bearing)";
+  throw geometry::InvalidInput(message.str());
+}
+
 FilmLoad ReynoldsGridSolver::solve(const FilmGeometry& film, const RelativeMotion& motion,
                                    const Lubricant& lubricant, const OilSupply& supply) {
   validate(lubricant);
   validate(supply);
+  validate_grid_width_ratio(film.width() / (2.0 * film.journal_radius), "film width / diameter");
   State& s = *state_;
   const bool grooved = supply.kind == OilSupply::Kind::axial_groove;
   if (!s.pattern_built || s.pattern_grooved != grooved) s.build_pattern(grooved);
