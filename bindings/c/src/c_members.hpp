@@ -33,6 +33,12 @@ struct Whole {
   int32_t S::*count;
 };
 
+// Deduction guides: Clang before 17 does not deduce an aggregate's template arguments (P1816).
+template <class Items, class S>
+InUse(Items S::*, int32_t S::*) -> InUse<Items, S>;
+template <class Items, class S>
+Whole(Items S::*, int32_t S::*) -> Whole<Items, S>;
+
 template <class Result>
 struct CMembers;
 
