@@ -159,3 +159,23 @@ def test_a_comparison_needs_out_and_a_known_file_format(runs, tmp_path):
                        "extension")
     one_sentence_error(run_plot(runs["dry hdf5"], runs["lubricated csv"], "--out", tmp_path / "x.png",
                                 "--label", "only one"), "labels: 1 given for 2 runs")
+
+
+def test_the_notes_under_the_figure_overlap_no_axis_or_its_labels(runs, tmp_path):
+    # The tutorial's four runs carry two long notes; drawn over the time axis's label they hid it.
+    forces_only = tmp_path / "forces-only"
+    forces_only.mkdir()
+    shutil.copy(runs["lubricated csv"] / f"force_{JOINT}.csv", forces_only)
+    result = plot.compare([runs["lubricated csv"], runs["dry hdf5"], forces_only],
+                          labels=["lubricated with a long label", "dry with a long label", "forces only"])
+    assert result.notes
+    result.figure.canvas.draw()
+    renderer = result.figure.canvas.get_renderer()
+    texts = {id(t): t for t in result.figure.texts + [getattr(result.figure, "_supxlabel", None)] if t is not None}
+    notes = [t for t in texts.values() if result.notes[0] in t.get_text().replace("\n", " ")]
+    assert len(notes) == 1
+    box = notes[0].get_window_extent(renderer)
+    for ax in result.figure.axes:
+        assert not box.overlaps(ax.get_tightbbox(renderer)), ax.get_ylabel()
+    assert box.y0 >= 0.0
+    plt.close(result.figure)

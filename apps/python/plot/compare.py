@@ -17,6 +17,7 @@ the span they share, past its first ``TRANSIENT_SHARE`` unless given.
 from __future__ import annotations
 
 import os
+import textwrap
 from dataclasses import dataclass, field
 from typing import Any, List, Optional, Sequence, Tuple
 
@@ -38,6 +39,9 @@ Window = Optional[Tuple[Optional[float], Optional[float]]]
 TRANSIENT_SHARE = 0.1
 #: Pressures are drawn in MPa (a film's peak pressure is 1e5 to 1e8 Pa).
 PASCALS_PER_MEGAPASCAL = 1e6
+#: The notes under the figure are wrapped at this many characters: the width of the 9-inch
+#: figure in its 7-point note font, less the left margin.
+NOTE_WIDTH = 150
 #: Colours of the runs, in order (matplotlib's default cycle, without the grey kept for ideal runs).
 RUN_COLOURS = ("tab:blue", "tab:red", "tab:green", "tab:orange", "tab:purple", "tab:brown",
                "tab:pink", "tab:olive", "tab:cyan")
@@ -243,7 +247,10 @@ def compare(runs: Sequence[Any], labels: Optional[Sequence[str]] = None, out: An
     name = table[len("force_"):]
     figure.suptitle(f"clearance joint '{name}', {start:g} s to {end:g} s", fontsize=11)
     if notes:
-        figure.text(0.01, 0.002, "; ".join(notes), fontsize=7, color="0.3", ha="left", va="bottom", wrap=True)
+        # A figure-level x label, not free text: constrained layout keeps room for it below the
+        # last axis, so the notes never cover the time axis's label.
+        figure.supxlabel("\n".join(textwrap.wrap("; ".join(notes), NOTE_WIDTH)), x=0.01, ha="left",
+                         fontsize=7, color="0.3")
     if out is not None:
         _save(figure, out, dpi)
     return Comparison(figure=figure, window=(start, end), table=table, notes=notes)
