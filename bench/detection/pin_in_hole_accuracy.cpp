@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The pin-in-hole joint's accuracy run: geometry::detect_pin_in_hole_contacts against the MPFR
-// reference (pin_in_hole_reference.hpp) on the random, near-tangent and near-parallel families
-// (pin_in_hole_families.hpp). Where the library's answer is certified or exact, its scenario and
+// reference (pin_in_hole_reference.hpp) on the random, near-tangent, near-parallel and near-flush
+// families (pin_in_hole_families.hpp). Where the library's answer is certified or exact, its scenario and
 // contact set must be the reference's and every bound (depth, both points) must enclose the
 // reference's value. Prints one line per family; with --check, exits 1 on any wrong answer, on a
 // reference that leaves too many poses undecided, or on too few answers proved to score.
@@ -122,7 +122,7 @@ int main(int argc, char** argv) {
   const struct {
     const char* name;
     std::uint64_t seed;
-  } families[] = {{"random", 4801}, {"near_tangent", 4802}, {"near_parallel", 4803}};
+  } families[] = {{"random", 4801}, {"near_tangent", 4802}, {"near_parallel", 4803}, {"near_flush", 4804}};
   bool ok = true;
   for (const auto& family : families) {
     Tally tally;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "pin_in_hole_families.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <stdexcept>
@@ -141,6 +142,29 @@ std::vector<PinInHoleInput> generate_pin_in_hole_family(const std::string& famil
         placed.pin.axis_W = (uniform(0, 1) < 0.5 ? 2.0 : -0.5) * placed.hole.axis_W;
         out.push_back(input(id + "/parallel", d, placed));
       }
+    } else if (family == "near_flush") {
+      // A pin held against one of its heads, tilted by 10^-k rad (k = 4..14): the stop's centre
+      // d beyond its face, d from half to a hundred times Ro sin(tilt) (mostly beyond the face all
+      // round, the rest crossing it) and below the axial limit.
+      PinInHoleDimensions held = d;
+      if (held.stop_count == 0) {
+        held.stop_count = 1;
+        held.stops[0] = {(uniform(0, 1) < 0.5 ? -1.0 : 1.0) * (0.5 * held.hole_length + held.radial_clearance()),
+                         held.hole_radius * uniform(1.2, 2.5)};
+      }
+      Displacement p = random_displacement(uniform, held, 0.8, 0.0, 0.0);
+      const double tilt = std::pow(10.0, -uniform.integer(4, 14)), psi = uniform(0, 2 * M_PI);
+      p.tx = tilt * std::cos(psi);
+      p.ty = tilt * std::sin(psi);
+      const geometry::AxialStop& stop = held.stops[uniform.integer(0, held.stop_count - 1)];
+      const double limit = held.stop_count == 2 ? held.axial_clearance() : 0.5 * held.hole_length;
+      const double depth = std::min(0.9 * limit, stop.outer_radius * tilt * uniform.log(0.5, 100.0));
+      const double cosine = 1.0 / std::sqrt(1.0 + tilt * tilt);
+      // The stop's centre along the hole's axis is p.z + s cos(tilt); face A at +L/2 for a head on
+      // the positive side, face B at -L/2 otherwise.
+      p.z = stop.position > 0.0 ? 0.5 * held.hole_length - stop.position * cosine - depth
+                                : depth - 0.5 * held.hole_length - stop.position * cosine;
+      out.push_back(input(id, held, place(f, centre, hole_length, pin_length, p)));
     } else {
       throw std::invalid_argument("unknown pin-in-hole family: " + family);
     }

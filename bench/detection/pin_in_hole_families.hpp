@@ -14,6 +14,9 @@
 ///                  then either side of it): every candidate within a few ulps of touching.
 ///   near_parallel  tilts of 10^-k rad, k = 8..16, and exactly parallel axes (a tenth), offsets
 ///                  within 1e-6 of the line contact's threshold.
+///   near_flush     a pin held against a head (one added where the joint has none), tilted by
+///                  10^-k rad (k = 4..14), the stop's centre 0.5-100 Ro sin(tilt) beyond its face:
+///                  mostly an outer circle beyond the face all round.
 
 #include <cstdint>
 #include <string>
@@ -31,7 +34,7 @@ struct PinInHoleInput {
   geometry::PartPose pin;
 };
 
-/// The family's inputs: "random", "near_tangent" or "near_parallel"; `count` of them.
+/// The family's inputs: "random", "near_tangent", "near_parallel" or "near_flush"; `count` of them.
 std::vector<PinInHoleInput> generate_pin_in_hole_family(const std::string& family, int count, std::uint64_t seed);
 
 }  // namespace clearjoint::bench

@@ -224,7 +224,6 @@ void stop_against_face(const Joint& j, const geometry::AxialStop& stop, bool ali
     contact.p_WCi = sub(stop_centre, scale(contact.depth, into_link));
     ++out.faces;
   } else {
-    const bool all_round = decided_sign(reach.alpha - reach.rho, size, out.tie) > 0;
     // Does the outer circle lie wholly outside the bore (every point farther than Rh from the
     // hole's axis)?
     const TrigQuadratic h = cylinder_excess(outer, j.p_i, j.hole_dir, j.hole_radius);
@@ -236,11 +235,11 @@ void stop_against_face(const Joint& j, const geometry::AxialStop& stop, bool ali
     }
     const bool outside = roots.angles.empty() && decided_sign(h.at(Real(0)), extent * extent, out.tie) > 0;
     if (outside) {
+      // The deepest point of the outer circle, whether part of it or all of it lies beyond the
+      // face (a stop nearly flush on a tilted pin is an ordinary stop contact).
       contact.depth = reach.alpha + reach.rho;
       contact.p_WCj = add(outer.center, scale(outer.radius, normalized(reach.w)));
       contact.p_WCi = sub(contact.p_WCj, scale(contact.depth, into_link));
-      contact.points_defined = !all_round;
-      if (all_round) out.beyond = true;
     } else {
       out.beyond = true;
       const Real head_side = stop.position > 0.0 ? 1 : -1;

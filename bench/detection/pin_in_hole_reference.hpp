@@ -18,7 +18,7 @@
 ///   with depth Rp minus the middle's distance from the pin's axis and the radial normal there.
 /// * A stop against its face: the signed distance of its outer circle beyond the face plane
 ///   (into the link) is alpha + rho cos(theta - theta0) in closed form; the contact is the
-///   deepest point. Whether the outer circle reaches over the hole: the roots and sign of the
+///   deepest point, the circle crossing the face or lying beyond it all round. Whether the outer circle reaches over the hole: the roots and sign of the
 ///   bore's excess on it. Over the hole, the edge circle against the stop's plane instead, in the
 ///   same closed form.
 /// * Parallel axes (eq. 5 exactly on the stored axes): the hole's mid circle against the pin (a
@@ -41,7 +41,8 @@ struct PinInHoleReferenceContact {
   geometry::ContactBase base = geometry::ContactBase::a;
   RealVector p_WCj, p_WCi, normal_W;
   Real depth;
-  /// False where the library documents only a loose point (a circle beyond a surface all round).
+  /// False where the library documents only a loose point (beyond the model: an edge inside the
+  /// pin all round, a stop's outer circle over the hole).
   bool points_defined = true;
 };
 

@@ -41,6 +41,11 @@ constexpr double kAPrioriFactor = 64.0;
 /// cosine each within a few ulps (primitives.hpp): within 16u of |centre|_1 + 2 r (a factor of
 /// two above the count of roundings).
 constexpr double kPointEvaluationFactor = 16.0;
+/// The deepest direction of a circle wholly beyond a plane, (n - (n . c) c) . (u, v) from the unit
+/// normals n, c (each within 3u of exact) and the rim frame u, v (a few ulps from the exact
+/// frame): about a dozen roundings of magnitudes at most 1, so within 12u absolutely (Higham,
+/// Lemma 3.3); kAPrioriFactor u leaves the same factor of five as the bounds above.
+constexpr double kDeepestDirectionError = kAPrioriFactor * kUnitRoundoff;
 
 /// a*b == c*d in real arithmetic: Dekker's two-product in range, rationals otherwise.
 bool products_equal(double a, double b, double c, double d) {
@@ -315,14 +320,25 @@ void stop_contact(const Circle3& circle, const detail::RoundedPoint& centre, con
   double angle = query.penetration.middle();
   double point_error = 0.0;
   if (query.penetration.full) {
-    // The whole circle beyond: its deepest point, along the plane normal's part in the circle's
-    // plane (beyond the model; its bound is the circle's diameter, as for any of its points).
+    // The whole circle beyond (a stop nearly flush on a tilted pin): its deepest point, where the
+    // plane normal's part in the circle's plane points (eq. 14's theta_m, which is also the middle
+    // of a penetration arc, so the contact moves continuously as the circle comes to lie beyond).
     const Vector3 n_hat = circle.normal.normalized();
-    const Vector3 towards = (on_pin ? normal : Vector3(-normal)) - (on_pin ? normal : Vector3(-normal)).dot(n_hat) * n_hat;
-    const double along_u = towards.dot(frame.u);
-    const double along_v = towards.dot(frame.v);
-    angle = (along_u == 0.0 && along_v == 0.0) ? 0.0 : std::atan2(along_v, along_u);
-    point_error = 2.0 * circle.radius + centre.error;
+    const Vector3 toward = on_pin ? normal : Vector3(-normal);
+    const Vector3 in_plane = toward - toward.dot(n_hat) * n_hat;
+    const double along_u = in_plane.dot(frame.u);
+    const double along_v = in_plane.dot(frame.v);
+    const double length = std::hypot(along_u, along_v);
+    angle = length == 0.0 ? 0.0 : std::atan2(along_v, along_u);
+    // (along_u, along_v) is within kDeepestDirectionError of its exact value; a vector of length
+    // l displaced by e < l turns by at most asin(e / l) <= (pi/2) e / l. Where that reaches pi
+    // (axes parallel to within rounding) any circle point is within the diameter of the deepest.
+    const double turn = length > 2.0 * kDeepestDirectionError ? 2.0 * kDeepestDirectionError / length
+                                                              : std::numbers::pi;
+    point_error = turn >= std::numbers::pi
+                      ? 2.0 * circle.radius + centre.error
+                      : centre.error + circle.radius * turn +
+                            kPointEvaluationFactor * kUnitRoundoff * (centre.value.cwiseAbs().sum() + 2.0 * circle.radius);
   } else {
     point_error = centre.error + circle.radius * largest_angle_error(query.crossings, query.crossing_count) +
                   kPointEvaluationFactor * kUnitRoundoff * (centre.value.cwiseAbs().sum() + 2.0 * circle.radius);
@@ -377,8 +393,9 @@ void stop_against_face(const Setup& s, const AxialStop& stop, double axial_limit
   }
   tally.add(over_hole.certificate);
   if (over_hole.topology == CircleCylinderTopology::outside) {
+    // Beyond the face all round (flush, the axes barely tilted) is an ordinary stop contact at
+    // the circle's deepest point.
     stop_contact(outer, centre, query, true, into_link_hat, base, contact);
-    if (query.penetration.full) tally.beyond = true;
   } else {
     // The stop's outer circle reaches over the hole: the hole's edge against the stop's plane
     // (its normal into the stop's head), whose penetration is the link's edge inside the head.

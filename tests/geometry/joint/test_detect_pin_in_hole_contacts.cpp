@@ -135,6 +135,39 @@ TEST(DetectPinInHoleContacts, ATiltedPinPushedAxiallyBearsOnOneStopAtItsOuterCir
   EXPECT_LE(std::fabs(stop.depth - double(depth)), stop.depth_error + 1e-15);
 }
 
+TEST(DetectPinInHoleContacts, ATiltedPinHeldAgainstItsHeadBearsOnTheOuterCirclesDeepestPoint) {
+  // A pin pressed against head B and barely tilted: axis a = (0, sin t, cos t) with t = 1e-4
+  // through (0, 0, z0), the stop at -10.5 (outer radius 16) with its centre d = z0 - 10.5 cos t
+  // + 10 = 0.01 beyond face B (z = -10). Its outer circle dips between d - 16 sin t = 0.0084 and
+  // d + 16 sin t = 0.0116 into the link: beyond the face all round, a stop contact at the
+  // deepest point c + 16 (0, -cos t, sin t) (eq. 14's theta_m, as for an arc), depth d + 16 sin t.
+  const long double t = 1e-4L;
+  const double z0 = double(0.01L - 10.0L + 10.5L * std::cos(t));
+  const PinInHoleContacts answer = detect_pin_in_hole_contacts(
+      joint(), kHole, PartPose{Vector3(0.0, 0.0, z0), Vector3(0.0, double(std::sin(t)), double(std::cos(t)))});
+  const long double centre_depth = z0 - 10.5L * std::cos(t) + 10.0L;
+  const long double depth = centre_depth + 16.0L * std::sin(t);
+  const Vector3 point(0.0, double(-10.5L * std::sin(t) - 16.0L * std::cos(t)),
+                      double(z0 - 10.5L * std::cos(t) + 16.0L * std::sin(t)));
+  EXPECT_EQ(answer.scenario, PinInHoleScenario::one_stop);
+  EXPECT_FALSE(answer.aligned);
+  ASSERT_EQ(answer.contact_count, 1);
+  const Contact& stop = answer.contacts[0];
+  EXPECT_EQ(stop.type, ContactType::axial);
+  EXPECT_EQ(stop.base, ContactBase::b);
+  EXPECT_NEAR(stop.depth, double(depth), kClosedFormTolerance);
+  EXPECT_TRUE((stop.p_WCj - point).norm() < kClosedFormTolerance) << stop.p_WCj.transpose();
+  EXPECT_TRUE((stop.p_WCi - Vector3(point.x(), point.y(), -10.0)).norm() < kClosedFormTolerance)
+      << stop.p_WCi.transpose();
+  EXPECT_TRUE((stop.normal_W - Vector3::UnitZ()).norm() < kClosedFormTolerance);
+  EXPECT_TRUE(decided(answer.certificate));
+  // Bounds that enclose the closed form and are of the direction's rounding over the tilt
+  // (16 * 128 u / t = 2.3e-9), not the circle's diameter.
+  EXPECT_LE(std::fabs(stop.depth - double(depth)), stop.depth_error + 1e-15);
+  EXPECT_LE((stop.p_WCj - point).norm(), stop.p_WCj_error + 1e-15);
+  EXPECT_LT(stop.p_WCj_error, 1e-8);
+}
+
 TEST(DetectPinInHoleContacts, ACentredPinTouchesNothingAndThatIsProved) {
   const PinInHoleContacts answer = detect_pin_in_hole_contacts(joint(), kHole, PartPose{});
   EXPECT_EQ(answer.scenario, PinInHoleScenario::none);
