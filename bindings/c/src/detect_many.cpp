@@ -4,35 +4,9 @@
 #include <cstring>
 #include <string>
 
-#include "conversions.hpp"
+#include "pose_arrays.hpp"
 
 using namespace clearjoint::c_api;
-
-namespace {
-
-/// Pose k of `poses` (clearjoint.h: component c at component[c] + k * stride bytes). memcpy,
-/// because an array of the caller's own structs need not keep its doubles aligned.
-geo::PartPose pose_at(const cj_pose_array& poses, size_t k) {
-  const std::ptrdiff_t offset = static_cast<std::ptrdiff_t>(k) * poses.stride;
-  double v[6];
-  for (int c = 0; c < 6; ++c) {
-    std::memcpy(&v[c], reinterpret_cast<const char*>(poses.component[c]) + offset, sizeof(double));
-  }
-  // Through Eigen::Map, as pose_of (conversions.hpp), for the same reason.
-  return {Eigen::Map<const geo::Vector3>(v), Eigen::Map<const geo::Vector3>(v + 3)};
-}
-
-void require_components(const cj_pose_array* poses, const char* name) {
-  require_not_null(poses, name, "a cj_pose_array");
-  for (int c = 0; c < 6; ++c) {
-    if (poses->component[c] == nullptr) {
-      throw clearjoint::ValidationError(std::string(name) + ".component[" + std::to_string(c) + "]",
-                                        " = NULL: must point to the first pose's value");
-    }
-  }
-}
-
-}  // namespace
 
 extern "C" cj_status cj_detect_many(const cj_dimensions* dimensions, const cj_pose_array* bearings,
                                     const cj_pose_array* journals, size_t count,
@@ -42,6 +16,7 @@ extern "C" cj_status cj_detect_many(const cj_dimensions* dimensions, const cj_po
   const cj_status status = reporting_failures(message, message_capacity, [&] {
     require_not_null(dimensions, "dimensions", "the joint's dimensions");
     if (count == 0) return;
+    require_count(count, sizeof(cj_result), "cj_result");
     require_components(bearings, "bearings");
     require_components(journals, "journals");
     require_not_null(results, "results", "count cj_result");

@@ -320,6 +320,22 @@ TEST(CApi, DetectManyStopsAtTheFirstBadPoseAndNamesIt) {
   EXPECT_STREQ(message, "journals.component[4] = NULL: must point to the first pose's value");
 }
 
+TEST(CApi, DetectManyRefusesACountNoArrayCanHoldWithoutReadingAPose) {
+  const cj_dimensions dims = c_dimensions(geo::testing::kTable2);
+  const cj_pose_array bearings = cj_pose_array_repeat(&kBearing);
+  cj_result one;
+  std::size_t processed = 99;
+  char message[256];
+  // (size_t)-1: a negative count converted, the usual way such a count arises.
+  EXPECT_EQ(cj_detect_many(&dims, &bearings, &bearings, SIZE_MAX, nullptr, &one, &processed, message, sizeof message),
+            CJ_INVALID_INPUT);
+  EXPECT_EQ(std::string(message).rfind("count = 18446744073709551615: more poses than an array of cj_result can hold",
+                                       0),
+            0u)
+      << message;
+  EXPECT_EQ(processed, 0u);
+}
+
 TEST(CApi, DetectManyOfNoPosesSucceedsWithoutReadingAnything) {
   const cj_dimensions dims = c_dimensions(geo::testing::kTable2);
   std::size_t processed = 7;

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Writes the inputs of the pin-in-hole equivalence test (README.md in this folder, "The
 // pin-in-hole joint"): the shipped scenario examples, option variants and bad inputs, then
-// random realistic poses, near-parallel ones among them; every record is answered by one call.
+// random realistic poses, near-parallel ones among them, one joint and the default options: the
+// records the batch calls answer.
 //
 // usage: write_pin_in_hole_inputs EXAMPLES FILE [RANDOM_POSES]
 
@@ -149,6 +150,7 @@ int main(int argc, char** argv) {
   const std::vector<Record> random = random_poses(random_count);
   std::vector<double> data(kRecord, 0.0);
   data[0] = static_cast<double>(cases.size() + random.size());
+  data[1] = static_cast<double>(cases.size());  // the random poses after them: the batch calls'
   for (const Record& r : cases) append(data, r);
   for (const Record& r : random) append(data, r);
   std::FILE* file = std::fopen(argv[2], "wb");

@@ -371,6 +371,8 @@ CJ_API cj_pose_array cj_pose_array_repeat(const cj_pose* pose);
  * Stops at the first pose that fails: results before it are set, results from it on untouched,
  * the message names the pose ("poses[17]: journal.axis_W = [0, 0, 0]: must not be the zero
  * vector"), and `*processed` (when not NULL) receives the number of results set (count on CJ_OK).
+ * A count larger than any array of cj_result can be (PTRDIFF_MAX bytes) is CJ_INVALID_INPUT
+ * naming `count`.
  */
 CJ_API cj_status cj_detect_many(const cj_dimensions* dimensions, const cj_pose_array* bearings,
                                 const cj_pose_array* journals, size_t count,
@@ -440,6 +442,22 @@ CJ_API cj_status cj_detect_pin_in_hole(const cj_pin_in_hole_dimensions* dimensio
                                        const cj_pose* hole, const cj_pose* pin,
                                        const cj_options* options, cj_pin_in_hole_result* result,
                                        char* message, size_t message_capacity);
+
+/**
+ * cj_detect_pin_in_hole for poses k = 0 .. count-1, read in place as cj_detect_many reads its
+ * poses (cj_pose_array; cj_pose_array_repeat() for a hole that stays put): results[k] is the
+ * answer for holes k and pins k, bit for bit the answer of cj_detect_pin_in_hole on that pose.
+ * The dimensions and options are checked once, before any pose. Stops at the first pose that
+ * fails: results before it are set, results from it on untouched, the message names the pose
+ * ("poses[17]: pin.axis_W = [0, 0, 0]: must not be the zero vector"), and `*processed` (when not
+ * NULL) receives the number of results set (count on CJ_OK). A count larger than any array of
+ * cj_pin_in_hole_result can be (PTRDIFF_MAX bytes) is CJ_INVALID_INPUT naming `count`.
+ */
+CJ_API cj_status cj_detect_pin_in_hole_many(const cj_pin_in_hole_dimensions* dimensions,
+                                            const cj_pose_array* holes, const cj_pose_array* pins,
+                                            size_t count, const cj_options* options,
+                                            cj_pin_in_hole_result* results, size_t* processed,
+                                            char* message, size_t message_capacity);
 
 /* ---- Kernel queries --------------------------------------------------------------------------- */
 
