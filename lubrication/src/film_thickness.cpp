@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <sstream>
 
@@ -24,6 +25,13 @@ constexpr double kSmallestUsableHintFraction = 1e-8;
 /// Golden-section steps in thinnest_film: the bracket shrinks by 0.618^48 ~ 1e-10, well below
 /// where h (quadratic near its minimum) changes in double.
 constexpr int kGoldenSectionSteps = 48;
+
+/// A journal tilted by gamma cuts the plane z in an ellipse between the circles of radii R_j and
+/// R_j / cos(gamma) about its axis' point, so the film along e(z)'s direction exceeds the
+/// thinnest by at most R_j (1 / cos(gamma) - 1). Below this fraction of R_j (the unit roundoff,
+/// the size of film_thickness's own rounding, a few ulps of R_j) that direction is the minimum
+/// to rounding and thinnest_film skips the search: gamma below 2e-8 rad, an aligned journal.
+constexpr double kAlignedExcessFraction = std::numeric_limits<double>::epsilon();
 
 Vector3 perpendicular_unit(const Vector3& axis, const Vector3& hint) {
   Vector3 perpendicular = hint - hint.dot(axis) * axis;
@@ -158,10 +166,24 @@ ThinnestFilm thinnest_film(const FilmGeometry& film) {
   const double golden = 0.5 * (std::sqrt(5.0) - 1.0);
   ThinnestFilm best;
   bool first = true;
+  // 1 / cos(gamma) - 1 = sin^2 / (cos (1 + cos)), with sin from the cross product: exact for the
+  // small tilts where 1 - cos would round away.
+  const double axis_cosine = std::abs(film.journal_axis_W.dot(film.axis_W));
+  const double axis_sine = film.journal_axis_W.cross(film.axis_W).norm();
+  const bool aligned =
+      axis_sine * axis_sine <= kAlignedExcessFraction * axis_cosine * (1.0 + axis_cosine);
   for (const double z : {film.z_low, film.z_high}) {
     const Vector3 offset = journal_offset(film, z);
     const double centre =
         std::atan2(offset.dot(film.theta_quarter_W), offset.dot(film.theta_zero_W));
+    if (aligned) {
+      const double h = film_thickness(film, centre, z);
+      if (first || h < best.thickness) {
+        best = ThinnestFilm{h, wrap_angle(centre), z};
+        first = false;
+      }
+      continue;
+    }
     double low = centre - kThinnestFilmAngularBracket;
     double high = centre + kThinnestFilmAngularBracket;
     double left = high - golden * (high - low);

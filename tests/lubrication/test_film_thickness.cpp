@@ -66,6 +66,23 @@ TEST(FilmThickness, OfATiltedJournalVariesAlongTheAxisAndIsThinnestAtAnEnd) {
   EXPECT_LT(film_thickness(film, 0.0, film.z_high) - film_thickness(film, 0.0, film.z_low), -1.5 * c);
 }
 
+TEST(FilmThickness, OfAnAlignedJournalIsThinnestExactlyOnTheLineOfCentres) {
+  // The journal's section is a circle about its axis' point: h is least in that direction, where
+  // the first-order film gives c - |e|, at both ends alike (ties go to z_low).
+  const double c = kJoint.radial_clearance();
+  const Vector3 offset(0.6 * c, -0.3 * c, 0.0);
+  const FilmGeometry film = describe_film(kJoint, at(Vector3::Zero()), at(offset), Vector3::UnitX());
+  const ThinnestFilm thinnest = thinnest_film(film);
+  const double direction = std::atan2(-0.3, 0.6) + 2.0 * std::numbers::pi;
+  EXPECT_EQ(thinnest.theta, direction);
+  EXPECT_EQ(thinnest.z, film.z_low);
+  EXPECT_EQ(thinnest.thickness, film_thickness(film, direction, film.z_low));
+  EXPECT_NEAR(thinnest.thickness, c - offset.norm(), c * c / kJoint.journal_radius);
+  for (int i = -50; i <= 50; ++i) {
+    EXPECT_LE(thinnest.thickness, film_thickness(film, direction + i * 1e-3, 0.0));
+  }
+}
+
 TEST(FilmThickness, IsTheSameInMillimetresAsInMetresScaled) {
   const double c = kJoint.radial_clearance();
   const JointDimensions mm{10.0, 40.0, 9.99, 38.0};

@@ -87,7 +87,9 @@ struct ThinnestFilm {
 /// h_min over the film. To first order in c / R, h(theta, z) = c - e(z) . n(theta) with e(z)
 /// affine in z, so min over theta is c - |e(z)|, concave in z: the minimum lies at an end of the
 /// film, in the direction of e there. Each end is refined by golden-section search in theta
-/// around that direction (kThinnestFilmAngularBracket), to the exact h.
+/// around that direction (kThinnestFilmAngularBracket), to the exact h. An aligned journal's
+/// film is exactly thinnest in that direction (its section is a circle about e(z)'s point): for a
+/// tilt whose effect on h is below rounding (film_thickness.cpp) the search is skipped.
 ThinnestFilm thinnest_film(const FilmGeometry& film);
 
 /// Half-width of the theta bracket searched around e(z)'s direction (rad). The exact minimum
