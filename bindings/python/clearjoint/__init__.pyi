@@ -45,6 +45,7 @@ class CertificateReason(enum.IntEnum):
     contact_not_representable_in_world = 14
     axes_parallel_within_tolerance = 15
     beyond_model_undecided = 16
+    edge_sides_undecided = 17
 
 class ContactScenario(enum.IntEnum):
     none = 0
@@ -290,6 +291,39 @@ class DetectionBatch(ArrayResult):
     def poses(self) -> Any: ...     # pandas.DataFrame, or Dict[str, NDArray] without pandas
     def contacts(self) -> Any: ...  # pandas.DataFrame, or Dict[str, NDArray] without pandas
 
+class PinInHoleBatch(ArrayResult):
+    scenario: npt.NDArray[np.int8]            # (N,) PinInHoleScenario codes
+    aligned: npt.NDArray[np.bool_]            # (N,)
+    certificate: npt.NDArray[np.int8]         # (N,)
+    certificate_reason: npt.NDArray[np.int8]  # (N,)
+    contact_count: npt.NDArray[np.int8]       # (N,)
+    contact_start: npt.NDArray[np.int64]      # (N + 1,)
+    contact_pose: npt.NDArray[np.int64]       # (M,)
+    contact_type: npt.NDArray[np.int8]        # (M,)
+    contact_base: npt.NDArray[np.int8]        # (M,)
+    depth: npt.NDArray[np.float64]            # (M,)
+    depth_error: npt.NDArray[np.float64]      # (M,)
+    point_journal: npt.NDArray[np.float64]    # (M, 3) on the pin
+    point_journal_error: npt.NDArray[np.float64]  # (M,)
+    point_bearing: npt.NDArray[np.float64]    # (M, 3) on the link
+    point_bearing_error: npt.NDArray[np.float64]  # (M,)
+    normal: npt.NDArray[np.float64]           # (M, 3)
+    crossing_count: npt.NDArray[np.int8]      # (M,)
+    crossing_angle: npt.NDArray[np.float64]   # (M, 2)
+    crossing_angle_error: npt.NDArray[np.float64]  # (M, 2)
+    crossing_point: npt.NDArray[np.float64]   # (M, 2, 3)
+    crossing_point_error: npt.NDArray[np.float64]  # (M, 2)
+    crossing_multiplicity: npt.NDArray[np.int8]    # (M, 2)
+    contact_certificate: npt.NDArray[np.int8]  # (M,)
+    contact_certificate_reason: npt.NDArray[np.int8]  # (M,)
+    def scenarios(self) -> List[PinInHoleScenario]: ...
+    def slot(self) -> npt.NDArray[np.int64]: ...
+    def padded(self, field: str) -> npt.NDArray[Any]: ...
+    def __getitem__(self, pose: int) -> PinInHoleContacts: ...
+    def __iter__(self) -> Iterator[PinInHoleContacts]: ...
+    def poses(self) -> Any: ...     # pandas.DataFrame, or Dict[str, NDArray] without pandas
+    def contacts(self) -> Any: ...  # pandas.DataFrame, or Dict[str, NDArray] without pandas
+
 class CirclePlaneBatch(ArrayResult):
     topology: npt.NDArray[np.int8]
     side: npt.NDArray[np.int8]
@@ -336,13 +370,13 @@ def detect(dims: JointDimensions, bearing_center: _Vectors, bearing_axis: _Vecto
 @overload
 def detect_pin_in_hole(dims: PinInHoleDimensions, hole_center: _Vector, hole_axis: _Vector,
                        pin_center: _Vector, pin_axis: _Vector, *, certify: bool = ...,
-                       exact_fallback: bool = ..., parallel_angle_tolerance: float = ...
-                       ) -> PinInHoleContacts: ...
+                       exact_fallback: bool = ..., parallel_angle_tolerance: float = ...,
+                       threads: Optional[int] = ...) -> PinInHoleContacts: ...
 @overload
 def detect_pin_in_hole(dims: PinInHoleDimensions, hole_center: _Vectors, hole_axis: _Vectors,
                        pin_center: _Vectors, pin_axis: _Vectors, *, certify: bool = ...,
-                       exact_fallback: bool = ..., parallel_angle_tolerance: float = ...
-                       ) -> Union[PinInHoleContacts, List[PinInHoleContacts]]: ...
+                       exact_fallback: bool = ..., parallel_angle_tolerance: float = ...,
+                       threads: Optional[int] = ...) -> Union[PinInHoleContacts, PinInHoleBatch]: ...
 def intersect_circle_plane(circle_center: _Vectors, circle_normal: _Vectors, circle_radius: _Scalars,
                            plane_point: _Vectors, plane_normal: _Vectors, *, certify: bool = ...,
                            exact_fallback: bool = ..., threads: Optional[int] = ...

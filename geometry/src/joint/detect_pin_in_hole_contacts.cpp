@@ -46,6 +46,10 @@ constexpr double kPointEvaluationFactor = 16.0;
 /// frame): about a dozen roundings of magnitudes at most 1, so within 12u absolutely (Higham,
 /// Lemma 3.3); kAPrioriFactor u leaves the same factor of five as the bounds above.
 constexpr double kDeepestDirectionError = kAPrioriFactor * kUnitRoundoff;
+/// The rounding of n_A . n_B beyond the normals' own bounds: each unit normal w / |w| is within
+/// about 3u of the direction of the computed w (a norm and a quotient), and the dot product of two
+/// vectors of length ~1 adds 3u (Higham, eq. 3.5): 9u, rounded up to 16u.
+constexpr double kNormalDotRounding = 16.0 * kUnitRoundoff;
 
 /// a*b == c*d in real arithmetic: Dekker's two-product in range, rationals otherwise.
 bool products_equal(double a, double b, double c, double d) {
@@ -185,8 +189,9 @@ double largest_angle_error(const Crossings& crossings, int count) {
 /// A hole circle point C_i (frame at P_j, its bound `point_error`) inside the pin: the contact's
 /// pin point C_j = C_i pushed radially out from the pin's axis onto its surface, normal the
 /// radial direction, depth Rp minus the distance of C_i from the axis (the edge's counterpart of
-/// eqs. 19-23; the pin's axis passes through the origin of this frame).
-void radial_contact(const Setup& s, const Vector3& p_Ci, double point_error, Contact& contact) {
+/// eqs. 19-23; the pin's axis passes through the origin of this frame). Returns a bound on how far
+/// the computed unit normal lies from the exact one (the chord between them).
+double radial_contact(const Setup& s, const Vector3& p_Ci, double point_error, Contact& contact) {
   // w = a x (C_i x a): C_i with its component along the axis removed, without the cancellation
   // of C_i - (C_i . a) a.
   const Vector3 w = s.pin_hat.cross(p_Ci.cross(s.pin_hat));
@@ -204,6 +209,7 @@ void radial_contact(const Setup& s, const Vector3& p_Ci, double point_error, Con
   const double turn = distance > 0.0 ? 2.0 * (point_error + evaluation) / distance : kNoErrorBound;
   contact.p_WCj_error = point_error + contact.depth_error + s.pin_radius * turn +
                         kPointEvaluationFactor * kUnitRoundoff * (p_Ci.cwiseAbs().sum() + s.pin_radius);
+  return turn;
 }
 
 /// The arcs of a hole circle strictly inside the pin: the complement of the query's arcs
@@ -242,6 +248,9 @@ struct Tally {
   int axial = 0;
   bool line = false;
   int faces = 0;
+  /// Per contact: a bound on the chord between its computed unit normal and the exact one
+  /// (radial contacts; radial_contact's `turn`).
+  std::array<double, kMaxPinInHoleContacts> normal_error{};
   void add(const Certificate& c) { certificate = weakest(certificate, c); }
   /// depth > limit proved beyond; within its error of it undecided.
   void check_depth(const Contact& contact, double limit) {
@@ -286,7 +295,7 @@ void hole_circle_against_pin(const Setup& s, int sign, ContactBase base, const D
         arcs[k].full ? 2.0 * s.hole_radius + centre.error
                      : centre.error + s.hole_radius * angle_error +
                            kPointEvaluationFactor * kUnitRoundoff * (centre.value.cwiseAbs().sum() + 2.0 * s.hole_radius);
-    radial_contact(s, p_Ci, point_error, contact);
+    tally.normal_error[out.contact_count - 1] = radial_contact(s, p_Ci, point_error, contact);
     // The crossings bounding this arc: its two ends.
     for (int c = 0; c < query.crossing_count && contact.crossing_count < 2; ++c) {
       const double angle = query.crossings[c].angle;
@@ -495,6 +504,15 @@ bool passes_validation(const PinInHoleDimensions& d) {
   return ok;
 }
 
+/// Whether the sign of n_A . n_B that labels two edge contacts (classify) is that of the exact
+/// normals: |n_A . n_B| above the normals' chord bounds plus the dot's rounding. At right angles
+/// the label is not proved.
+bool edge_sides_proved(const PinInHoleContacts& out, const Tally& tally) {
+  const double facing = out.contacts[0].normal_W.dot(out.contacts[1].normal_W);
+  const double bound = (tally.normal_error[0] + tally.normal_error[1]) * (1 + 4 * kUnitRoundoff) + kNormalDotRounding;
+  return std::fabs(facing) > bound;
+}
+
 PinInHoleScenario classify(const PinInHoleContacts& out, const Tally& tally) {
   if (tally.beyond) return PinInHoleScenario::beyond_model;
   if (out.aligned) {
@@ -507,7 +525,7 @@ PinInHoleScenario classify(const PinInHoleContacts& out, const Tally& tally) {
   if (tally.radial == 1) return PinInHoleScenario::one_edge;
   if (tally.radial == 2) {
     // One contact at each edge (two at one edge is beyond the model): at opposite sides of the pin
-    // when their radial normals point apart.
+    // when their radial normals point apart (edge_sides_proved decides whether that is proved).
     return out.contacts[0].normal_W.dot(out.contacts[1].normal_W) < 0.0 ? PinInHoleScenario::both_edges_opposite
                                                                        : PinInHoleScenario::both_edges_same_side;
   }
@@ -610,6 +628,11 @@ PinInHoleContacts detect_pin_in_hole_contacts(const PinInHoleDimensions& dimensi
     tally.add({Certainty::uncertain, CertificateReason::beyond_model_undecided});
   }
   out.scenario = classify(out, tally);
+  if ((out.scenario == PinInHoleScenario::both_edges_opposite ||
+       out.scenario == PinInHoleScenario::both_edges_same_side) &&
+      !edge_sides_proved(out, tally)) {
+    tally.add({Certainty::uncertain, CertificateReason::edge_sides_undecided});
+  }
   out.certificate = tally.certificate;
   // Back to the world frame: radial contacts were found in the frame at P_j, axial ones at P_i.
   for (int k = 0; k < out.contact_count; ++k) {

@@ -371,12 +371,12 @@ TEST(CApi, NamesEveryEnumValueAndSaysUnknownForOthers) {
   EXPECT_STREQ(cj_certainty_string(CJ_CERTAINTY_CERTIFIED), "certified");
   EXPECT_STREQ(cj_certainty_string(7), "unknown");
   // Every reason C++ has, with its sentence; none has the empty one.
-  for (int r = CJ_REASON_NONE; r <= CJ_REASON_BEYOND_MODEL_UNDECIDED; ++r) {
+  for (int r = CJ_REASON_NONE; r <= CJ_REASON_EDGE_SIDES_UNDECIDED; ++r) {
     EXPECT_STREQ(cj_reason_string(r), geo::to_string(static_cast<geo::CertificateReason>(r)).data()) << r;
   }
   EXPECT_STREQ(cj_reason_string(CJ_REASON_NONE), "");
   EXPECT_STREQ(cj_reason_string(CJ_REASON_CERTIFICATE_SWITCHED_OFF), "certificate switched off");
-  EXPECT_STREQ(cj_reason_string(CJ_REASON_BEYOND_MODEL_UNDECIDED + 1), "unknown");
+  EXPECT_STREQ(cj_reason_string(CJ_REASON_EDGE_SIDES_UNDECIDED + 1), "unknown");
   EXPECT_STREQ(cj_contact_type_string(CJ_CONTACT_AXIAL), "axial");
   EXPECT_STREQ(cj_base_string(CJ_BASE_MID), "mid");
   EXPECT_STREQ(cj_base_string(3), "unknown");

@@ -168,6 +168,44 @@ TEST(DetectPinInHoleContacts, ATiltedPinHeldAgainstItsHeadBearsOnTheOuterCircles
   EXPECT_LT(stop.p_WCj_error, 1e-8);
 }
 
+TEST(DetectPinInHoleContacts, TwoEdgeNormalsAtRightAnglesLeaveTheSideLabelUncertain) {
+  // Axis a = (0, sin t, cos t) through (x, 0, 0): it crosses face A at (x, 10 tan t) and face B at
+  // (x, -10 tan t) from the hole's axis, and each edge bears on the pin towards that offset, so
+  // n_A . n_B runs from -1 (x = 0, tilted about the centre) to about +1 (x >> 10 tan t) and is 0
+  // near x = 10 tan t = 0.08. Bisected on the sign of the answer's own n_A . n_B to adjacent
+  // doubles: there the normals are at right angles to within a rounding, and whether the edges
+  // bear at opposite sides or on one side is not proved.
+  const double t = std::atan(0.008);
+  const Vector3 axis(0.0, std::sin(t), std::cos(t));
+  const auto at = [&](double x) { return detect_pin_in_hole_contacts(joint(), kHole, PartPose{Vector3(x, 0.0, 0.0), axis}); };
+  const auto facing = [](const PinInHoleContacts& answer) {
+    return answer.contacts[0].normal_W.dot(answer.contacts[1].normal_W);
+  };
+  double lo = 0.07, hi = 0.09;
+  ASSERT_EQ(at(lo).contact_count, 2);
+  ASSERT_EQ(at(hi).contact_count, 2);
+  ASSERT_LT(facing(at(lo)), 0.0);
+  ASSERT_GT(facing(at(hi)), 0.0);
+  // Far from right angles both labels are proved.
+  EXPECT_EQ(at(lo).scenario, PinInHoleScenario::both_edges_opposite);
+  EXPECT_TRUE(decided(at(lo).certificate));
+  EXPECT_EQ(at(hi).scenario, PinInHoleScenario::both_edges_same_side);
+  EXPECT_TRUE(decided(at(hi).certificate));
+  while (std::nextafter(lo, hi) < hi) {
+    const double mid = 0.5 * (lo + hi);
+    (facing(at(mid)) < 0.0 ? lo : hi) = mid;
+  }
+  for (const double x : {lo, hi}) {
+    const PinInHoleContacts answer = at(x);
+    ASSERT_EQ(answer.contact_count, 2) << x;
+    EXPECT_LT(std::fabs(facing(answer)), 1e-12) << x;
+    EXPECT_EQ(answer.certificate.level, Certainty::uncertain) << x;
+    EXPECT_EQ(answer.certificate.reason, CertificateReason::edge_sides_undecided) << x;
+    // The contacts themselves are still proved.
+    EXPECT_TRUE(decided(answer.contacts[0].certificate) && decided(answer.contacts[1].certificate)) << x;
+  }
+}
+
 TEST(DetectPinInHoleContacts, ACentredPinTouchesNothingAndThatIsProved) {
   const PinInHoleContacts answer = detect_pin_in_hole_contacts(joint(), kHole, PartPose{});
   EXPECT_EQ(answer.scenario, PinInHoleScenario::none);

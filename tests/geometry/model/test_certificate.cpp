@@ -32,7 +32,7 @@ TEST(Certificate, DefaultsToUncertainBecauseNothingDecidedIt) {
 TEST(Certificate, GivesEveryReasonButNoneADistinctNonEmptyText) {
   EXPECT_EQ(to_string(CertificateReason::none), "");
   std::set<std::string_view> texts;
-  const int last = static_cast<int>(CertificateReason::beyond_model_undecided);
+  const int last = static_cast<int>(CertificateReason::edge_sides_undecided);
   for (int i = 1; i <= last; ++i) {
     const std::string_view text = to_string(static_cast<CertificateReason>(i));
     EXPECT_NE(text, "") << i;

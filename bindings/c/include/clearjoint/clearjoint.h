@@ -155,7 +155,11 @@ typedef enum cj_reason {
   CJ_REASON_AXES_PARALLEL_WITHIN_TOLERANCE = 15,
   /** a contact's depth lies within its error bound of the clearance: whether the joint is beyond
    * the model (scenario beyond_model) is not proved; the contacts themselves are */
-  CJ_REASON_BEYOND_MODEL_UNDECIDED = 16
+  CJ_REASON_BEYOND_MODEL_UNDECIDED = 16,
+  /** the pin-in-hole joint's two edge contacts have normals at right angles within their error
+   * bounds: whether they bear at opposite sides of the pin (both_edges_opposite) or on one side
+   * (both_edges_same_side) is not proved; the contacts themselves are */
+  CJ_REASON_EDGE_SIDES_UNDECIDED = 17
 } cj_reason;
 
 /** What a contact is against (C++: ContactType). */

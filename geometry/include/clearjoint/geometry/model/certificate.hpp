@@ -50,6 +50,7 @@ enum class CertificateReason : std::uint8_t {
   contact_not_representable_in_world,  ///< a contact's point, depth or bound has no finite double bound
   axes_parallel_within_tolerance,      ///< DetectionOptions::parallel_angle_tolerance relaxed eq. (5)
   beyond_model_undecided,  ///< a depth within its error bound of the clearance: beyond the model or not
+  edge_sides_undecided,    ///< pin-in-hole: two edge normals at right angles within their bounds
 };
 
 template <>
@@ -108,6 +109,10 @@ struct EnumTable<CertificateReason> {
       named_entry(R::beyond_model_undecided, "beyond_model_undecided",
                   "a contact's depth lies within its error bound of the clearance: whether the joint is beyond "
                   "the model (scenario beyond_model) is not proved; the contacts themselves are"),
+      named_entry(R::edge_sides_undecided, "edge_sides_undecided",
+                  "the pin-in-hole joint's two edge contacts have normals at right angles within their error "
+                  "bounds: whether they bear at opposite sides of the pin (both_edges_opposite) or on one "
+                  "side (both_edges_same_side) is not proved; the contacts themselves are"),
   });
 };
 static_assert(entries_in_code_order<CertificateReason>());
