@@ -220,7 +220,7 @@ void ClearanceRevoluteJoint::detect(double time, const SystemKinematics& kinemat
 
 void ClearanceRevoluteJoint::evaluate_forces(double time, const SystemKinematics& kinematics,
                                              std::span<const double> impact_memory, Workspace& workspace,
-                                             ClearanceJointState& state) const {
+                                             ClearanceJointState& state, FilmNeed film) const {
   detect(time, kinematics, workspace, state);
   state.slots = {};
   state.film.reset();
@@ -264,11 +264,11 @@ void ClearanceRevoluteJoint::evaluate_forces(double time, const SystemKinematics
     s.normal_force += normal_force;
     s.friction_force += friction.norm();
   }
-  if (film_) evaluate_film(time, kinematics, state);
+  if (film_ && film != FilmNeed::none) evaluate_film(time, kinematics, state, film);
 }
 
 void ClearanceRevoluteJoint::evaluate_film(double time, const SystemKinematics& kinematics,
-                                           ClearanceJointState& state) const {
+                                           ClearanceJointState& state, FilmNeed film) const {
   const BodyKinematics& bi = kinematics.body(bearing_.body);
   const BodyKinematics& bj = kinematics.body(journal_.body);
   const Vector3 p_WPi = bi.point_W(bearing_.point_B);
@@ -284,7 +284,8 @@ void ClearanceRevoluteJoint::evaluate_film(double time, const SystemKinematics& 
   try {
     const std::lock_guard turn(shared_->film_turn);
     state.film = film_->evaluate(kernel_pose(bi, bearing_.point_B, bearing_.axis_B),
-                                 kernel_pose(bj, journal_.point_B, journal_.axis_B), groove_W, motion);
+                                 kernel_pose(bj, journal_.point_B, journal_.axis_B), groove_W, motion,
+                                 film == FilmNeed::outputs ? FilmDetail::outputs : FilmDetail::force);
   } catch (const std::exception& e) {  // geometry::InvalidInput, or a singular grid system
     throw SolverError("clearance joint '" + name_ + "' at t = " + format_number(time) +
                       ": the oil film cannot be solved (" + e.what() + ")");
@@ -297,7 +298,7 @@ ClearanceJointState ClearanceRevoluteJoint::evaluate(double time, const SystemKi
                                                      std::span<const double> impact_memory) const {
   ClearanceJointState state;
   WorkspaceLease lease(*shared_);
-  evaluate_forces(time, kinematics, impact_memory, lease.get(), state);
+  evaluate_forces(time, kinematics, impact_memory, lease.get(), state, FilmNeed::outputs);
   const BodyKinematics& bi = kinematics.body(bearing_.body);
   const BodyKinematics& bj = kinematics.body(journal_.body);
   // The centres the detection saw (kernel_pose.hpp).
@@ -327,7 +328,7 @@ void ClearanceRevoluteJoint::add_forces(const ForceContext& context, Generalised
   WorkspaceLease lease(*shared_);
   Workspace& workspace = lease.get();
   ClearanceJointState& state = workspace.state;
-  evaluate_forces(context.time, context.kinematics, context.extra_state, workspace, state);
+  evaluate_forces(context.time, context.kinematics, context.extra_state, workspace, state, FilmNeed::force);
   for (int c = 0; c < state.contacts.contact_count; ++c) {
     const Contact& contact = state.contacts.contacts[c];
     const Vector3& force = state.contact_force_on_journal_W[c];
@@ -372,7 +373,8 @@ bool ClearanceRevoluteJoint::update_extra_state(double time, const SystemKinemat
   WorkspaceLease lease(*shared_);
   Workspace& workspace = lease.get();
   ClearanceJointState& now = workspace.state;
-  evaluate_forces(time, kinematics, state, workspace, now);
+  // The memory follows the contacts alone: the film is not solved here.
+  evaluate_forces(time, kinematics, state, workspace, now, FilmNeed::none);
   if (beyond_model(now)) {
     shared_->beyond_model_updates.fetch_add(1, std::memory_order_relaxed);
   }

@@ -46,7 +46,7 @@ JointFilm::JointFilm(const JointLubrication& lubrication, const geometry::JointD
 JointFilmState JointFilm::evaluate(const geometry::PartPose& bearing,
                                    const geometry::PartPose& journal,
                                    const std::optional<Vector3>& groove_W,
-                                   const lubrication::RelativeMotion& motion) {
+                                   const lubrication::RelativeMotion& motion, FilmDetail detail) {
   const Vector3 axis_W = bearing.axis_W.normalized();
   lubrication::FilmGeometry film = lubrication::describe_film(
       dimensions_, bearing, journal, groove_W ? *groove_W : any_perpendicular(axis_W));
@@ -142,9 +142,11 @@ JointFilmState JointFilm::evaluate(const geometry::PartPose& bearing,
     planar.journal_spin = lubrication::journal_spin(film, motion);
     const lubrication::PlanarBearing planar_bearing{film.journal_radius, film.width(), c};
     const lubrication::PlanarFilmLoad load =
-        lubrication_.method == FilmMethod::short_bearing
-            ? lubrication::short_bearing_load(planar_bearing, planar, lubrication_.viscosity)
-            : lubrication::long_bearing_load(planar_bearing, planar, lubrication_.viscosity);
+        lubrication_.method != FilmMethod::short_bearing
+            ? lubrication::long_bearing_load(planar_bearing, planar, lubrication_.viscosity)
+        : detail == FilmDetail::force
+            ? lubrication::short_bearing_force(planar_bearing, planar, lubrication_.viscosity)
+            : lubrication::short_bearing_load(planar_bearing, planar, lubrication_.viscosity);
     force_W = load.radial * e_hat + load.tangential * t_hat;
     // Acting through the journal's axis at the mid-plane: its moment about P_j.
     const Vector3 p_WA = film.p_WB + z_mid * axis_W + e_W;

@@ -24,6 +24,15 @@ struct JointFilmStatistics {
   long table_fallbacks = 0; ///< method table: solutions the grid gave (outside the table's domain)
 };
 
+/// What JointFilm::evaluate computes beyond the force, moment, power and regime.
+enum class FilmDetail {
+  /// Also the largest pressure, as the force table records it.
+  outputs,
+  /// The force alone, for a right-hand side: max_pressure may be NaN. The short bearing's peak
+  /// pressure is a search that costs more than its force; the other methods find it for free.
+  force,
+};
+
 class JointFilm {
  public:
   /// `lubrication` must have passed validate().
@@ -42,7 +51,8 @@ class JointFilm {
   /// that does not converge is counted (statistics().not_converged) and keeps its last iterate.
   JointFilmState evaluate(const geometry::PartPose& bearing, const geometry::PartPose& journal,
                           const std::optional<Vector3>& groove_W,
-                          const lubrication::RelativeMotion& motion);
+                          const lubrication::RelativeMotion& motion,
+                          FilmDetail detail = FilmDetail::outputs);
 
   const JointFilmStatistics& statistics() const { return statistics_; }
 

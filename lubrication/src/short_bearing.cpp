@@ -82,34 +82,57 @@ double peak_shape(double eps, double delta, double low) {
   return std::max(best_value, -refined.second);
 }
 
+/// The film's coefficients for a state: G's amplitude M and phase delta (G = (6 eta / c^2) M
+/// sin(psi + delta) / (1 - eps cos psi)^3), and low, where the positive half period begins.
+struct Coefficients {
+  double a = 0.0, b = 0.0, m = 0.0, delta = 0.0, low = 0.0;
+};
+
+Coefficients coefficients_of(const PlanarFilmState& state) {
+  Coefficients k;
+  // G = (6 eta / c^2) (a sin psi + b cos psi) / (1 - eps cos psi)^3 = (6 eta / c^2) M sin(psi + delta) / ...
+  k.a = state.eccentricity_ratio * (state.journal_spin - 2.0 * state.line_of_centres_rate);
+  k.b = -2.0 * state.eccentricity_ratio_rate;
+  k.m = std::hypot(k.a, k.b);
+  if (k.m == 0.0) return k;
+  k.delta = std::atan2(k.b, k.a);
+  // p > 0 where G < 0: psi + delta in (pi, 2 pi).
+  k.low = std::numbers::pi - k.delta;
+  return k;
+}
+
 }  // namespace
 
-PlanarFilmLoad short_bearing_load(const PlanarBearing& bearing, const PlanarFilmState& state,
-                                  double viscosity) {
+PlanarFilmLoad short_bearing_force(const PlanarBearing& bearing, const PlanarFilmState& state,
+                                   double viscosity) {
   validate(bearing, state, viscosity);
   const double eps = state.eccentricity_ratio;
-  // G = (6 eta / c^2) (a sin psi + b cos psi) / (1 - eps cos psi)^3 = (6 eta / c^2) M sin(psi + delta) / ...
-  const double a = eps * (state.journal_spin - 2.0 * state.line_of_centres_rate);
-  const double b = -2.0 * state.eccentricity_ratio_rate;
-  const double m = std::hypot(a, b);
+  const Coefficients k = coefficients_of(state);
   PlanarFilmLoad load;
-  if (m == 0.0) return load;  // no wedge, no squeeze: no pressure
-  const double delta = std::atan2(b, a);
-  // p > 0 where G < 0: psi + delta in (pi, 2 pi).
-  const double low = std::numbers::pi - delta;
-  const detail::KernelIntegrals j = detail::kernel_integrals(eps, low, low + std::numbers::pi);
+  if (k.m == 0.0) return load;  // no wedge, no squeeze: no pressure
+  const detail::KernelIntegrals j = detail::kernel_integrals(eps, k.low, k.low + std::numbers::pi);
   // F . e_hat = (R B^3 / 12) integral of G cos psi; F . t_hat likewise with sin psi.
   const double c = bearing.radial_clearance;
   const double scale = viscosity * bearing.radius * std::pow(bearing.width, 3) / (2.0 * c * c);
-  load.radial = scale * (a * j.sc + b * j.cc);
-  load.tangential = scale * (a * j.ss + b * j.sc);
+  load.radial = scale * (k.a * j.sc + k.b * j.cc);
+  load.tangential = scale * (k.a * j.ss + k.b * j.sc);
   load.magnitude = std::hypot(load.radial, load.tangential);
   load.attitude_angle = std::atan2(load.tangential, -load.radial);
-  load.max_pressure = 3.0 * viscosity * bearing.width * bearing.width * m / (4.0 * c * c) *
-                      peak_shape(eps, delta, low);
+  load.max_pressure = std::numeric_limits<double>::quiet_NaN();
   // Flow out of both ends, -(h^3 / 12 eta) dp/dz at z = +-B/2, over the positive half period:
   // R B c M exactly (the h^3 cancels).
-  load.side_flow = bearing.radius * bearing.width * c * m;
+  load.side_flow = bearing.radius * bearing.width * c * k.m;
+  return load;
+}
+
+PlanarFilmLoad short_bearing_load(const PlanarBearing& bearing, const PlanarFilmState& state,
+                                  double viscosity) {
+  PlanarFilmLoad load = short_bearing_force(bearing, state, viscosity);
+  const Coefficients k = coefficients_of(state);
+  if (k.m == 0.0) return load;
+  const double c = bearing.radial_clearance;
+  load.max_pressure = 3.0 * viscosity * bearing.width * bearing.width * k.m / (4.0 * c * c) *
+                      peak_shape(state.eccentricity_ratio, k.delta, k.low);
   return load;
 }
 

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 #include <numbers>
+#include <string>
 
 #include "clearjoint/dynamics/clearance_revolute_joint.hpp"
 #include "clearjoint/dynamics/errors.hpp"
@@ -334,6 +335,31 @@ TEST(JointFilm, TabledStaysWithinHalfAPercentOfTheGridAlongTheLubricatedSection6
   });
   EXPECT_GE(compared, 100);
   std::printf("along the run: %d states, worst relative film force difference %.3g\n", compared, worst);
+}
+
+/// The film solutions a joint's run summary counts ("... film: N solutions, ...").
+long film_solutions(const ClearanceRevoluteJoint& joint) {
+  const std::string text = joint.statistics_text();
+  const size_t at = text.find(" film: ");
+  EXPECT_NE(at, std::string::npos) << text;
+  return at == std::string::npos ? -1 : std::stol(text.substr(at + 7));
+}
+
+// The impact memory's update after each accepted step reads the contacts only: the film is solved
+// once per right-hand side (its force) and never again for the update.
+TEST(JointFilm, IsSolvedOncePerRightHandSideAndNotForTheImpactMemory) {
+  for (const FilmMethod method : {FilmMethod::short_bearing, FilmMethod::table}) {
+    const ModelDescription model = lubricated_section61(method);
+    BuiltModel built = build_model(model);
+    size_t index = 0;
+    const ClearanceRevoluteJoint& joint = clearance_joint_of(*built.system, index);
+    IntegratorSettings settings = model.solver;
+    settings.end_time = 1e-3;
+    std::vector<double> y = built.initial_state;
+    const IntegrationStatistics stats = integrate(*built.system, y, settings, {});
+    EXPECT_GT(stats.steps, 10);
+    EXPECT_EQ(film_solutions(joint), stats.derivative_calls) << "method " << static_cast<int>(method);
+  }
 }
 
 TEST(JointFilm, TabledHandsATiltedJournalToTheGrid) {

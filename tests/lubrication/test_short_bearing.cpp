@@ -144,6 +144,23 @@ TEST(ShortBearing, MirrorsItsForceWhenTheSpinIsReversed) {
   EXPECT_NEAR(backward.attitude_angle, -forward.attitude_angle, 1e-12);
 }
 
+TEST(ShortBearing, GivesItsForceAloneBitForBitWithoutThePeakPressure) {
+  for (const PlanarFilmState state : {PlanarFilmState{0.6, 0.0, 0.0, 100.0}, PlanarFilmState{0.3, 40.0, -7.0, 100.0},
+                                      PlanarFilmState{0.95, -3.0, 20.0, -50.0}, PlanarFilmState{0.0, 5.0, 0.0, 0.0}}) {
+    const PlanarFilmLoad load = short_bearing_load(kBearing, state, kViscosity);
+    const PlanarFilmLoad force = short_bearing_force(kBearing, state, kViscosity);
+    EXPECT_GT(load.magnitude, 0.0);
+    EXPECT_EQ(force.radial, load.radial);
+    EXPECT_EQ(force.tangential, load.tangential);
+    EXPECT_EQ(force.magnitude, load.magnitude);
+    EXPECT_EQ(force.attitude_angle, load.attitude_angle);
+    EXPECT_EQ(force.side_flow, load.side_flow);
+    EXPECT_TRUE(std::isnan(force.max_pressure));
+    EXPECT_GT(load.max_pressure, 0.0);
+  }
+  EXPECT_THROW(short_bearing_force(kBearing, PlanarFilmState{1.0, 0.0, 0.0, 1.0}, kViscosity), geometry::InvalidInput);
+}
+
 TEST(ShortBearing, RefusesBadInputNamingIt) {
   PlanarFilmState state{1.0, 0.0, 0.0, 1.0};
   EXPECT_THROW(short_bearing_load(kBearing, state, kViscosity), geometry::InvalidInput);

@@ -234,13 +234,18 @@ class ClearanceRevoluteJoint final : public ForceElement, public ForceEvents, pu
   /// `workspace` holds for the same poses; `found` is the workspace's own state or a caller's.
   void detect(double time, const SystemKinematics& kinematics, Workspace& workspace,
               ClearanceJointState& found) const;
+  /// What an evaluation needs of a lubricated joint's film: nothing (the impact memory's update
+  /// reads the contacts only), its force (a right-hand side), or what the force table records.
+  enum class FilmNeed { none, force, outputs };
   /// Detection, contact kinematics and forces into `state` (contacts, per-contact forces, slots,
-  /// totals); not the geometry only the outputs need (axis angle, rim centres).
+  /// totals, and the film as `film` asks); not the geometry only the outputs need (axis angle,
+  /// rim centres).
   void evaluate_forces(double time, const SystemKinematics& kinematics,
                        std::span<const double> impact_memory, Workspace& workspace,
-                       ClearanceJointState& state) const;
+                       ClearanceJointState& state, FilmNeed film) const;
   /// The film of a lubricated joint into state.film, its force and moment into the totals.
-  void evaluate_film(double time, const SystemKinematics& kinematics, ClearanceJointState& state) const;
+  void evaluate_film(double time, const SystemKinematics& kinematics, ClearanceJointState& state,
+                     FilmNeed film) const;
   std::string film_statistics_text() const;
 
   std::string name_;

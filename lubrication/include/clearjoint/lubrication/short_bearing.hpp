@@ -20,4 +20,12 @@ namespace clearjoint::lubrication {
 PlanarFilmLoad short_bearing_load(const PlanarBearing& bearing, const PlanarFilmState& state,
                                   double viscosity);
 
+/// short_bearing_load without the peak pressure, whose search (32 samples and Brent's method) is
+/// most of the closed form's cost: radial, tangential, magnitude, attitude_angle and side_flow
+/// bit for bit short_bearing_load's, max_pressure NaN (0 without
+/// wedge or squeeze, as there). For callers that need the force alone,
+/// such as a right-hand side.
+PlanarFilmLoad short_bearing_force(const PlanarBearing& bearing, const PlanarFilmState& state,
+                                   double viscosity);
+
 }  // namespace clearjoint::lubrication
