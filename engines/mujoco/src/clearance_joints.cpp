@@ -8,6 +8,8 @@
 #include <vector>
 
 #include "clearjoint/dynamics/errors.hpp"
+#include "clearjoint/geometry/model/pin_in_hole_dimensions.hpp"
+#include "clearjoint/geometry/model/primitives.hpp"
 #include "two_body_clearance_joint.hpp"
 
 namespace clearjoint::mujoco {
@@ -50,10 +52,29 @@ std::vector<double> numeric(const mjModel* m, const std::string& name, int count
   return std::vector<double>(data, data + count);
 }
 
+/// Every value of the numeric element `name`; empty when the model has no such element.
+std::vector<double> all_numeric(const mjModel* m, const std::string& name) {
+  const int id = mj_name2id(m, mjOBJ_NUMERIC, name.c_str());
+  if (id < 0) return {};
+  const mjtNum* data = m->numeric_data + m->numeric_adr[id];
+  return std::vector<double>(data, data + m->numeric_size[id]);
+}
+
 /// The fields a joint's declaration may have, by element type (clearance_joints.hpp).
-constexpr std::array<std::string_view, 4> kNumericFields = {"dimensions", "normal_force", "friction",
-                                                            "parallel_angle_tolerance"};
-constexpr std::array<std::string_view, 1> kTextFields = {"normal_force_model"};
+constexpr std::array<std::string_view, 5> kNumericFields = {"dimensions", "normal_force", "friction",
+                                                            "parallel_angle_tolerance", "pin_in_hole"};
+constexpr std::array<std::string_view, 2> kTextFields = {"normal_force_model", "geometry"};
+/// The values of geometry (a model file's "geometry", dynamics/src/model_file.cpp).
+constexpr std::string_view kJournalBearing = "journal_bearing";
+constexpr std::string_view kPinInHole = "pin_in_hole";
+
+/// The geometry the joint `key` ("clearance:<name>") declares: kJournalBearing without a
+/// <text name="<key>:geometry"> element.
+std::string geometry_of(const mjModel* m, const std::string& key) {
+  const int id = mj_name2id(m, mjOBJ_TEXT, (key + ":geometry").c_str());
+  return id < 0 ? std::string(kJournalBearing) : text_of(m, id);
+}
+
 /// The oil film's fields in a model file (dynamics/src/model_file.cpp, parse_lubrication), and
 /// the object's own name: a declaration of a film, which the adapter does not run.
 constexpr std::array<std::string_view, 10> kFilmFields = {
@@ -101,6 +122,11 @@ void refuse_unknown_keys(const mjModel* m) {
       throw ModelError(element + ": no clearance joint \"" + joint + "\" is declared (<text name=\"clearance:" +
                        joint + "\">); the declared ones: " + (joint_list.empty() ? "none" : joint_list));
     }
+    if (is_one_of(field, kFilmFields) && geometry_of(m, std::string(kPrefix) + joint) == kPinInHole) {
+      // As the joint itself refuses a film on a pin (dynamics::ClearanceRevoluteJoint).
+      throw ModelError(element + ": an oil film is not supported with geometry \"pin_in_hole\" (the oil film is "
+                       "the journal-bearing's; remove the element or use the paper's joint)");
+    }
     if (is_one_of(field, kFilmFields)) {
       throw ModelError(element + ": lubricated clearance joints are not supported by the MuJoCo adapter; use "
                        "clearjoint simulate (--engine clearjoint or --engine simbody) with a model file");
@@ -113,7 +139,7 @@ void refuse_unknown_keys(const mjModel* m) {
     }
     if (!known) {
       throw ModelError(element + ": unknown field \"" + field + "\"; a clearance joint's <numeric> fields are " +
-                       joined(kNumericFields) + ", its <text> field " + joined(kTextFields));
+                       joined(kNumericFields) + ", its <text> fields " + joined(kTextFields));
     }
   };
   for (int t = 0; t < m->ntext; ++t) check(mjOBJ_TEXT, t);
@@ -134,6 +160,51 @@ dynamics::ClearanceJointPart part_at(const mjModel* m, int site_id) {
   const mjtNum* p = m->site_pos + 3 * site_id;
   return {dynamics::kGround, dynamics::Vector3(p[0], p[1], p[2]),
           dynamics::Vector3(axis[0], axis[1], axis[2])};
+}
+
+/// The dimensions of a pin-in-hole joint `name` from <numeric name="<key>:pin_in_hole">, in the
+/// model file's order: hole.radius hole.length pin.radius, then position outer_radius for each of
+/// 0, 1 or 2 stops. Checked by the kernel's validate(PinInHoleDimensions) under the model file's
+/// names ("<name>.pin.stops[1].position"), its error sourced to the element.
+geometry::PinInHoleDimensions read_pin_in_hole(const mjModel* m, const std::string& key, const std::string& name,
+                                               const std::string& declaration) {
+  const std::string field_key = key + ":pin_in_hole";
+  const std::string element = "<numeric name=\"" + field_key + "\">";
+  constexpr size_t kSizeValues = 3;  // hole.radius hole.length pin.radius
+  constexpr size_t kStopValues = 2;  // position outer_radius
+  if (mj_name2id(m, mjOBJ_NUMERIC, (key + ":dimensions").c_str()) >= 0) {
+    throw ModelError("<numeric name=\"" + key + ":dimensions\">: not used with geometry \"pin_in_hole\", whose "
+                     "sizes are " + element);
+  }
+  if (mj_name2id(m, mjOBJ_NUMERIC, field_key.c_str()) < 0) {
+    throw ModelError(declaration + ": geometry \"pin_in_hole\" needs <numeric name=\"" + field_key +
+                     "\" data=\"Rh L Rp [position outer_radius]...\"/> (metres)");
+  }
+  const std::vector<double> values = all_numeric(m, field_key);
+  const size_t n = values.size();
+  if (n < kSizeValues || (n - kSizeValues) % kStopValues != 0 ||
+      (n - kSizeValues) / kStopValues > static_cast<size_t>(geometry::kMaxAxialStops)) {
+    throw ModelError(element + ": holds " + std::to_string(n) +
+                     " values, needs 3, 5 or 7: hole.radius hole.length pin.radius, then pin.stops[k].position "
+                     "pin.stops[k].outer_radius for each of 0, 1 or 2 stops");
+  }
+  const int stops = static_cast<int>((n - kSizeValues) / kStopValues);
+  geometry::PinInHoleDimensions d;
+  d.hole_radius = values[0];
+  d.hole_length = values[1];
+  d.pin_radius = values[2];
+  d.stop_count = stops;
+  for (size_t k = 0; k < static_cast<size_t>(stops); ++k) {
+    d.stops[k] = {values[kSizeValues + kStopValues * k], values[kSizeValues + kStopValues * k + 1]};
+  }
+  try {
+    // The one check of these dimensions, the kernel's; the joint makes it again under the same
+    // names, but here the element that holds the values can be named.
+    geometry::validate(d, name, geometry::kPinInHolePartNames);
+  } catch (const geometry::InvalidInput& e) {
+    throw ModelError(e, element);
+  }
+  return d;
 }
 
 engines::RigidMotion motion_of(const mjModel* m, const mjData* d, int body) {
@@ -182,13 +253,26 @@ ClearanceJoints::ClearanceJoints(const mjModel* model) : model_(model) {
     const int journal = site(model, journal_site, declaration);
 
     dynamics::ClearanceJointParameters parameters;
-    const std::string dimensions_key = key + ":dimensions";
-    const std::vector<double> dimensions = numeric(model, dimensions_key, 4);
-    if (dimensions.empty()) {
-      throw ModelError(declaration + ": needs <numeric name=\"" + dimensions_key +
-                       "\" data=\"Ri Li Rj Lj\"/> (metres)");
+    const std::string geometry_kind = geometry_of(model, key);
+    if (geometry_kind == kPinInHole) {
+      parameters.pin_in_hole = read_pin_in_hole(model, key, name, declaration);
+    } else if (geometry_kind == kJournalBearing) {
+      if (mj_name2id(model, mjOBJ_NUMERIC, (key + ":pin_in_hole").c_str()) >= 0) {
+        throw ModelError("<numeric name=\"" + key + ":pin_in_hole\">: needs <text name=\"" + key +
+                         ":geometry\" data=\"pin_in_hole\"/>; the paper's joint (geometry \"journal_bearing\", "
+                         "the default) has its sizes in <numeric name=\"" + key + ":dimensions\">");
+      }
+      const std::string dimensions_key = key + ":dimensions";
+      const std::vector<double> dimensions = numeric(model, dimensions_key, 4);
+      if (dimensions.empty()) {
+        throw ModelError(declaration + ": needs <numeric name=\"" + dimensions_key +
+                         "\" data=\"Ri Li Rj Lj\"/> (metres)");
+      }
+      parameters.dimensions = {dimensions[0], dimensions[1], dimensions[2], dimensions[3]};
+    } else {
+      throw ModelError("<text name=\"" + key + ":geometry\">: \"" + geometry_kind +
+                       "\": must be \"journal_bearing\" (the paper's joint, the default) or \"pin_in_hole\"");
     }
-    parameters.dimensions = {dimensions[0], dimensions[1], dimensions[2], dimensions[3]};
     const int law = mj_name2id(model, mjOBJ_TEXT, (key + ":normal_force_model").c_str());
     try {
       if (law >= 0) {

@@ -16,7 +16,20 @@
 ///     <numeric name="clearance:pin:parallel_angle_tolerance" data="0"/>  [rad] (optional)
 ///   </custom>
 ///
-/// Optional values default to paper Table 2 (dynamics::ClearanceJointParameters). The forces
+/// Optional values default to paper Table 2 (dynamics::ClearanceJointParameters).
+///
+/// The pin-in-hole joint (a pin longer than the hole it passes through, docs/dynamics.md, "The
+/// pin-in-hole geometry") instead of the paper's journal-bearing: the bearing's site is the hole's
+/// centre midway between the link's faces, the journal's the pin point P that sits there when the
+/// pin is centred, and the dimensions element is replaced by
+///
+///     <text    name="clearance:pin:geometry" data="pin_in_hole"/>    (default journal_bearing)
+///     <numeric name="clearance:pin:pin_in_hole" data="0.01 0.02 0.0099 0.0101 0.015 -0.0101 0.015"/>
+///
+/// holding geometry::PinInHoleDimensions in the model file's order: hole.radius hole.length
+/// pin.radius, then pin.stops[k].position pin.stops[k].outer_radius for each of 0, 1 or 2 stops
+/// (3, 5 or 7 values) [m]. They are checked by the kernel's validate(PinInHoleDimensions); the
+/// other fields and the force laws are the paper joint's. The forces
 /// (detection, force law, friction: dynamics::ClearanceRevoluteJoint's own code) enter through
 /// MuJoCo's passive-force callback mjcb_passive, as generalised forces in qfrc_passive, so that
 /// every integrator stage (RK4's four) sees them.
