@@ -21,6 +21,13 @@ dims = clearjoint.JointDimensions(bearing_radius=10.0, bearing_length=20.0, jour
 def slow_batch(rows, threads):
     return clearjoint.detect(dims, [0, 0, 0], [0, 0, 1], np.tile([0.0, 0.1, 0.0], (rows, 1)),
                              [0, 1e-140, 1], threads=threads)
+#: A pin against the bore with its axis tilted by 1e-140 (the tests' pin-in-hole joint): both hole
+#: edges touch the pin at a near-tangency, the exact tier again (~60 us a pose).
+pin_dims = clearjoint.PinInHoleDimensions(hole_radius=10.0, hole_length=20.0, pin_radius=9.9,
+                                          stops=((-10.5, 16.0), (10.5, 16.0)))
+def slow_pin_batch(rows, threads):
+    return clearjoint.detect_pin_in_hole(pin_dims, [0, 0, 0], [0, 0, 1], np.tile([0.0, 0.1, 0.0], (rows, 1)),
+                                         [0, 1e-140, 1], threads=threads)
 #: A rim internally tangent to a wall (examples/rims.jsonl, wall-B-exact-tangent): the exact
 #: tier again, ~20 us a pair.
 def slow_kernel_batch(rows, threads):
@@ -59,7 +66,8 @@ print(clearjoint.detect(dims, [0, 0, 0], [0, 0, 1], np.zeros((3, 3)), [0, 0.013,
     assert out.split() == ["MemoryError", "9"], out  # and the interpreter carries on
 
 
-@pytest.mark.parametrize("batch, rows", [("slow_batch", 100000), ("slow_kernel_batch", 300000)])
+@pytest.mark.parametrize("batch, rows", [("slow_batch", 100000), ("slow_pin_batch", 100000),
+                                         ("slow_kernel_batch", 300000)])
 @pytest.mark.parametrize("threads", [1, 2])
 def test_ctrl_c_stops_a_long_batch_within_a_fraction_of_a_second(batch, rows, threads):
     # About 6 s on one thread, if nothing stops them.

@@ -320,6 +320,13 @@ def test_a_pose_argument_of_another_shape_raises_value_error(shape):
         clearjoint.detect(METRES, [0, 0, 0], [0, 0, 1], np.zeros(shape), [0, 0, 1])
 
 
+def test_a_batch_too_large_to_copy_raises_memory_error_naming_the_argument():
+    # A broadcast view of 10^12 rows holds no memory; as contiguous float64 it would take 24 TB.
+    huge = np.broadcast_to(np.zeros(3), (10**12, 3))
+    with pytest.raises(MemoryError, match=r"journal_center: shape \(1000000000000, 3\) does not fit in memory"):
+        clearjoint.detect(METRES, [0, 0, 0], [0, 0, 1], huge, [0, 0, 1])
+
+
 def test_batched_arguments_of_different_lengths_raise_value_error_naming_both():
     with pytest.raises(ValueError, match=r"journal_axis has 4 rows and journal_center 5: batched "
                                          r"arguments must have the same length N"):

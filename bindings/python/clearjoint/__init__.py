@@ -26,8 +26,9 @@ from ._core import (Certificate, CircleCylinderIntersection, CirclePlaneIntersec
                     certificate_reason_text)
 from ._enums import (Certainty, CertificateReason, CircleCylinderTopology, CirclePlaneTopology,
                      ContactBase, ContactScenario, ContactType, PinInHoleScenario, scenario_label)
-from ._detect import (MAX_CONTACTS, CircleCylinderBatch, CirclePlaneBatch, DetectionBatch, detect,
-                      detect_pin_in_hole, intersect_circle_cylinder, intersect_circle_plane)
+from ._detect import (MAX_CONTACTS, CircleCylinderBatch, CirclePlaneBatch, DetectionBatch,
+                      PinInHoleBatch, detect, detect_pin_in_hole, intersect_circle_cylinder,
+                      intersect_circle_plane)
 from ._simulate import SimulationResult, read_run, simulate
 from ._simulator import Simulator
 from .model import Model
@@ -36,8 +37,8 @@ __all__ = [
     "MAX_CONTACTS", "Certainty", "Certificate", "CertificateReason", "CircleCylinderBatch",
     "CircleCylinderIntersection", "CircleCylinderTopology", "CirclePlaneBatch",
     "CirclePlaneIntersection", "CirclePlaneTopology", "Contact", "ContactBase", "ContactScenario",
-    "ContactType", "DetectionBatch", "JointContacts", "JointDimensions", "Model", "PinInHoleContacts",
-    "PinInHoleDimensions", "PinInHoleScenario", "RimArc", "RimCrossing",
+    "ContactType", "DetectionBatch", "JointContacts", "JointDimensions", "Model", "PinInHoleBatch",
+    "PinInHoleContacts", "PinInHoleDimensions", "PinInHoleScenario", "RimArc", "RimCrossing",
     "SimulationResult", "Simulator", "SolverError", "__version__", "certificate_reason_text", "detect",
     "detect_pin_in_hole",    "intersect_circle_cylinder", "intersect_circle_plane", "read_run", "scenario_label", "simulate",
 ]

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import operator
 from collections.abc import Mapping
-from typing import Any, Dict, Iterator, List, Optional, Union
+from typing import Any, Dict, Iterator, Optional, Union
 
 import numpy as np
 
@@ -12,7 +12,7 @@ from . import _core
 from ._arrays import ArrayResult
 from ._core import (CircleCylinderIntersection, CirclePlaneIntersection, JointContacts,
                     JointDimensions, PinInHoleContacts, PinInHoleDimensions)
-from ._enums import ContactScenario
+from ._enums import ContactScenario, PinInHoleScenario
 
 #: Room for contacts per pose: two radial per rim (beyond the model a rim may have two
 #: penetration arcs) plus two axial; C++ ``clearjoint::geometry::kMaxContacts``.
@@ -35,66 +35,30 @@ def _table(columns: Dict[str, np.ndarray]) -> Any:
     return pandas.DataFrame(columns)
 
 
-class DetectionBatch(ArrayResult):
-    """The contacts of N poses, as NumPy arrays.
-
-    Per pose, shape (N,):
-
-    - ``scenario`` (int8): a :class:`ContactScenario` code, Fig. 2 of the paper; ``none`` 0,
-      (a)-(i) 1-9, (j)-(l) 10-12, ``beyond_model`` 13. ``scenarios()`` gives the enum values.
-    - ``aligned`` (bool): axes parallel, exactly (eq. 5) or within ``parallel_angle_tolerance``.
-    - ``certificate`` (int8): a :class:`Certainty` code (exact 0, certified 1, uncertain 2), the
-      weakest over every decision for that pose, "no contact" included; ``certificate_reason``
-      (int8): its :class:`CertificateReason` code (none 0 when certified).
-    - ``contact_count`` (int8): 0 to 6.
-
-    The contacts of all poses, packed in pose order, shape (M, ...) with M = contact_count.sum();
-    pose n owns rows ``contact_start[n]:contact_start[n + 1]`` (``contact_start``: (N + 1,)
-    int64), radial before axial, base A before B; ``contact_pose`` (M,) is the pose of each row:
-
-    - ``contact_type`` (int8): :class:`ContactType` (radial 0, axial 1);
-    - ``contact_base`` (int8): :class:`ContactBase` (a 0, b 1, mid 2);
-    - ``depth`` (M,): penetration depth >= 0, the input's length unit (eq. 23), and
-      ``depth_error`` (M,): the true depth lies within it (certified unless the contact is
-      uncertain, then inf);
-    - ``point_journal``, ``point_bearing``, ``normal`` (M, 3): C_j, C_i and the unit normal, out
-      of the bearing, world frame: point_journal - point_bearing = depth * normal up to rounding
-      (eqs. 7-10, 14-15, 19-22); ``point_journal_error``, ``point_bearing_error`` (M,): bounds
-      on the points' errors (Euclidean), as for depth_error;
-    - ``crossing_count`` (int8, M,): rim crossings bounding the penetration arc (0 for line and
-      face contacts); ``crossing_angle``, ``crossing_angle_error`` (M, 2) radians,
-      ``crossing_point`` (M, 2, 3), ``crossing_point_error`` (M, 2) length: a certified or exact
-      crossing lies within its error of the value; NaN in unused slots;
-      ``crossing_multiplicity`` (int8, M, 2): 1 crossing, 2 tangency, 0 unused;
-    - ``contact_certificate`` (int8, M,): the contact's :class:`Certainty` code, and
-      ``contact_certificate_reason`` its :class:`CertificateReason` code.
-
-    Packed rather than padded to (N, 6, ...): a padded batch writes about a kilobyte a pose, as
-    much time as the detection of a realistic pose itself. ``padded(field)`` gives the (N, 6, ...)
-    view of one field when that shape is handier.
-
-    A batch is also a sequence of poses: ``batch[n]`` (negative n counting from the end) is
-    pose n's :class:`JointContacts`, bit for bit the answer of ``detect`` on that pose alone,
-    and iterating gives them in order. ``poses()`` and ``contacts()`` give the arrays as two
-    tables (pandas DataFrames when pandas is installed).
-    """
+class _ContactBatch(ArrayResult):
+    """What DetectionBatch and PinInHoleBatch share: the packed arrays of a joint whose answer is
+    a list of :class:`Contact` (the layout of ``bindings/python/src/packed_contacts.hpp``)."""
 
     _rows_field = "scenario"
+    #: The class of one pose's answer, rebuilt by ``batch[n]``.
+    _answer: Any = JointContacts
+    #: The scenario enum of ``scenarios()``.
+    _scenario_enum: Any = ContactScenario
 
     def __getitem__(self, pose: int) -> JointContacts:
         """Pose ``pose``'s contacts, as :func:`detect` gives them for that pose alone."""
         try:
             n = operator.index(pose)
         except TypeError:
-            raise TypeError(f"DetectionBatch index {pose!r}: must be an integer (a pose number); "
-                            f"poses() and contacts() give tables to filter") from None
+            raise TypeError(f"{type(self).__name__} index {pose!r}: must be an integer (a pose "
+                            f"number); poses() and contacts() give tables to filter") from None
         count = len(self)
         if not -count <= n < count:
             raise IndexError(f"pose {n} out of range for a batch of {count} poses")
         n %= count
         contacts = [self._contact_dict(k)
                     for k in range(self.contact_start[n], self.contact_start[n + 1])]
-        return JointContacts._from_dict({
+        return self._answer._from_dict({
             "scenario": int(self.scenario[n]), "aligned": bool(self.aligned[n]),
             "certificate": int(self.certificate[n]),
             "certificate_reason": int(self.certificate_reason[n]),
@@ -153,7 +117,7 @@ class DetectionBatch(ArrayResult):
 
     def scenarios(self) -> list:
         """``scenario`` as :class:`ContactScenario` values (a list, length N)."""
-        return [ContactScenario(int(code)) for code in self.scenario]
+        return [self._scenario_enum(int(code)) for code in self.scenario]
 
     def slot(self) -> np.ndarray:
         """Each contact row's index among its pose's contacts, 0 to 5, shape (M,)."""
@@ -173,6 +137,87 @@ class DetectionBatch(ArrayResult):
         out = np.full((len(self), MAX_CONTACTS) + values.shape[1:], fill, dtype=values.dtype)
         out[self.contact_pose, self.slot()] = values
         return out
+
+
+class DetectionBatch(_ContactBatch):
+    """The contacts of N poses, as NumPy arrays.
+
+    Per pose, shape (N,):
+
+    - ``scenario`` (int8): a :class:`ContactScenario` code, Fig. 2 of the paper; ``none`` 0,
+      (a)-(i) 1-9, (j)-(l) 10-12, ``beyond_model`` 13. ``scenarios()`` gives the enum values.
+    - ``aligned`` (bool): axes parallel, exactly (eq. 5) or within ``parallel_angle_tolerance``.
+    - ``certificate`` (int8): a :class:`Certainty` code (exact 0, certified 1, uncertain 2), the
+      weakest over every decision for that pose, "no contact" included; ``certificate_reason``
+      (int8): its :class:`CertificateReason` code (none 0 when certified).
+    - ``contact_count`` (int8): 0 to 6.
+
+    The contacts of all poses, packed in pose order, shape (M, ...) with M = contact_count.sum();
+    pose n owns rows ``contact_start[n]:contact_start[n + 1]`` (``contact_start``: (N + 1,)
+    int64), radial before axial, base A before B; ``contact_pose`` (M,) is the pose of each row:
+
+    - ``contact_type`` (int8): :class:`ContactType` (radial 0, axial 1);
+    - ``contact_base`` (int8): :class:`ContactBase` (a 0, b 1, mid 2);
+    - ``depth`` (M,): penetration depth >= 0, the input's length unit (eq. 23), and
+      ``depth_error`` (M,): the true depth lies within it (certified unless the contact is
+      uncertain, then inf);
+    - ``point_journal``, ``point_bearing``, ``normal`` (M, 3): C_j, C_i and the unit normal, out
+      of the bearing, world frame: point_journal - point_bearing = depth * normal up to rounding
+      (eqs. 7-10, 14-15, 19-22); ``point_journal_error``, ``point_bearing_error`` (M,): bounds
+      on the points' errors (Euclidean), as for depth_error;
+    - ``crossing_count`` (int8, M,): rim crossings bounding the penetration arc (0 for line and
+      face contacts); ``crossing_angle``, ``crossing_angle_error`` (M, 2) radians,
+      ``crossing_point`` (M, 2, 3), ``crossing_point_error`` (M, 2) length: a certified or exact
+      crossing lies within its error of the value; NaN in unused slots;
+      ``crossing_multiplicity`` (int8, M, 2): 1 crossing, 2 tangency, 0 unused;
+    - ``contact_certificate`` (int8, M,): the contact's :class:`Certainty` code, and
+      ``contact_certificate_reason`` its :class:`CertificateReason` code.
+
+    Packed rather than padded to (N, 6, ...): a padded batch writes about a kilobyte a pose, as
+    much time as the detection of a realistic pose itself. ``padded(field)`` gives the (N, 6, ...)
+    view of one field when that shape is handier.
+
+    A batch is also a sequence of poses: ``batch[n]`` (negative n counting from the end) is
+    pose n's :class:`JointContacts`, bit for bit the answer of ``detect`` on that pose alone,
+    and iterating gives them in order. ``poses()`` and ``contacts()`` give the arrays as two
+    tables (pandas DataFrames when pandas is installed).
+    """
+
+
+class PinInHoleBatch(_ContactBatch):
+    """The contacts of N pin-in-hole poses, as NumPy arrays: :func:`detect_pin_in_hole`'s answer
+    for a batch.
+
+    The arrays of :class:`DetectionBatch`, the link (the hole) in the bearing's place and the pin
+    in the journal's, as in :class:`PinInHoleContacts`:
+
+    - ``scenario`` (int8, N,): a :class:`PinInHoleScenario` code (``none`` 0, ``one_edge`` 1,
+      ..., ``beyond_model`` 10); ``scenarios()`` gives the enum values;
+    - ``aligned``, ``certificate``, ``certificate_reason``, ``contact_count`` (N,), and
+      ``contact_start`` (N + 1,): as for :class:`DetectionBatch`;
+    - per contact, packed in pose order (M,...): ``contact_type`` radial 0 (an edge or the line
+      contact), axial 1 (a stop); ``contact_base`` a 0, b 1 (the link face), mid 2 (the line);
+      ``point_journal`` on the pin, ``point_bearing`` on the link, ``normal`` the direction the
+      pin penetrates; ``depth`` and the error bounds; the crossings bound the contact's arc on
+      the circle that bounds it (a hole edge or a stop's outer circle), in that circle's frame.
+
+    ``batch[n]`` (and iteration) gives pose n's :class:`PinInHoleContacts`, bit for bit the
+    answer of :func:`detect_pin_in_hole` on that pose alone; ``len(batch)`` is N.
+    """
+
+    _answer = PinInHoleContacts
+    _scenario_enum = PinInHoleScenario
+
+    def __getitem__(self, pose: int) -> PinInHoleContacts:  # type: ignore[override]
+        """Pose ``pose``'s contacts, as :func:`detect_pin_in_hole` gives them for that pose alone."""
+        return super().__getitem__(pose)  # type: ignore[return-value]
+
+    def __iter__(self) -> Iterator[PinInHoleContacts]:  # type: ignore[override]
+        return (self[n] for n in range(len(self)))
+
+    def scenarios(self) -> list:
+        """``scenario`` as :class:`PinInHoleScenario` values (a list, length N)."""
+        return super().scenarios()
 
 
 class CirclePlaneBatch(ArrayResult):
@@ -270,8 +315,9 @@ def detect(dims: JointDimensions, bearing_center: ArrayLike, bearing_axis: Array
 
 def detect_pin_in_hole(dims: PinInHoleDimensions, hole_center: ArrayLike, hole_axis: ArrayLike,
                        pin_center: ArrayLike, pin_axis: ArrayLike, *, certify: bool = True,
-                       exact_fallback: bool = True, parallel_angle_tolerance: float = 0.0
-                       ) -> Union[PinInHoleContacts, List[PinInHoleContacts]]:
+                       exact_fallback: bool = True, parallel_angle_tolerance: float = 0.0,
+                       threads: Optional[int] = None
+                       ) -> Union[PinInHoleContacts, PinInHoleBatch]:
     """Detect every contact between a pin and the hole it passes through: the hole's edges
     against the pin, the stops against the link's faces, the line and face contacts of parallel
     axes (docs/contact-detection.md, "The pin-in-hole joint").
@@ -286,7 +332,7 @@ def detect_pin_in_hole(dims: PinInHoleDimensions, hole_center: ArrayLike, hole_a
     pin_center, pin_axis:
         The pin's point P (at the hole's centre when the pin is centred; the stops' positions
         are measured from it) and its axis.
-    certify, exact_fallback, parallel_angle_tolerance:
+    certify, exact_fallback, parallel_angle_tolerance, threads:
         As for :func:`detect`.
 
     Returns
@@ -295,25 +341,34 @@ def detect_pin_in_hole(dims: PinInHoleDimensions, hole_center: ArrayLike, hole_a
         When every pose argument has shape (3,): its ``scenario`` a :class:`PinInHoleScenario`,
         its ``contacts`` :class:`Contact` objects as :func:`detect` gives them, the link in the
         bearing's place (``point_bearing``) and the pin in the journal's (``point_journal``).
-    list of PinInHoleContacts
-        Otherwise, one per pose, each bit for bit the answer on that pose alone.
+    PinInHoleBatch
+        Otherwise: arrays for N poses, packed as :class:`DetectionBatch`'s; also a sequence of
+        N :class:`PinInHoleContacts` (``batch[n]``, iteration), each bit for bit the answer on
+        that pose alone.
 
     Raises
     ------
     ValueError
         A bad value, naming the argument and the row (``"pin_axis[3] = [0, 0, 0]: must not be
-        the zero vector"``), or a shape other than (3,) or (N, 3).
+        the zero vector"``); a shape other than (3,) or (N, 3); batched arguments of different N.
     TypeError
-        Arguments that are not numbers, or ``dims`` not a :class:`PinInHoleDimensions`.
+        Arguments that are not numbers, or ``dims`` not a :class:`PinInHoleDimensions`, a switch
+        not True or False, ``threads`` not an integer.
+    MemoryError
+        The batch's results do not fit in memory (the message names the batch's size).
+    KeyboardInterrupt
+        Ctrl-C: a batch looks for it every 50 ms or so and stops.
 
-    The detection runs without the GIL, the poses of a batch one after another.
+    The detection runs without the GIL, a batch spread over threads.
     """
     if not isinstance(dims, PinInHoleDimensions):
         hint = " (PinInHoleDimensions(**dims) for a dict)" if isinstance(dims, Mapping) else ""
         raise TypeError(f"dims = {dims!r}: must be a clearjoint.PinInHoleDimensions{hint}")
     options = {"certify": certify, "exact_fallback": exact_fallback,
                "parallel_angle_tolerance": parallel_angle_tolerance}
-    return _core.detect_pin_in_hole(dims, hole_center, hole_axis, pin_center, pin_axis, options)
+    result = _core.detect_pin_in_hole(dims, hole_center, hole_axis, pin_center, pin_axis, options,
+                                      threads)
+    return PinInHoleBatch(result) if isinstance(result, dict) else result
 
 
 def intersect_circle_plane(circle_center: ArrayLike, circle_normal: ArrayLike,

@@ -43,16 +43,27 @@ py::array numeric_array(const py::handle& value, const std::string& name) {
   return array;
 }
 
-DoubleArray as_doubles(const py::handle& value, const char* name) {
-  return DoubleArray::ensure(numeric_array(value, name));
-}
-
 std::string shape_text(const py::array& array) {
   std::string text = "(";
   for (py::ssize_t k = 0; k < array.ndim(); ++k) {
     text += std::to_string(array.shape(k)) + (array.ndim() == 1 ? "," : k + 1 < array.ndim() ? ", " : "");
   }
   return text + ")";
+}
+
+/// `value` as C-contiguous float64. ensure() returns an empty handle, and clears NumPy's error,
+/// when the copy cannot be made: a MemoryError, as for a broadcast view of 10^12 rows (no memory
+/// of its own, 24 TB as a copy). Named here, instead of a crash on the empty handle.
+DoubleArray as_doubles(const py::handle& value, const char* name) {
+  const py::array numbers = numeric_array(value, name);
+  DoubleArray doubles = DoubleArray::ensure(numbers);
+  if (!doubles) [[unlikely]] {
+    PyErr_Format(PyExc_MemoryError,
+                 "%s: shape %s does not fit in memory as contiguous float64; pass fewer rows at a time",
+                 name, shape_text(numbers).c_str());
+    throw py::error_already_set();
+  }
+  return doubles;
 }
 
 }  // namespace

@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The pin-in-hole joint in Python: PinInHoleDimensions, the PinInHoleContacts result (its
 // attributes bound from its field list) and clearjoint._core.detect_pin_in_hole, which calls
-// detect_pin_in_hole_contacts on one pose, or on each row of a batch without the GIL.
+// detect_pin_in_hole_contacts on one pose (a PinInHoleContacts), or on a batch of poses given as
+// NumPy arrays (a dict of packed arrays, packed_contacts.hpp, which clearjoint/_detect.py wraps),
+// without the GIL and spread over threads.
 
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -14,6 +16,7 @@
 #include "clearjoint/geometry/model/pin_in_hole_dimensions.hpp"
 #include "clearjoint/geometry/model/pin_in_hole_scenario.hpp"
 #include "numpy_views.hpp"
+#include "packed_contacts.hpp"
 #include "result_attributes.hpp"
 #include "result_dicts.hpp"
 #include "result_types.hpp"
@@ -131,6 +134,8 @@ void bind_result(py::module_& m) {
       .def("as_dict", [](const geo::PinInHoleContacts& r) { return as_dict(r); },
            "{'scenario', 'aligned', 'certificate', 'certificate_reason', 'contact_count', "
            "'contacts': [Contact.as_dict(), ...]}: plain Python values (enums are IntEnums).")
+      // PinInHoleBatch rows are rebuilt through the dict of as_dict().
+      .def_static("_from_dict", &from_dict<geo::PinInHoleContacts>, py::arg("d"))
       .def("__repr__", [](const geo::PinInHoleContacts& r) {
         std::string text = "PinInHoleContacts(" + std::string(geo::to_string(r.scenario)) +
                            (r.aligned ? ", aligned" : "") + ", " + repr_certificate(r.certificate);
@@ -160,26 +165,37 @@ struct PinPoseRows {
                         {"options.parallel_angle_tolerance", "parallel_angle_tolerance", false}});
 }
 
-/// One PinInHoleContacts, or a list of them for a batch (row n: bit for bit the answer on that
+/// One PinInHoleContacts, or the packed arrays of a batch (row n: bit for bit the answer on that
 /// pose alone), detected without the GIL.
 py::object detect_pin_in_hole(const geo::PinInHoleDimensions& dimensions, const py::handle& hole_center,
                               const py::handle& hole_axis, const py::handle& pin_center,
-                              const py::handle& pin_axis, const py::dict& option_arguments) {
+                              const py::handle& pin_axis, const py::dict& option_arguments,
+                              const py::object& threads) {
   const PinPoseRows poses{VectorRows(hole_center, "hole_center"), VectorRows(hole_axis, "hole_axis"),
                           VectorRows(pin_center, "pin_center"), VectorRows(pin_axis, "pin_axis")};
   const Broadcast shape = broadcast(poses.hole_center, poses.hole_axis, poses.pin_center, poses.pin_axis);
   const geo::DetectionOptions options = detection_options(option_arguments);
-  std::vector<geo::PinInHoleContacts> results(shape.rows);
+  const unsigned thread_limit = thread_count(threads);
+  if (shape.batched) {
+    return within_memory("detect_pin_in_hole", shape.rows, "poses", [&]() -> py::object {
+      try {
+        return packed_contacts<geo::PinInHoleContacts>(
+            shape.rows, thread_limit, [&](std::size_t n, geo::PinInHoleContacts& result) {
+              result = geo::detect_pin_in_hole_contacts(dimensions, poses.hole(n), poses.pin(n), options);
+            });
+      } catch (const RowError& error) {
+        raise(error, poses);
+      }
+    });
+  }
+  geo::PinInHoleContacts result;
   try {
     py::gil_scoped_release release;
-    for (std::size_t n = 0; n < shape.rows; ++n) {
-      answer_row(n, [&] { results[n] = geo::detect_pin_in_hole_contacts(dimensions, poses.hole(n), poses.pin(n), options); });
-    }
-  } catch (const RowError& error) {
-    raise(error, poses);
+    result = geo::detect_pin_in_hole_contacts(dimensions, poses.hole(0), poses.pin(0), options);
+  } catch (const ValidationError& e) {
+    raise(RowError::invalid(0, e), poses);
   }
-  if (!shape.batched) return py::cast(results[0]);
-  return py::cast(results);
+  return py::cast(result);
 }
 
 }  // namespace
@@ -189,7 +205,8 @@ void bind_pin_in_hole(py::module_& module) {
   bind_result(module);
   module.def("detect_pin_in_hole", &detect_pin_in_hole, py::arg("dims"), py::arg("hole_center"),
              py::arg("hole_axis"), py::arg("pin_center"), py::arg("pin_axis"), py::arg("options"),
-             "clearjoint.detect_pin_in_hole's compiled half: a PinInHoleContacts, or a list of them "
+             py::arg("threads"),
+             "clearjoint.detect_pin_in_hole's compiled half: a PinInHoleContacts, or a dict of arrays "
              "for a batch.");
 }
 

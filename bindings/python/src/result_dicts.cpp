@@ -178,4 +178,13 @@ geo::JointContacts from_dict(const py::dict& d) {
   return r;
 }
 
+template <>
+geo::PinInHoleContacts from_dict(const py::dict& d) {
+  geo::PinInHoleContacts r = result_of<geo::PinInHoleContacts>(d);
+  if (py::cast<int>(d["contact_count"]) != r.contact_count) {
+    throw py::value_error("contact_count: must be the number of contacts");
+  }
+  return r;
+}
+
 }  // namespace clearjoint::python

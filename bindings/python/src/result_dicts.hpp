@@ -1,13 +1,14 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Results as plain Python dicts and back: `as_dict()`, the pickled state of every result class,
-// and the JointContacts a DetectionBatch row gives. Vectors are lists of three floats, enums
+// and the JointContacts (PinInHoleContacts) a DetectionBatch (PinInHoleBatch) row gives. Vectors are lists of three floats, enums
 // their IntEnum members (ints to json), bounds and coordinates the very doubles of the result.
 
 #include <pybind11/pybind11.h>
 
 #include "clearjoint/geometry/model/certificate.hpp"
 #include "clearjoint/geometry/joint/detect_contacts.hpp"
+#include "clearjoint/geometry/joint/detect_pin_in_hole_contacts.hpp"
 #include "clearjoint/geometry/queries/intersect_circle_cylinder.hpp"
 #include "clearjoint/geometry/queries/intersect_circle_plane.hpp"
 #include "clearjoint/geometry/model/rim_arc.hpp"
@@ -45,6 +46,7 @@ template <> geometry::RimCrossing from_dict(const pybind11::dict& d);
 template <> geometry::RimArc from_dict(const pybind11::dict& d);
 template <> geometry::Contact from_dict(const pybind11::dict& d);
 template <> geometry::JointContacts from_dict(const pybind11::dict& d);
+template <> geometry::PinInHoleContacts from_dict(const pybind11::dict& d);
 template <> geometry::CirclePlaneIntersection from_dict(const pybind11::dict& d);
 template <> geometry::CircleCylinderIntersection from_dict(const pybind11::dict& d);
 
