@@ -23,6 +23,7 @@
 #include "arithmetic/scale_normalisation.hpp"
 #include "exact/parallel_axes_exact.hpp"
 #include "model/input_checks.hpp"
+#include "model/primitives_detail.hpp"
 #include "queries/rounded_point_queries.hpp"
 
 namespace clearjoint::geometry {
@@ -285,8 +286,8 @@ void hole_circle_against_pin(const Setup& s, int sign, ContactBase base, const D
   const CircleFrame frame = frame_of(circle);
   const double angle_error = largest_angle_error(query.crossings, query.crossing_count);
   for (int k = 0; k < count && out.contact_count < kMaxPinInHoleContacts; ++k) {
+    // A fresh slot: out's contacts are default-constructed and each slot is filled once.
     Contact& contact = out.contacts[out.contact_count++];
-    contact = Contact{};
     contact.type = ContactType::radial;
     contact.base = base;
     contact.certificate = query.certificate;
@@ -316,9 +317,9 @@ int face_of(const Setup& s, const AxialStop& stop) { return (stop.position > 0.0
 /// penetration arc: `on_pin` when the circle is the stop's (C_j the arc middle, C_i its projection
 /// on the face), otherwise the circle is the hole's edge (C_i the arc middle, C_j its projection
 /// on the stop's plane). `normal` is the unit direction the pin penetrates. Frame at P_i.
+/// `contact` is a fresh (default-constructed) slot.
 void stop_contact(const Circle3& circle, const detail::RoundedPoint& centre, const CirclePlaneIntersection& query,
                   bool on_pin, const Vector3& normal, ContactBase base, Contact& contact) {
-  contact = Contact{};
   contact.type = ContactType::axial;
   contact.base = base;
   contact.certificate = query.certificate;
@@ -441,8 +442,7 @@ void stop_flush_on_face(const Setup& s, const AxialStop& stop, double axial_limi
       detail::intersect_circle_plane(outer, Plane3{face_point.value, into_link}, options.intersection, &centre, &face_point);
   tally.add(query.certificate);
   if (!query.has_penetration || out.contact_count >= kMaxPinInHoleContacts) return;
-  Contact& contact = out.contacts[out.contact_count++];
-  contact = Contact{};
+  Contact& contact = out.contacts[out.contact_count++];  // a fresh slot
   contact.type = ContactType::axial;
   contact.base = face == kFaceA ? ContactBase::a : ContactBase::b;
   contact.certificate = query.certificate;
@@ -484,10 +484,6 @@ bool stop_proved_clear(const Setup& s, const Vector3& d_ji, const AxialStop& sto
 
 /// Whether validate() would pass, without formatting anything: a subset of its tests that
 /// implies the rest, so that a false here sends the caller to validate() for the message.
-bool passes_validation(const PartPose& pose) {
-  return detail::all_finite(pose.p_WP) && detail::coordinates_in_range(pose.p_WP) && detail::all_finite(pose.axis_W) &&
-         !(pose.axis_W.x() == 0.0 && pose.axis_W.y() == 0.0 && pose.axis_W.z() == 0.0);
-}
 bool passes_validation(const PinInHoleDimensions& d) {
   // length_in_range fails NaN and infinities; positivity and the order Rp < Rh are tested apart.
   bool ok = detail::length_in_range(d.hole_radius) & detail::length_in_range(d.hole_length) &
@@ -539,8 +535,9 @@ PinInHoleContacts detect_pin_in_hole_contacts(const PinInHoleDimensions& dimensi
   // The inline tests first: validate() formats its message and is out of line, and the checks
   // run on every call.
   if (!passes_validation(dimensions)) validate(dimensions);
-  if (!passes_validation(hole)) validate(hole, "hole");
-  if (!passes_validation(pin)) validate(pin, "pin");
+  // The poses' test is detect_contacts' (primitives_detail.hpp): bitwise, one branch each.
+  if (!detail::passes_validation(hole)) validate(hole, "hole");
+  if (!detail::passes_validation(pin)) validate(pin, "pin");
   if (!(options.parallel_angle_tolerance == 0.0)) validate(options);
 
   Setup s;
@@ -609,14 +606,13 @@ PinInHoleContacts detect_pin_in_hole_contacts(const PinInHoleDimensions& dimensi
       if (edge_proved_clear(s, bounded)) continue;
       hole_circle_against_pin(s, sign, sign > 0 ? ContactBase::a : ContactBase::b, options, out, tally);
     }
-    // Stops: face A's before face B's.
-    for (const int face : {0, 1}) {
-      for (int k = 0; k < dimensions.stop_count; ++k) {
-        const AxialStop& stop = dimensions.stops[static_cast<std::size_t>(k)];
-        if (face_of(s, stop) != face) continue;
-        if (stop_proved_clear(s, d_ji, stop)) continue;
-        stop_against_face(s, stop, axial_limit, options, out, tally);
-      }
+    // Stops: face A's before face B's (two stops face opposite faces, validate()).
+    const int count = dimensions.stop_count;
+    const int first = count == 2 && face_of(s, dimensions.stops[0]) != kFaceA ? 1 : 0;
+    for (int n = 0; n < count; ++n) {
+      const AxialStop& stop = dimensions.stops[static_cast<std::size_t>(n == 0 ? first : 1 - first)];
+      if (stop_proved_clear(s, d_ji, stop)) continue;
+      stop_against_face(s, stop, axial_limit, options, out, tally);
     }
   }
   if (aligned && !exactly_parallel) {
