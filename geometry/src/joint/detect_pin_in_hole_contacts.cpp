@@ -88,10 +88,6 @@ struct Setup {
   Vector3 p_WPj = Vector3::Zero();
   Vector3 hole_axis = Vector3::UnitZ();  // as given: the circles' and planes' normals
   Vector3 pin_axis = Vector3::UnitZ();
-  // The same scaled by powers of two as each circle-cylinder query scales them
-  // (scale_normalisation.hpp), once per joint: the queries then take them as they are.
-  Vector3 hole_axis_scaled = Vector3::UnitZ();
-  Vector3 pin_axis_scaled = Vector3::UnitZ();
   Vector3 hole_hat = Vector3::UnitZ();   // unit_axis: the centres' definition
   Vector3 pin_hat = Vector3::UnitZ();
   /// +1 when the pin's axis points through face A (a_i . a_j > 0), -1 otherwise.
@@ -275,8 +271,10 @@ void hole_circle_against_pin(const Setup& s, int sign, ContactBase base, const D
   const detail::RoundedPoint centre = edge_centre_from_pin(s, sign);
   // Valid inputs with scaled axes (detect_pin_in_hole_contacts checked and scaled them): the
   // query's answer without its checks, bit for bit.
-  const Circle3 circle{centre.value, s.hole_axis_scaled, s.hole_radius};
-  const Cylinder3 pin{Vector3::Zero(), s.pin_axis_scaled, s.pin_radius};
+  // The axes scaled by powers of two as the circle-cylinder query scales them
+  // (scale_normalisation.hpp), here and not per joint: most poses run no such query.
+  const Circle3 circle{centre.value, detail::direction_scaled(s.hole_axis), s.hole_radius};
+  const Cylinder3 pin{Vector3::Zero(), detail::direction_scaled(s.pin_axis), s.pin_radius};
   const CircleCylinderIntersection query =
       detail::intersect_valid_circle_cylinder(circle, pin, options.intersection, &centre);
   tally.add(query.certificate);
@@ -397,8 +395,8 @@ void stop_against_face(const Setup& s, const AxialStop& stop, double axial_limit
     over_hole.topology = CircleCylinderTopology::outside;
     over_hole.certificate = proved(options);
   } else {
-    const Circle3 scaled{outer.center, s.pin_axis_scaled, outer.radius};
-    const Cylinder3 bore{Vector3::Zero(), s.hole_axis_scaled, s.hole_radius};
+    const Circle3 scaled{outer.center, detail::direction_scaled(s.pin_axis), outer.radius};
+    const Cylinder3 bore{Vector3::Zero(), detail::direction_scaled(s.hole_axis), s.hole_radius};
     over_hole = detail::intersect_valid_circle_cylinder(scaled, bore, options.intersection, &centre);
   }
   tally.add(over_hole.certificate);
@@ -471,14 +469,14 @@ bool edge_proved_clear(const Setup& s, const AxisCrossing& crossing) {
 }
 
 /// The stop prefilter: the stop's outer circle reaches at most |s_c| + Ro sin(a_i, a_j) from
-/// its centre's signed distance s_c beyond the face plane (into the link).
-bool stop_proved_clear(const Setup& s, const Vector3& d_ji, const AxialStop& stop) {
+/// its centre's signed distance s_c beyond the face plane (into the link). d_norm is |d_ji|_1.
+bool stop_proved_clear(const Setup& s, const Vector3& d_ji, double d_norm, const AxialStop& stop) {
   const int face = face_of(s, stop);
   const Vector3 stop_centre = d_ji + stop.position * s.pin_hat;
   const double beyond = -face_sign(face) * s.hole_hat.dot(stop_centre) + s.half_length;
   const double reach = beyond + stop.outer_radius * s.sine;
   const double error = kAPrioriFactor * kUnitRoundoff *
-                       (d_ji.cwiseAbs().sum() + std::fabs(stop.position) + s.half_length + stop.outer_radius);
+                       (d_norm + std::fabs(stop.position) + s.half_length + stop.outer_radius);
   return reach + error < 0.0;
 }
 
@@ -548,8 +546,6 @@ PinInHoleContacts detect_pin_in_hole_contacts(const PinInHoleDimensions& dimensi
   s.p_WPj = pin.p_WP;
   s.hole_axis = hole.axis_W;
   s.pin_axis = pin.axis_W;
-  s.hole_axis_scaled = detail::direction_scaled(hole.axis_W);
-  s.pin_axis_scaled = detail::direction_scaled(pin.axis_W);
   s.hole_hat = unit_axis(hole);
   s.pin_hat = unit_axis(pin);
   const double dot = s.hole_hat.dot(s.pin_hat);
@@ -579,7 +575,8 @@ PinInHoleContacts detect_pin_in_hole_contacts(const PinInHoleDimensions& dimensi
   const double d_ji_error = detail::difference_rounding_bound(d_ji);
   const AxisLine axis_line = pin_axis_line(s, d_ji);
   const AxisCrossing mid = pin_axis_crossing(axis_line, 0.0);
-  const double mid_error = mid.error + d_ji_error / std::max(s.cosine, 1e-300);
+  const double crossing_shift = d_ji_error / std::max(s.cosine, 1e-300);  // d_ji's rounding at any plane
+  const double mid_error = mid.error + crossing_shift;
   if (!(mid.rho + mid_error < s.hole_radius)) {
     if (mid.rho - mid_error >= s.hole_radius) {
       tally.beyond = true;
@@ -596,13 +593,13 @@ PinInHoleContacts detect_pin_in_hole_contacts(const PinInHoleDimensions& dimensi
     }
     for (int k = 0; k < dimensions.stop_count; ++k) {
       const AxialStop& stop = dimensions.stops[static_cast<std::size_t>(k)];
-      if (exactly_parallel && stop_proved_clear(s, d_ji, stop)) continue;
+      if (exactly_parallel && stop_proved_clear(s, d_ji, axis_line.d_norm, stop)) continue;
       stop_flush_on_face(s, stop, axial_limit, options, out, tally);
     }
   } else {
     for (const int sign : {1, -1}) {
       const AxisCrossing at_face = pin_axis_crossing(axis_line, sign * s.half_length);
-      const AxisCrossing bounded{at_face.rho, at_face.error + d_ji_error / std::max(s.cosine, 1e-300)};
+      const AxisCrossing bounded{at_face.rho, at_face.error + crossing_shift};
       if (edge_proved_clear(s, bounded)) continue;
       hole_circle_against_pin(s, sign, sign > 0 ? ContactBase::a : ContactBase::b, options, out, tally);
     }
@@ -611,7 +608,7 @@ PinInHoleContacts detect_pin_in_hole_contacts(const PinInHoleDimensions& dimensi
     const int first = count == 2 && face_of(s, dimensions.stops[0]) != kFaceA ? 1 : 0;
     for (int n = 0; n < count; ++n) {
       const AxialStop& stop = dimensions.stops[static_cast<std::size_t>(n == 0 ? first : 1 - first)];
-      if (stop_proved_clear(s, d_ji, stop)) continue;
+      if (stop_proved_clear(s, d_ji, axis_line.d_norm, stop)) continue;
       stop_against_face(s, stop, axial_limit, options, out, tally);
     }
   }
