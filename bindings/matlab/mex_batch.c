@@ -5,8 +5,8 @@
 #include <stdio.h>
 #include <string.h>
 
-/* Poses per call of cj_detect_many: the results buffer stays small (1.5 KB a result) whatever
- * the batch's size. */
+/* Poses per call of cj_detect_many (cj_detect_pin_in_hole_many): the results buffer stays small
+ * (1.5 KB a result) whatever the batch's size. */
 #define CHUNK 256
 #define MESSAGE_CAPACITY 1024
 
@@ -15,7 +15,7 @@ void mex_raise(int status, const char* message) {
                     message);
 }
 
-/* cj_detect_many numbers the failing pose within its chunk; the caller counts from pose 0. */
+/* The batch calls number the failing pose within its chunk; the caller counts from pose 0. */
 static void raise_in_chunk(int status, const char* message, size_t chunk_start) {
   static const char prefix[] = "poses[";
   char renumbered[MESSAGE_CAPACITY + 32];
@@ -50,6 +50,22 @@ void mex_detect_all(const cj_dimensions* dims, const cj_pose_array* bearings,
     const size_t n = count - start < CHUNK ? count - start : CHUNK;
     const cj_pose_array b = from(bearings, start), j = from(journals, start);
     const int status = cj_detect_many(dims, &b, &j, n, options, chunk, NULL, message, sizeof message);
+    if (status != CJ_OK) raise_in_chunk(status, message, start);
+    for (k = 0; k < n; ++k) sink(context, start + k, &chunk[k]);
+  }
+  mxFree(chunk);
+}
+
+void mex_detect_pin_in_hole_all(const cj_pin_in_hole_dimensions* dims, const cj_pose_array* holes,
+                                const cj_pose_array* pins, size_t count, const cj_options* options,
+                                mex_pin_in_hole_sink sink, void* context) {
+  cj_pin_in_hole_result* chunk = (cj_pin_in_hole_result*)mxMalloc(CHUNK * sizeof(cj_pin_in_hole_result));
+  char message[MESSAGE_CAPACITY];
+  size_t start, k;
+  for (start = 0; start < count; start += CHUNK) {
+    const size_t n = count - start < CHUNK ? count - start : CHUNK;
+    const cj_pose_array h = from(holes, start), p = from(pins, start);
+    const int status = cj_detect_pin_in_hole_many(dims, &h, &p, n, options, chunk, NULL, message, sizeof message);
     if (status != CJ_OK) raise_in_chunk(status, message, start);
     for (k = 0; k < n; ++k) sink(context, start + k, &chunk[k]);
   }

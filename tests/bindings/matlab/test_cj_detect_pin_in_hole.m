@@ -1,7 +1,8 @@
 % SPDX-License-Identifier: BSD-3-Clause
-% Tests of the MEX gateway cj_detect_pin_in_hole under Octave (run by ctest through octave-cli;
-% errors fail the run). The pin-in-hole equivalence test compares every double with the C++ API;
-% this one checks what a MATLAB user sees: scenarios, contacts, stops, several poses and errors.
+% Tests of the MEX gateways cj_detect_pin_in_hole and cj_detect_pin_in_hole_many under Octave (run
+% by ctest through octave-cli; errors fail the run). The pin-in-hole equivalence test compares every
+% double with the C++ API; this one checks what a MATLAB user sees: scenarios, contacts, stops,
+% several poses, the batch's arrays and errors.
 function test_cj_detect_pin_in_hole()
   % Hole radius 10, length 20, pin radius 9.9, heads at -10.5 and +10.5 of outer radius 16.
   dims = struct('hole_radius', 10, 'hole_length', 20, 'pin_radius', 9.9, 'stops', [-10.5 16; 10.5 16]);
@@ -45,6 +46,37 @@ function test_cj_detect_pin_in_hole()
     assert(isequal(many(i), cj_detect_pin_in_hole(dims, hole, pins(i, :))));
   end
 
+  % The batch gateway: one struct of arrays, each pose's numbers the single call's, bit for bit.
+  soa = cj_detect_pin_in_hole_many(dims, hole, pins);
+  assert(isequal(size(soa.contact_count), [4 1]) && islogical(soa.aligned));
+  assert(isequal(soa.scenario_code, [2; 4; 7; 0]));
+  assert(isequal(soa.contact_count, [many.contact_count]') && isequal(soa.aligned, [many.aligned]'));
+  assert(size(soa.depth, 2) == 2);  % K: the most contacts of any pose
+  for i = 1:4
+    assert(soa.certificate_level(i) == many(i).certificate.level_code);
+    assert(soa.certificate_reason(i) == many(i).certificate.reason_code);
+    for k = 1:many(i).contact_count
+      c = many(i).contacts(k);
+      assert(isequal(typecast(soa.depth(i, k), 'uint64'), typecast(c.depth, 'uint64')));
+      assert(isequal(soa.p_WCj(i, :, k), c.p_WCj) && isequal(soa.p_WCi(i, :, k), c.p_WCi));
+      assert(isequal(soa.normal_W(i, :, k), c.normal_W));
+      assert(soa.type(i, k) == strcmp(c.type, 'axial') && soa.crossing_count(i, k) == numel(c.crossings));
+      for m = 1:numel(c.crossings)
+        assert(isequal(soa.crossing_angle(i, m, k), c.crossings(m).angle));
+        assert(isequal(soa.crossing_point(i, :, m, k), c.crossings(m).point));
+      end
+    end
+    assert(all(isnan(soa.depth(i, many(i).contact_count + 1:end))));
+  end
+  % Options reach every pose; a single pin row serves many holes.
+  plain = cj_detect_pin_in_hole_many(dims, hole, pins, struct('certify', false));
+  assert(all(plain.certificate_level == 2) && isequal(plain.contact_count, soa.contact_count));
+  moved = cj_detect_pin_in_hole_many(dims, [hole; hole], pins(1, :));
+  assert(isequal(moved.depth(1, :), moved.depth(2, :)) && isequal(moved.scenario_code, [2; 2]));
+  % No contact anywhere: the contact arrays are empty (K = 0).
+  none = cj_detect_pin_in_hole_many(dims, hole, [0 0 0 0 0 1; 0 0 0.1 0 0 1]);
+  assert(isequal(none.scenario_code, [0; 0]) && isequal(size(none.depth), [2 0]));
+
   % Errors name the field and the value; with several poses, the pose (counted from 0).
   thick = dims;
   thick.pin_radius = 10;
@@ -62,6 +94,19 @@ function test_cj_detect_pin_in_hole()
   bad(3, 4:6) = 0;
   expect_error(@() cj_detect_pin_in_hole(dims, hole, bad), 'poses[2]: pin.axis_W = [0, 0, 0]');
   expect_error(@() cj_detect_pin_in_hole(dims, [hole; hole], pins), 'hole (2 rows) and pin (4 rows)');
+  % The batch gateway counts poses from 0 across its chunks of 256; NaN in a pose is named too.
+  batch = repmat(pins(1, :), 300, 1);
+  batch(290, 4:6) = 0;
+  expect_error(@() cj_detect_pin_in_hole_many(dims, hole, batch), ...
+               'poses[289]: pin.axis_W = [0, 0, 0]: must not be the zero vector');
+  batch = repmat(pins(1, :), 3, 1);
+  batch(2, 2) = NaN;
+  expect_error(@() cj_detect_pin_in_hole_many(dims, hole, batch), 'poses[1]: pin.p_WP = [0, nan, 0]');
+  expect_error(@() cj_detect_pin_in_hole_many(thick, hole, pins), 'dimensions.pin_radius = 10');
+  expect_error(@() cj_detect_pin_in_hole_many(dims, hole, pins(:, 1:5)), 'pins: must be a real double N x 6 matrix');
+  expect_error(@() cj_detect_pin_in_hole_many(dims, [hole; hole], pins), 'holes (2 rows) and pins (4 rows)');
+  expect_error(@() cj_detect_pin_in_hole_many(dims, hole, pins, struct('parallel_angle_tolerance', -1)), ...
+               'options.parallel_angle_tolerance = -1');
   disp('test_cj_detect_pin_in_hole: all assertions passed');
 end
 

@@ -1,6 +1,7 @@
 % SPDX-License-Identifier: BSD-3-Clause
-% The help texts of cj_detect, cj_detect_many and cj_detect_pin_in_hole (the comments-only .m files
-% beside the MEX files) name every field of the answers the MEX files give. The MEX writers are held to the library's
+% The help texts of cj_detect, cj_detect_many, cj_detect_pin_in_hole and cj_detect_pin_in_hole_many
+% (the comments-only .m files beside the MEX files) name every field of the answers the MEX files
+% give. The MEX writers are held to the library's
 % result field lists by the equivalence test (every field must reach the Octave lines); their
 % help is a hand-written list, and this test fails naming a field it lacks.
 function test_help_names_every_field()
@@ -22,6 +23,8 @@ function test_help_names_every_field()
   fields = [fieldnames(p); fieldnames(p.certificate); fieldnames(p.contacts); ...
             fieldnames(p.contacts(1).crossings); fieldnames(p.contacts(1).certificate)];
   expect_named('cj_detect_pin_in_hole', unique(fields));
+  expect_named('cj_detect_pin_in_hole_many', fieldnames(cj_detect_pin_in_hole_many(pin_dims, [0 0 0 0 0 1], ...
+                                                                               [0 0 0 0 sin(0.0125) cos(0.0125)])));
 end
 
 function expect_named(name, fields)
