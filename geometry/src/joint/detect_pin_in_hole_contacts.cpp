@@ -43,9 +43,10 @@ constexpr double kAPrioriFactor = 64.0;
 /// two above the count of roundings).
 constexpr double kPointEvaluationFactor = 16.0;
 /// The deepest direction of a circle wholly beyond a plane, (n - (n . c) c) . (u, v) from the unit
-/// normals n, c (each within 3u of exact) and the rim frame u, v (a few ulps from the exact
-/// frame): about a dozen roundings of magnitudes at most 1, so within 12u absolutely (Higham,
-/// Lemma 3.3); kAPrioriFactor u leaves the same factor of five as the bounds above.
+/// normals n, c (within 2u and 3u of exact) and the rim frame u, v (a few ulps from the exact
+/// frame), every magnitude at most 1: the inputs' 5u, 8u for the dot product and its product
+/// with c, a few u for the subtraction and each projection, so within about 25u a component and
+/// 35u as a vector (Higham, Lemma 3.3); kAPrioriFactor u = 64u leaves a factor of almost two.
 constexpr double kDeepestDirectionError = kAPrioriFactor * kUnitRoundoff;
 /// The rounding of n_A . n_B beyond the normals' own bounds: each unit normal w / |w| is within
 /// about 3u of the direction of the computed w (a norm and a quotient), and the dot product of two
