@@ -13,7 +13,9 @@
 
 #include <benchmark/benchmark.h>
 
+#include <optional>
 #include <string>
+#include <variant>
 
 #include "clearjoint/dynamics/clearance_revolute_joint.hpp"
 #include "clearjoint/dynamics/integrator.hpp"
@@ -28,9 +30,19 @@ BuiltModel load(const char* file) {
   return build_model(read_model_file(std::string(CLEARJOINT_MODELS_DIR) + "/" + file));
 }
 
-void integrate_one_second(benchmark::State& state, const char* file) {
-  const ModelDescription model = read_model_file(std::string(CLEARJOINT_MODELS_DIR) + "/" + file);
+/// `film`: the lubricated joints' film method in place of the file's (none: the file's).
+void integrate_one_second(benchmark::State& state, const char* file,
+                          std::optional<FilmMethod> film = std::nullopt) {
+  ModelDescription model = read_model_file(std::string(CLEARJOINT_MODELS_DIR) + "/" + file);
+  for (ForceDescription& force : model.forces) {
+    auto* description = std::get_if<ClearanceRevoluteDescription>(&force);
+    if (film && description && description->parameters.lubrication) description->parameters.lubrication->method = *film;
+  }
   BuiltModel built = build_model(model);
+  // A film table is built on the first film evaluation, once per process (BM_TableBuild in
+  // bench/lubrication): here, before the timing, so that every repetition times the same run.
+  std::vector<double> first_rate(built.initial_state.size());
+  built.system->derivative(model.solver.start_time, built.initial_state, first_rate);
   const ClearanceRevoluteJoint* joint = nullptr;
   for (const auto& element : built.system->force_elements()) {
     if (const auto* j = dynamic_cast<const ClearanceRevoluteJoint*>(element.get())) joint = j;
@@ -60,6 +72,13 @@ void integrate_one_second(benchmark::State& state, const char* file) {
   }
 }
 
+void BM_IntegrateLubricatedPlanarSliderCrankShortBearing(benchmark::State& s) {
+  integrate_one_second(s, "slider_crank_planar_clearance_lubricated.json", FilmMethod::short_bearing);
+}
+void BM_IntegrateLubricatedPlanarSliderCrankTable(benchmark::State& s) {
+  integrate_one_second(s, "slider_crank_planar_clearance_lubricated.json", FilmMethod::table);
+}
+
 void derivative(benchmark::State& state, const char* file) {
   BuiltModel built = load(file);
   std::vector<double> rate(built.initial_state.size());
@@ -87,6 +106,8 @@ BENCHMARK(BM_IntegratePlanarSliderCrank)->Unit(benchmark::kMillisecond)->UseReal
 BENCHMARK(BM_IntegrateSpatialSliderCrank)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_IntegrateSpatialSliderCrankWithClearance)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_IntegratePlanarSliderCrankWithClearance)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_IntegrateLubricatedPlanarSliderCrankShortBearing)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_IntegrateLubricatedPlanarSliderCrankTable)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_DerivativePlanarSliderCrank)->Unit(benchmark::kNanosecond);
 BENCHMARK(BM_DerivativeSpatialSliderCrank)->Unit(benchmark::kNanosecond);
 BENCHMARK(BM_DerivativeSpatialSliderCrankWithClearance)->Unit(benchmark::kNanosecond);

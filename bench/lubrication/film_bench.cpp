@@ -50,6 +50,16 @@ void BM_ShortBearingRotationWhirlSqueeze(benchmark::State& state) {
 }
 BENCHMARK(BM_ShortBearingRotationWhirlSqueeze);
 
+// The same film's force alone, as a right-hand side asks for it: no peak-pressure search.
+void BM_ShortBearingForceRotationWhirlSqueeze(benchmark::State& state) {
+  PlanarFilmState film{0.6, 3.0, 20.0, 200.0};
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(film);
+    benchmark::DoNotOptimize(short_bearing_force(kPlanar, film, kViscosity));
+  }
+}
+BENCHMARK(BM_ShortBearingForceRotationWhirlSqueeze);
+
 void BM_LongBearingRotation(benchmark::State& state) {
   PlanarFilmState film{0.6, 0.0, 0.0, 200.0};
   for (auto _ : state) {
