@@ -23,6 +23,7 @@ extern "C" cj_status cj_detect_many(const cj_dimensions* dimensions, const cj_po
     const geo::JointDimensions joint = dimensions_of(*dimensions);
     geo::validate(joint);  // before the loop: not a pose's fault, so not named after one
     const geo::DetectionOptions detection = detection_options_of(options);
+    geo::validate(detection);  // likewise
     geo::JointContacts found;  // reused, as in cj_detect
     // A pose repeated for every k (stride 0, often the bearing) is read once.
     const bool fixed_bearing = bearings->stride == 0, fixed_journal = journals->stride == 0;

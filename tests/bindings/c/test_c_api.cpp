@@ -312,6 +312,12 @@ TEST(CApi, DetectManyStopsAtTheFirstBadPoseAndNamesIt) {
             CJ_INVALID_INPUT);
   EXPECT_EQ(std::string(message).rfind("dimensions.bearing_length = -20", 0), 0u) << message;
   EXPECT_EQ(processed, 0u);
+  // Nor are bad options.
+  cj_options options = cj_default_options();
+  options.parallel_angle_tolerance = -1.0;
+  EXPECT_EQ(cj_detect_many(&dims, &bearings, &rows, 2, &options, results.data(), &processed, message, sizeof message),
+            CJ_INVALID_INPUT);
+  EXPECT_EQ(std::string(message).rfind("options.parallel_angle_tolerance = -1", 0), 0u) << message;
   // A NULL component pointer is named.
   cj_pose_array broken = rows;
   broken.component[4] = nullptr;
