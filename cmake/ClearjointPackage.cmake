@@ -59,7 +59,8 @@ endif()
 # scripts/check-deb.sh builds them, runs lintian on them, installs and checks them):
 #   clearjoint           the libraries, headers, CMake and pkg-config files, the program, docs
 #   python3-clearjoint   the Python package (component "python", bindings/python)
-#   octave-clearjoint    the MEX files and their help text (component "octave", bindings/matlab)
+#   octave-clearjoint    the MEX files and their help text (component "octave", bindings/matlab:
+#                        each gateway it builds)
 #   clearjoint-engines   the Simbody and MuJoCo adapters (component "engines")
 # Depends: the run-time libraries as dpkg-shlibdeps finds them, the package the others build on,
 # and what the Python package imports. Each package has its documentation folder with the
@@ -136,8 +137,11 @@ if(CLEARJOINT_MATLAB_ENABLED)
   set(CPACK_DEBIAN_OCTAVE_PACKAGE_SECTION math)
   set(CPACK_DEBIAN_OCTAVE_DESCRIPTION
 "Octave MEX files of clearjoint, certified joint contact detection
-The MEX gateways cj_detect and cj_detect_many for GNU Octave, over
-clearjoint's C API, with their help text (help cj_detect).")
+The MEX gateways for GNU Octave, over clearjoint's C API, with their help
+text (help cj_detect): cj_detect and cj_detect_many for the paper's
+journal in its bearing, cj_detect_pin_in_hole and
+cj_detect_pin_in_hole_many for a pin through a hole, on one pose or on
+many.")
   set(CPACK_DEBIAN_OCTAVE_PACKAGE_DEPENDS "clearjoint (= ${clearjoint_deb_version}), octave")
   set(clearjoint_deb_OCTAVE_package octave-clearjoint)
 endif()

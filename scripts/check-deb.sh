@@ -5,7 +5,8 @@
 # error fails the check; warnings are printed), installs them with `apt-get install ./*.deb` (which
 # installs their Depends), then checks them as a user would: the program, a consumer built with
 # find_package and with pkg-config (run with an empty environment), the Python package
-# (tests/package/python_smoke.py), Octave's `help cj_detect` and a call, the files Debian expects
+# (tests/package/python_smoke.py), Octave's `help` of each MEX gateway and calls of cj_detect and
+# cj_detect_pin_in_hole_many, the files Debian expects
 # (multiarch libraries, copyright, docs, examples). Removes the packages again (`apt-get purge`).
 # Needs root, dpkg and apt (Debian 12).
 #
@@ -103,15 +104,24 @@ if [[ " ${packages[*]} " == *" python3-clearjoint "* ]]; then
      /usr/lib/python3/dist-packages "$version" "$OLDPWD/models")
 fi
 if [[ " ${packages[*]} " == *" octave-clearjoint "* ]]; then
-  echo "== Octave: help cj_detect, and a call"
-  help=$(cd "$work" && octave-cli --norc --no-history --quiet --eval 'help cj_detect; help cj_detect_many' 2>&1)
+  echo "== Octave: help and a call of each MEX gateway"
+  help=$(cd "$work" && octave-cli --norc --no-history --quiet --eval \
+         'help cj_detect; help cj_detect_many; help cj_detect_pin_in_hole; help cj_detect_pin_in_hole_many' 2>&1)
   echo "$help" | head -4
   grep -q "result = cj_detect(dims, bearing, journal)" <<< "$help" || fail "help cj_detect prints no documentation"
   grep -q "r = cj_detect_many(dims, bearings, journals)" <<< "$help" || fail "help cj_detect_many prints no documentation"
+  grep -q "result = cj_detect_pin_in_hole(dims, hole, pin)" <<< "$help" ||
+    fail "help cj_detect_pin_in_hole prints no documentation"
+  grep -q "r = cj_detect_pin_in_hole_many(dims, holes, pins)" <<< "$help" ||
+    fail "help cj_detect_pin_in_hole_many prints no documentation"
   (cd "$work" && octave-cli --norc --no-history --quiet --eval \
      "d = struct('bearing_radius', 10, 'bearing_length', 20, 'journal_radius', 9.9, 'journal_length', 19.8);
       r = cj_detect(d, [0 0 0 0 0 1], [0 0.15 0.02 0 0 1]); printf('cj_detect: scenario %s\n', r.scenario);
-      assert(r.contact_count > 0)")
+      assert(r.contact_count > 0)
+      p = struct('hole_radius', 10, 'hole_length', 20, 'pin_radius', 9.9, 'stops', [-10.5 16; 10.5 16]);
+      r = cj_detect_pin_in_hole_many(p, [0 0 0 0 0 1], [0 0.15 0 0 0 1; 0 0 0 0 0 1]);
+      printf('cj_detect_pin_in_hole_many: contact counts %s\n', mat2str(r.contact_count'));
+      assert(isequal(r.contact_count > 0, [true; false]))")
 fi
 rm -rf "$work" "$lintian_log"
 remove

@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """A short tour of an installed clearjoint Python package, as a new user would take it: import,
-detect on one pose and on a batch, the two kernel queries, a short simulation of a shipped model,
+detect on one pose and on a batch, the pin-in-hole joint on a batch, the two kernel queries, a short simulation of a shipped model,
 and the study runner, figures and viewer that come with the package.
 
 usage: python python_smoke.py INSTALL_ROOT VERSION MODELS_DIR
@@ -45,6 +45,20 @@ batch = clearjoint.detect(dims, [0, 0, 0], [0, 0, 1], centres, [0, 0, 1], thread
 check(len(batch) == 1000, f"batch of {len(batch)} poses")
 table = batch.as_dict()
 check(len(table["scenario"]) == 1000, f"batch fields {sorted(table)}")
+
+# The pin-in-hole joint on a batch: the pin off-centre by 0.15 in a hole of radial clearance 0.1
+# (a line contact along the bore) and centred (none), packed as PinInHoleBatch; row by row the
+# single calls' answers.
+pin_dims = clearjoint.PinInHoleDimensions(hole_radius=10.0, hole_length=20.0, pin_radius=9.9,
+                                          stops=((-10.5, 16.0), (10.5, 16.0)))
+pins = np.array([[0, 0.15, 0], [0, 0, 0]], dtype=float)
+pin_batch = clearjoint.detect_pin_in_hole(pin_dims, [0, 0, 0], [0, 0, 1], pins, [0, 0, 1], threads=2)
+check(isinstance(pin_batch, clearjoint.PinInHoleBatch) and len(pin_batch) == 2, f"pin-in-hole batch: {pin_batch!r}")
+check(pin_batch.scenarios() == [clearjoint.PinInHoleScenario.line, clearjoint.PinInHoleScenario.none],
+      f"pin-in-hole batch scenarios: {pin_batch.scenarios()}")
+for n, pin in enumerate(pins):
+    single = clearjoint.detect_pin_in_hole(pin_dims, [0, 0, 0], [0, 0, 1], pin, [0, 0, 1])
+    check(pin_batch[n].as_dict() == single.as_dict(), f"pin-in-hole pose {n}: {pin_batch[n]} != {single}")
 
 # The kernel: a unit circle against the plane z = 0.5 and a cylinder of radius 1.5.
 plane = clearjoint.intersect_circle_plane([0, 0, 0], [1, 0, 0], 1.0, [0, 0, 0.5], [0, 0, 1])
@@ -118,6 +132,6 @@ if pip_install:
           and "Traceback" not in done.stderr, f"clearjoint simulate without the C++ program: {done}")
 
 print(f"python_smoke: clearjoint {clearjoint.__version__} from {os.path.dirname(clearjoint.__file__)}: "
-      f"detect (1 pose, {len(batch)} poses), kernel, simulate ({', '.join(sorted(run.tables))}), "
+      f"detect (1 pose, {len(batch)} poses), detect_pin_in_hole ({len(pin_batch)} poses), kernel, simulate ({', '.join(sorted(run.tables))}), "
       "simulate to HDF5, Simulator, "
       "study, plot, view" + (", the clearjoint command" if pip_install else ""))

@@ -17,6 +17,12 @@
 #                                         environment and compare it with the build's program
 #   exported-interface                   every entry of the exported link interface is a target
 #                                         (Namespace::name), never a bare library name or path
+#   octave-files SOURCE_DIR OCTAVE_DIR CPACK_CONFIG OCTAVE_CLI
+#                                         every MEX gateway of SOURCE_DIR/bindings/matlab (a .c
+#                                         file with a mexFunction) is installed in
+#                                         SCRATCH/prefix/OCTAVE_DIR with its help text, `help`
+#                                         and a call of each work from there, and the Debian
+#                                         package's description (CPACK_CONFIG) names each
 # Environment: CXX and CC, the compilers the consumers are built with, CXXFLAGS, CFLAGS and
 # LDFLAGS, their C++, C and link flags (CMake reads them itself); CLEARJOINT_VERSION, the version
 # the package must report; CLEARJOINT_WITH_DYNAMICS (ON, the default, or OFF), whether it must
@@ -146,6 +152,42 @@ exported-interface)
       fail "exported link interface entry '$entry' is not a Namespace::target ($targets)"
   done <<< "$entries"
   echo "exported link interface: $(echo "$entries" | sort -u | tr '\n' ' ')"
+  ;;
+octave-files)
+  source_dir=$1 octave_dir=$2 cpack_config=$3 octave_cli=$4
+  installed=$prefix/$octave_dir
+  mapfile -t gateways < <(grep -l '^void mexFunction' "$source_dir"/bindings/matlab/*.c | xargs -n1 basename | sed 's/\.c$//')
+  ((${#gateways[@]} > 0)) || fail "no MEX gateway found in $source_dir/bindings/matlab"
+  # The description the .deb octave-clearjoint carries (cmake/ClearjointPackage.cmake).
+  description=$(sed -n '/^set(CPACK_DEBIAN_OCTAVE_DESCRIPTION/,/")$/p' "$cpack_config")
+  [[ -n $description ]] || fail "no CPACK_DEBIAN_OCTAVE_DESCRIPTION in $cpack_config"
+  for gateway in "${gateways[@]}"; do
+    for file in "$gateway.mex" "$gateway.m"; do
+      [[ -f $installed/$file ]] || fail "$file not installed in $installed"
+    done
+    grep -qw "$gateway" <<< "$description" ||
+      fail "the octave-clearjoint description does not name $gateway: $description"
+  done
+  # From a folder outside the sources, Octave's start-up files left out: each help text, and one
+  # call of each gateway on the shipped examples' shapes (the installed MEX files find the C API
+  # library through their run path).
+  mkdir -p "$scratch/octave-home"
+  (cd "$scratch/octave-home" && HOME=$scratch/octave-home "$octave_cli" --norc --no-history --no-gui --quiet --eval "
+    addpath('$installed');
+    names = {$(printf "'%s', " "${gateways[@]}" | sed 's/, $//')};
+    for name = names
+      text = evalc(['help ' name{1}]);
+      assert(!isempty(strfind(text, [name{1} '(dims, '])), [name{1} ': ' text]);
+      assert(strcmp(which(name{1}), fullfile('$installed', [name{1} '.mex'])), which(name{1}));
+    end
+    d = struct('bearing_radius', 10, 'bearing_length', 20, 'journal_radius', 9.9, 'journal_length', 19.8);
+    assert(cj_detect(d, [0 0 0 0 0 1], [0 0.15 0.02 0 0 1]).contact_count > 0);
+    assert(cj_detect_many(d, [0 0 0 0 0 1], [0 0.15 0.02 0 0 1; 0 0 0 0 0 1]).contact_count(1) > 0);
+    p = struct('hole_radius', 10, 'hole_length', 20, 'pin_radius', 9.9, 'stops', [-10.5 16; 10.5 16]);
+    assert(cj_detect_pin_in_hole(p, [0 0 0 0 0 1], [0 0.15 0 0 0 1]).contact_count > 0);
+    r = cj_detect_pin_in_hole_many(p, [0 0 0 0 0 1], [0 0.15 0 0 0 1; 0 0 0 0 0 1]);
+    assert(isequal(r.contact_count > 0, [true; false]), mat2str(r.contact_count));
+    printf('%d MEX gateways installed in %s with their help; each answers\\n', numel(names), '$installed');")
   ;;
 *)
   fail "unknown step $step"
