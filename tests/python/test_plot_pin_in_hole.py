@@ -17,6 +17,7 @@ from matplotlib.colors import to_hex  # noqa: E402
 import clearjoint  # noqa: E402
 from clearjoint import plot  # noqa: E402
 from clearjoint.plot import scenario_colours  # noqa: E402
+from clearjoint.view import frames  # noqa: E402
 from clearjoint.view.frames import viewer_data  # noqa: E402
 from run_fixtures import short_model, write_run  # noqa: E402
 
@@ -110,6 +111,60 @@ def test_the_viewer_sends_a_pin_in_hole_joint_its_table_and_its_sizes(runs):
     assert np.isfinite(data.frames[:, offset:offset + 6 * 6]).any()
     # The paper's table stays the run-wide default.
     assert data.manifest["scenarios"][1]["label"] == "(a) single radial"
+
+
+def single_call_contacts(run, rows):
+    """The frames' contact slots of the pin-in-hole joint, recomputed by one detect_pin_in_hole
+    call per recorded pose: C_i and the normal in the hole's frame (u, v, a), NaN in unused slots."""
+    joint = run.clearance_joints[0]
+    dims = clearjoint.PinInHoleDimensions(hole_radius=joint.bearing_radius, hole_length=joint.bearing_length,
+                                          pin_radius=joint.journal_radius, stops=list(joint.stops))
+    hole_to_body = frames.bearing_frame_B(joint.bearing_axis)
+    out = np.full((len(rows), frames.MAX_CONTACTS, frames.CONTACT_FLOATS), np.nan)
+    pose = {}
+    for side, body in (("hole", joint.bearing_body), ("pin", joint.journal_body)):
+        if body == "ground":
+            pose[side] = (np.zeros((len(rows), 3)), np.tile(np.eye(3), (len(rows), 1, 1)))
+        else:
+            table = run.table("body_" + body)
+            e = np.column_stack([table[c][rows] for c in ("e0", "e1", "e2", "e3")])
+            pose[side] = (np.column_stack([table[c][rows] for c in ("x", "y", "z")]), frames.rotation_matrices(e))
+    for n in range(len(rows)):
+        r_i, rot_i, r_j, rot_j = pose["hole"][0][n], pose["hole"][1][n], pose["pin"][0][n], pose["pin"][1][n]
+        hole_center = r_i + rot_i @ joint.bearing_point
+        found = clearjoint.detect_pin_in_hole(dims, hole_center, rot_i @ joint.bearing_axis,
+                                              r_j + rot_j @ joint.journal_point, rot_j @ joint.journal_axis,
+                                              parallel_angle_tolerance=joint.parallel_angle_tolerance)
+        world_to_hole = hole_to_body.T @ rot_i.T
+        for slot, contact in enumerate(found.contacts):
+            out[n, slot, 0:3] = world_to_hole @ (np.asarray(contact.point_bearing) - hole_center)
+            out[n, slot, 3:6] = world_to_hole @ np.asarray(contact.normal)
+    return out
+
+
+def test_the_viewer_detects_a_pin_in_hole_joints_poses_in_one_batch_with_the_single_calls_answers(runs, monkeypatch):
+    run = plot.read_run(runs["csv"])
+    calls = []
+    batch_call = clearjoint.detect_pin_in_hole
+
+    def counted(*args, **kwargs):
+        calls.append(np.shape(args[3]))
+        return batch_call(*args, **kwargs)
+
+    monkeypatch.setattr(clearjoint, "detect_pin_in_hole", counted)
+    data = viewer_data(run)
+    monkeypatch.undo()
+    rows = np.arange(0, data.manifest["row_count"], data.manifest["decimation_step"])
+    assert calls == [(len(rows), 3)], "one batch call over every frame's pose"
+    (joint,) = data.manifest["joints"]
+    offset = joint["offset"] + frames.JOINT_HEAD_FLOATS
+    shown = data.frames[:, offset:offset + frames.MAX_CONTACTS * frames.CONTACT_FLOATS].astype(float)
+    expected = single_call_contacts(run, rows).reshape(shown.shape)
+    # The same contacts in the same slots; the numbers those of the single calls as the page's
+    # Float32 frames hold them (the frame change may round the last double bit differently).
+    np.testing.assert_array_equal(np.isnan(shown), np.isnan(expected))
+    assert np.isfinite(shown).any()
+    np.testing.assert_allclose(shown, expected.astype(np.float32), rtol=4e-7, atol=1e-12)
 
 
 def test_a_run_folder_without_its_model_keeps_the_papers_table(runs):

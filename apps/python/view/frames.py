@@ -121,11 +121,10 @@ def _body_pose(run: Run, body: str, rows: np.ndarray) -> Tuple[np.ndarray, np.nd
 
 def _contacts_in_bearing_frame(run: Run, joint: ClearanceJointModel, rows: np.ndarray) -> np.ndarray:
     """(N, MAX_CONTACTS, 6): C_i and the normal of every contact, bearing frame, from the
-    certified detection (clearjoint.detect, paper Sec. 3) on the recorded poses; NaN where no
-    contact. The run's table says which scenario each report time was in; the page shows where."""
-    from .. import JointDimensions, detect
-    if joint.geometry == PIN_IN_HOLE:
-        return _pin_in_hole_contacts_in_hole_frame(run, joint, rows)
+    certified detection (clearjoint.detect, paper Sec. 3; clearjoint.detect_pin_in_hole for a pin
+    in a hole, the hole's frame) on the recorded poses, every pose in one packed batch; NaN where
+    no contact. The run's table says which scenario each report time was in; the page shows where."""
+    from .. import JointDimensions, PinInHoleDimensions, detect, detect_pin_in_hole
     r_i, e_i = _body_pose(run, joint.bearing_body, rows)
     r_j, e_j = _body_pose(run, joint.journal_body, rows)
     rot_i, rot_j = rotation_matrices(e_i), rotation_matrices(e_j)
@@ -133,10 +132,16 @@ def _contacts_in_bearing_frame(run: Run, joint: ClearanceJointModel, rows: np.nd
     axis_i = rot_i @ joint.bearing_axis
     p_WPj = r_j + rot_j @ joint.journal_point
     axis_j = rot_j @ joint.journal_axis
-    dims = JointDimensions(bearing_radius=joint.bearing_radius, bearing_length=joint.bearing_length,
-                           journal_radius=joint.journal_radius, journal_length=joint.journal_length)
-    batch = detect(dims, p_WPi, axis_i, p_WPj, axis_j,
-                   parallel_angle_tolerance=joint.parallel_angle_tolerance)
+    if joint.geometry == PIN_IN_HOLE:
+        pin_dims = PinInHoleDimensions(hole_radius=joint.bearing_radius, hole_length=joint.bearing_length,
+                                       pin_radius=joint.journal_radius, stops=list(joint.stops))
+        batch = detect_pin_in_hole(pin_dims, p_WPi, axis_i, p_WPj, axis_j,
+                                   parallel_angle_tolerance=joint.parallel_angle_tolerance)
+    else:
+        dims = JointDimensions(bearing_radius=joint.bearing_radius, bearing_length=joint.bearing_length,
+                               journal_radius=joint.journal_radius, journal_length=joint.journal_length)
+        batch = detect(dims, p_WPi, axis_i, p_WPj, axis_j,
+                       parallel_angle_tolerance=joint.parallel_angle_tolerance)
     to_bearing = np.einsum("ij,njk->nik", bearing_frame_B(joint.bearing_axis).T,
                            np.transpose(rot_i, (0, 2, 1)))  # world -> (u, v, a)
     out = np.full((len(rows), MAX_CONTACTS, CONTACT_FLOATS), np.nan)
@@ -146,29 +151,6 @@ def _contacts_in_bearing_frame(run: Run, joint: ClearanceJointModel, rows: np.nd
         relative = batch.point_bearing - p_WPi[pose]
         out[pose, slot, 0:3] = np.einsum("nij,nj->ni", to_bearing[pose], relative)
         out[pose, slot, 3:6] = np.einsum("nij,nj->ni", to_bearing[pose], batch.normal)
-    return out
-
-
-def _pin_in_hole_contacts_in_hole_frame(run: Run, joint: ClearanceJointModel, rows: np.ndarray) -> np.ndarray:
-    """As _contacts_in_bearing_frame for a pin in a hole (clearjoint.detect_pin_in_hole, one pose
-    at a time: it has no batch form), in the hole's frame."""
-    from .. import PinInHoleDimensions, detect_pin_in_hole
-    r_i, e_i = _body_pose(run, joint.bearing_body, rows)
-    r_j, e_j = _body_pose(run, joint.journal_body, rows)
-    rot_i, rot_j = rotation_matrices(e_i), rotation_matrices(e_j)
-    dims = PinInHoleDimensions(hole_radius=joint.bearing_radius, hole_length=joint.bearing_length,
-                               pin_radius=joint.journal_radius, stops=list(joint.stops))
-    to_bearing = bearing_frame_B(joint.bearing_axis).T
-    out = np.full((len(rows), MAX_CONTACTS, CONTACT_FLOATS), np.nan)
-    for n in range(len(rows)):
-        p_WPi = r_i[n] + rot_i[n] @ joint.bearing_point
-        found = detect_pin_in_hole(dims, p_WPi, rot_i[n] @ joint.bearing_axis,
-                                   r_j[n] + rot_j[n] @ joint.journal_point, rot_j[n] @ joint.journal_axis,
-                                   parallel_angle_tolerance=joint.parallel_angle_tolerance)
-        for slot, contact in enumerate(found.contacts[:MAX_CONTACTS]):
-            world_to_hole = to_bearing @ rot_i[n].T
-            out[n, slot, 0:3] = world_to_hole @ (np.asarray(contact.point_bearing) - p_WPi)
-            out[n, slot, 3:6] = world_to_hole @ np.asarray(contact.normal)
     return out
 
 
