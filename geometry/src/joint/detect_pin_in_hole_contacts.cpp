@@ -239,7 +239,7 @@ int inside_arcs(const CircleCylinderIntersection& query, std::array<RimArc, 2>& 
 /// What the answer accumulates besides its contacts.
 struct Tally {
   Certificate certificate{Certainty::exact, CertificateReason::none};
-  bool beyond = false;            // proved beyond the model
+  bool beyond = false;            // proved beyond the model (uncertified: computed beyond it)
   bool beyond_undecided = false;  // a depth within its bound of its limit
   int radial = 0;
   int radial_at[2] = {0, 0};
@@ -250,9 +250,14 @@ struct Tally {
   /// (radial contacts; radial_contact's `turn`).
   std::array<double, kMaxPinInHoleContacts> normal_error{};
   void add(const Certificate& c) { certificate = weakest(certificate, c); }
-  /// depth > limit proved beyond; within its error of it undecided.
+  /// depth > limit proved beyond; within its error of it undecided. An uncertain contact (the
+  /// certificates switched off, or its query unproved) has no bound to prove anything with: its
+  /// computed depth decides, as detect_contacts' compare_with_clearance lets it, and the answer is
+  /// uncertain already.
   void check_depth(const Contact& contact, double limit) {
-    if (contact.depth - contact.depth_error > limit) {
+    if (contact.certificate.level == Certainty::uncertain) {
+      beyond |= contact.depth > limit;
+    } else if (contact.depth - contact.depth_error > limit) {
       beyond = true;
     } else if (contact.depth + contact.depth_error > limit) {
       beyond_undecided = true;
@@ -571,14 +576,17 @@ PinInHoleContacts detect_pin_in_hole_contacts(const PinInHoleDimensions& dimensi
 
   // Does the pin's axis pass through the hole? At the hole's mid-plane it must lie within Rh of
   // the hole's axis; the two answers are at least Rp apart from a wrong one whenever the pin's
-  // section misses the hole's circle, and the undecided band is the evaluation's bound.
+  // section misses the hole's circle, and the undecided band is the evaluation's bound. With the
+  // certificates switched off the computed crossing decides, as a computed depth does (check_depth).
   const Vector3 d_ji = s.p_WPj - s.p_WPi;
   const double d_ji_error = detail::difference_rounding_bound(d_ji);
   const AxisLine axis_line = pin_axis_line(s, d_ji);
   const AxisCrossing mid = pin_axis_crossing(axis_line, 0.0);
   const double crossing_shift = d_ji_error / std::max(s.cosine, 1e-300);  // d_ji's rounding at any plane
   const double mid_error = mid.error + crossing_shift;
-  if (!(mid.rho + mid_error < s.hole_radius)) {
+  if (!options.intersection.certify) {
+    tally.beyond = !(mid.rho < s.hole_radius);
+  } else if (!(mid.rho + mid_error < s.hole_radius)) {
     if (mid.rho - mid_error >= s.hole_radius) {
       tally.beyond = true;
     } else {

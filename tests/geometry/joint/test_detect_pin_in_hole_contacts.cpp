@@ -303,6 +303,110 @@ TEST(DetectPinInHoleContacts, AStopWhoseOuterCircleReachesOverTheHoleIsBeyondThe
   EXPECT_TRUE(stop_found);
 }
 
+DetectionOptions uncertified() {
+  DetectionOptions options;
+  options.intersection.certify = false;
+  return options;
+}
+
+/// A pin tilted by t about the x axis, its axis (0, sin t, cos t) through `point`.
+PartPose tilted(double t, const Vector3& point = Vector3::Zero()) {
+  return PartPose{point, Vector3(0.0, std::sin(t), std::cos(t))};
+}
+
+TEST(DetectPinInHoleContacts, AnUncertifiedAnswerIsBeyondTheModelWhenTheComputedDepthExceedsTheClearance) {
+  // Tilted by t = 0.03 about the hole's centre: both edges 9.9 - 10 sqrt(1 - sin 2t) = 0.204 deep
+  // (the closed form of the two-edge test above), twice cr = 0.1. Aligned and 0.35 off: a line
+  // contact 0.25 deep. Neither depth is near its limit, so the computed depth decides as surely
+  // as the certified one.
+  for (const PartPose& pin : {tilted(0.03), PartPose{Vector3(0.35, 0.0, 0.0), Vector3::UnitZ()}}) {
+    const PinInHoleContacts certified = detect_pin_in_hole_contacts(joint(), kHole, pin);
+    const PinInHoleContacts plain = detect_pin_in_hole_contacts(joint(), kHole, pin, uncertified());
+    EXPECT_EQ(to_string(certified.scenario), to_string(PinInHoleScenario::beyond_model)) << pin.axis_W.transpose();
+    EXPECT_TRUE(decided(certified.certificate));
+    EXPECT_EQ(to_string(plain.scenario), to_string(PinInHoleScenario::beyond_model)) << pin.axis_W.transpose();
+    ASSERT_GE(plain.contact_count, 1);
+    EXPECT_GT(plain.contacts[0].depth, 2.0 * joint().radial_clearance());
+    EXPECT_EQ(plain.certificate.level, Certainty::uncertain);
+    EXPECT_EQ(plain.certificate.reason, CertificateReason::certificate_switched_off);
+  }
+}
+
+TEST(DetectPinInHoleContacts, AnUncertifiedAnswerIsBeyondTheModelWhenAStopsComputedDepthExceedsTheAxialClearance) {
+  // Tilted by t = 0.005 through (0, 0, 1): the stop at -10.5 reaches 1 - 10.5 cos t + 16 sin t + 10
+  // = 0.58 into face B (the one-stop test's closed form, pushed 0.48 further), above ca = 0.5;
+  // aligned and pushed 1.25: face B 0.75 deep.
+  for (const PartPose& pin : {tilted(0.005, Vector3(0.0, 0.0, 1.0)), PartPose{Vector3(0.0, 0.0, 1.25), Vector3::UnitZ()}}) {
+    const PinInHoleContacts certified = detect_pin_in_hole_contacts(joint(), kHole, pin);
+    const PinInHoleContacts plain = detect_pin_in_hole_contacts(joint(), kHole, pin, uncertified());
+    EXPECT_EQ(to_string(certified.scenario), to_string(PinInHoleScenario::beyond_model)) << pin.axis_W.transpose();
+    EXPECT_TRUE(decided(certified.certificate));
+    EXPECT_EQ(to_string(plain.scenario), to_string(PinInHoleScenario::beyond_model)) << pin.axis_W.transpose();
+    ASSERT_EQ(plain.contact_count, 1);
+    EXPECT_EQ(plain.contacts[0].type, ContactType::axial);
+    EXPECT_GT(plain.contacts[0].depth, joint().axial_clearance() + 0.05);
+  }
+}
+
+TEST(DetectPinInHoleContacts, AnUncertifiedAnswerHasTheCertifiedScenarioAwayFromTheBoundaries) {
+  // One pose per scenario, each a clearance's tenth or more from any change of scenario: the plain
+  // double-precision answer is the certified one without its proofs.
+  PinInHoleDimensions narrow_heads = joint();
+  narrow_heads.stops[0].outer_radius = 10.05;
+  const struct {
+    PinInHoleDimensions dimensions;
+    PartPose pin;
+    PinInHoleScenario scenario;
+  } poses[] = {
+      {joint(), PartPose{}, PinInHoleScenario::none},
+      {joint(), tilted(0.0125), PinInHoleScenario::both_edges_opposite},
+      {joint(), tilted(std::atan(0.008), Vector3(0.09, 0.0, 0.0)), PinInHoleScenario::both_edges_same_side},
+      {joint(), tilted(0.0125, Vector3(0.0, 0.0, 0.4)), PinInHoleScenario::edges_and_stops},
+      {joint(), tilted(0.005, Vector3(0.0, 0.0, 0.52)), PinInHoleScenario::one_stop},
+      {joint(), PartPose{Vector3(0.15, 0.0, 0.0), Vector3::UnitZ()}, PinInHoleScenario::line},
+      {joint(), PartPose{Vector3(0.0, 0.0, 0.75), Vector3::UnitZ()}, PinInHoleScenario::face},
+      {joint(), PartPose{Vector3(0.15, 0.0, 0.75), Vector3::UnitZ()}, PinInHoleScenario::line_and_face},
+      {joint(), tilted(0.03), PinInHoleScenario::beyond_model},
+      {joint(), PartPose{Vector3(30.0, 0.0, 0.0), Vector3::UnitZ()}, PinInHoleScenario::beyond_model},
+      {joint(), PartPose{Vector3::Zero(), Vector3::UnitX()}, PinInHoleScenario::beyond_model},
+      {narrow_heads, tilted(0.005, Vector3(0.0, -0.08, 0.52)), PinInHoleScenario::beyond_model},
+  };
+  for (const auto& pose : poses) {
+    const PinInHoleContacts certified = detect_pin_in_hole_contacts(pose.dimensions, kHole, pose.pin);
+    const PinInHoleContacts plain = detect_pin_in_hole_contacts(pose.dimensions, kHole, pose.pin, uncertified());
+    const std::string where = "pin at (" + std::to_string(pose.pin.p_WP.x()) + ", " + std::to_string(pose.pin.p_WP.y()) +
+                              ", " + std::to_string(pose.pin.p_WP.z()) + ") along y " +
+                              std::to_string(pose.pin.axis_W.y());
+    EXPECT_EQ(to_string(certified.scenario), to_string(pose.scenario)) << where;
+    EXPECT_TRUE(decided(certified.certificate)) << where;
+    EXPECT_EQ(to_string(plain.scenario), to_string(certified.scenario)) << where;
+    EXPECT_EQ(plain.contact_count, certified.contact_count) << where;
+    EXPECT_EQ(plain.certificate.reason, CertificateReason::certificate_switched_off) << where;
+  }
+}
+
+TEST(DetectPinInHoleContacts, AnUncertifiedAnswerTakesThePinThroughTheHoleFromTheComputedCrossing) {
+  // No stops; the pin's axis (0, 1, 0.001) through (10, 0, 0): nearly parallel to the link's
+  // faces, it crosses the mid-plane on the bore, at exactly 10 = Rh as computed, and its edges
+  // stay 9.99 from it, clear of the pin. Certified, that crossing lies within its bound of Rh and
+  // the answer is uncertain; uncertified, the computed crossing decides (at Rh or beyond: not
+  // through the hole), as a computed depth decides against its limit.
+  PinInHoleDimensions d = joint();
+  d.stop_count = 0;
+  const PartPose pin{Vector3(10.0, 0.0, 0.0), Vector3(0.0, 1.0, 0.001)};
+  const PinInHoleContacts certified = detect_pin_in_hole_contacts(d, kHole, pin);
+  EXPECT_EQ(certified.contact_count, 0);
+  EXPECT_EQ(certified.certificate.reason, CertificateReason::beyond_model_undecided);
+  const PinInHoleContacts plain = detect_pin_in_hole_contacts(d, kHole, pin, uncertified());
+  EXPECT_EQ(plain.contact_count, 0);
+  EXPECT_EQ(to_string(plain.scenario), to_string(PinInHoleScenario::beyond_model));
+  EXPECT_EQ(plain.certificate.reason, CertificateReason::certificate_switched_off);
+  // A hundredth inside the bore: through the hole, both ways.
+  const PartPose inside{Vector3(9.99, 0.0, 0.0), pin.axis_W};
+  EXPECT_EQ(to_string(detect_pin_in_hole_contacts(d, kHole, inside, uncertified()).scenario),
+            to_string(detect_pin_in_hole_contacts(d, kHole, inside).scenario));
+}
+
 TEST(DetectPinInHoleContacts, ScalingEverythingByAPowerOfTwoScalesTheAnswerExactly) {
   // Huge and tiny joints: the tilted-pin closed form at 2^-400 and 2^400 times its size gives the
   // same scenario and depths times the scale (powers of two scale every double exactly).
