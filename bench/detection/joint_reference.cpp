@@ -7,6 +7,7 @@
 #include <cmath>
 #include <utility>
 
+#include "reference_circle.hpp"
 #include "trig_quadratic_roots.hpp"
 
 namespace clearjoint::bench {
@@ -58,35 +59,7 @@ int decided_sign(const Real& value, const Real& scale, bool& tie) {
 
 // ---- the rim --------------------------------------------------------------------------------
 
-/// x(theta) = center + radius (u cos theta + v sin theta), u and v orthonormal in the rim plane.
-/// Any such frame gives the same points; angles are this reference's own.
-struct Rim {
-  RealVector center;
-  RealVector normal;  // unit
-  RealVector u, v;
-  Real radius;
-
-  RealVector at(const Real& c, const Real& s) const {
-    return add(center, scale(radius, add(scale(c, u), scale(s, v))));
-  }
-  RealVector at(const Real& angle) const { return at(cos(angle), sin(angle)); }
-};
-
-Rim make_rim(const RealVector& center, const RealVector& normal_hat, const Real& radius) {
-  int k = 0;
-  for (int i = 1; i < 3; ++i) {
-    if (abs(normal_hat[i]) < abs(normal_hat[k])) k = i;
-  }
-  RealVector e{Real(0), Real(0), Real(0)};
-  e[k] = 1;
-  Rim rim;
-  rim.center = center;
-  rim.normal = normal_hat;
-  rim.u = normalized(cross(normal_hat, e));
-  rim.v = cross(normal_hat, rim.u);
-  rim.radius = radius;
-  return rim;
-}
+using Rim = ReferenceCircle;
 
 // ---- trigonometric quadratics and their roots (support/multiprecision) ---------------------------
 
@@ -219,7 +192,7 @@ int index_of(ContactBase base) { return base == ContactBase::a ? 0 : 1; }
 int outward_sign(ContactBase base) { return base == ContactBase::a ? 1 : -1; }
 
 Rim journal_rim(const ReferenceJoint& joint, ContactBase base) {
-  return make_rim(joint.journal_rim[index_of(base)], joint.journal_axis_hat, joint.journal_radius);
+  return make_reference_circle(joint.journal_rim[index_of(base)], joint.journal_axis_hat, joint.journal_radius);
 }
 
 struct CandidateResult {

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <utility>
 
+#include "reference_circle.hpp"
 #include "trig_quadratic_roots.hpp"
 
 namespace clearjoint::bench {
@@ -36,30 +37,7 @@ int decided_sign(const Real& value, const Real& scale, bool& tie) {
   return sign_of(value);
 }
 
-struct Circle {
-  RealVector center, normal, u, v;  // normal, u, v orthonormal
-  Real radius;
-  RealVector at(const Real& angle) const {
-    return add(center, scale(radius, add(scale(cos(angle), u), scale(sin(angle), v))));
-  }
-};
-
-Circle make_circle(const RealVector& center, const RealVector& normal_hat, const Real& radius) {
-  // Any orthonormal frame: this reference's angles are its own.
-  int k = 0;
-  for (int i = 1; i < 3; ++i) {
-    if (abs(normal_hat[i]) < abs(normal_hat[k])) k = i;
-  }
-  RealVector e{Real(0), Real(0), Real(0)};
-  e[k] = 1;
-  Circle c;
-  c.center = center;
-  c.normal = normal_hat;
-  c.u = normalized(cross(normal_hat, e));
-  c.v = cross(normal_hat, c.u);
-  c.radius = radius;
-  return c;
-}
+using Circle = ReferenceCircle;
 
 /// Excess of the circle over the cylinder through `p` along unit `e` with radius R:
 /// |(x - p) x e|^2 - R^2 = |A + B cos + C sin|^2 - R^2.
@@ -137,7 +115,7 @@ struct Collector {
 
 /// The hole circle at `sign` against the pin: contacts on the arcs strictly inside the pin.
 void hole_circle_against_pin(const Joint& j, int sign, ContactBase base, Collector& out) {
-  const Circle circle = make_circle(edge_centre(j, sign), j.hole_dir, j.hole_radius);
+  const Circle circle = make_reference_circle(edge_centre(j, sign), j.hole_dir, j.hole_radius);
   const TrigQuadratic g = cylinder_excess(circle, j.p_j, j.pin_dir, j.pin_radius);
   const Real reach = norm(sub(circle.center, j.p_j)) + j.hole_radius + j.pin_radius;
   const Real size = reach * reach;
@@ -208,7 +186,7 @@ void stop_against_face(const Joint& j, const geometry::AxialStop& stop, bool ali
   const RealVector into_link = scale(Real(face == 0 ? -1 : 1), j.hole_dir);
   const RealVector face_point = edge_centre(j, face == 0 ? 1 : -1);
   const RealVector stop_centre = add(j.p_j, scale(Real(stop.position), j.pin_offset));
-  const Circle outer = make_circle(stop_centre, j.pin_dir, Real(stop.outer_radius));
+  const Circle outer = make_reference_circle(stop_centre, j.pin_dir, Real(stop.outer_radius));
   const PlaneReach reach = plane_reach(outer, face_point, into_link);
   const Real size = abs(reach.alpha) + reach.rho + j.half_length + Real(stop.outer_radius);
   if (decided_sign(reach.alpha + reach.rho, size, out.tie) <= 0) return;
@@ -244,7 +222,7 @@ void stop_against_face(const Joint& j, const geometry::AxialStop& stop, bool ali
       out.beyond = true;
       const Real head_side = stop.position > 0.0 ? 1 : -1;
       const RealVector into_head = scale(head_side, j.pin_dir);
-      const Circle edge = make_circle(face_point, j.hole_dir, j.hole_radius);
+      const Circle edge = make_reference_circle(face_point, j.hole_dir, j.hole_radius);
       const PlaneReach edge_reach = plane_reach(edge, stop_centre, into_head);
       const Real edge_size = abs(edge_reach.alpha) + edge_reach.rho + j.hole_radius;
       if (decided_sign(edge_reach.alpha + edge_reach.rho, edge_size, out.tie) > 0) {
