@@ -2,9 +2,10 @@
 !> Fortran binding of the clearjoint C API (clearjoint/clearjoint.h) through ISO_C_BINDING.
 !>
 !> The BIND(C) types below mirror the C structs field by field (same names, same layout); the
-!> constants mirror the C enums. cj_detect and cj_detect_many are Fortran wrappers that return the
-!> C status and, when asked, the error message as a Fortran string. See clearjoint.h for the
-!> meaning of every field and for the ABI rules.
+!> constants mirror the C enums. cj_detect and cj_detect_many (the paper's joint),
+!> cj_detect_pin_in_hole and cj_detect_pin_in_hole_many (a pin through a hole) are Fortran
+!> wrappers that return the C status and, when asked, the error message as a Fortran string.
+!> See clearjoint.h for the meaning of every field and for the ABI rules.
 module clearjoint
   use, intrinsic :: iso_c_binding, only: c_int, c_int32_t, c_double, c_char, c_ptr, c_size_t, &
                                          c_ptrdiff_t, c_null_char, c_null_ptr, c_loc, &
@@ -162,7 +163,7 @@ module clearjoint
 
   public :: cj_detect, cj_detect_many, cj_default_options, cj_version, cj_string
   public :: cj_scenario_string, cj_certainty_string, cj_contact_type_string, cj_base_string
-  public :: cj_detect_pin_in_hole, cj_pin_in_hole_scenario_string
+  public :: cj_detect_pin_in_hole, cj_detect_pin_in_hole_many, cj_pin_in_hole_scenario_string
 
   interface
     function c_detect(dimensions, bearing, journal, options, result, message, capacity) &
@@ -198,6 +199,22 @@ module clearjoint
       type(cj_pose), intent(in) :: hole, pin
       type(c_ptr), value :: options
       type(cj_pin_in_hole_result), intent(inout) :: result
+      character(kind=c_char), dimension(*), intent(out) :: message
+      integer(c_size_t), value :: capacity
+      integer(c_int) :: status
+    end function
+
+    function c_detect_pin_in_hole_many(dimensions, holes, pins, count, options, results, processed, &
+                                       message, capacity) bind(c, name="cj_detect_pin_in_hole_many") &
+        result(status)
+      import :: c_int, c_ptr, c_char, c_size_t, cj_pin_in_hole_dimensions, cj_pose_array, &
+                cj_pin_in_hole_result
+      type(cj_pin_in_hole_dimensions), intent(in) :: dimensions
+      type(cj_pose_array), intent(in) :: holes, pins
+      integer(c_size_t), value :: count
+      type(c_ptr), value :: options
+      type(cj_pin_in_hole_result), intent(inout) :: results(*)
+      integer(c_size_t), intent(out) :: processed
       character(kind=c_char), dimension(*), intent(out) :: message
       integer(c_size_t), value :: capacity
       integer(c_int) :: status
@@ -322,10 +339,8 @@ contains
     character(len=:), allocatable, intent(out), optional :: message
     integer(c_int) :: status
     character(kind=c_char, len=message_capacity) :: buffer
-    type(c_ptr) :: options_pointer
-    options_pointer = c_null_ptr
-    if (present(options)) options_pointer = c_loc(options)
-    status = c_detect(dimensions, bearing, journal, options_pointer, result, buffer, message_capacity)
+    status = c_detect(dimensions, bearing, journal, options_address(options), result, buffer, &
+                      message_capacity)
     if (present(message)) message = message_text(buffer)
   end function
 
@@ -346,10 +361,8 @@ contains
     character(len=:), allocatable, intent(out), optional :: message
     integer(c_int) :: status
     character(kind=c_char, len=message_capacity) :: buffer
-    type(c_ptr) :: options_pointer
-    options_pointer = c_null_ptr
-    if (present(options)) options_pointer = c_loc(options)
-    status = c_detect_pin_in_hole(dimensions, hole, pin, options_pointer, result, buffer, message_capacity)
+    status = c_detect_pin_in_hole(dimensions, hole, pin, options_address(options), result, buffer, &
+                                  message_capacity)
     if (present(message)) message = message_text(buffer)
   end function
 
@@ -365,28 +378,74 @@ contains
     character(len=:), allocatable, intent(out), optional :: message
     integer(c_int) :: status
     character(kind=c_char, len=message_capacity) :: buffer
-    type(c_ptr) :: options_pointer
-    type(cj_pose_array) :: bearing_array, journal_array
+    character(len=:), allocatable :: refusal
     integer(c_size_t) :: processed
-    options_pointer = c_null_ptr
-    if (present(options)) options_pointer = c_loc(options)
-    if (size(bearings, 1) /= 6 .or. size(journals, 1) /= 6 .or. &
-        (size(bearings, 2) /= 1 .and. size(bearings, 2) /= size(results)) .or. &
-        (size(journals, 2) /= 1 .and. size(journals, 2) /= size(results))) then
-      status = CJ_INVALID_INPUT
-      if (present(message)) message = 'bearings and journals: must have shape (6, size(results)) or (6, 1)'
+    if (batch_settled(bearings, journals, size(results), 'bearings and journals', status, refusal)) then
+      if (present(message)) message = refusal
       return
     end if
-    if (size(results) == 0) then
-      status = CJ_OK  ! nothing to read: the arrays may be empty
-      if (present(message)) message = ''
-      return
-    end if
-    bearing_array = columns_of(bearings)
-    journal_array = columns_of(journals)
-    status = c_detect_many(dimensions, bearing_array, journal_array, int(size(results), c_size_t), &
-                           options_pointer, results, processed, buffer, message_capacity)
+    status = c_detect_many(dimensions, columns_of(bearings), columns_of(journals), &
+                           int(size(results), c_size_t), options_address(options), results, &
+                           processed, buffer, message_capacity)
     if (present(message)) message = message_text(buffer)
+  end function
+
+  !> Detect the contacts of a pin in its hole over n poses (C: cj_detect_pin_in_hole_many), as
+  !> cj_detect_many does for the paper's joint: holes and pins of shape (6, n) or (6, 1), one
+  !> pose [p_WP, axis_W] per column, read in place; results(k) is bit for bit the answer of
+  !> cj_detect_pin_in_hole on pose k. On failure the results before the failing pose are set and
+  !> `message` names it (poses numbered from 0, as in C).
+  function cj_detect_pin_in_hole_many(dimensions, holes, pins, results, options, message) result(status)
+    type(cj_pin_in_hole_dimensions), intent(in) :: dimensions
+    real(c_double), intent(in), target, contiguous :: holes(:, :), pins(:, :)
+    type(cj_pin_in_hole_result), intent(inout) :: results(:)
+    type(cj_options), intent(in), target, optional :: options
+    character(len=:), allocatable, intent(out), optional :: message
+    integer(c_int) :: status
+    character(kind=c_char, len=message_capacity) :: buffer
+    character(len=:), allocatable :: refusal
+    integer(c_size_t) :: processed
+    if (batch_settled(holes, pins, size(results), 'holes and pins', status, refusal)) then
+      if (present(message)) message = refusal
+      return
+    end if
+    status = c_detect_pin_in_hole_many(dimensions, columns_of(holes), columns_of(pins), &
+                                       int(size(results), c_size_t), options_address(options), &
+                                       results, processed, buffer, message_capacity)
+    if (present(message)) message = message_text(buffer)
+  end function
+
+  !> The options' address for the C API, or NULL (its defaults) when they are absent.
+  function options_address(options) result(address)
+    type(cj_options), intent(in), target, optional :: options
+    type(c_ptr) :: address
+    address = c_null_ptr
+    if (present(options)) address = c_loc(options)
+  end function
+
+  !> Whether a batch call is answered before the C API is called: two pose arrays (`names`, as
+  !> the caller's arguments) not of shape (6, n) or (6, 1) give CJ_INVALID_INPUT and a message
+  !> naming them, n = 0 gives CJ_OK (nothing to read: the arrays may be empty). The message is a
+  !> plain allocatable, not the callers' optional one: gfortran 12 loses the length of an
+  !> optional deferred-length string passed on to another procedure (GCC bug 93762).
+  function batch_settled(first, second, n, names, status, message) result(settled)
+    real(c_double), intent(in) :: first(:, :), second(:, :)
+    integer, intent(in) :: n
+    character(len=*), intent(in) :: names
+    integer(c_int), intent(out) :: status
+    character(len=:), allocatable, intent(out) :: message
+    logical :: settled
+    settled = .true.
+    status = CJ_OK
+    message = ''
+    if (size(first, 1) /= 6 .or. size(second, 1) /= 6 .or. &
+        (size(first, 2) /= 1 .and. size(first, 2) /= n) .or. &
+        (size(second, 2) /= 1 .and. size(second, 2) /= n)) then
+      status = CJ_INVALID_INPUT
+      message = names//': must have shape (6, size(results)) or (6, 1)'
+    else if (n > 0) then
+      settled = .false.
+    end if
   end function
 
   !> Poses stored one per column of a (6, n) array: C's row-major n x 6 layout; one column

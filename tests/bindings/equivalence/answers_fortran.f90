@@ -73,6 +73,12 @@ program answers_fortran
     do k = 1, batch
       write (out, '(a)') result_line('B', singles + k - 1, results(k))
     end do
+    ! Pose arrays of another shape are refused by the wrapper, naming them.
+    status = cj_detect_many(dims, bearings, journals(1:5, :), results, message=message)
+    if (status /= CJ_INVALID_INPUT .or. index(message, 'bearings and journals: must have shape') /= 1) then
+      write (error_unit, '(a)') 'journals(1:5, :): status '//decimal(status)//', message "'//message//'"'
+      stop 1
+    end if
   end if
   close (out)
 
