@@ -239,8 +239,11 @@ int inside_arcs(const CircleCylinderIntersection& query, std::array<RimArc, 2>& 
 /// What the answer accumulates besides its contacts.
 struct Tally {
   Certificate certificate{Certainty::exact, CertificateReason::none};
-  bool beyond = false;            // proved beyond the model (uncertified: computed beyond it)
-  bool beyond_undecided = false;  // a depth within its bound of its limit
+  /// Beyond the model as computed: the answer's label, as detect_contacts' compare_with_clearance
+  /// lets the computed depth label the paper's joint's answer.
+  bool beyond = false;
+  bool beyond_proved = false;     // beyond the model whatever the rounding
+  bool beyond_undecided = false;  // a depth or crossing within its bound of its limit
   int radial = 0;
   int radial_at[2] = {0, 0};
   int axial = 0;
@@ -250,19 +253,21 @@ struct Tally {
   /// (radial contacts; radial_contact's `turn`).
   std::array<double, kMaxPinInHoleContacts> normal_error{};
   void add(const Certificate& c) { certificate = weakest(certificate, c); }
-  /// depth > limit proved beyond; within its error of it undecided. An uncertain contact (the
-  /// certificates switched off, or its query unproved) has no bound to prove anything with: its
-  /// computed depth decides, as detect_contacts' compare_with_clearance lets it, and the answer is
-  /// uncertain already.
+  /// The computed depth above its limit labels the answer beyond the model; proved when the depth
+  /// less its error is, undecided when the limit lies within the depth's error. An uncertain
+  /// contact (the certificates switched off, or its query unproved) has no bound to prove
+  /// anything with, and the answer is uncertain already (detect_contacts' compare_with_clearance).
   void check_depth(const Contact& contact, double limit) {
-    if (contact.certificate.level == Certainty::uncertain) {
-      beyond |= contact.depth > limit;
-    } else if (contact.depth - contact.depth_error > limit) {
-      beyond = true;
+    beyond |= contact.depth > limit;
+    if (contact.certificate.level == Certainty::uncertain) return;
+    if (contact.depth - contact.depth_error > limit) {
+      beyond_proved = true;
     } else if (contact.depth + contact.depth_error > limit) {
       beyond_undecided = true;
     }
   }
+  /// Beyond the model by a decision the queries proved (or, uncertified, computed).
+  void prove_beyond() { beyond = beyond_proved = true; }
 };
 
 Certificate proved(const DetectionOptions& options) {
@@ -286,7 +291,7 @@ void hole_circle_against_pin(const Setup& s, int sign, ContactBase base, const D
   tally.add(query.certificate);
   std::array<RimArc, 2> arcs;
   const int count = inside_arcs(query, arcs);
-  if (query.topology == CircleCylinderTopology::inside || count == 2) tally.beyond = true;
+  if (query.topology == CircleCylinderTopology::inside || count == 2) tally.prove_beyond();
   const CircleFrame frame = frame_of(circle);
   const double angle_error = largest_angle_error(query.crossings, query.crossing_count);
   for (int k = 0; k < count && out.contact_count < kMaxPinInHoleContacts; ++k) {
@@ -413,7 +418,7 @@ void stop_against_face(const Setup& s, const AxialStop& stop, double axial_limit
   } else {
     // The stop's outer circle reaches over the hole: the hole's edge against the stop's plane
     // (its normal into the stop's head), whose penetration is the link's edge inside the head.
-    tally.beyond = true;
+    tally.prove_beyond();
     const double head_side = stop.position > 0.0 ? 1.0 : -1.0;
     const Circle3 edge{face_point.value, s.hole_axis, s.hole_radius};
     const CirclePlaneIntersection edge_query = detail::intersect_circle_plane(
@@ -576,19 +581,19 @@ PinInHoleContacts detect_pin_in_hole_contacts(const PinInHoleDimensions& dimensi
 
   // Does the pin's axis pass through the hole? At the hole's mid-plane it must lie within Rh of
   // the hole's axis; the two answers are at least Rp apart from a wrong one whenever the pin's
-  // section misses the hole's circle, and the undecided band is the evaluation's bound. With the
-  // certificates switched off the computed crossing decides, as a computed depth does (check_depth).
+  // section misses the hole's circle, and the undecided band is the evaluation's bound. The
+  // computed crossing labels the answer, as a computed depth does (check_depth); the bound proves
+  // the label or leaves it undecided.
   const Vector3 d_ji = s.p_WPj - s.p_WPi;
   const double d_ji_error = detail::difference_rounding_bound(d_ji);
   const AxisLine axis_line = pin_axis_line(s, d_ji);
   const AxisCrossing mid = pin_axis_crossing(axis_line, 0.0);
   const double crossing_shift = d_ji_error / std::max(s.cosine, 1e-300);  // d_ji's rounding at any plane
   const double mid_error = mid.error + crossing_shift;
-  if (!options.intersection.certify) {
-    tally.beyond = !(mid.rho < s.hole_radius);
-  } else if (!(mid.rho + mid_error < s.hole_radius)) {
+  tally.beyond |= !(mid.rho < s.hole_radius);
+  if (options.intersection.certify && !(mid.rho + mid_error < s.hole_radius)) {
     if (mid.rho - mid_error >= s.hole_radius) {
-      tally.beyond = true;
+      tally.beyond_proved = true;
     } else {
       tally.beyond_undecided = true;
     }
@@ -626,7 +631,7 @@ PinInHoleContacts detect_pin_in_hole_contacts(const PinInHoleDimensions& dimensi
     tally.add(relaxed);
     for (int k = 0; k < out.contact_count; ++k) out.contacts[k].certificate = relaxed;
   }
-  if (tally.beyond_undecided && !tally.beyond) {
+  if (tally.beyond_undecided && !tally.beyond_proved) {
     tally.add({Certainty::uncertain, CertificateReason::beyond_model_undecided});
   }
   out.scenario = classify(out, tally);

@@ -397,6 +397,7 @@ TEST(DetectPinInHoleContacts, AnUncertifiedAnswerTakesThePinThroughTheHoleFromTh
   const PinInHoleContacts certified = detect_pin_in_hole_contacts(d, kHole, pin);
   EXPECT_EQ(certified.contact_count, 0);
   EXPECT_EQ(certified.certificate.reason, CertificateReason::beyond_model_undecided);
+  EXPECT_EQ(to_string(certified.scenario), to_string(PinInHoleScenario::beyond_model));  // as computed
   const PinInHoleContacts plain = detect_pin_in_hole_contacts(d, kHole, pin, uncertified());
   EXPECT_EQ(plain.contact_count, 0);
   EXPECT_EQ(to_string(plain.scenario), to_string(PinInHoleScenario::beyond_model));
@@ -405,6 +406,27 @@ TEST(DetectPinInHoleContacts, AnUncertifiedAnswerTakesThePinThroughTheHoleFromTh
   const PartPose inside{Vector3(9.99, 0.0, 0.0), pin.axis_W};
   EXPECT_EQ(to_string(detect_pin_in_hole_contacts(d, kHole, inside, uncertified()).scenario),
             to_string(detect_pin_in_hole_contacts(d, kHole, inside).scenario));
+}
+
+TEST(DetectPinInHoleContacts, ACertifiedAnswerWithinItsBoundOfTheClearanceIsLabelledByTheComputedDepth) {
+  // An aligned pin offset by e: a line contact e - cr deep. Walking e over the doubles around 2 cr
+  // crosses the band where the depth lies within its bound of cr: there the answer is uncertain
+  // (beyond_model_undecided) and, as the paper's joint labels it (compare_with_clearance), the
+  // computed depth says whether it is beyond_model; outside the band the label is proved.
+  const double limit = joint().hole_radius - joint().pin_radius;
+  int undecided_beyond = 0, undecided_within = 0;
+  double e = 2.0 * limit;
+  for (int k = 0; k < 200; ++k) e = std::nextafter(e, 0.0);
+  for (int k = 0; k < 400; ++k, e = std::nextafter(e, 1.0)) {
+    const PinInHoleContacts answer = detect_pin_in_hole_contacts(joint(), kHole, PartPose{Vector3(e, 0.0, 0.0), Vector3::UnitZ()});
+    ASSERT_EQ(answer.contact_count, 1) << "e = " << e;
+    const bool deeper = answer.contacts[0].depth > limit;
+    EXPECT_EQ(to_string(answer.scenario), to_string(deeper ? PinInHoleScenario::beyond_model : PinInHoleScenario::line))
+        << "e = " << e << ", depth " << answer.contacts[0].depth;
+    if (answer.certificate.reason == CertificateReason::beyond_model_undecided) ++(deeper ? undecided_beyond : undecided_within);
+  }
+  EXPECT_GT(undecided_beyond, 0);
+  EXPECT_GT(undecided_within, 0);
 }
 
 TEST(DetectPinInHoleContacts, ScalingEverythingByAPowerOfTwoScalesTheAnswerExactly) {
