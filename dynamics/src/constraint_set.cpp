@@ -35,10 +35,15 @@ ConstraintSet::ConstraintSet(std::vector<JointEquations> joints, int body_count)
 }
 
 void ConstraintSet::evaluate(double time, const SystemKinematics& kinematics) {
+  for (size_t k = 0; k < joints_.size(); ++k) joints_[k].evaluate(time, kinematics, joint_rows_[k]);
+  dense_current_ = false;
+}
+
+void ConstraintSet::assemble_dense() const {
+  if (dense_current_) return;
   for (size_t k = 0; k < joints_.size(); ++k) {
     const JointEquations& joint = joints_[k];
-    ConstraintRows& rows = joint_rows_[k];
-    joint.evaluate(time, kinematics, rows);
+    const ConstraintRows& rows = joint_rows_[k];
     const int row = first_rows_[k];
     const int n = rows.count;
     value_.segment(row, n) = rows.value.head(n);
@@ -53,13 +58,15 @@ void ConstraintSet::evaluate(double time, const SystemKinematics& kinematics) {
       jacobian_.block(row, 6 * joint.body_j(), n, 6) = rows.jacobian_j.topRows(n);
     }
   }
+  ++dense_assemblies_;
+  dense_current_ = true;
 }
 
 void ConstraintSet::require_independent_rows() const {
   int previous_rank = 0;
   for (size_t k = 0; k < joints_.size(); ++k) {
     const int end = first_rows_[k] + joints_[k].equation_count();
-    const int rank = rank_of(jacobian_.topRows(end));
+    const int rank = rank_of(jacobian().topRows(end));
     if (rank < end) {
       const int lost = end - rank;
       throw SolverError("constraint Jacobian is rank deficient: joint '" + joints_[k].name() +

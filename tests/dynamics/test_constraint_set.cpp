@@ -39,6 +39,30 @@ TEST(ConstraintSet, StacksJointsRowByRow) {
   EXPECT_EQ(set.describe_row(5), "joint 'motor' (angle_driver), equation 0");
 }
 
+TEST(ConstraintSet, AssemblesTheStackedRowsOnlyWhenAskedFor) {
+  SystemKinematics k(1);
+  BodyState door;
+  door.angular_velocity_B = Vector3(0.0, 0.0, 2.0);
+  k.set(0, door);
+  std::vector<JointEquations> joints;
+  joints.push_back(JointEquations::build(revolute("hinge", Vector3(0.0, 0.3, 0.0)), kGround, 0, k));
+  ConstraintSet set(std::move(joints), 1);
+  set.evaluate(0.0, k);
+  set.evaluate(0.0, k);
+  EXPECT_EQ(set.dense_assemblies(), 0) << "evaluate() stacked rows nobody read";
+  // Once per evaluation asked for, whichever array is asked first; the copy is the joint's rows.
+  EXPECT_EQ(set.jacobian().block(0, 0, 5, 6), set.joint_rows(0).jacobian_j.topRows(5));
+  EXPECT_EQ(set.gamma(), set.joint_rows(0).gamma.head(5));
+  EXPECT_EQ(set.value(), set.joint_rows(0).value.head(5));
+  EXPECT_EQ(set.time_derivative(), set.joint_rows(0).time_derivative.head(5));
+  EXPECT_EQ(set.dense_assemblies(), 1);
+  door.angular_velocity_B = Vector3(0.0, 0.0, -1.0);
+  k.set(0, door);
+  set.evaluate(0.0, k);
+  EXPECT_EQ(set.gamma(), set.joint_rows(0).gamma.head(5)) << "the stacked rows kept an old evaluation";
+  EXPECT_EQ(set.dense_assemblies(), 2);
+}
+
 TEST(ConstraintSet, NamesTheJointThatMakesTheConstraintsRedundant) {
   // Two hinges on the same axis: the second adds no independent equation (all five redundant).
   SystemKinematics k(1);

@@ -29,13 +29,30 @@ class ConstraintSet {
   /// Row of the first equation of joint k in Phi.
   int first_row(int k) const { return first_rows_[k]; }
 
-  /// Fill value(), time_derivative(), jacobian(), gamma() at this instant. No allocation.
+  /// Evaluate every joint's rows (joint_rows()) at this instant. No allocation. The stacked
+  /// value(), time_derivative(), jacobian() and gamma() are assembled from them when first asked
+  /// for after it: a right-hand side reads the joints' blocks only (MultibodySystem::derivative).
+  /// The accessors fill that cache, so a ConstraintSet is not shared between threads.
   void evaluate(double time, const SystemKinematics& kinematics);
 
-  const Eigen::VectorXd& value() const { return value_; }
-  const Eigen::VectorXd& time_derivative() const { return time_derivative_; }
-  const Eigen::MatrixXd& jacobian() const { return jacobian_; }
-  const Eigen::VectorXd& gamma() const { return gamma_; }
+  const Eigen::VectorXd& value() const {
+    assemble_dense();
+    return value_;
+  }
+  const Eigen::VectorXd& time_derivative() const {
+    assemble_dense();
+    return time_derivative_;
+  }
+  const Eigen::MatrixXd& jacobian() const {
+    assemble_dense();
+    return jacobian_;
+  }
+  const Eigen::VectorXd& gamma() const {
+    assemble_dense();
+    return gamma_;
+  }
+  /// How many times the stacked arrays above were assembled (once per evaluate() asked for).
+  long dense_assemblies() const { return dense_assemblies_; }
   /// Joint k's rows at the last evaluate(): Phi_q's blocks for the columns of bodies i and j
   /// (rows beyond the joint's equation count are zero).
   const ConstraintRows& joint_rows(int k) const { return joint_rows_[k]; }
@@ -53,10 +70,15 @@ class ConstraintSet {
   int body_count_ = 0;
   int equation_count_ = 0;
   std::vector<ConstraintRows> joint_rows_;
-  Eigen::VectorXd value_;
-  Eigen::VectorXd time_derivative_;
-  Eigen::MatrixXd jacobian_;
-  Eigen::VectorXd gamma_;
+  /// Copy joint_rows_ into the stacked arrays unless they hold the last evaluate() already.
+  void assemble_dense() const;
+  // The stacked arrays: a cache of joint_rows_, filled on demand by the const accessors.
+  mutable Eigen::VectorXd value_;
+  mutable Eigen::VectorXd time_derivative_;
+  mutable Eigen::MatrixXd jacobian_;
+  mutable Eigen::VectorXd gamma_;
+  mutable bool dense_current_ = true;  ///< all zero, as joint_rows_ before the first evaluate()
+  mutable long dense_assemblies_ = 0;
 };
 
 }  // namespace clearjoint::dynamics
