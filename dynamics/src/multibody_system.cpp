@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "clearjoint/dynamics/errors.hpp"
+#include "schur_block.hpp"
 #include "small_cholesky.hpp"
 
 namespace clearjoint::dynamics {
@@ -65,6 +66,13 @@ MultibodySystem::MultibodySystem(std::vector<BodyProperties> bodies,
     }
   }
   scaled_jacobians_.assign(equations.size(), {ConstraintRows::Block::Zero(), ConstraintRows::Block::Zero()});
+  // L's non-zeros: the blocks of joints on a shared body, and their fill-in.
+  std::vector<std::vector<bool>> coupled(equations.size(), std::vector<bool>(equations.size(), false));
+  for (const SharedBody& pair : shared_bodies_) coupled[pair.later][pair.earlier] = true;
+  std::vector<int> sizes;
+  for (const JointEquations& joint : equations) sizes.push_back(joint.equation_count());
+  detail::block_pattern(sizes, [&](int later, int earlier) { return bool(coupled[later][earlier]); },
+                        schur_column_start_, schur_rows_below_);
 }
 
 BodyIndex MultibodySystem::body_index(std::string_view name, std::string_view field) const {
@@ -206,17 +214,16 @@ void MultibodySystem::solve_constrained_accelerations(double time, std::span<con
   // Phi_q M^-1 Phi_q^T: one block per pair of joints on a shared body (lower triangle).
   schur_.setZero();
   for (const SharedBody& pair : shared_bodies_) {
-    const Block product =
-        scaled_jacobians_[pair.later][pair.later_side] *
-        jacobian_of(pair.earlier, pair.earlier_side).transpose();
-    schur_.block(constraints_.first_row(pair.later), constraints_.first_row(pair.earlier),
-                 constraints_.joint_rows(pair.later).count,
-                 constraints_.joint_rows(pair.earlier).count) +=
-        product.topLeftCorner(constraints_.joint_rows(pair.later).count,
-                              constraints_.joint_rows(pair.earlier).count);
+    detail::add_product_block(scaled_jacobians_[pair.later][pair.later_side],
+                              jacobian_of(pair.earlier, pair.earlier_side),
+                              constraints_.joint_rows(pair.later).count,
+                              constraints_.joint_rows(pair.earlier).count,
+                              &schur_(constraints_.first_row(pair.later), constraints_.first_row(pair.earlier)),
+                              schur_.outerStride());
   }
+  const detail::CholeskyPattern pattern{schur_column_start_, schur_rows_below_};
   detail::CholeskyPivots pivots;
-  const bool factored = detail::factor_cholesky_in_place(schur_, pivots);
+  const bool factored = detail::factor_cholesky_in_place(schur_, pattern, pivots);
   if (!factored || !(pivots.smallest > kRelativePivotTolerance * pivots.largest)) {
     throw SolverError("the constraint Jacobian lost rank at t = " + format_number(time) +
                       " (smallest/largest pivot of Phi_q M^-1 Phi_q^T = " +
@@ -224,7 +231,7 @@ void MultibodySystem::solve_constrained_accelerations(double time, std::span<con
                       "): redundant joints or a singular configuration of the mechanism");
   }
   multipliers_ = schur_rhs_;
-  detail::solve_cholesky_in_place(schur_, multipliers_);
+  detail::solve_cholesky_in_place(schur_, pattern, multipliers_);
 
   // eq. (36): M dv/dt = g - Phi_q^T lambda, body by body.
   accelerations_ = g_;

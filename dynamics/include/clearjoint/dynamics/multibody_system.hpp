@@ -133,6 +133,10 @@ class MultibodySystem {
   std::vector<std::array<ConstraintRows::Block, 2>> scaled_jacobians_;
   Eigen::VectorXd schur_rhs_;
   Eigen::MatrixXd schur_;  ///< lower triangle assembled, then factored in place (L)
+  /// Rows below the diagonal that can be non-zero in L, column by column (small_cholesky.hpp,
+  /// detail::CholeskyPattern): the blocks of shared_bodies_ and their fill-in.
+  std::vector<int> schur_column_start_;
+  std::vector<int> schur_rows_below_;
 };
 
 }  // namespace clearjoint::dynamics
