@@ -3,13 +3,18 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
+#include <charconv>
 #include <cmath>
 #include <mutex>
 #include <numbers>
+#include <span>
+#include <string>
 
 #include "clearjoint/geometry/model/primitives.hpp"
 #include "clearjoint/lubrication/film_thickness.hpp"
 #include "clearjoint/lubrication/reynolds_grid.hpp"
+#include "clearjoint/version.hpp"
 
 namespace clearjoint::lubrication {
 
@@ -28,6 +33,13 @@ constexpr double kBearingLengthMargin = 1e-3;
 double eccentricity_of(double u) { return -std::expm1(u * std::log1p(-kTableLargestEccentricityRatio)); }
 double position_of(double eps) { return std::log1p(-eps) / std::log1p(-kTableLargestEccentricityRatio); }
 double growth(double eps) { return std::pow(1.0 - eps, kGrowthExponent); }
+
+/// A table read from the cache must match the grid solved afresh at a few nodes to this fraction
+/// of each field's largest value: well above the rounding by which two builds of one version can
+/// differ (another summation order or FMA: a few ulps per operation of the band solve), far below
+/// any change of the solver that would matter (kTableErrorTarget = 5e-3).
+constexpr double kSpotCheckTolerance = 1e-9;
+std::atomic<std::uint64_t> build_counter{0};
 
 /// Keys' cubic convolution (a = -1/2) at x in node units over nodes 0 ... last: four rows and
 /// their weights, the ghost rows beyond either end folded in by Keys' boundary rule
@@ -58,6 +70,10 @@ RowWeights keys_rows(double x, int last) {
   }
   return r;
 }
+
+}  // namespace
+
+namespace detail {
 
 /// The grid at the table's bearing: an aligned journal with its line of centres along +x, theta = 0
 /// on it, for unit viscosity.
@@ -101,13 +117,22 @@ class GridSampler {
   ReynoldsGridSolver solver_;
 };
 
-}  // namespace
+}  // namespace detail
+
+using detail::GridSampler;
 
 double FilmTable::growth_at(int node) const {
   return growth(eccentricity_of(static_cast<double>(node) / (kTableEccentricityNodes - 1)));
 }
 
-FilmTable::FilmTable(const FilmTableKey& key) : key_(key) {
+FilmTable::FilmTable(const FilmTableKey& key) : FilmTable(key, Unsampled{}) {
+  GridSampler sampler(key);
+  sample_fields(sampler);
+  measure_error(sampler);
+  ++build_counter;
+}
+
+FilmTable::FilmTable(const FilmTableKey& key, Unsampled) : key_(key) {
   validate(PlanarBearing{key.journal_radius, key.width, key.radial_clearance}, PlanarFilmState{}, 1.0);
   if (key.cavitation != CavitationModel::half_sommerfeld) {
     throw geometry::InvalidInput(
@@ -115,14 +140,15 @@ FilmTable::FilmTable(const FilmTableKey& key) : key_(key) {
         "is not linear in its motion, and needs a groove); use method grid");
   }
   validate(GridSampler::options(key));
-  GridSampler sampler(key);
+  const GridSampler sampler(key);
   // The aligned film is symmetric about its mid-plane (the same H at every z, ambient at both
   // ends): the table keeps the half of each column nearer z_low, rows j = 0 ... half - 1 of the
   // grid's rows = N_z - 1 unknown rows, each standing for itself and its mirror row - 1 - j.
   const int n_theta = key.circumferential_cells, rows = key.axial_cells - 1;
   half_rows_ = (rows + 1) / 2;
   node_count_ = n_theta * half_rows_;
-  fields_.resize(static_cast<std::size_t>(kTableEccentricityNodes) * kFields * node_count_);
+  fields_.assign(static_cast<std::size_t>(kTableEccentricityNodes) * kFields * node_count_, 0.0);
+  interval_errors_.assign(kTableEccentricityNodes - 1, 0.0);
   side_flow_weight_.assign(static_cast<std::size_t>(kTableEccentricityNodes) * n_theta, 0.0);
   radial_area_.resize(node_count_);
   tangential_area_.resize(node_count_);
@@ -143,20 +169,7 @@ FilmTable::FilmTable(const FilmTableKey& key) : key_(key) {
   }
   const double flow_scale = c * c * c / 12.0 * d_theta / (d_z / radius);  // times H^3 p / eta
   for (int e = 0; e < kTableEccentricityNodes; ++e) {
-    const double eps = eccentricity_of(static_cast<double>(e) / (kTableEccentricityNodes - 1));
-    const double g = growth(eps);
-    const std::array<std::array<double, 3>, kFields> unit = {{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}};
-    for (int f = 0; f < kFields; ++f) {
-      sampler.solve(eps, unit[f][0], unit[f][1], unit[f][2]);
-      const std::vector<double> p = sampler.unclipped_pressures();
-      double* out = &fields_[(static_cast<std::size_t>(e) * kFields + f) * node_count_];
-      for (int i = 0; i < n_theta; ++i) {
-        for (int j = 0; j < half_rows_; ++j) {  // the mean of a row and its mirror: symmetric to rounding
-          out[i * half_rows_ + j] = g * 0.5 * (p[i * rows + j] + p[i * rows + rows - 1 - j]);
-        }
-      }
-    }
-    const FilmGeometry film = sampler.film(eps);
+    const FilmGeometry film = sampler.film(eccentricity_of(static_cast<double>(e) / (kTableEccentricityNodes - 1)));
     for (int i = 0; i < n_theta; ++i) {
       const Vector3 n = wall_normal(film, i * d_theta);
       const double h_low = film_thickness_along(film, n, film.z_low + 0.5 * d_z) / c;
@@ -166,10 +179,34 @@ FilmTable::FilmTable(const FilmTableKey& key) : key_(key) {
           flow_scale * (h_low * h_low * h_low + h_high * h_high * h_high);
     }
   }
+}
 
+void FilmTable::sample_node(GridSampler& sampler, int e, double* out) const {
+  const int n_theta = key_.circumferential_cells, rows = key_.axial_cells - 1;
+  const double eps = eccentricity_of(static_cast<double>(e) / (kTableEccentricityNodes - 1));
+  const double g = growth(eps);
+  const std::array<std::array<double, 3>, kFields> unit = {{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}};
+  for (int f = 0; f < kFields; ++f) {
+    sampler.solve(eps, unit[f][0], unit[f][1], unit[f][2]);
+    const std::vector<double> p = sampler.unclipped_pressures();
+    double* const field = out + static_cast<std::size_t>(f) * node_count_;
+    for (int i = 0; i < n_theta; ++i) {
+      for (int j = 0; j < half_rows_; ++j) {  // the mean of a row and its mirror: symmetric to rounding
+        field[i * half_rows_ + j] = g * 0.5 * (p[i * rows + j] + p[i * rows + rows - 1 - j]);
+      }
+    }
+  }
+}
+
+void FilmTable::sample_fields(GridSampler& sampler) {
+  for (int e = 0; e < kTableEccentricityNodes; ++e) {
+    sample_node(sampler, e, &fields_[static_cast<std::size_t>(e) * kFields * node_count_]);
+  }
+}
+
+void FilmTable::measure_error(GridSampler& sampler) {
   // The error midway between nodes, where an interpolant strays furthest from them, for spin and
   // squeeze mixed at kTableErrorDirections angles, without and with whirl.
-  interval_errors_.assign(kTableEccentricityNodes - 1, 0.0);
   for (int e = 0; e + 1 < kTableEccentricityNodes; ++e) {
     const double eps = interval_eccentricity(e);
     for (int d = 0; d < 2 * kTableErrorDirections; ++d) {
@@ -193,6 +230,51 @@ FilmTable::FilmTable(const FilmTableKey& key) : key_(key) {
   error_bound_ = *std::max_element(interval_errors_.begin(), interval_errors_.end());
 }
 
+bool FilmTable::agrees_with_grid_at_spot_nodes() const {
+  GridSampler sampler(key_);
+  std::vector<double> fresh(static_cast<std::size_t>(kFields) * node_count_);
+  for (const int e : {0, (kTableEccentricityNodes - 1) / 2, kTableEccentricityNodes - 1}) {
+    sample_node(sampler, e, fresh.data());
+    const double* stored = &fields_[static_cast<std::size_t>(e) * kFields * node_count_];
+    for (int f = 0; f < kFields; ++f) {
+      const auto field = std::span(fresh).subspan(static_cast<std::size_t>(f) * node_count_, node_count_);
+      double size = 0.0;
+      for (const double p : field) size = std::max(size, std::abs(p));
+      for (int k = 0; k < node_count_; ++k) {
+        // Written as !(<=) so that a NaN fails too.
+        if (!(std::abs(stored[f * node_count_ + k] - field[k]) <= kSpotCheckTolerance * size)) return false;
+      }
+    }
+  }
+  return true;
+}
+
+std::string FilmTable::cache_key(const FilmTableKey& key) {
+  // Doubles in hexadecimal floating point (std::to_chars: exact, whatever the locale).
+  const auto exact = [](double value) {
+    std::array<char, 32> text{};
+    const auto end = std::to_chars(text.data(), text.data() + text.size(), value, std::chars_format::hex).ptr;
+    return std::string(text.data(), end);
+  };
+  std::string out = "clearjoint film table\n";
+  out += "format " + std::to_string(kCacheFormat) + "\n";
+  out += "library " + std::string(version_string()) + "\n";
+  out += "journal_radius " + exact(key.journal_radius) + "\n";
+  out += "radial_clearance " + exact(key.radial_clearance) + "\n";
+  out += "width " + exact(key.width) + "\n";
+  out += "circumferential_cells " + std::to_string(key.circumferential_cells) + "\n";
+  out += "axial_cells " + std::to_string(key.axial_cells) + "\n";
+  out += "cavitation " + std::to_string(static_cast<int>(key.cavitation)) + "\n";
+  out += "eccentricity_nodes " + std::to_string(kTableEccentricityNodes) + "\n";
+  out += "error_directions " + std::to_string(kTableErrorDirections) + "\n";
+  out += "largest_eccentricity_ratio " + exact(kTableLargestEccentricityRatio) + "\n";
+  out += "growth_exponent " + exact(kGrowthExponent) + "\n";
+  out += "fields " + std::to_string(kFields) + "\n";
+  return out;
+}
+
+std::uint64_t FilmTable::build_count() noexcept { return build_counter.load(); }
+
 double FilmTable::interval_eccentricity(int interval) {
   return eccentricity_of((interval + 0.5) / (kTableEccentricityNodes - 1));
 }
@@ -204,7 +286,7 @@ std::shared_ptr<const FilmTable> FilmTable::shared(const FilmTableKey& key) {
   for (const auto& table : tables) {
     if (table->key() == key) return table;
   }
-  tables.push_back(std::make_shared<const FilmTable>(key));
+  tables.push_back(cached(key, film_table_cache_folder()));
   return tables.back();
 }
 

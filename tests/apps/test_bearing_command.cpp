@@ -12,6 +12,8 @@
 #include <sstream>
 #include <string>
 
+#include <sys/stat.h>
+
 #include <nlohmann/json.hpp>
 
 #include "program_run.hpp"
@@ -98,6 +100,50 @@ TEST(BearingCommand, RefusesAnOptionGivenTwiceNamingBothValues) {
   EXPECT_TRUE(contains(o.err, "clearjoint bearing: --method is given twice ('long', then 'short'): give it once"))
       << o.err;
   EXPECT_EQ(bearing("--allow-large-grid --allow-large-grid").exit_code, 2);
+}
+
+/// The inode of the only file in `folder` whose name starts with "film-table-", or 0 if none or
+/// more than one: a rebuilt table is a new file renamed over the old name, a new inode.
+ino_t table_file_inode(const fs::path& folder) {
+  ino_t inode = 0;
+  int count = 0;
+  if (!fs::is_directory(folder)) return 0;
+  for (const auto& entry : fs::directory_iterator(folder)) {
+    if (entry.path().filename().string().rfind("film-table-", 0) != 0) continue;
+    struct stat info {};
+    if (::stat(entry.path().c_str(), &info) == 0) inode = info.st_ino;
+    ++count;
+  }
+  return count == 1 ? inode : 0;
+}
+
+TEST(BearingCommand, ASecondTableCallReadsTheFirstCallsCachedTableAndAnswersTheSame) {
+  const fs::path cache = fs::path(CLEARJOINT_TEST_WORK_DIR) / "table-cache";
+  fs::remove_all(cache);
+  ASSERT_EQ(::setenv("CLEARJOINT_CACHE_DIR", cache.c_str(), 1), 0);
+  const Outcome first = bearing("--method table --grid 16x4");
+  ASSERT_EQ(first.exit_code, 0) << first.err;
+  const ino_t written = table_file_inode(cache);
+  ASSERT_NE(written, 0u) << "the first call writes one table file into CLEARJOINT_CACHE_DIR";
+  const Outcome second = bearing("--method table --grid 16x4");
+  ASSERT_EQ(second.exit_code, 0) << second.err;
+  EXPECT_EQ(second.out, first.out);
+  EXPECT_TRUE(second.err.empty()) << second.err;
+  EXPECT_EQ(table_file_inode(cache), written) << "read, not rebuilt and replaced";
+  // A damaged file is rebuilt and replaced, the answer unchanged.
+  std::ofstream(cache / fs::directory_iterator(cache)->path().filename(), std::ios::trunc) << "damaged";
+  const Outcome third = bearing("--method table --grid 16x4");
+  ASSERT_EQ(third.exit_code, 0) << third.err;
+  EXPECT_EQ(third.out, first.out);
+  EXPECT_NE(table_file_inode(cache), written);
+  // Switched off: answers, writes nothing.
+  fs::remove_all(cache);
+  ASSERT_EQ(::setenv("CLEARJOINT_CACHE_DIR", "", 1), 0);
+  const Outcome off = bearing("--method table --grid 16x4");
+  ::unsetenv("CLEARJOINT_CACHE_DIR");
+  ASSERT_EQ(off.exit_code, 0) << off.err;
+  EXPECT_EQ(off.out, first.out);
+  EXPECT_FALSE(fs::exists(cache));
 }
 
 }  // namespace

@@ -23,15 +23,26 @@
 /// nodes (where an interpolant strays furthest) over kTableErrorDirections motions, and reported
 /// as FilmTable::error_bound. Outside its domain (eps above kTableLargestEccentricityRatio, a
 /// tilted journal, an oil groove, the mass-conserving model) the caller solves the grid.
+///
+/// FilmTable::shared keeps each table for the life of the process and, across processes, in a
+/// file cache (film_table_cache_folder(); docs/lubrication.md, "The table's file cache"): one file
+/// per key, named by a hash of the key and holding the whole key, checked on every read.
 
+#include <cstdint>
+#include <filesystem>
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "clearjoint/lubrication/film_conditions.hpp"
 #include "clearjoint/lubrication/planar_film.hpp"
 
 namespace clearjoint::lubrication {
+
+namespace detail {
+class GridSampler;  // film_table.cpp: the grid the table samples
+}
 
 /// What a table is built for: the film's sizes and the grid it reproduces. Two keys equal in
 /// every field give the same table (FilmTable::shared returns the one it built).
@@ -61,6 +72,11 @@ inline constexpr int kTableErrorDirections = 16;
 /// measured bound is FilmTable::error_bound.
 inline constexpr double kTableErrorTarget = 5e-3;
 
+/// The folder of the tables' file cache: $CLEARJOINT_CACHE_DIR when set (set and empty: no file
+/// cache), else $XDG_CACHE_HOME/clearjoint when that is an absolute path (the XDG Base Directory
+/// rule), else $HOME/.cache/clearjoint when HOME is set, else none. Read on every call.
+std::optional<std::filesystem::path> film_table_cache_folder();
+
 class FilmTable {
  public:
   /// Builds the table: 3 kTableEccentricityNodes grid solves, then 2 kTableErrorDirections
@@ -69,8 +85,35 @@ class FilmTable {
   /// model (its load depends on the groove's position and on the spin and whirl apart).
   explicit FilmTable(const FilmTableKey& key);
 
-  /// The table for `key`, built on first use and kept for the life of the process (thread-safe).
+  /// The table for `key`, kept for the life of the process (thread-safe): on first use read from
+  /// the file cache in film_table_cache_folder(), else built and written there (cached).
   static std::shared_ptr<const FilmTable> shared(const FilmTableKey& key);
+
+  /// The table for `key` read from its file in `folder`, else built and written there. A missing,
+  /// short, foreign or damaged file (read) is rebuilt and replaced; a folder that cannot be
+  /// created or written leaves the built table unwritten, silently. No folder: built, no file.
+  /// Throws as the constructor does for a bad key.
+  static std::shared_ptr<const FilmTable> cached(const FilmTableKey& key,
+                                                 const std::optional<std::filesystem::path>& folder);
+  /// The table stored in `file` if it is a whole, undamaged table for `key` (magic, format, the
+  /// full key text, sizes, CRC-32, finite values, and the fields at three nodes against the grid
+  /// solved afresh), else nullptr; never throws for what the file holds. The file's size is
+  /// checked against the key's before anything is allocated.
+  static std::shared_ptr<const FilmTable> read(const std::filesystem::path& file, const FilmTableKey& key);
+  /// Writes the table into `folder` (created if missing) as cache_file_name(key()), atomically:
+  /// a temporary file in the same folder, flushed to disk (fsync), then renamed over the name.
+  /// False, leaving nothing behind, when any step fails.
+  bool write(const std::filesystem::path& folder) const;
+  /// Everything the table's values depend on, as text: the key's fields (doubles in hexadecimal
+  /// floating point, exact), the table's constants, the cache format and the library version.
+  static std::string cache_key(const FilmTableKey& key);
+  /// "film-table-<16 hex digits>.bin": the 64-bit FNV-1a hash of cache_key(key).
+  static std::filesystem::path cache_file_name(const FilmTableKey& key);
+  /// The tables built (the grid sampled) in this process; one read from the cache is not counted.
+  static std::uint64_t build_count() noexcept;
+  /// The cache file's format (film_table_cache.cpp), in its header and in cache_key: raised
+  /// whenever the file's layout or the meaning of what it stores changes.
+  static constexpr std::uint32_t kCacheFormat = 1;
 
   /// The load for the aligned journal's state, or nullopt outside the table's eps range (the
   /// caller then solves the grid). state must be finite (validate(PlanarBearing...)); radial
@@ -87,6 +130,16 @@ class FilmTable {
   const FilmTableKey& key() const noexcept { return key_; }
 
  private:
+  struct Unsampled {};
+  /// The table's sizes and its geometry (areas, side flow weights), its fields and errors zero.
+  FilmTable(const FilmTableKey& key, Unsampled);
+  /// The three fields at eps node e, scaled, into out[0 ... 3 node_count_).
+  void sample_node(detail::GridSampler& sampler, int e, double* out) const;
+  void sample_fields(detail::GridSampler& sampler);
+  void measure_error(detail::GridSampler& sampler);
+  /// Whether the stored fields match the grid at the first, middle and last node (a table read
+  /// back from a file: catches one written by a build whose grid differs under the same version).
+  bool agrees_with_grid_at_spot_nodes() const;
   double growth_at(int node) const;
 
   FilmTableKey key_;
