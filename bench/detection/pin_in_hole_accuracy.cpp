@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The pin-in-hole joint's accuracy run: geometry::detect_pin_in_hole_contacts against the MPFR
-// reference (pin_in_hole_reference.hpp) on the random, near-tangent, near-parallel and near-flush
-// families (pin_in_hole_families.hpp). Where the library's answer is certified or exact, its scenario and
+// reference (pin_in_hole_reference.hpp) on the random, near-tangent, near-parallel, near-flush and
+// small-heads families (pin_in_hole_families.hpp). Where the library's answer is certified or exact, its scenario and
 // contact set must be the reference's and every bound (depth, both points) must enclose the
 // reference's value. Every pose is also detected with the certificates switched off: the same
 // computation without its proofs, so its scenario must be the certified answer's wherever that is
@@ -38,6 +38,8 @@ struct Tally {
   int uncertified_unlike_certified = 0, uncertified_unlike_reference = 0;
   int with_contact = 0;
   std::array<int, geometry::enum_count<geometry::PinInHoleScenario>()> scenarios{};  // the reference's
+  /// The reference's misaligned stop contacts by what bounds them (StopBound), on the poses it decides.
+  std::array<int, 4> stop_bounds{};
   double worst_depth_ratio = 0.0, worst_point_ratio = 0.0;  // |error| / bound
   std::vector<std::string> failures, uncertified_differences;  // the first ten of each
   void fail(const std::string& why) {
@@ -69,6 +71,9 @@ void score(const PinInHoleInput& in, Tally& tally) {
   if (!reference.decided) {
     ++tally.reference_undecided;
     return;
+  }
+  for (const PinInHoleReferenceContact& contact : reference.contacts) {
+    ++tally.stop_bounds[static_cast<std::size_t>(contact.stop_bound)];
   }
   const PinInHoleContacts answer = geometry::detect_pin_in_hole_contacts(in.dimensions, in.hole, in.pin);
   geometry::DetectionOptions uncertified;
@@ -146,7 +151,8 @@ int main(int argc, char** argv) {
   } families[] = {{"random", 4801, false},
                   {"near_tangent", 4802, true},
                   {"near_parallel", 4803, false},
-                  {"near_flush", 4804, false}};
+                  {"near_flush", 4804, false},
+                  {"small_heads", 4805, false}};
   bool ok = true;
   for (const auto& family : families) {
     Tally tally;
@@ -164,6 +170,10 @@ int main(int argc, char** argv) {
       std::printf(" %s %d", std::string(entry.key).c_str(), tally.scenarios[static_cast<std::size_t>(entry.value)]);
     }
     std::printf("\n");
+    std::printf("  stop contacts bounded by: outer circle %d, hole edge %d, corner %d\n",
+                tally.stop_bounds[static_cast<std::size_t>(StopBound::outer_circle)],
+                tally.stop_bounds[static_cast<std::size_t>(StopBound::hole_edge)],
+                tally.stop_bounds[static_cast<std::size_t>(StopBound::corner)]);
     for (const std::string& failure : tally.failures) std::printf("  %s\n", failure.c_str());
     const bool uncertified_wrong =
         !family.at_touch && (tally.uncertified_unlike_certified > 0 || tally.uncertified_unlike_reference > 0);

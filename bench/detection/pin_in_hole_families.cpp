@@ -165,6 +165,46 @@ std::vector<PinInHoleInput> generate_pin_in_hole_family(const std::string& famil
       p.z = stop.position > 0.0 ? 0.5 * held.hole_length - stop.position * cosine - depth
                                 : depth - 0.5 * held.hole_length - stop.position * cosine;
       out.push_back(input(id, held, place(f, centre, hole_length, pin_length, p)));
+    } else if (family == "small_heads") {
+      // Heads barely larger than the hole on a tilted, off-centre pin pressed against one of
+      // them. In the hole's frame, with the tilt t towards tau, w = sign(s) tau the side where the
+      // stop's outer circle is deepest into the link, yS = -(S . w) the stop centre's offset away
+      // from it and g its depth beyond the face: the circle's deepest point m lies over the hole
+      // when yS > Ro cos t - Rh, and the hole's edge's deepest point q, (Rh + yS) cos t - g sin t
+      // from the pin's axis, lies within the head's rim when yS <= (Ro + g sin t) / cos t - Rh.
+      // A third of the poses each: m over the link (1), yS between the two (2: a sliver about
+      // t (g + Ro sin t) wide), q beyond the rim (3); the first and last also off the line.
+      PinInHoleDimensions small = d;
+      const double cr = small.radial_clearance();
+      if (small.stop_count == 0) {
+        small.stop_count = 1;
+        small.stops[0].position = (uniform(0, 1) < 0.5 ? -1.0 : 1.0) * (0.5 * small.hole_length + cr * uniform(0.5, 3.0));
+      }
+      for (int k = 0; k < small.stop_count; ++k) small.stops[k].outer_radius = small.hole_radius + cr * uniform(0.02, 3.0);
+      const geometry::AxialStop& stop = small.stops[uniform.integer(0, small.stop_count - 1)];
+      const double ro = stop.outer_radius, rh = small.hole_radius;
+      const double tangent = (cr / small.hole_length) * uniform(0.2, 2.5), psi = uniform(0, 2 * M_PI);
+      const double sine = tangent / std::sqrt(1.0 + tangent * tangent), cosine = 1.0 / std::sqrt(1.0 + tangent * tangent);
+      const double limit = small.stop_count == 2 ? small.axial_clearance() : 0.5 * small.hole_length;
+      const double g = std::min(0.9 * limit, ro * sine * uniform(-0.5, 2.0));
+      const double lower = ro * cosine - rh, upper = (ro + g * sine) / cosine - rh;
+      const int mode = n % 3;
+      const double ys = mode == 0   ? lower - 2.0 * cr * uniform(0, 1)
+                        : mode == 1 ? lower + (upper - lower) * uniform(0.02, 0.98)
+                                    : upper + 2.0 * cr * uniform(0, 1);
+      const double across = mode == 1 ? 0.0 : cr * uniform(-0.5, 0.5);
+      const double side = stop.position > 0.0 ? 1.0 : -1.0;
+      const double tau_x = std::cos(psi), tau_y = std::sin(psi);
+      // S = -yS w + across (w rotated a quarter turn), and the pin's point P = S - s a_hat.
+      const double sx = -ys * side * tau_x - across * tau_y, sy = -ys * side * tau_y + across * tau_x;
+      const double sz = side * (0.5 * small.hole_length - g);
+      Displacement p;
+      p.tx = tangent * tau_x;
+      p.ty = tangent * tau_y;
+      p.x = sx - stop.position * sine * tau_x;
+      p.y = sy - stop.position * sine * tau_y;
+      p.z = sz - stop.position * cosine;
+      out.push_back(input(id, small, place(f, centre, hole_length, pin_length, p)));
     } else {
       throw std::invalid_argument("unknown pin-in-hole family: " + family);
     }

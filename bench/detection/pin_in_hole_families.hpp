@@ -17,6 +17,9 @@
 ///   near_flush     a pin held against a head (one added where the joint has none), tilted by
 ///                  10^-k rad (k = 4..14), the stop's centre 0.5-100 Ro sin(tilt) beyond its face:
 ///                  mostly an outer circle beyond the face all round.
+///   small_heads    heads of outer radius Rh + 0.02-3 cr on pins tilted by 0.2-2.5 cr / L, pressed
+///                  against one head, its centre placed so that the stop's contact is bounded by
+///                  its outer circle, by the hole's edge, or at a corner of the two (a third each).
 
 #include <cstdint>
 #include <string>
@@ -34,7 +37,8 @@ struct PinInHoleInput {
   geometry::PartPose pin;
 };
 
-/// The family's inputs: "random", "near_tangent", "near_parallel" or "near_flush"; `count` of them.
+/// The family's inputs: "random", "near_tangent", "near_parallel", "near_flush" or "small_heads";
+/// `count` of them.
 std::vector<PinInHoleInput> generate_pin_in_hole_family(const std::string& family, int count, std::uint64_t seed);
 
 }  // namespace clearjoint::bench

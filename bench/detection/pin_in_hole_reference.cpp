@@ -202,40 +202,40 @@ void stop_against_face(const Joint& j, const geometry::AxialStop& stop, bool ali
     contact.p_WCi = sub(stop_centre, scale(contact.depth, into_link));
     ++out.faces;
   } else {
-    // Does the outer circle lie wholly outside the bore (every point farther than Rh from the
-    // hole's axis)?
-    const TrigQuadratic h = cylinder_excess(outer, j.p_i, j.hole_dir, j.hole_radius);
-    const Real extent = norm(sub(outer.center, j.p_i)) + outer.radius + j.hole_radius;
-    const Roots roots = roots_of(h, extent * extent);
-    if (roots.ambiguous || roots.vanishes) {
-      out.undecided("a stop's outer circle touching the bore");
-      return;
-    }
-    const bool outside = roots.angles.empty() && decided_sign(h.at(Real(0)), extent * extent, out.tie) > 0;
-    if (outside) {
-      // The deepest point of the outer circle, whether part of it or all of it lies beyond the
-      // face (a stop nearly flush on a tilted pin is an ordinary stop contact).
-      contact.depth = reach.alpha + reach.rho;
-      contact.p_WCj = add(outer.center, scale(outer.radius, normalized(reach.w)));
-      contact.p_WCi = sub(contact.p_WCj, scale(contact.depth, into_link));
-    } else {
-      out.beyond = true;
+    // The stop's face disk less the hole is the contact region, the depth into the link linear
+    // over it: its deepest point is the outer circle's deepest point m when m lies outside the
+    // bore; otherwise the hole's edge's deepest point q into the head when q lies within Ro of the
+    // pin's axis; otherwise a corner where the two circles meet (beyond the model).
+    const RealVector m = add(outer.center, scale(outer.radius, normalized(reach.w)));
+    const Real m_from_axis = norm(cross(sub(m, j.p_i), j.hole_dir));
+    const Real m_scale = norm(sub(m, j.p_i)) + j.hole_radius;
+    contact.depth = reach.alpha + reach.rho;
+    contact.p_WCj = m;
+    contact.p_WCi = sub(m, scale(contact.depth, into_link));
+    contact.stop_bound = StopBound::outer_circle;
+    if (decided_sign(m_from_axis - j.hole_radius, m_scale, out.tie) <= 0) {
       const Real head_side = stop.position > 0.0 ? 1 : -1;
       const RealVector into_head = scale(head_side, j.pin_dir);
       const Circle edge = make_reference_circle(face_point, j.hole_dir, j.hole_radius);
       const PlaneReach edge_reach = plane_reach(edge, stop_centre, into_head);
       const Real edge_size = abs(edge_reach.alpha) + edge_reach.rho + j.hole_radius;
+      contact.stop_bound = StopBound::corner;
       if (decided_sign(edge_reach.alpha + edge_reach.rho, edge_size, out.tie) > 0) {
         contact.depth = edge_reach.alpha + edge_reach.rho;
         contact.p_WCi = add(edge.center, scale(edge.radius, normalized(edge_reach.w)));
         contact.normal_W = scale(Real(-1), into_head);
         contact.p_WCj = add(contact.p_WCi, scale(contact.depth, contact.normal_W));
-      } else {
-        contact.depth = reach.alpha + reach.rho;
-        contact.p_WCj = add(outer.center, scale(outer.radius, normalized(reach.w)));
-        contact.p_WCi = sub(contact.p_WCj, scale(contact.depth, into_link));
+        // q's distance from the pin's axis (through P_j along a_j) against the head's rim.
+        const RealVector q_off = sub(contact.p_WCi, j.p_j);
+        const Real q_from_axis = norm(cross(q_off, j.pin_dir));
+        if (decided_sign(q_from_axis - Real(stop.outer_radius), norm(q_off) + Real(stop.outer_radius), out.tie) <= 0) {
+          contact.stop_bound = StopBound::hole_edge;
+        }
       }
-      contact.points_defined = false;  // beyond the model
+      if (contact.stop_bound == StopBound::corner) {
+        out.beyond = true;
+        contact.points_defined = false;  // beyond the model
+      }
     }
   }
   if (contact.depth > j.axial_limit) out.beyond = true;

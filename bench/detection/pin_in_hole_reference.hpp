@@ -18,9 +18,11 @@
 ///   with depth Rp minus the middle's distance from the pin's axis and the radial normal there.
 /// * A stop against its face: the signed distance of its outer circle beyond the face plane
 ///   (into the link) is alpha + rho cos(theta - theta0) in closed form; the contact is the
-///   deepest point, the circle crossing the face or lying beyond it all round. Whether the outer circle reaches over the hole: the roots and sign of the
-///   bore's excess on it. Over the hole, the edge circle against the stop's plane instead, in the
-///   same closed form.
+///   deepest point m, the circle crossing the face or lying beyond it all round, when m lies
+///   farther than Rh from the hole's axis. Otherwise the edge circle against the stop's plane in
+///   the same closed form: its deepest point q bounds the contact when q lies within Ro of the
+///   pin's axis; otherwise the contact is at a corner where the two circles meet, beyond the
+///   model (the edge's contact reported, or the outer circle's when the edge is not in the head).
 /// * Parallel axes (eq. 5 exactly on the stored axes): the hole's mid circle against the pin (a
 ///   line contact) and each stop's centre beyond its face (a face contact).
 /// * The pin's axis through the hole: its crossing with the hole's mid-plane within Rh of the axis.
@@ -36,6 +38,11 @@
 
 namespace clearjoint::bench {
 
+/// What bounds a stop's contact against its face: the outer circle's deepest point (over the
+/// link's face), the hole's edge's deepest point (within the head's rim), or a corner where the
+/// two meet (beyond the model).
+enum class StopBound { none, outer_circle, hole_edge, corner };
+
 struct PinInHoleReferenceContact {
   geometry::ContactType type = geometry::ContactType::radial;
   geometry::ContactBase base = geometry::ContactBase::a;
@@ -44,6 +51,7 @@ struct PinInHoleReferenceContact {
   /// False where the library documents only a loose point (beyond the model: an edge inside the
   /// pin all round, a stop's outer circle over the hole).
   bool points_defined = true;
+  StopBound stop_bound = StopBound::none;  ///< misaligned stops only
 };
 
 struct PinInHoleReferenceAnswer {

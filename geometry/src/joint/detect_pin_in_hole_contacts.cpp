@@ -52,6 +52,11 @@ constexpr double kDeepestDirectionError = kAPrioriFactor * kUnitRoundoff;
 /// about 3u of the direction of the computed w (a norm and a quotient), and the dot product of two
 /// vectors of length ~1 adds 3u (Higham, eq. 3.5): 9u, rounded up to 16u.
 constexpr double kNormalDotRounding = 16.0 * kUnitRoundoff;
+/// A point's distance from a line, |a x ((x - c) x a)| with the unit axis a within 2u of the
+/// exact direction: a difference, two cross products and a norm, about a dozen roundings of the
+/// magnitudes |x|_1 + |c|_1 (Higham, Lemma 3.3), and the axis' 2u times |x - c|; kAPrioriFactor's
+/// 64u leaves a factor of four. Used where a stop's contact is chosen (stop_against_face).
+constexpr double kAxisDistanceFactor = kAPrioriFactor;
 
 /// a*b == c*d in real arithmetic: Dekker's two-product in range, rationals otherwise.
 bool products_equal(double a, double b, double c, double d) {
@@ -373,10 +378,46 @@ void stop_contact(const Circle3& circle, const detail::RoundedPoint& centre, con
   for (int c = 0; c < query.crossing_count; ++c) contact.crossings[contact.crossing_count++] = query.crossings[c];
 }
 
-/// The misaligned stop at `stop` against its face: the stop's outer circle against the face plane
-/// (normal into the link); where it penetrates and is not wholly outside the hole's bore, the
-/// hole's edge circle against the stop's plane bounds the contact instead (beyond the model).
-/// Frame at P_i.
+/// A point's distance from a line through `through` along the unit `axis`,
+/// |axis x ((x - through) x axis)|, and a bound on its evaluation besides the errors of the point
+/// and of the line's point: kAxisDistanceFactor u of the magnitudes involved.
+struct BoundedDistance {
+  double value = 0.0;
+  double error = 0.0;
+};
+BoundedDistance distance_from_line(const Vector3& point, const Vector3& through, double through_scale,
+                                   const Vector3& axis) {
+  const Vector3 offset = point - through;
+  return {axis.cross(offset.cross(axis)).norm(),
+          kAxisDistanceFactor * kUnitRoundoff * (point.cwiseAbs().sum() + through.cwiseAbs().sum() + through_scale)};
+}
+
+/// Which side of `limit` a computed distance lies: `above` as computed, which labels the answer
+/// (and decides alone when there is no bound to prove it with, as check_depth lets the computed
+/// depth decide), and whether the bound `error` proves that side.
+struct Side {
+  bool above = false;
+  bool proved = true;
+};
+Side side_of(double value, double error, double limit, bool certify) {
+  Side side{value > limit, true};
+  if (certify) side.proved = value - error > limit || value + error < limit;
+  return side;
+}
+
+/// The misaligned stop at `stop` against its face (docs/contact-detection.md, "Stop against face
+/// X"). The stop's depth into the link is linear over its plane and the contact region is its face
+/// disk less the hole, so the contact is bounded by:
+///  (1) the outer circle's deepest point m (eq. 14) when m lies outside the bore, even if other
+///      parts of the circle lie over the hole: m is the disk's maximum and lies in the region;
+///  (2) otherwise the hole's edge's deepest point q into the head (the edge against the stop's
+///      plane, normal into the head) when q lies within Ro of the pin's axis: the disk's maximum
+///      lying over the hole, the region's is where the edge bounds it;
+///  (3) otherwise a corner where the outer circle meets the hole's edge, beyond the model: the
+///      outer circle's contact as computed (or the edge's when it reaches into the head).
+/// Each choice compares a computed distance and its bound with Rh or Ro; within the bound the
+/// computed value chooses, and the answer is uncertain: beyond_model_undecided when the choice
+/// decides between (3) and an ordinary contact. Frame at P_i.
 void stop_against_face(const Setup& s, const AxialStop& stop, double axial_limit, const DetectionOptions& options,
                        PinInHoleContacts& out, Tally& tally) {
   const int face = face_of(s, stop);
@@ -392,45 +433,73 @@ void stop_against_face(const Setup& s, const AxialStop& stop, double axial_limit
   if (!query.has_penetration) return;
   if (out.contact_count >= kMaxPinInHoleContacts) return;
   Contact& contact = out.contacts[out.contact_count++];
-  // Is the outer circle wholly outside the bore? First without a query: the hole's axis crosses the
+  stop_contact(outer, centre, query, true, into_link_hat, base, contact);
+  // (1) First without m: is the whole outer circle outside the bore? The hole's axis crosses the
   // stop's plane at X0 = t a_i_hat, t = (S . a_j_hat) / (a_i_hat . a_j_hat), and every point x of
   // the circle, x - X0 lying in the plane, is at least (Ro - |S - X0|) |cos(a_i, a_j)| from the
-  // hole's axis (the edge prefilter's argument with the roles exchanged).
-  CircleCylinderIntersection over_hole;
+  // hole's axis (the edge prefilter's argument with the roles exchanged). This decides the
+  // common case, and the one where m is not defined by the doubles (the axes parallel to within
+  // rounding, the circle beyond the face all round).
   const double t = centre.value.dot(s.pin_hat) / s.hole_hat.dot(s.pin_hat);
   const double rho = (centre.value - t * s.hole_hat).norm();
   const double reach_error = centre.error + kAPrioriFactor * kUnitRoundoff *
                                                 (centre.value.cwiseAbs().sum() + std::fabs(t) + rho + stop.outer_radius) /
                                                 s.cosine;
   if ((stop.outer_radius - rho) * s.cosine - reach_error > s.hole_radius) {
-    over_hole.topology = CircleCylinderTopology::outside;
-    over_hole.certificate = proved(options);
-  } else {
-    const Circle3 scaled{outer.center, detail::direction_scaled(s.pin_axis), outer.radius};
-    const Cylinder3 bore{Vector3::Zero(), detail::direction_scaled(s.hole_axis), s.hole_radius};
-    over_hole = detail::intersect_valid_circle_cylinder(scaled, bore, options.intersection, &centre);
+    tally.check_depth(contact, axial_limit);
+    ++tally.axial;
+    return;
   }
-  tally.add(over_hole.certificate);
-  if (over_hole.topology == CircleCylinderTopology::outside) {
-    // Beyond the face all round (flush, the axes barely tilted) is an ordinary stop contact at
-    // the circle's deepest point.
-    stop_contact(outer, centre, query, true, into_link_hat, base, contact);
-  } else {
-    // The stop's outer circle reaches over the hole: the hole's edge against the stop's plane
-    // (its normal into the stop's head), whose penetration is the link's edge inside the head.
+  // Then m against the bore: the hole's axis passes through this frame's origin.
+  const BoundedDistance m = distance_from_line(contact.p_WCj, Vector3::Zero(), 0.0, s.hole_hat);
+  const Side m_outside = side_of(m.value, m.error + contact.p_WCj_error, s.hole_radius,
+                                 contact.certificate.level != Certainty::uncertain);
+  if (m_outside.above && m_outside.proved) {
+    tally.check_depth(contact, axial_limit);
+    ++tally.axial;
+    return;
+  }
+  // (2) q against the head's rim: the pin's axis through the stop's centre S = P_j + s a_j_hat,
+  // which lies within 2u |s| of the exact axis (a_j_hat's rounding), hence |s| in the scale.
+  const double head_side = stop.position > 0.0 ? 1.0 : -1.0;
+  const Circle3 edge{face_point.value, s.hole_axis, s.hole_radius};
+  const CirclePlaneIntersection edge_query = detail::intersect_circle_plane(
+      edge, Plane3{centre.value, head_side * s.pin_axis}, options.intersection, &face_point, &centre);
+  tally.add(edge_query.certificate);
+  Contact edge_contact;
+  Side q_beyond_rim;  // no penetration: q is nowhere in the head
+  q_beyond_rim.above = true;
+  if (edge_query.has_penetration) {
+    stop_contact(edge, face_point, edge_query, false, -head_side * s.pin_hat, base, edge_contact);
+    edge_contact.certificate = weakest(query.certificate, edge_query.certificate);
+    const BoundedDistance q = distance_from_line(edge_contact.p_WCi, centre.value, std::fabs(stop.position), s.pin_hat);
+    q_beyond_rim = side_of(q.value, q.error + edge_contact.p_WCi_error + centre.error, stop.outer_radius,
+                           edge_contact.certificate.level != Certainty::uncertain);
+  }
+  // (2), and (3) where the edge reaches into the head, report the edge's contact; (3) with the
+  // edge nowhere in the head keeps the outer circle's.
+  const bool at_corner = !m_outside.above && q_beyond_rim.above;
+  if (!m_outside.above && edge_query.has_penetration) {
+    contact = edge_contact;
+  } else if (at_corner) {
+    contact.certificate = weakest(query.certificate, edge_query.certificate);
+  }
+  // Which choices the bounds leave open: m either side of Rh unless proved, q likewise of Ro.
+  const bool m_may_be_over_hole = !m_outside.above || !m_outside.proved;
+  const bool q_may_be_within = edge_query.has_penetration && (!q_beyond_rim.above || !q_beyond_rim.proved);
+  const bool q_may_be_beyond = q_beyond_rim.above || !q_beyond_rim.proved;
+  const bool corner_possible = m_may_be_over_hole && q_may_be_beyond;
+  const bool ordinary_possible = m_outside.above || !m_outside.proved || (m_may_be_over_hole && q_may_be_within);
+  if (at_corner) tally.beyond = true;
+  if (corner_possible && ordinary_possible) {
+    tally.beyond_undecided = true;
+  } else if (at_corner) {
     tally.prove_beyond();
-    const double head_side = stop.position > 0.0 ? 1.0 : -1.0;
-    const Circle3 edge{face_point.value, s.hole_axis, s.hole_radius};
-    const CirclePlaneIntersection edge_query = detail::intersect_circle_plane(
-        edge, Plane3{centre.value, head_side * s.pin_axis}, options.intersection, &face_point, &centre);
-    tally.add(edge_query.certificate);
-    if (edge_query.has_penetration) {
-      stop_contact(edge, face_point, edge_query, false, -head_side * s.pin_hat, base, contact);
-      contact.certificate = weakest(weakest(query.certificate, over_hole.certificate), edge_query.certificate);
-    } else {
-      stop_contact(outer, centre, query, true, into_link_hat, base, contact);
-      contact.certificate = weakest(query.certificate, over_hole.certificate);
-    }
+  } else if (!m_outside.proved) {
+    // (1) or (2), both ordinary: the outer circle touching the bore at m, a tangency of the
+    // circle-cylinder pair, within the bound: the label stands but not the contact's points.
+    contact.certificate = weakest(contact.certificate,
+                                  {Certainty::uncertain, CertificateReason::interval_proof_failed_near_multiple_root});
   }
   tally.check_depth(contact, axial_limit);
   ++tally.axial;

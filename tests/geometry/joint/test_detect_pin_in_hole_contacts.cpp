@@ -276,31 +276,99 @@ TEST(DetectPinInHoleContacts, ThePinsAxisOutsideTheHoleIsBeyondTheModel) {
   EXPECT_EQ(pushed.scenario, PinInHoleScenario::beyond_model);
 }
 
-TEST(DetectPinInHoleContacts, AStopWhoseOuterCircleReachesOverTheHoleIsBeyondTheModel) {
-  // Outer radius 10.05 on a hole of 10. The pin 0.08 off centre along -y, tilted by t = 0.005
-  // towards +y and pushed 0.52 along z (as in the one-stop test): the stop's centre is
-  // 0.08 + 10.5 sin t = 0.1325 off the hole's axis, so its outer circle comes within 9.92 of it,
-  // over the hole, while it dips 0.52 - 10.5 cos t + 10.05 sin t + 10 = 0.070 into face B. The
-  // hole's edge at y = -10 lies 9.87 sin t + 0.02 cos t = 0.069 inside the head: a stop contact
-  // bounded by the hole's edge (normal +a, the way the pin moves into the link), beyond the model.
+// The stops below are heads barely larger than the hole, on a pin tilted by t about x: axis
+// a = (0, sin t, cos t) through (0, y0, z0), the stop at -10.5 with centre S = (0, yS, zS),
+// yS = y0 - 10.5 sin t, zS = z0 - 10.5 cos t, g = zS + 10 its height above face B (z = -10). In the
+// plane x = 0 the outer circle's deepest point into the link is m = S + Ro (0, -cos t, sin t), depth
+// g + Ro sin t; the hole's edge's deepest point into the head is q = (0, -10, -10), depth
+// (S - q) . a = (yS + 10) sin t + g cos t, at (yS + 10) cos t - g sin t from the pin's axis.
+
+/// The joint above with a stop of outer radius `outer` at -10.5.
+PinInHoleDimensions small_head(double outer) {
   PinInHoleDimensions d = joint();
-  d.stops[0].outer_radius = 10.05;
-  const double t = 0.005;
-  const PinInHoleContacts answer =
-      detect_pin_in_hole_contacts(d, kHole, PartPose{Vector3(0.0, -0.08, 0.52), Vector3(0.0, std::sin(t), std::cos(t))});
-  EXPECT_EQ(answer.scenario, PinInHoleScenario::beyond_model);
-  bool stop_found = false;
-  for (int k = 0; k < answer.contact_count; ++k) {
-    if (answer.contacts[k].type == ContactType::axial) {
-      stop_found = true;
-      EXPECT_EQ(answer.contacts[k].base, ContactBase::b);
-      EXPECT_TRUE((answer.contacts[k].normal_W - Vector3(0.0, std::sin(t), std::cos(t))).norm() < 1e-12)
-          << answer.contacts[k].normal_W.transpose();
-      EXPECT_NEAR(answer.contacts[k].p_WCi.z(), -10.0, 1e-12);  // on the hole's edge
-      EXPECT_NEAR(answer.contacts[k].depth, 0.069, 0.001);
-    }
+  d.stops[0].outer_radius = outer;
+  return d;
+}
+
+/// A pose of the comment above and its closed forms.
+struct SmallHeadPose {
+  long double t, y0, z0, ro;
+  long double ys() const { return y0 - 10.5L * std::sin(t); }
+  long double g() const { return z0 - 10.5L * std::cos(t) + 10.0L; }
+  /// The outer circle's deepest point m and its depth into the link.
+  Vector3 m() const { return Vector3(0.0, double(ys() - ro * std::cos(t)), double(g() - 10.0L + ro * std::sin(t))); }
+  long double circle_depth() const { return g() + ro * std::sin(t); }
+  /// The hole's edge's depth into the head, (S - q) . a.
+  long double edge_depth() const { return (ys() + 10.0L) * std::sin(t) + g() * std::cos(t); }
+  Vector3 axis() const { return Vector3(0.0, double(std::sin(t)), double(std::cos(t))); }
+  PinInHoleContacts detect() const {
+    return detect_pin_in_hole_contacts(small_head(double(ro)), kHole,
+                                       PartPose{Vector3(0.0, double(y0), double(z0)), axis()});
   }
-  EXPECT_TRUE(stop_found);
+};
+
+/// The answer has `scenario`, proved, and one contact: a stop at face B with `depth` and `normal`.
+void expect_one_stop_at_face_b(const PinInHoleContacts& answer, PinInHoleScenario scenario, long double depth,
+                               const Vector3& normal) {
+  EXPECT_EQ(to_string(answer.scenario), to_string(scenario));
+  EXPECT_TRUE(decided(answer.certificate));
+  ASSERT_EQ(answer.contact_count, 1);
+  const Contact& stop = answer.contacts[0];
+  EXPECT_EQ(stop.type, ContactType::axial);
+  EXPECT_EQ(stop.base, ContactBase::b);
+  EXPECT_NEAR(stop.depth, double(depth), kClosedFormTolerance);
+  EXPECT_LE(std::fabs(stop.depth - double(depth)), stop.depth_error + 1e-15);
+  EXPECT_TRUE((stop.normal_W - normal).norm() < kClosedFormTolerance) << stop.normal_W.transpose();
+}
+
+TEST(DetectPinInHoleContacts, AHeadPartlyOverTheHoleWhoseDeepestPointIsOverTheLinkBearsThereAsAnOrdinaryStop) {
+  // Ro = 10.05, t = 0.004, the pin through (0, -0.03, 0.52): yS = -0.072, so the circle's point
+  // on the +y side, yS + Ro cos t = 9.978, lies over the hole, but m at yS - Ro cos t = -10.12 lies
+  // over the link's face: m is the disk's deepest point and it is in the contact region, an
+  // ordinary stop contact at m of depth g + Ro sin t = 0.060 (below ca = 0.5), C_i its projection
+  // on face B. The edges stay clear: their points are at least 9.928 from the pin's axis.
+  const SmallHeadPose pose{0.004L, -0.03L, 0.52L, 10.05L};
+  const PinInHoleContacts answer = pose.detect();
+  ASSERT_NO_FATAL_FAILURE(
+      expect_one_stop_at_face_b(answer, PinInHoleScenario::one_stop, pose.circle_depth(), Vector3::UnitZ()));
+  const Contact& stop = answer.contacts[0];
+  const Vector3 m = pose.m();
+  EXPECT_TRUE((stop.p_WCj - m).norm() < kClosedFormTolerance) << stop.p_WCj.transpose();
+  EXPECT_TRUE((stop.p_WCi - Vector3(0.0, m.y(), -10.0)).norm() < kClosedFormTolerance) << stop.p_WCi.transpose();
+}
+
+TEST(DetectPinInHoleContacts, AHeadWhoseDeepestDirectionLiesOverTheHoleBearsOnTheHolesEdge) {
+  // Ro = 10.02, t = 0.003, the pin through (0, 0.0515, 0.55): yS = 0.0200000, g = 0.0500047. m at
+  // yS - Ro cos t = -9.999955 lies over the hole, and q, (10 + yS) cos t - g sin t = 10.01980 from
+  // the pin's axis, lies within the head's disk: q is the deepest point of the disk less the hole.
+  // The contact is bounded by the hole's edge: C_i = q on the link, C_j = q + delta a on the stop's
+  // face, n = a (the way the pin moves into the link), delta = (yS + 10) sin t + g cos t = 0.080.
+  // The edges stay clear (at least 9.920 from the pin's axis), and so does the other stop.
+  const SmallHeadPose pose{0.003L, 0.0515L, 0.55L, 10.02L};
+  const PinInHoleContacts answer = pose.detect();
+  ASSERT_NO_FATAL_FAILURE(
+      expect_one_stop_at_face_b(answer, PinInHoleScenario::one_stop, pose.edge_depth(), pose.axis()));
+  const Contact& stop = answer.contacts[0];
+  const long double depth = pose.edge_depth();
+  const Vector3 q(0.0, -10.0, -10.0);
+  const Vector3 on_head(0.0, double(-10.0L + depth * std::sin(pose.t)), double(-10.0L + depth * std::cos(pose.t)));
+  EXPECT_TRUE((stop.p_WCi - q).norm() < kClosedFormTolerance) << stop.p_WCi.transpose();
+  EXPECT_TRUE((stop.p_WCj - on_head).norm() < kClosedFormTolerance) << stop.p_WCj.transpose();
+  EXPECT_LE((stop.p_WCi - q).norm(), stop.p_WCi_error + 1e-15);
+}
+
+TEST(DetectPinInHoleContacts, AHeadMeetingTheHolesEdgeAtACornerIsBeyondTheModel) {
+  // Ro = 10.02, t = 0.002, the pin through (0, 0.051, 0.55): yS = 0.030. m at yS - Ro cos t = -9.99
+  // lies over the hole and q, (10 + yS) cos t - g sin t = 10.030 from the pin's axis, beyond the
+  // head's rim: the deepest point of the disk less the hole is a corner where the outer circle
+  // meets the hole's edge, beyond the model. The contact is the hole's edge inside the head (normal
+  // a, C_i = q), depth (yS + 10) sin t + g cos t = 0.070.
+  const SmallHeadPose pose{0.002L, 0.051L, 0.55L, 10.02L};
+  const PinInHoleContacts answer = pose.detect();
+  ASSERT_NO_FATAL_FAILURE(
+      expect_one_stop_at_face_b(answer, PinInHoleScenario::beyond_model, pose.edge_depth(), pose.axis()));
+  EXPECT_TRUE((answer.contacts[0].p_WCi - Vector3(0.0, -10.0, -10.0)).norm() < kClosedFormTolerance)
+      << answer.contacts[0].p_WCi.transpose();
 }
 
 DetectionOptions uncertified() {
@@ -351,8 +419,6 @@ TEST(DetectPinInHoleContacts, AnUncertifiedAnswerIsBeyondTheModelWhenAStopsCompu
 TEST(DetectPinInHoleContacts, AnUncertifiedAnswerHasTheCertifiedScenarioAwayFromTheBoundaries) {
   // One pose per scenario, each a clearance's tenth or more from any change of scenario: the plain
   // double-precision answer is the certified one without its proofs.
-  PinInHoleDimensions narrow_heads = joint();
-  narrow_heads.stops[0].outer_radius = 10.05;
   const struct {
     PinInHoleDimensions dimensions;
     PartPose pin;
@@ -369,7 +435,8 @@ TEST(DetectPinInHoleContacts, AnUncertifiedAnswerHasTheCertifiedScenarioAwayFrom
       {joint(), tilted(0.03), PinInHoleScenario::beyond_model},
       {joint(), PartPose{Vector3(30.0, 0.0, 0.0), Vector3::UnitZ()}, PinInHoleScenario::beyond_model},
       {joint(), PartPose{Vector3::Zero(), Vector3::UnitX()}, PinInHoleScenario::beyond_model},
-      {narrow_heads, tilted(0.005, Vector3(0.0, -0.08, 0.52)), PinInHoleScenario::beyond_model},
+      {small_head(10.05), tilted(0.004, Vector3(0.0, -0.03, 0.52)), PinInHoleScenario::one_stop},
+      {small_head(10.02), tilted(0.002, Vector3(0.0, 0.051, 0.55)), PinInHoleScenario::beyond_model},
   };
   for (const auto& pose : poses) {
     const PinInHoleContacts certified = detect_pin_in_hole_contacts(pose.dimensions, kHole, pose.pin);
