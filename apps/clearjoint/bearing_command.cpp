@@ -50,8 +50,11 @@ std::string usage() {
          "  line of centres, the side-flow variable 2 pi Q_s / (R c omega B), p_max / (F / (B D)), and\n"
          "  what was solved. Defaults: rotation, grid 96x24; cavitation mass_conserving for the grid\n"
          "  (fed along the thickest film, as Raimondi & Boyd's tables), half_sommerfeld for short,\n"
-         "  long and table (the grid's film tabulated over eps up to 0.98, built on first use). A grid whose estimated cost is above the solver's limits (about half a second a solve)\n"
-         "  is refused with the estimate unless --allow-large-grid is given. Each option once.\n"
+         "  long and table (the grid's film tabulated over eps up to 0.98, built on first use and kept\n"
+         "  in the file cache $CLEARJOINT_CACHE_DIR, else $XDG_CACHE_HOME/clearjoint, else\n"
+         "  ~/.cache/clearjoint; CLEARJOINT_CACHE_DIR set and empty: no file cache). A grid whose\n"
+         "  estimated cost is above the solver's limits (about half a second a solve) is refused\n"
+         "  with the estimate unless --allow-large-grid is given. Each option once.\n"
          "  Exit status 2 for a usage error, 1 for a value out of range (the message names it).\n"
          "  docs/lubrication.md describes the models and their accuracy.\n";
 }

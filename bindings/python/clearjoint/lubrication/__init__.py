@@ -50,8 +50,9 @@ def bearing_characteristics(eccentricity_ratio: float, width_ratio: float, *,
     motion: ``"rotation"`` (steady spin) or ``"squeeze"`` (pure approach along the line of
     centres). method: ``"grid"`` (finite width, ReynoldsGridSolver), ``"short"`` (Ocvirk),
     ``"long"`` (Sommerfeld) or ``"table"`` (the grid's half-Sommerfeld film tabulated over eps up
-    to 0.98, built on first use for the bearing and grid and kept; docs/lubrication.md gives its
-    measured error). cavitation: ``"half_sommerfeld"`` or ``"mass_conserving"``; None takes
+    to 0.98, built on first use for the bearing and grid and kept, also in the file cache
+    ``$CLEARJOINT_CACHE_DIR`` (else ``$XDG_CACHE_HOME/clearjoint``, else ``~/.cache/clearjoint``;
+    set and empty: none); docs/lubrication.md gives its measured error and the cache). cavitation: ``"half_sommerfeld"`` or ``"mass_conserving"``; None takes
     mass_conserving for the grid (fed at ambient pressure along the thickest film, as Raimondi &
     Boyd's tables) and half_sommerfeld, the only one they have, for the closed forms and the table.
     grid: (cells around, cells across), integers (NumPy's too), at least (8, 2); None: 96 x 24,
