@@ -496,8 +496,9 @@ void stop_against_face(const Setup& s, const AxialStop& stop, double axial_limit
   } else if (at_corner) {
     tally.prove_beyond();
   } else if (!m_outside.proved) {
-    // (1) or (2), both ordinary: the outer circle touching the bore at m, a tangency of the
-    // circle-cylinder pair, within the bound: the label stands but not the contact's points.
+    // (1) or (2), both ordinary: where the choice turns, m lies on the bore with q within the
+    // rim, the outer circle seen along the hole's axis touching the hole's edge (a tangency).
+    // The label stands; the contact (at m or at q, t delta apart) is not proved.
     contact.certificate = weakest(contact.certificate,
                                   {Certainty::uncertain, CertificateReason::interval_proof_failed_near_multiple_root});
   }

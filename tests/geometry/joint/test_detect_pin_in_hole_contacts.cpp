@@ -371,6 +371,68 @@ TEST(DetectPinInHoleContacts, AHeadMeetingTheHolesEdgeAtACornerIsBeyondTheModel)
       << answer.contacts[0].p_WCi.transpose();
 }
 
+/// Walks the pin's offset y0 over 401 steps of `step` about `y_star` (Ro = 10.02, t = 0.002,
+/// z0 = 0.55), and to 200,000 steps either side, and tallies the answers by the choice `is_second`
+/// reads from them: proved (the second choice exactly when above y_star), or uncertain for
+/// `reason`, with either choice.
+struct ChoiceWalk {
+  int proved = 0, far_proved = 0, undecided_first = 0, undecided_second = 0;
+};
+template <class Second>
+ChoiceWalk walk_the_stop_choice(long double y_star, double step, CertificateReason reason, Second is_second) {
+  constexpr int kFar = 200000;
+  ChoiceWalk walk;
+  for (int k = -200; k <= 200; ++k) {
+    const int at = k == -200 ? -kFar : (k == 200 ? kFar : k);
+    const SmallHeadPose pose{0.002L, y_star + at * step, 0.55L, 10.02L};
+    const PinInHoleContacts answer = pose.detect();
+    EXPECT_EQ(answer.contact_count, 1) << "at " << at;
+    if (answer.contact_count != 1) continue;
+    const bool second = is_second(answer);
+    if (decided(answer.certificate)) {
+      ++walk.proved;
+      if (at == -kFar || at == kFar) ++walk.far_proved;
+      EXPECT_EQ(second, at > 0) << "at " << at;
+    } else {
+      EXPECT_EQ(answer.certificate.reason, reason) << "at " << at;
+      ++(second ? walk.undecided_second : walk.undecided_first);
+    }
+  }
+  return walk;
+}
+
+TEST(DetectPinInHoleContacts, AStopsChoiceWithinItsBoundIsTheComputedOneAndUncertain) {
+  // Ro = 10.02, t = 0.002, z0 = 0.55 (g = 0.05002), as at the corner above. Walking y0 across
+  // yS = Ro cos t - 10, where m reaches the bore, the contact passes from m (case 1: one_stop,
+  // normal z) to q (case 2: one_stop, normal a); the outer circle then touches the hole's edge
+  // seen along the hole's axis, and within m's bound the answer is uncertain for that tangency.
+  // Walking across yS = (Ro + g sin t) / cos t - 10, where q reaches the head's rim, the label passes
+  // from one_stop to beyond_model (case 3), and within q's bound the answer is uncertain as to
+  // whether it is beyond the model. Either way the computed distance chooses; beyond the bounds
+  // the choice is proved. The walks' steps are 2e-15, their far ends 4e-10 away; m's bound is
+  // 7e-11 (its deepest direction's over the tilt, Ro 128 u / sin t), q's about 1e-10. On the
+  // outer circle's side of the first walk the band is narrower: the circle is proved wholly
+  // outside the bore without m to within about 1e-13.
+  const long double t = 0.002L, ro = 10.02L;
+  const long double g = 0.55L - 10.5L * std::cos(t) + 10.0L;
+  const auto by_edge = [](const PinInHoleContacts& answer) {
+    EXPECT_EQ(to_string(answer.scenario), to_string(PinInHoleScenario::one_stop));
+    return (answer.contacts[0].normal_W - Vector3::UnitZ()).norm() > 1e-6;
+  };
+  const ChoiceWalk m_walk = walk_the_stop_choice(ro * std::cos(t) - 10.0L + 10.5L * std::sin(t), 2e-15,
+                                                 CertificateReason::interval_proof_failed_near_multiple_root, by_edge);
+  const auto at_corner = [](const PinInHoleContacts& answer) {
+    return answer.scenario == PinInHoleScenario::beyond_model;
+  };
+  const ChoiceWalk q_walk = walk_the_stop_choice((ro + g * std::sin(t)) / std::cos(t) - 10.0L + 10.5L * std::sin(t),
+                                                 2e-15, CertificateReason::beyond_model_undecided, at_corner);
+  for (const ChoiceWalk& walk : {m_walk, q_walk}) {
+    EXPECT_GT(walk.undecided_first, 0);
+    EXPECT_GT(walk.undecided_second, 0);
+    EXPECT_EQ(walk.far_proved, 2);
+  }
+}
+
 DetectionOptions uncertified() {
   DetectionOptions options;
   options.intersection.certify = false;
