@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <numbers>
 #include <random>
 #include <string>
@@ -21,6 +22,11 @@ namespace {
 // on the 48 x 12 grid a lubricated model solves by default.
 const FilmTableKey kSection61{9.9e-3, 1e-4, 19.8e-3, 48, 12, CavitationModel::half_sommerfeld};
 constexpr double kViscosity = 0.04;  // Pa s, the lubricated model's oil
+
+// These tests judge the table this build makes, not one the file cache kept from another build
+// of the same version (docs/lubrication.md, "The table's file cache"): the cache is off in this
+// process, set before main and so before any table is asked for.
+const bool kFileCacheOff = ::setenv("CLEARJOINT_CACHE_DIR", "", 1) == 0;
 
 /// The grid's load for an aligned journal at eps with the given rates (line of centres along x).
 PlanarFilmLoad grid_load(const PlanarFilmState& state) {

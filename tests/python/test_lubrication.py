@@ -6,6 +6,7 @@ import math
 import os
 import re
 import subprocess
+import sys
 
 import numpy as np
 import pytest
@@ -139,3 +140,27 @@ def test_the_table_gives_the_half_sommerfeld_grids_characteristics_and_names_its
     assert table.attitude_angle == pytest.approx(grid.attitude_angle, rel=5e-3)
     with pytest.raises(ValueError, match="^eccentricity_ratio = 0.98999999999999999: beyond the table's reach"):
         bearing_characteristics(0.99, 0.5, method="table", grid=(48, 12))
+
+
+def test_a_second_interpreter_reads_the_table_the_first_wrote_to_the_cache(tmp_path, monkeypatch):
+    # As a study's runs on Dask workers: each a process, the first one's table in the cache folder
+    # (docs/lubrication.md, "The table's file cache"). A grid no other test here tabulates, so that
+    # this process asks for its table first after the variable is set.
+    monkeypatch.setenv("CLEARJOINT_CACHE_DIR", str(tmp_path))
+    first = bearing_characteristics(0.6, 0.5, method="table", grid=(16, 5))
+    files = list(tmp_path.glob("film-table-*.bin"))
+    assert len(files) == 1
+    written = files[0].stat().st_ino
+    code = ("from clearjoint.lubrication import bearing_characteristics as b; "
+            "print(repr(b(0.6, 0.5, method='table', grid=(16, 5)).sommerfeld_number))")
+    second = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert float(second.stdout) == first.sommerfeld_number
+    assert [f.stat().st_ino for f in tmp_path.glob("film-table-*.bin")] == [written], "read, not rebuilt"
+
+
+def test_the_cache_switched_off_writes_no_file(tmp_path, monkeypatch):
+    monkeypatch.setenv("CLEARJOINT_CACHE_DIR", "")
+    monkeypatch.setenv("HOME", str(tmp_path))
+    monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path))
+    bearing_characteristics(0.6, 0.5, method="table", grid=(16, 6))
+    assert list(tmp_path.iterdir()) == []

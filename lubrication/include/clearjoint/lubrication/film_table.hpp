@@ -112,7 +112,9 @@ class FilmTable {
   /// The tables built (the grid sampled) in this process; one read from the cache is not counted.
   static std::uint64_t build_count() noexcept;
   /// The cache file's format (film_table_cache.cpp), in its header and in cache_key: raised
-  /// whenever the file's layout or the meaning of what it stores changes.
+  /// whenever the file's layout or the meaning of what it stores changes, and whenever the
+  /// table's construction changes within one library version (the read checks the fields at
+  /// three nodes against the grid, not the error measurement).
   static constexpr std::uint32_t kCacheFormat = 1;
 
   /// The load for the aligned journal's state, or nullopt outside the table's eps range (the
