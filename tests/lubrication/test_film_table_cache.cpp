@@ -32,13 +32,13 @@ namespace fs = std::filesystem;
 // A small grid (16 x 4) keeps each build to a fraction of the Section 6.1 table's half second.
 const FilmTableKey kKey{9.9e-3, 1e-4, 19.8e-3, 16, 4, CavitationModel::half_sommerfeld};
 
-/// A fresh, empty folder for one test, removed with it.
+/// A fresh, empty folder for one test (and `part` of it), removed with it.
 class Folder {
  public:
-  Folder() {
+  explicit Folder(const std::string& part = "") {
     const auto* info = testing::UnitTest::GetInstance()->current_test_info();
     path_ = fs::temp_directory_path() /
-            ("cj-film-cache-" + std::string(info->name()) + "-" + std::to_string(::getpid()));
+            ("cj-film-cache-" + std::string(info->name()) + part + "-" + std::to_string(::getpid()));
     fs::remove_all(path_);
     fs::create_directories(path_);
   }
@@ -177,7 +177,7 @@ TEST(FilmTableCache, AFolderThatCannotBeCreatedStillGivesTheTable) {
 template <class Damage>
 void expect_rebuilt_after(const Damage& damage, const std::string& what) {
   SCOPED_TRACE(what);
-  const Folder folder;
+  const Folder folder("-damaged");
   const fs::path file = folder.path() / FilmTable::cache_file_name(kKey);
   const auto built = FilmTable::cached(kKey, folder.path());
   const std::string good = read_bytes(file);
