@@ -13,6 +13,7 @@ import numpy as np
 import pytest
 
 import clearjoint
+from batch_rows import assert_row_equals_single
 from cases import CASES, TABLE2, dims
 
 CASE_IDS = [c.name for c in CASES]
@@ -85,39 +86,6 @@ def test_every_scenario_case_equals_the_command_lines_answer_bit_for_bit(case, c
             assert bits(crossing.point_error) == bits(error)
         assert contact.certificate.level.name == want["certificate"]
         assert contact.certificate.reason_text == want["certificate_reason"]
-
-
-def assert_row_equals_single(batch, n, single):
-    """Row n of a batch holds exactly the single-pose answer, bit for bit."""
-    assert batch.scenario[n] == int(single.scenario)
-    assert batch.aligned[n] == single.aligned
-    assert batch.certificate[n] == int(single.certificate.level)
-    assert batch.certificate_reason[n] == int(single.certificate.reason)
-    assert batch.contact_count[n] == single.contact_count
-    rows = range(batch.contact_start[n], batch.contact_start[n + 1])
-    assert len(rows) == single.contact_count
-    for k, contact in zip(rows, single.contacts):
-        assert batch.contact_pose[k] == n
-        assert batch.contact_type[k] == int(contact.type)
-        assert batch.contact_base[k] == int(contact.base)
-        assert bits(batch.depth[k]) == bits(contact.depth)
-        assert bits(batch.depth_error[k]) == bits(contact.depth_error)
-        assert bits(batch.point_journal_error[k]) == bits(contact.point_journal_error)
-        assert bits(batch.point_bearing_error[k]) == bits(contact.point_bearing_error)
-        assert same_vector(batch.point_journal[k], contact.point_journal)
-        assert same_vector(batch.point_bearing[k], contact.point_bearing)
-        assert same_vector(batch.normal[k], contact.normal)
-        assert batch.contact_certificate[k] == int(contact.certificate.level)
-        assert batch.contact_certificate_reason[k] == int(contact.certificate.reason)
-        assert batch.crossing_count[k] == len(contact.crossings)
-        for x, crossing in enumerate(contact.crossings):
-            assert bits(batch.crossing_angle[k, x]) == bits(crossing.angle)
-            assert bits(batch.crossing_angle_error[k, x]) == bits(crossing.angle_error)
-            assert same_vector(batch.crossing_point[k, x], crossing.point)
-            assert bits(batch.crossing_point_error[k, x]) == bits(crossing.point_error)
-            assert batch.crossing_multiplicity[k, x] == crossing.multiplicity
-        for x in range(len(contact.crossings), 2):
-            assert np.isnan(batch.crossing_angle[k, x]) and batch.crossing_multiplicity[k, x] == 0
 
 
 def test_a_batch_of_every_table2_case_equals_the_single_pose_answers_row_by_row():

@@ -4,7 +4,6 @@ by row and bit for bit, the answers of single calls; the batch is also a sequenc
 PinInHoleContacts; threads change nothing; bad input is named with its argument and row."""
 import math
 import pickle
-import struct
 
 import numpy as np
 import pytest
@@ -12,18 +11,12 @@ import pytest
 import clearjoint
 from clearjoint import PinInHoleBatch, PinInHoleContacts, PinInHoleDimensions, PinInHoleScenario
 
+from batch_rows import assert_row_equals_single, bits
+
 # The shipped examples' joint (examples/pin_in_hole_scenarios.jsonl), metres: hole radius 10 mm,
 # length 20 mm, pin radius 9.5 mm, heads at +-11.5 mm of outer radius 13 mm.
 DIMS = PinInHoleDimensions(hole_radius=0.01, hole_length=0.02, pin_radius=0.0095,
                            stops=((-0.0115, 0.013), (0.0115, 0.013)))
-
-
-def bits(x):
-    return struct.pack("<d", float(x))
-
-
-def same_vector(a, b):
-    return [bits(x) for x in a] == [bits(x) for x in b]
 
 
 def realistic_poses(count, seed):
@@ -48,39 +41,6 @@ def realistic_poses(count, seed):
     axial = 1.5 * ca * rng.uniform(-1.0, 1.0, (count, 1))
     pin_center = hole_center + radial * (np.cos(toward) * p + np.sin(toward) * q) + axial * hole_axis
     return hole_center, hole_axis, pin_center, pin_axis
-
-
-def assert_row_equals_single(batch, n, single):
-    """Row n of a batch holds exactly the single-pose answer, bit for bit."""
-    assert batch.scenario[n] == int(single.scenario)
-    assert batch.aligned[n] == single.aligned
-    assert batch.certificate[n] == int(single.certificate.level)
-    assert batch.certificate_reason[n] == int(single.certificate.reason)
-    assert batch.contact_count[n] == single.contact_count
-    rows = range(batch.contact_start[n], batch.contact_start[n + 1])
-    assert len(rows) == single.contact_count
-    for k, contact in zip(rows, single.contacts):
-        assert batch.contact_pose[k] == n
-        assert batch.contact_type[k] == int(contact.type)
-        assert batch.contact_base[k] == int(contact.base)
-        assert bits(batch.depth[k]) == bits(contact.depth)
-        assert bits(batch.depth_error[k]) == bits(contact.depth_error)
-        assert bits(batch.point_journal_error[k]) == bits(contact.point_journal_error)
-        assert bits(batch.point_bearing_error[k]) == bits(contact.point_bearing_error)
-        assert same_vector(batch.point_journal[k], contact.point_journal)
-        assert same_vector(batch.point_bearing[k], contact.point_bearing)
-        assert same_vector(batch.normal[k], contact.normal)
-        assert batch.contact_certificate[k] == int(contact.certificate.level)
-        assert batch.contact_certificate_reason[k] == int(contact.certificate.reason)
-        assert batch.crossing_count[k] == len(contact.crossings)
-        for x, crossing in enumerate(contact.crossings):
-            assert bits(batch.crossing_angle[k, x]) == bits(crossing.angle)
-            assert bits(batch.crossing_angle_error[k, x]) == bits(crossing.angle_error)
-            assert same_vector(batch.crossing_point[k, x], crossing.point)
-            assert bits(batch.crossing_point_error[k, x]) == bits(crossing.point_error)
-            assert batch.crossing_multiplicity[k, x] == crossing.multiplicity
-        for x in range(len(contact.crossings), 2):
-            assert np.isnan(batch.crossing_angle[k, x]) and batch.crossing_multiplicity[k, x] == 0
 
 
 def test_a_packed_batch_of_realistic_poses_equals_the_single_pose_answers_bit_for_bit():
