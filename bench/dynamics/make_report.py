@@ -32,10 +32,12 @@ WHAT = {
 }
 
 # perf symbols to the parts of a right-hand-side evaluation, first match wins: (part, dso pattern,
-# symbol pattern). Eigen's products and factorisation are inlined into the constraint solve.
+# symbol pattern). Eigen's products and the factorisation are inlined into the constraint solve;
+# a joint pair's Schur block (schur_block.hpp) may stay a function of its own.
 PARTS = [
     ("contact detection (`clearjoint_geometry`)", r"libclearjoint_geometry", r""),
-    ("constraint solve (Schur matrix, factorisation, solves)", r"", r"solve_constrained_accelerations|Eigen::"),
+    ("constraint solve (Schur matrix, factorisation, solves)", r"",
+     r"solve_constrained_accelerations|Eigen::|detail::add_product_block|cholesky_in_place"),
     ("constraint rows (`ConstraintSet::evaluate`, joint equations, primitives)", r"libclearjoint_dynamics",
      r"ConstraintSet::|JointEquations::|ConstraintRows::|clearjoint::dynamics::add_(?!force)"),
     ("clearance joint forces (`evaluate_forces`, force law, friction)", r"libclearjoint_dynamics",
@@ -172,10 +174,12 @@ located"; a detection at the poses of the previous one is reused, not counted).
   takes more steps. The table row's film table is built before the timing (once per process:
   `BM_TableBuild` of `bench/lubrication/film_bench.cpp`, about 0.5 s).
 * **Where an evaluation goes.** The constraint solve (the Schur complement of the block-sparse
-  mass matrix, its Cholesky factorisation and solves) and the contact detection take most of it;
-  the multibody side is arithmetic-bound (6 x 6 products per pair of joints on a shared body, a
-  small Cholesky factorisation), so a run gets substantially cheaper only with a cheaper
-  detection in contact or with fewer evaluations.
+  mass matrix, its Cholesky factorisation and solves) and the contact detection take most of it.
+  The solve computes the non-zero entries only (a block per pair of joints on a shared body, the
+  joints' equations only; the factor's rows that can be non-zero), bit for bit the dense loops'
+  answer; what is left is mostly the divisions by the pivots and the two triangular solves,
+  chains of dependent operations ([dynamics.md](../dynamics.md), "Solving eq. (38)"). A run gets
+  substantially cheaper only with a cheaper detection in contact or with fewer evaluations.
 """
 
 
