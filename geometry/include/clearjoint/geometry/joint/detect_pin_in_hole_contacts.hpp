@@ -9,9 +9,11 @@
 ///   edge at X: the hole's edge circle at X (body i) against the pin's lateral cylinder (body j),
 ///     intersect_circle_cylinder with circle = edge, cylinder = pin; the contact is where the edge
 ///     lies strictly inside the pin (the complement of the query's penetration arcs);
-///   stop at X: the stop facing X against the link face X: the stop's outer circle against the
-///     face plane (intersect_circle_plane), or, where that circle reaches over the hole, the
-///     hole's edge circle against the stop's plane.
+///   stop at X: the stop facing X against the link face X: the deepest point of the stop's face
+///     less the hole, which is the outer circle's deepest point against the face plane
+///     (intersect_circle_plane) where that point lies over the link, else the hole's edge circle's
+///     deepest point into the stop's plane where that lies within the stop's rim; where neither
+///     does (a corner of the two circles) the answer is beyond the model.
 /// Parallel axes (eq. 5, decided exactly, or within DetectionOptions::parallel_angle_tolerance):
 ///   a line contact along the bore (the hole's mid-length circle against the pin) and face
 ///   contacts (a stop's outer circle wholly beyond its link face).

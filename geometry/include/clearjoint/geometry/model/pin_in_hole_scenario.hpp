@@ -27,9 +27,9 @@ enum class PinInHoleScenario {
   edges_and_stops,        ///< misaligned: edge contacts and stop contacts together
   line_and_face,          ///< parallel axes: line and face together
   /// A configuration the model does not cover: the pin's axis outside the hole (or parallel to
-  /// the link's faces), a hole edge dipping into the pin twice, a stop's outer circle reaching
-  /// over the hole while it touches, or a penetration deeper than the clearance in its direction
-  /// (radial cr; axial ca with two stops, L/2 with one), or face contacts at both faces.
+  /// the link's faces), a hole edge dipping into the pin twice, a stop whose deepest point is at a
+  /// corner of its rim and the hole's edge, or a penetration deeper than the clearance in its
+  /// direction (radial cr; axial ca with two stops, L/2 with one), or face contacts at both faces.
   beyond_model,
 };
 
