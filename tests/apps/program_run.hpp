@@ -5,7 +5,9 @@
 /// (tests/apps/CMakeLists.txt).
 
 #include <sys/wait.h>
+#include <unistd.h>
 
+#include <atomic>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -28,8 +30,13 @@ inline std::string read_text(const std::filesystem::path& file) {
 }
 
 /// Runs `clearjoint <arguments>` (already quoted as needed) with no input, its output in `dir`.
+/// ctest runs each test case of a binary in a process of its own, two at a time, and a test may
+/// run the program from several threads: the output files are named by process and call, so no
+/// two runs share them (fixed names let one test read another's stderr), and removed once read.
 inline Outcome run(const std::string& arguments, const std::filesystem::path& dir) {
-  const std::filesystem::path out = dir / "stdout.txt", err = dir / "stderr.txt";
+  static std::atomic<unsigned long> calls{0};
+  const std::string tag = std::to_string(::getpid()) + "-" + std::to_string(calls.fetch_add(1));
+  const std::filesystem::path out = dir / ("stdout-" + tag + ".txt"), err = dir / ("stderr-" + tag + ".txt");
   const std::string command = "\"" CLEARJOINT_PROGRAM "\" " + arguments + " > \"" + out.string() + "\" 2> \"" +
                               err.string() + "\" < /dev/null";
   const int status = std::system(command.c_str());
@@ -37,6 +44,9 @@ inline Outcome run(const std::string& arguments, const std::filesystem::path& di
   o.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   o.out = read_text(out);
   o.err = read_text(err);
+  std::error_code ignored;
+  std::filesystem::remove(out, ignored);
+  std::filesystem::remove(err, ignored);
   return o;
 }
 

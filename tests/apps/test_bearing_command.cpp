@@ -11,6 +11,8 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <thread>
+#include <vector>
 
 #include <sys/stat.h>
 
@@ -100,6 +102,26 @@ TEST(BearingCommand, RefusesAnOptionGivenTwiceNamingBothValues) {
   EXPECT_TRUE(contains(o.err, "clearjoint bearing: --method is given twice ('long', then 'short'): give it once"))
       << o.err;
   EXPECT_EQ(bearing("--allow-large-grid --allow-large-grid").exit_code, 2);
+}
+
+TEST(BearingCommand, RunsFromConcurrentThreadsEachReadTheirOwnOutput) {
+  // Test cases of one binary run side by side (ctest -j2), each running the program with its
+  // output in the binary's work folder: each run must read its own answer and messages.
+  constexpr int kThreads = 4, kRunsEach = 8;
+  std::vector<std::thread> threads;
+  std::vector<int> wrong(kThreads, 0);
+  for (int t = 0; t < kThreads; ++t) {
+    threads.emplace_back([t, &wrong] {
+      const std::string eps = "0." + std::to_string(t + 1);
+      for (int k = 0; k < kRunsEach; ++k) {
+        const Outcome o = bearing("--eccentricity-ratio " + eps + " --width-ratio 1 --method short", false);
+        const bool own = o.exit_code == 0 && contains(o.out, "\"eccentricity_ratio\":" + eps + ",") && o.err.empty();
+        wrong[t] += own ? 0 : 1;
+      }
+    });
+  }
+  for (std::thread& thread : threads) thread.join();
+  for (int t = 0; t < kThreads; ++t) EXPECT_EQ(wrong[t], 0) << "thread " << t;
 }
 
 /// The inode of the only file in `folder` whose name starts with "film-table-", or 0 if none or
