@@ -213,3 +213,14 @@ def test_scenario_label_names_a_pin_in_hole_member_from_the_pin_in_hole_table():
         assert clearjoint.scenario_label(member) == labels[int(member)], member
     # A plain code, or a ContactScenario member, is still the paper's (Fig. 2).
     assert clearjoint.scenario_label(1) == clearjoint.scenario_label(clearjoint.ContactScenario(1)) == "(a) single radial"
+
+
+def test_dimensions_without_stops_are_a_free_sliding_pin_and_a_nan_size_is_named():
+    free = clearjoint.PinInHoleDimensions(hole_radius=10.0, hole_length=20.0, pin_radius=9.9)
+    assert free.stops == ()
+    answer = clearjoint.detect_pin_in_hole(free, [0, 0, 0], [0, 0, 1], [0, 0, 30.0], [0, 0, 1])
+    assert answer.contact_count == 0
+    with pytest.raises(ValueError, match="pin_radius = nan"):
+        clearjoint.detect_pin_in_hole(clearjoint.PinInHoleDimensions(hole_radius=10.0, hole_length=20.0,
+                                                                     pin_radius=float("nan")),
+                                      [0, 0, 0], [0, 0, 1], [0, 0, 0], [0, 0, 1])

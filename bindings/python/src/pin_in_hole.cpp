@@ -82,7 +82,7 @@ void bind_dimensions(py::module_& m) {
       "outside the hole (|position| > L/2) and larger than it (outer_radius > Rh), two stops on "
       "opposite sides.")
       .def(py::init(&make_dimensions), py::kw_only(), py::arg("hole_radius"), py::arg("hole_length"),
-           py::arg("pin_radius"), py::arg("stops"))
+           py::arg("pin_radius"), py::arg("stops") = py::tuple())
       .def_readonly("hole_radius", &geo::PinInHoleDimensions::hole_radius, "Rh")
       .def_readonly("hole_length", &geo::PinInHoleDimensions::hole_length, "L, between the link's faces")
       .def_readonly("pin_radius", &geo::PinInHoleDimensions::pin_radius, "Rp")
